@@ -1,0 +1,26 @@
+# make run   - install what is missing, then run the main job (the default scene) and say where results are
+# make test  - install what is missing, then run the test suite
+VENV := .venv
+BIN := $(VENV)/bin
+export OMPI_ALLOW_RUN_AS_ROOT := 1
+export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM := 1
+export OMPI_MCA_rmaps_base_oversubscribe := 1
+
+.PHONY: install run test verify bench clean
+install:
+	@bash scripts/install.sh
+
+run: install
+	$(BIN)/shockfem run studies/foundation/bar_impact.toml --out results/bar_impact
+
+test: install
+	$(BIN)/python -m pytest -q tests
+
+verify: install
+	$(BIN)/shockfem verify --json results/verify.json
+
+bench: install
+	$(BIN)/shockfem bench --json results/bench.json
+
+clean:
+	rm -rf results meshes/*.msh meshes/*.regions.json

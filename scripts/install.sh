@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Install everything shockfem needs on Debian 12 (bookworm), as root, from nothing.
+# Idempotent: a second run installs nothing. Used by the Makefile, CI and the Dockerfile.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+VENV=${VENV:-.venv}
+APT_PACKAGES="python3-dolfinx python3-petsc4py python3-slepc4py python3-mpi4py python3-h5py
+  python3-numba python3-scipy python3-venv python3-pip python3-meshio python3-gmsh
+  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make"
+missing=""
+for p in $APT_PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "install: apt-get install$missing"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -q --no-install-recommends $missing
+fi
+if [ ! -x "$VENV/bin/python" ]; then
+  echo "install: venv $VENV (with Debian's dolfinx through --system-site-packages)"
+  /usr/bin/python3 -m venv --system-site-packages "$VENV"
+fi
+if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, tqdm" 2>/dev/null \
+   || [ pyproject.toml -nt "$VENV/.installed" ] || [ constraints.txt -nt "$VENV/.installed" ]; then
+  echo "install: pip install -e .[test,viz]"
+  "$VENV/bin/pip" install -q --disable-pip-version-check -c constraints.txt -e ".[test,viz]"
+fi
+"$VENV/bin/python" - <<'PY'
+import dolfinx, numpy, gmsh
+assert numpy.__version__.startswith("1.24"), f"numpy {numpy.__version__}: Debian's dolfinx needs 1.24"
+print(f"install: ok (dolfinx {dolfinx.__version__}, gmsh {gmsh.__version__}, numpy {numpy.__version__})")
+PY
+touch "$VENV/.installed"

@@ -1,0 +1,115 @@
+"""The ``shockfem`` command: run, check, mesh, verify, bench.
+
+Exit codes: 0 ok, 2 bad input (every problem listed, no traceback), 3 run stopped as
+unstable (outputs kept), 1 a verification case failed.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+
+from .errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_UNSTABLE, ModelError, UnstableRun
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="shockfem", description=__doc__.splitlines()[0])
+    sub = p.add_subparsers(dest="command", required=True)
+
+    r = sub.add_parser("run", help="run a scene and write a run directory")
+    r.add_argument("scene")
+    r.add_argument("--out", help="run directory (default: results/<scene name>)")
+    r.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
+                   help="override a scene field, e.g. bodies.striker.velocity='12 m/s'")
+    r.add_argument("--no-progress", action="store_true")
+    r.add_argument("--no-fields", action="store_true", help="skip the XDMF field output")
+
+    c = sub.add_parser("check", help="validate a scene without running it")
+    c.add_argument("scene")
+    c.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+
+    m = sub.add_parser("mesh", help="mesh a scene's bodies (cached in meshes/) and report sizes")
+    m.add_argument("scene")
+    m.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+
+    v = sub.add_parser("verify", help="verification against exact and published solutions")
+    v.add_argument("names", nargs="*", help="cases to run (default: all)")
+    v.add_argument("--list", action="store_true", help="list the cases")
+    v.add_argument("--json", help="write the results to this JSON file")
+    v.add_argument("--size", choices=("coarse", "default", "fine"), default="default")
+    v.add_argument("--workdir", default="results/verify")
+
+    b = sub.add_parser("bench", help="element-cycles per second at several mesh sizes")
+    b.add_argument("--json", help="write the results to this JSON file")
+    b.add_argument("--quick", action="store_true", help="small meshes only (a smoke test)")
+    b.add_argument("--steps", type=int, default=200)
+    return p
+
+
+def _scene(args):
+    from .scene import load_scene
+    return load_scene(args.scene, args.set)
+
+
+def main(argv=None) -> int:
+    args = _parser().parse_args(argv)
+    from .scene import SceneError
+    try:
+        return _dispatch(args)
+    except SceneError as e:
+        print("The scene has problems:", file=sys.stderr)
+        for problem in e.problems:
+            print(f"  {problem}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except ModelError as e:
+        print(f"error: {e}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except UnstableRun as e:
+        print(f"unstable: {e.diagnosis}", file=sys.stderr)
+        return EXIT_UNSTABLE
+
+
+def _dispatch(args) -> int:
+    if args.command == "check":
+        scene = _scene(args)
+        print(f"{args.scene}: ok ({scene.kinematics}, {len(scene.bodies)} bodies, "
+              f"end time {scene.end_time:.6g} s)")
+        return EXIT_OK
+    if args.command == "run":
+        from .run import run_scene
+        scene = _scene(args)
+        out = args.out or os.path.join("results", scene.name)
+        run_scene(scene, out, progress=not args.no_progress, write_fields=not args.no_fields)
+        return EXIT_OK
+    if args.command == "mesh":
+        from .geometry import build_mesh
+        scene = _scene(args)
+        meshed = build_mesh(scene)
+        tdim = meshed.mesh.topology.dim
+        print(f"{meshed.source}: {meshed.mesh.topology.index_map(tdim).size_global} cells, "
+              f"regions: {', '.join(meshed.region_ids)}")
+        return EXIT_OK
+    if args.command == "verify":
+        from .verify import run_cases, CASES
+        if args.list:
+            for name, case in CASES.items():
+                print(f"{name:24s} {case.__doc__.strip().splitlines()[0]}")
+            return EXIT_OK
+        results = run_cases(args.names or list(CASES), args.size, args.workdir)
+        if args.json:
+            with open(args.json, "w") as fh:
+                json.dump(results, fh, indent=2, default=float)
+        return EXIT_OK if all(r["passed"] for r in results) else 1
+    if args.command == "bench":
+        from .bench import run_bench
+        results = run_bench(quick=args.quick, steps=args.steps)
+        if args.json:
+            with open(args.json, "w") as fh:
+                json.dump(results, fh, indent=2, default=float)
+        return EXIT_OK
+    raise AssertionError(args.command)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

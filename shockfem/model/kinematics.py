@@ -1,0 +1,71 @@
+"""Kinematics as a choice of strain operator and measure weight, not three solvers.
+
+* axisymmetric: coordinates (r, z) = (x[0], x[1]); hoop strain u_r / r; integrals carry
+  the weight 2 pi r, so masses and forces are those of the whole 360-degree body.
+* plane strain: out-of-plane strain zero; integrals carry the scene's ``thickness``.
+* 3d: nothing added.
+
+The UFL forms here are the reference definitions; the compiled kernel in
+``solver/kernels.py`` is checked against ``internal_force_form`` in the tests.
+"""
+from __future__ import annotations
+
+import math
+
+import basix
+import numpy as np
+import ufl
+
+from ..solver import kernels
+
+CODES = {"plane-strain": kernels.PLANE_STRAIN, "axisymmetric": kernels.AXISYMMETRIC, "3d": kernels.THREE_D}
+CELL_KINDS = {"triangle": 0, "quadrilateral": 1, "tetrahedron": 2, "hexahedron": 3}
+BASIX_CELLS = {"triangle": basix.CellType.triangle, "quadrilateral": basix.CellType.quadrilateral,
+               "tetrahedron": basix.CellType.tetrahedron, "hexahedron": basix.CellType.hexahedron}
+
+
+def quadrature_degree(cell: str, kinematics: str) -> int:
+    """Degree of the Gauss rule: 2x2 (2x2x2) for quads (hexes), the full rule Q1 needs;
+    one point for linear triangles/tetrahedra (constant strain), three points for
+    axisymmetric triangles, whose hoop strain u_r/r varies over the cell."""
+    if cell in ("quadrilateral", "hexahedron"):
+        return 2
+    return 2 if kinematics == "axisymmetric" else 1
+
+
+def quadrature(cell: str, kinematics: str):
+    """Points, weights, shape functions N (nq, nn) and reference gradients dN (nq, nn, tdim)."""
+    ct = BASIX_CELLS[cell]
+    points, weights = basix.make_quadrature(ct, quadrature_degree(cell, kinematics))
+    element = basix.create_element(basix.ElementFamily.P, ct, 1)
+    tab = element.tabulate(1, points)
+    N = np.ascontiguousarray(tab[0, :, :, 0])
+    dN = np.ascontiguousarray(np.moveaxis(tab[1:, :, :, 0], 0, -1))
+    return points, np.ascontiguousarray(weights), N, dN
+
+
+def measure_weight(mesh, kinematics: str, thickness: float = 1.0):
+    """The factor every volume integral carries: 2 pi r, the plane-strain depth, or 1."""
+    if kinematics == "axisymmetric":
+        return 2 * math.pi * ufl.SpatialCoordinate(mesh)[0]
+    if kinematics == "plane-strain":
+        return thickness
+    return 1.0
+
+
+def stress_tensor(sigma6, kinematics: str):
+    """The in-plane (2D) or full (3D) stress tensor from the 6 stored components."""
+    if kinematics == "3d":
+        return ufl.as_matrix([[sigma6[0], sigma6[5], sigma6[4]],
+                              [sigma6[5], sigma6[1], sigma6[3]],
+                              [sigma6[4], sigma6[3], sigma6[2]]])
+    return ufl.as_matrix([[sigma6[0], sigma6[5]], [sigma6[5], sigma6[1]]])
+
+
+def internal_force_form(sigma6, w, kinematics: str, thickness: float = 1.0):
+    """f(w) = int sigma : grad(w) dV (+ sigma_tt w_r / r in axisymmetry), the stress divergence."""
+    mesh = w.ufl_function_space().mesh
+    integrand = ufl.inner(stress_tensor(sigma6, kinematics), ufl.grad(w))
+    if kinematics == "axisymmetric":
+        integrand += sigma6[2] * w[0] / ufl.SpatialCoordinate(mesh)[0]
+    return integrand * measure_weight(mesh, kinematics, thickness)

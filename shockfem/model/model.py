@@ -1,0 +1,257 @@
+"""The discrete model of a scene: nodes, cells, lumped masses, bodies, constraints, loads.
+
+Everything the time loop needs is here as plain numpy arrays in dolfinx's local
+numbering (owned nodes first, then ghosts); the dolfinx objects (mesh, function space)
+are kept for assembly of the mass and for output.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import ufl
+from dolfinx import fem
+from mpi4py import MPI
+
+from .. import compat
+from ..geometry import MeshedScene
+from ..scene import Scene
+from . import kinematics as kin
+from ..solver import kernels
+from .materials import parameter_table
+
+
+@dataclass
+class RigidBody:
+    """A body that moves rigidly: translation, and rotation in 3D. No stiffness cost."""
+    index: int
+    nodes: np.ndarray            # local node indices (owned and ghost)
+    owned: np.ndarray            # mask over ``nodes``: owned by this rank
+    mass: float                  # [kg], global
+    center0: np.ndarray          # initial centre of mass [m]
+    inertia0: np.ndarray         # (3, 3) inertia about the centre of mass, 3D only [kg m^2]
+    rel0: np.ndarray             # X - center0 for ``nodes``
+
+
+@dataclass
+class Constraint:
+    """Prescribed velocity on flat dof indices (node * gdim + component)."""
+    dofs: np.ndarray
+    times: np.ndarray
+    values: np.ndarray
+    region: str
+
+    def value(self, t: float) -> float:
+        return float(np.interp(t, self.times, self.values))
+
+
+@dataclass
+class Load:
+    """A total force history on a region, shared among its nodes by consistent area."""
+    dofs: np.ndarray
+    shares: np.ndarray           # sums to 1 over all ranks
+    times: np.ndarray
+    values: np.ndarray
+    region: str
+
+    def value(self, t: float) -> float:
+        return float(np.interp(t, self.times, self.values))
+
+
+@dataclass
+class Model:
+    scene: Scene
+    meshed: MeshedScene
+    V: object                                  # P1 vector function space
+    gdim: int
+    kinematics: int
+    dofmap: np.ndarray                         # (cells, nn) local node numbers
+    num_owned: int                             # owned nodes come first
+    X0: np.ndarray                             # (nodes, gdim) reference positions
+    mass: np.ndarray                           # (nodes,) lumped mass [kg]
+    node_body: np.ndarray                      # (nodes,) body index
+    cell_body: np.ndarray                      # (cells,) body index
+    cell_material: np.ndarray                  # (cells,) row of ``params``
+    kernel_cells: np.ndarray                   # owned cells of deformable bodies
+    params: np.ndarray
+    cell_kind: int
+    cell_sign: np.ndarray                      # (cells,) orientation of the reference cells
+    N: np.ndarray
+    dN: np.ndarray
+    wq: np.ndarray
+    rigid: list[RigidBody] = field(default_factory=list)
+    constraints: list[Constraint] = field(default_factory=list)
+    loads: list[Load] = field(default_factory=list)
+    alpha: float = 0.0                          # mass-proportional damping [1/s]
+    body_mass: np.ndarray = None                # (bodies,) global masses [kg]
+
+    @property
+    def comm(self):
+        return self.meshed.mesh.comm
+
+    @property
+    def num_cells_global(self) -> int:
+        tdim = self.meshed.mesh.topology.dim
+        return self.meshed.mesh.topology.index_map(tdim).size_global
+
+    @property
+    def num_quadrature_points(self) -> int:
+        return self.wq.shape[0]
+
+
+def _lumped_mass(V, cell_rho, scene: Scene, gdim: int) -> np.ndarray:
+    """Row-sum lumped mass m_a = int rho N_a dV (positive for linear elements)."""
+    mesh = V.mesh
+    DG0 = fem.FunctionSpace(mesh, ("DG", 0))
+    rho = fem.Function(DG0)
+    rho.x.array[:] = cell_rho
+    w = ufl.TestFunction(V)
+    weight = kin.measure_weight(mesh, scene.kinematics, scene.thickness)
+    form = fem.form(rho * ufl.dot(w, ufl.as_vector([1.0] * gdim)) * weight * ufl.dx)
+    m = fem.Function(V)
+    compat.assemble_vector_into(m.x.array, form)
+    compat.reverse_add(m)
+    m.x.scatter_forward()
+    return m.x.array.reshape(-1, gdim)[:, 0].copy()
+
+
+def _region_nodes(V, meshed: MeshedScene, region: str) -> np.ndarray:
+    tdim = meshed.mesh.topology.dim
+    facets = meshed.facet_tags.indices[meshed.facet_tags.values == meshed.region_ids[region]]
+    return fem.locate_dofs_topological(V, tdim - 1, facets)
+
+
+def _region_shares(V, meshed: MeshedScene, region: str, scene: Scene, gdim: int) -> np.ndarray:
+    """Consistent nodal shares int_region N_a dA / area of a region (axisymmetric: with 2 pi r)."""
+    mesh = meshed.mesh
+    ds = ufl.Measure("ds", domain=mesh, subdomain_data=meshed.facet_tags,
+                     subdomain_id=meshed.region_ids[region])
+    w = ufl.TestFunction(V)
+    weight = kin.measure_weight(mesh, scene.kinematics, scene.thickness)
+    area = fem.Function(V)
+    compat.assemble_vector_into(area.x.array,
+                                fem.form(ufl.dot(w, ufl.as_vector([1.0] * gdim)) * weight * ds))
+    compat.reverse_add(area)
+    a = area.x.array.reshape(-1, gdim)[:, 0].copy()
+    num_owned = V.dofmap.index_map.size_local
+    total = mesh.comm.allreduce(a[:num_owned].sum(), op=MPI.SUM)
+    return a / total
+
+
+def build_model(scene: Scene, meshed: MeshedScene) -> Model:
+    """Turn a meshed scene into the arrays of the explicit solver."""
+    mesh = meshed.mesh
+    comm = mesh.comm
+    gdim = scene.gdim
+    tdim = mesh.topology.dim
+    V = fem.VectorFunctionSpace(mesh, ("CG", 1))
+    imap = V.dofmap.index_map
+    num_nodes = imap.size_local + imap.num_ghosts
+    cell_map = mesh.topology.index_map(tdim)
+    num_cells = cell_map.size_local + cell_map.num_ghosts
+    cell_name = mesh.topology.cell_name()
+    nn = {"triangle": 3, "quadrilateral": 4, "tetrahedron": 4, "hexahedron": 8}[cell_name]
+    dofmap = np.ascontiguousarray(V.dofmap.list.array.reshape(-1, nn)[:num_cells], dtype=np.int32)
+    X0 = np.ascontiguousarray(V.tabulate_dof_coordinates()[:num_nodes, :gdim])
+
+    cell_body = np.full(num_cells, -1, dtype=np.int32)
+    cell_body[meshed.cell_tags.indices] = meshed.cell_tags.values - 1
+    node_body = np.full(num_nodes, -1, dtype=np.int32)
+    node_body[dofmap.ravel()] = np.repeat(cell_body, nn)
+
+    material_names = list(scene.materials)
+    body_material = np.array([material_names.index(b.material) for b in scene.bodies], dtype=np.int32)
+    cell_material = body_material[cell_body]
+    params = parameter_table([scene.materials[n] for n in material_names], scene.damping)
+    cell_rho = np.array([scene.materials[n].rho for n in material_names])[cell_material]
+    mass = _lumped_mass(V, cell_rho, scene, gdim)
+
+    rigid_ids = [i for i, b in enumerate(scene.bodies) if b.rigid]
+    owned_cells = np.arange(cell_map.size_local, dtype=np.int32)
+    kernel_cells = owned_cells[~np.isin(cell_body[owned_cells], rigid_ids)]
+
+    points, wq, N, dN = kin.quadrature(cell_name, scene.kinematics)
+    alpha = scene.damping.coefficients()[0] if scene.damping else 0.0
+
+    owned = np.arange(num_nodes) < imap.size_local
+    body_mass = np.array([comm.allreduce(mass[owned & (node_body == i)].sum(), op=MPI.SUM)
+                          for i in range(len(scene.bodies))])
+
+    cell_sign = kernels.cell_orientation(dofmap, X0, dN)
+    model = Model(scene, meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
+                  mass, node_body, cell_body, cell_material, kernel_cells, params,
+                  kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass)
+    model.rigid = [_rigid_body(model, i) for i in rigid_ids]
+    _add_boundaries(model)
+    return model
+
+
+def _rigid_body(model: Model, index: int) -> RigidBody:
+    comm = model.comm
+    nodes = np.flatnonzero(model.node_body == index)
+    owned = nodes < model.num_owned
+    m = model.mass[nodes]
+    M = comm.allreduce(m[owned].sum(), op=MPI.SUM)
+    c = comm.allreduce((m[owned, None] * model.X0[nodes][owned]).sum(axis=0), op=MPI.SUM) / M
+    rel = model.X0[nodes] - c
+    inertia = np.zeros((3, 3))
+    if model.gdim == 3:
+        r2 = (rel[owned] ** 2).sum(axis=1)
+        local = (np.eye(3)[None] * (m[owned] * r2)[:, None, None]
+                 - m[owned, None, None] * rel[owned][:, :, None] * rel[owned][:, None, :]).sum(axis=0)
+        inertia = comm.allreduce(local, op=MPI.SUM)
+    return RigidBody(index, nodes, owned, M, c, inertia, rel)
+
+
+def _add_boundaries(model: Model):
+    scene, V, gdim = model.scene, model.V, model.gdim
+    if scene.kinematics == "axisymmetric":
+        # Nodes on the axis cannot move radially (u_r = 0 at r = 0 by symmetry).
+        axis = np.flatnonzero(np.abs(model.X0[:, 0]) < 1e-12 * max(1.0, np.abs(model.X0).max()))
+        model.constraints.append(Constraint(axis * gdim, np.array([0.0]), np.array([0.0]), "axis"))
+    for bc in scene.boundaries:
+        nodes = _region_nodes(V, model.meshed, bc.region)
+        times = np.array([p[0] for p in bc.history])
+        values = np.array([p[1] for p in bc.history])
+        if bc.kind == "fixed":
+            dofs = (nodes[:, None] * gdim + np.arange(gdim)[None, :]).ravel()
+            model.constraints.append(Constraint(dofs, np.array([0.0]), np.array([0.0]), bc.region))
+        elif bc.kind == "symmetry":
+            comp = _plane_normal(model, nodes, bc.region)
+            model.constraints.append(Constraint(nodes * gdim + comp, np.array([0.0]), np.array([0.0]),
+                                                bc.region))
+        elif bc.kind == "velocity":
+            model.constraints.append(Constraint(nodes * gdim + bc.components[0], times, values, bc.region))
+        else:
+            shares = _region_shares(V, model.meshed, bc.region, scene, gdim)[nodes]
+            model.loads.append(Load(nodes * gdim + bc.components[0], shares, times, values, bc.region))
+
+
+def _plane_normal(model: Model, nodes: np.ndarray, region: str) -> int:
+    """The coordinate axis normal to a planar region (for symmetry conditions)."""
+    comm = model.comm
+    x = model.X0[nodes]
+    lo = comm.allreduce(x.min(axis=0) if len(x) else np.full(model.gdim, np.inf), op=MPI.MIN)
+    hi = comm.allreduce(x.max(axis=0) if len(x) else np.full(model.gdim, -np.inf), op=MPI.MAX)
+    span = hi - lo
+    flat = np.flatnonzero(span <= 1e-9 * max(span.max(), 1e-30))
+    if len(flat) != 1:
+        from ..errors import ModelError
+        raise ModelError(f"boundary region {region}: a symmetry condition needs a plane normal to a "
+                         f"coordinate axis; this region spans {span} m")
+    return int(flat[0])
+
+
+def describe(model: Model) -> str:
+    """One line per body saying which model runs for it ("model only what a scene needs")."""
+    lines = []
+    for i, b in enumerate(model.scene.bodies):
+        kind = "rigid body (no stiffness)" if b.rigid else "linear elastic, updated Lagrangian"
+        lines.append(f"  {b.name}: {kind}, {model.scene.kinematics}, mass {model.body_mass[i]:.6g} kg")
+    if model.scene.damping:
+        d = model.scene.damping
+        a, be = d.coefficients()
+        lines.append(f"  damping: {d.kind}, {d.ratio:.3g} of critical at {d.frequency:.6g} Hz "
+                     f"(alpha = {a:.4g} 1/s, beta = {be:.4g} s)")
+    return "\n".join(lines)
+

@@ -1,0 +1,1 @@
+"""Outputs: the run directory, XDMF fields, time histories and plots."""

@@ -1,0 +1,66 @@
+"""Time histories: per-body mean velocity and acceleration, energies; HDF5 and CSV.
+
+Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes.
+"""
+from __future__ import annotations
+
+import csv
+
+import h5py
+import numpy as np
+
+from ..solver.explicit import ExplicitSolver
+
+
+class HistoryRecorder:
+    ENERGY_COLUMNS = ("kinetic", "internal", "damping", "external", "balance")
+
+    def __init__(self, solver: ExplicitSolver):
+        m = solver.model
+        self.solver = solver
+        axes = ("r", "z") if m.scene.kinematics == "axisymmetric" else "xyz"[:m.gdim]
+        self.columns = [("time", "s")]
+        for b in m.scene.bodies:
+            self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
+            self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
+        self.columns += [(f"energy.{k}", "J") for k in self.ENERGY_COLUMNS]
+        self.columns += [("energy.balance_error", "-"), ("dt", "s")]
+        self.rows: list[list[float]] = []
+
+    def record(self):
+        s = self.solver
+        v, a = s.body_means()
+        e = s.energy
+        row = [s.t]
+        for vb, ab in zip(v, a):
+            row += list(vb) + list(ab)
+        row += [e.kinetic, e.internal, e.damping, e.external, e.balance, e.balance_error, s.dt]
+        self.rows.append(row)
+
+    def array(self) -> np.ndarray:
+        return np.array(self.rows) if self.rows else np.zeros((0, len(self.columns)))
+
+    def column(self, name: str) -> np.ndarray:
+        names = [c[0] for c in self.columns]
+        return self.array()[:, names.index(name)]
+
+    def write(self, h5_path: str, csv_path: str):
+        if self.solver.comm.rank != 0:
+            return
+        data = self.array()
+        with h5py.File(h5_path, "w") as f:
+            for j, (name, unit) in enumerate(self.columns):
+                ds = f.create_dataset(name, data=data[:, j])
+                ds.attrs["unit"] = unit
+        with open(csv_path, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow([f"{n} [{u}]" for n, u in self.columns])
+            w.writerows(data.tolist())
+
+
+def read_history_csv(path: str) -> dict[str, np.ndarray]:
+    """Columns of a ``history.csv`` keyed by name without the unit."""
+    with open(path) as fh:
+        header = next(csv.reader(fh))
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {h.rsplit(" [", 1)[0]: data[:, j] for j, h in enumerate(header)}

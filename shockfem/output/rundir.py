@@ -1,0 +1,70 @@
+"""The run directory: the contract later tools and users rely on (``docs/outputs.md``).
+
+    resolved_scene.json  the scene as run, in SI
+    provenance.json      versions of shockfem, dolfinx, gmsh...; git hash; command; processes
+    run.log              what was run and what happened
+    fields.xdmf/.h5      displacement, velocity, von Mises, pressure at the field cadence
+    history.h5/.csv      per-body mean velocity/acceleration and energies at the history cadence
+    summary.json         status, sizes, speed, energy balance and per-body results
+    energy.png, bodies.png
+"""
+from __future__ import annotations
+
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+
+from .. import __version__, compat
+from ..scene import Scene, to_plain
+
+
+def git_hash() -> str | None:
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        out = subprocess.run(["git", "-C", here, "rev-parse", "HEAD"], capture_output=True, text=True,
+                             timeout=5)
+        return out.stdout.strip() or None
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+class RunDirectory:
+    def __init__(self, path: str, comm):
+        self.path = path
+        self.comm = comm
+        if comm.rank == 0:
+            os.makedirs(path, exist_ok=True)
+        comm.barrier()
+        self._log = open(os.path.join(path, "run.log"), "w") if comm.rank == 0 else None
+
+    def file(self, name: str) -> str:
+        return os.path.join(self.path, name)
+
+    def log(self, message: str, echo=True):
+        if self.comm.rank != 0:
+            return
+        stamp = time.strftime("%H:%M:%S")
+        self._log.write(f"[{stamp}] {message}\n")
+        self._log.flush()
+        if echo:
+            print(message, flush=True)
+
+    def write_json(self, name: str, data):
+        if self.comm.rank == 0:
+            with open(self.file(name), "w") as fh:
+                json.dump(data, fh, indent=2, default=float)
+
+    def write_scene_and_provenance(self, scene: Scene):
+        self.write_json("resolved_scene.json", to_plain(scene))
+        self.write_json("provenance.json", {
+            "shockfem": __version__, **compat.versions(), "git": git_hash(),
+            "python": sys.version.split()[0], "platform": platform.platform(),
+            "command": sys.argv, "mpi_processes": self.comm.size,
+            "started": time.strftime("%Y-%m-%dT%H:%M:%S")})
+
+    def close(self):
+        if self._log:
+            self._log.close()

@@ -1,0 +1,161 @@
+"""Run a scene: scene -> mesh -> model -> time loop -> run directory.
+
+``run_scene`` is what ``shockfem run`` calls; verification cases and studies call it too,
+and read their results back from the run directory.
+"""
+from __future__ import annotations
+
+import sys
+import time
+from dataclasses import dataclass
+
+import numpy as np
+from mpi4py import MPI
+
+from .errors import UnstableRun
+from .geometry import build_mesh
+from .model import build_model, describe
+from .output.fields import FieldWriter, von_mises
+from .output.history import HistoryRecorder
+from .output.plots import plot_histories
+from .output.rundir import RunDirectory
+from .scene import Scene
+from .solver.explicit import ExplicitSolver
+
+
+@dataclass
+class RunResult:
+    summary: dict
+    solver: ExplicitSolver
+    history: HistoryRecorder
+    path: str
+
+
+def _progress(total: float, enabled: bool):
+    if not enabled:
+        return None
+    from tqdm import tqdm
+    return tqdm(total=total * 1e6, unit="us", unit_scale=False, dynamic_ncols=True, file=sys.stderr,
+                bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} us [{elapsed}<{remaining}, {postfix}]",
+                mininterval=0.5)
+
+
+def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = True,
+              write_fields: bool = True, quiet: bool = False) -> RunResult:
+    """Run ``scene`` and write the run directory ``out_dir``.
+
+    Raises
+    ------
+    UnstableRun
+        After writing everything produced so far and a summary with ``status = "unstable"``.
+    """
+    rd = RunDirectory(out_dir, comm)
+    say = (lambda msg: rd.log(msg, echo=not quiet))
+    rd.write_scene_and_provenance(scene)
+    say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
+    meshed = build_mesh(scene, comm, log=say)
+    model = build_model(scene, meshed)
+    say("models that run:\n" + describe(model))
+    solver = ExplicitSolver(model)
+    say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
+        f"(safety factor {scene.safety_factor})")
+    history = HistoryRecorder(solver)
+    fields = FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields) if write_fields else None
+    history.record()
+    if fields:
+        fields.write(0.0)
+    next_field = scene.outputs.field_interval
+    next_hist = scene.outputs.history_interval
+    bar = _progress(scene.end_time, progress and comm.rank == 0 and not quiet)
+    status, diagnosis = "completed", None
+    max_vm = np.zeros(len(scene.bodies))
+    wall0 = time.perf_counter()
+    try:
+        for s in solver.steps(scene.end_time):
+            if s.t >= next_hist * (1 - 1e-9) or s.t >= scene.end_time * (1 - 1e-12):
+                history.record()
+                next_hist += scene.outputs.history_interval
+            if s.t >= next_field * (1 - 1e-9):
+                _track_max_von_mises(solver, max_vm)
+                if fields:
+                    fields.write(s.t)
+                next_field += scene.outputs.field_interval
+            if s.step > 20 and s.energy.balance_error > scene.energy_error_limit:
+                raise UnstableRun(
+                    f"energy balance error {s.energy.balance_error:.3g} exceeds the limit "
+                    f"{scene.energy_error_limit:.3g} at t = {s.t:.6g} s (step {s.step}): energy is being "
+                    f"created, a sign of instability. Lower scene.safety_factor or refine the mesh.", s.t)
+            if bar is not None and s.step % 50 == 0:
+                bar.n = s.t * 1e6
+                bar.set_postfix_str(f"step {s.step}, dt {s.dt:.3g} s, E err {s.energy.balance_error:.1e}",
+                                    refresh=False)
+                bar.update(0)
+    except UnstableRun as e:
+        status, diagnosis = "unstable", e.diagnosis
+        say(f"RUN STOPPED: {e.diagnosis}")
+        history.record()
+        raise
+    finally:
+        wall = time.perf_counter() - wall0
+        if bar is not None:
+            bar.n = solver.t * 1e6
+            bar.close()
+        _track_max_von_mises(solver, max_vm)
+        if fields:
+            if status != "completed":
+                fields.write(solver.t)   # the state at the stop, for the diagnosis
+            fields.close()
+        history.write(rd.file("history.h5"), rd.file("history.csv"))
+        summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
+        rd.write_json("summary.json", summary)
+        if comm.rank == 0 and len(history.rows) > 1:
+            plot_histories(out_dir, [b.name for b in scene.bodies])
+        say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
+            f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
+            f"{solver.energy.balance_error:.2e}")
+        say(f"results in {out_dir}")
+        rd.close()
+    return RunResult(summary, solver, history, out_dir)
+
+
+def _track_max_von_mises(solver: ExplicitSolver, max_vm: np.ndarray):
+    m = solver.model
+    vm = von_mises(solver.sigma).max(axis=1) if len(solver.sigma) else np.zeros(0)
+    for i in range(len(max_vm)):
+        sel = m.cell_body[:len(vm)] == i
+        local = float(vm[sel].max()) if sel.any() else 0.0
+        max_vm[i] = max(max_vm[i], solver.comm.allreduce(local, op=MPI.MAX))
+
+
+def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, max_vm) -> dict:
+    m = solver.model
+    v, _ = solver.body_means()
+    e = solver.energy
+    elements = m.num_cells_global
+    kernel_elements = solver.comm.allreduce(len(m.kernel_cells), op=MPI.SUM)
+    return {
+        "status": status,
+        "diagnosis": diagnosis,
+        "scene": scene.name,
+        "kinematics": scene.kinematics,
+        "element": scene.element,
+        "elements": elements,
+        "deformable_elements": kernel_elements,
+        "nodes": m.V.dofmap.index_map.size_global,
+        "processes": solver.comm.size,
+        "steps": solver.step,
+        "dt": solver.dt,
+        "end_time": solver.t,
+        "wall_time_s": wall,
+        "element_cycles_per_s": elements * solver.step / wall if wall > 0 else 0.0,
+        "phase_times_s": {"internal_force": solver.times.internal_force, "update": solver.times.update,
+                          "energy": solver.times.energy, "step_total": solver.times.total},
+        "energy": {"initial_total": e.initial, "kinetic": e.kinetic, "internal": e.internal,
+                   "damping": e.damping, "external_work": e.external, "balance": e.balance,
+                   "balance_error": e.balance_error},
+        "models": describe(m).splitlines(),
+        "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
+                            "velocity_final": [float(c) for c in v[i]],
+                            "max_von_mises": float(max_vm[i])}
+                   for i, b in enumerate(scene.bodies)},
+    }

@@ -1,0 +1,433 @@
+"""The scene: what a user describes, resolved to SI and checked before anything runs.
+
+A scene file is TOML (documented with a worked example in ``docs/scenes.md``).  ``resolve``
+turns the raw dictionary into the frozen dataclasses below, collecting *every* problem
+with its path (``bodies[1].radius: must be > 0, got -3 mm``) instead of stopping at the
+first one.  Nothing here imports dolfinx: a scene can be checked on any machine.
+"""
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..units import UnitError, to_si
+
+KINEMATICS = ("axisymmetric", "plane-strain", "3d")
+ELEMENTS = {"axisymmetric": ("quad", "tri"), "plane-strain": ("quad", "tri"), "3d": ("hex", "tet")}
+SHAPES = ("cylinder", "box", "mesh")
+# Named regions each shape provides, by kinematics family (2D or 3D).
+SHAPE_REGIONS = {
+    ("cylinder", 2): ("bottom", "top", "side", "axis"),
+    ("cylinder", 3): ("bottom", "top", "side"),
+    ("box", 2): ("left", "right", "bottom", "top"),
+    ("box", 3): ("left", "right", "front", "back", "bottom", "top"),
+}
+BC_TYPES = ("fixed", "symmetry", "velocity", "force")
+DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
+FIELDS = ("displacement", "velocity", "von_mises", "pressure")
+
+
+class SceneError(Exception):
+    """All problems found in a scene, each ``path: message``."""
+
+    def __init__(self, problems: list[str]):
+        self.problems = problems
+        super().__init__("\n".join(problems))
+
+
+@dataclass(frozen=True)
+class Material:
+    name: str
+    rho: float            # density [kg/m^3]
+    E: float              # Young's modulus [Pa]
+    nu: float             # Poisson's ratio [-]
+
+    @property
+    def lam(self) -> float:
+        """Lame's first parameter [Pa]."""
+        return self.E * self.nu / ((1 + self.nu) * (1 - 2 * self.nu))
+
+    @property
+    def mu(self) -> float:
+        """Shear modulus [Pa]."""
+        return self.E / (2 * (1 + self.nu))
+
+    @property
+    def c_dilatational(self) -> float:
+        """Dilatational wave speed sqrt((lam + 2 mu)/rho) [m/s]; sets the explicit step."""
+        return ((self.lam + 2 * self.mu) / self.rho) ** 0.5
+
+    @property
+    def c_bar(self) -> float:
+        """Bar wave speed sqrt(E/rho) [m/s]."""
+        return (self.E / self.rho) ** 0.5
+
+
+@dataclass(frozen=True)
+class Damping:
+    ratio: float          # fraction of critical at `frequency`
+    frequency: float      # [Hz]
+    kind: str             # mass | stiffness | rayleigh
+
+    def coefficients(self) -> tuple[float, float]:
+        """Rayleigh coefficients (alpha [1/s], beta [s]) with zeta(omega) = alpha/(2 omega) + beta omega/2.
+
+        ``mass``: all of the ratio from alpha; ``stiffness``: all from beta; ``rayleigh``:
+        half from each, so that zeta = ratio at the given frequency and zeta is
+        smallest there (the usual two-term choice with both terms equal at omega).
+        """
+        import math
+        omega = 2 * math.pi * self.frequency
+        if self.kind == "mass":
+            return 2 * self.ratio * omega, 0.0
+        if self.kind == "stiffness":
+            return 0.0, 2 * self.ratio / omega
+        return self.ratio * omega, self.ratio / omega
+
+
+@dataclass(frozen=True)
+class Body:
+    name: str
+    material: str
+    shape: str
+    dims: dict[str, float]           # shape parameters in SI (radius, length, size_x...)
+    element_size: float
+    position: tuple[float, ...]
+    velocity: tuple[float, ...]
+    spin: float                      # [rad/s] about the body's z axis (3D only)
+    rigid: bool
+    mesh_file: str | None = None
+    regions: dict[str, int] = field(default_factory=dict)   # mesh bodies: name -> gmsh physical tag
+
+
+@dataclass(frozen=True)
+class Boundary:
+    region: str                      # "body.region"
+    kind: str
+    components: tuple[int, ...]      # velocity/force components the condition acts on
+    history: tuple[tuple[float, float], ...]   # (t, value) pairs; a constant is one pair
+
+
+@dataclass(frozen=True)
+class Outputs:
+    fields: tuple[str, ...]
+    field_interval: float
+    history_interval: float
+
+
+@dataclass(frozen=True)
+class Scene:
+    name: str
+    kinematics: str
+    element: str
+    end_time: float
+    safety_factor: float
+    thickness: float
+    energy_error_limit: float
+    materials: dict[str, Material]
+    bodies: tuple[Body, ...]
+    boundaries: tuple[Boundary, ...]
+    damping: Damping | None
+    outputs: Outputs
+    raw: dict = field(repr=False, default_factory=dict)
+
+    @property
+    def gdim(self) -> int:
+        return 3 if self.kinematics == "3d" else 2
+
+    def body(self, name: str) -> Body:
+        return next(b for b in self.bodies if b.name == name)
+
+    def material_of(self, body: Body) -> Material:
+        return self.materials[body.material]
+
+
+class _Checker:
+    """Collects problems while reading fields; every getter returns a usable default."""
+
+    def __init__(self):
+        self.problems: list[str] = []
+
+    def fail(self, path: str, message: str):
+        self.problems.append(f"{path}: {message}")
+
+    def table(self, d: dict, key: str, path: str, required=True) -> dict:
+        v = d.get(key)
+        if v is None:
+            if required:
+                self.fail(path, "missing section")
+            return {}
+        if not isinstance(v, dict):
+            self.fail(path, f"must be a table, got {v!r}")
+            return {}
+        return v
+
+    def unknown(self, d: dict, allowed, path: str):
+        for k in d:
+            if k not in allowed:
+                self.fail(f"{path}.{k}" if path else k,
+                          f"unknown field (allowed: {', '.join(sorted(allowed))})")
+
+    def quantity(self, d: dict, key: str, path: str, dimension: str, default=None,
+                 positive=False, nonnegative=False, upper=None) -> float:
+        if key not in d:
+            if default is None:
+                self.fail(f"{path}.{key}", f"missing (a {dimension.replace('_', ' ')})")
+                return 1.0
+            return default
+        raw = d[key]
+        try:
+            v = to_si(raw, dimension)
+        except UnitError as e:
+            self.fail(f"{path}.{key}", str(e))
+            return default if default is not None else 1.0
+        shown = raw if isinstance(raw, str) else repr(raw)
+        if positive and not v > 0:
+            self.fail(f"{path}.{key}", f"must be > 0, got {shown}")
+        if nonnegative and v < 0:
+            self.fail(f"{path}.{key}", f"must be >= 0, got {shown}")
+        if upper is not None and v >= upper:
+            self.fail(f"{path}.{key}", f"must be < {upper}, got {shown}")
+        return v
+
+    def choice(self, d: dict, key: str, path: str, choices, default=None) -> str:
+        v = d.get(key, default)
+        if v is None:
+            self.fail(f"{path}.{key}", f"missing (one of: {', '.join(choices)})")
+            return choices[0]
+        if v not in choices:
+            self.fail(f"{path}.{key}", f"must be one of {', '.join(choices)}; got {v!r}")
+            return choices[0]
+        return v
+
+    def vector(self, d: dict, key: str, path: str, dimension: str, n: int, default) -> tuple:
+        if key not in d:
+            return tuple(default)
+        raw = d[key]
+        if not isinstance(raw, list):
+            # A single value means "along the z axis" (the axis of axisymmetry).
+            try:
+                vz = to_si(raw, dimension)
+            except UnitError as e:
+                self.fail(f"{path}.{key}", str(e))
+                return tuple(default)
+            return tuple([0.0] * (n - 1) + [vz])
+        if len(raw) != n:
+            self.fail(f"{path}.{key}", f"needs {n} components for this kinematics, got {len(raw)}")
+            return tuple(default)
+        out = []
+        for i, item in enumerate(raw):
+            try:
+                out.append(to_si(item, dimension))
+            except UnitError as e:
+                self.fail(f"{path}.{key}[{i}]", str(e))
+                out.append(0.0)
+        return tuple(out)
+
+
+def resolve(raw: dict, base_dir: str = ".") -> Scene:
+    """Check a raw scene dictionary completely and return the resolved ``Scene``.
+
+    Raises
+    ------
+    SceneError
+        Listing every problem found, each with its path.
+    """
+    import os
+
+    ck = _Checker()
+    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "damping", "outputs"), "")
+    s = ck.table(raw, "scene", "scene")
+    ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
+                   "energy_error_limit"), "scene")
+    name = str(s.get("name", "scene"))
+    kin = ck.choice(s, "kinematics", "scene", KINEMATICS)
+    gdim = 3 if kin == "3d" else 2
+    element = ck.choice(s, "element", "scene", ELEMENTS[kin], default=ELEMENTS[kin][0])
+    end_time = ck.quantity(s, "end_time", "scene", "time", positive=True)
+    sf = ck.quantity(s, "safety_factor", "scene", "dimensionless", default=0.9, positive=True)
+    if sf > 1.0:
+        ck.fail("scene.safety_factor", f"must be <= 1 (explicit stability), got {sf}")
+    thickness = ck.quantity(s, "thickness", "scene", "length", default=1.0, positive=True)
+    elimit = ck.quantity(s, "energy_error_limit", "scene", "dimensionless", default=0.05, positive=True)
+
+    materials: dict[str, Material] = {}
+    mats = ck.table(raw, "materials", "materials")
+    for mname, m in mats.items():
+        path = f"materials.{mname}"
+        if not isinstance(m, dict):
+            ck.fail(path, "must be a table")
+            continue
+        ck.unknown(m, ("density", "youngs_modulus", "poisson_ratio"), path)
+        rho = ck.quantity(m, "density", path, "density", positive=True)
+        E = ck.quantity(m, "youngs_modulus", path, "pressure", positive=True)
+        nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.3)
+        if not -1.0 < nu < 0.5:
+            ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
+        materials[mname] = Material(mname, rho, E, nu)
+
+    bodies: list[Body] = []
+    raw_bodies = raw.get("bodies", [])
+    if not isinstance(raw_bodies, list) or not raw_bodies:
+        ck.fail("bodies", "needs at least one [[bodies]] entry")
+        raw_bodies = []
+    names = set()
+    for i, b in enumerate(raw_bodies):
+        path = f"bodies[{i}]"
+        if not isinstance(b, dict):
+            ck.fail(path, "must be a table")
+            continue
+        bname = b.get("name")
+        if not isinstance(bname, str) or not bname.isidentifier():
+            ck.fail(f"{path}.name", f"needs a name made of letters, digits and _, got {bname!r}")
+            bname = f"body{i}"
+        if bname in names:
+            ck.fail(f"{path}.name", f"duplicate body name {bname!r}")
+        names.add(bname)
+        shape = ck.choice(b, "shape", path, SHAPES)
+        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "rigid"}
+        dims: dict[str, float] = {}
+        mesh_file = None
+        regions: dict[str, int] = {}
+        if shape == "cylinder":
+            allowed |= {"radius", "length"}
+            dims["radius"] = ck.quantity(b, "radius", path, "length", positive=True)
+            dims["length"] = ck.quantity(b, "length", path, "length", positive=True)
+        elif shape == "box":
+            allowed |= {"size"}
+            size = ck.vector(b, "size", path, "length", gdim, [1.0] * gdim)
+            if "size" not in b:
+                ck.fail(f"{path}.size", f"missing ({gdim} lengths)")
+            for k, v in zip("xyz", size):
+                if v <= 0:
+                    ck.fail(f"{path}.size", f"every length must be > 0, got {b.get('size')}")
+                    break
+                dims[f"size_{k}"] = v
+        elif shape == "mesh":
+            allowed |= {"file", "regions"}
+            f = b.get("file")
+            if not isinstance(f, str):
+                ck.fail(f"{path}.file", "missing (path of a gmsh .msh file with physical groups)")
+            else:
+                mesh_file = f if os.path.isabs(f) else os.path.normpath(os.path.join(base_dir, f))
+                if not os.path.exists(mesh_file):
+                    ck.fail(f"{path}.file", f"no such file {mesh_file}")
+            reg = b.get("regions", {})
+            if not isinstance(reg, dict) or not all(isinstance(v, int) for v in reg.values()):
+                ck.fail(f"{path}.regions", "must map region names to gmsh physical group tags (integers)")
+            else:
+                regions = dict(reg)
+        ck.unknown(b, allowed, path)
+        mat = b.get("material")
+        if mat not in materials:
+            ck.fail(f"{path}.material", f"unknown material {mat!r} (defined: {', '.join(materials) or 'none'})")
+        h = ck.quantity(b, "element_size", path, "length", positive=True,
+                        default=None if shape != "mesh" else 0.0)
+        if shape == "cylinder" and h > 0 and h > dims.get("radius", h):
+            ck.fail(f"{path}.element_size", "must not exceed the radius (at least one element across)")
+        pos = ck.vector(b, "position", path, "length", gdim, [0.0] * gdim)
+        vel = ck.vector(b, "velocity", path, "velocity", gdim, [0.0] * gdim)
+        spin = ck.quantity(b, "spin", path, "angular_velocity", default=0.0)
+        if spin and gdim != 3:
+            ck.fail(f"{path}.spin", "an initial spin needs kinematics = '3d'")
+        if kin == "axisymmetric":
+            if pos[0] != 0.0:
+                ck.fail(f"{path}.position", "axisymmetric bodies sit on the axis: the r component must be 0")
+            if vel[0] != 0.0:
+                ck.fail(f"{path}.velocity", "axisymmetric bodies move along the axis: the r component must be 0")
+        rigid = b.get("rigid", False)
+        if not isinstance(rigid, bool):
+            ck.fail(f"{path}.rigid", f"must be true or false, got {rigid!r}")
+            rigid = False
+        bodies.append(Body(bname, mat if mat in materials else "", shape, dims, h, pos, vel, spin,
+                           rigid, mesh_file, regions))
+
+    body_regions = {b.name: (tuple(b.regions) if b.shape == "mesh" else SHAPE_REGIONS[(b.shape, gdim)])
+                    for b in bodies}
+    boundaries: list[Boundary] = []
+    raw_bcs = raw.get("boundary", [])
+    if not isinstance(raw_bcs, list):
+        ck.fail("boundary", "must be a list of [[boundary]] entries")
+        raw_bcs = []
+    axes = "xyz"[:gdim] if kin != "axisymmetric" else "rz"
+    for i, bc in enumerate(raw_bcs):
+        path = f"boundary[{i}]"
+        if not isinstance(bc, dict):
+            ck.fail(path, "must be a table")
+            continue
+        ck.unknown(bc, ("region", "type", "direction", "value", "history"), path)
+        region = bc.get("region", "")
+        bname, _, rname = str(region).partition(".")
+        if bname not in body_regions:
+            ck.fail(f"{path}.region", f"must be 'body.region' with a known body, got {region!r}")
+        elif rname not in body_regions[bname]:
+            ck.fail(f"{path}.region", f"body {bname!r} has regions {', '.join(body_regions[bname])}; "
+                                      f"got {rname!r}")
+        kind = ck.choice(bc, "type", path, BC_TYPES)
+        comps: tuple[int, ...] = tuple(range(gdim))
+        history: tuple = ((0.0, 0.0),)
+        if kind in ("velocity", "force"):
+            d = bc.get("direction", axes[-1])
+            if d not in axes:
+                ck.fail(f"{path}.direction", f"must be one of {', '.join(axes)}; got {d!r}")
+                d = axes[-1]
+            comps = (axes.index(d),)
+            dim = "velocity" if kind == "velocity" else "force"
+            if "history" in bc:
+                hist = bc["history"]
+                pairs = []
+                if not isinstance(hist, list) or not hist:
+                    ck.fail(f"{path}.history", "must be a list of [time, value] pairs")
+                else:
+                    for j, pair in enumerate(hist):
+                        if not isinstance(pair, list) or len(pair) != 2:
+                            ck.fail(f"{path}.history[{j}]", "must be a [time, value] pair")
+                            continue
+                        try:
+                            pairs.append((to_si(pair[0], "time"), to_si(pair[1], dim)))
+                        except UnitError as e:
+                            ck.fail(f"{path}.history[{j}]", str(e))
+                    times = [p[0] for p in pairs]
+                    if any(t1 <= t0 for t0, t1 in zip(times, times[1:])):
+                        ck.fail(f"{path}.history", "times must increase")
+                history = tuple(pairs) or history
+            else:
+                history = ((0.0, ck.quantity(bc, "value", path, dim)),)
+        boundaries.append(Boundary(region, kind, comps, history))
+
+    damping = None
+    if "damping" in raw:
+        d = ck.table(raw, "damping", "damping")
+        ck.unknown(d, ("ratio", "frequency", "type"), "damping")
+        ratio = ck.quantity(d, "ratio", "damping", "dimensionless", nonnegative=True, upper=1.0)
+        freq = ck.quantity(d, "frequency", "damping", "frequency", positive=True)
+        kind = ck.choice(d, "type", "damping", DAMPING_TYPES, default="rayleigh")
+        damping = Damping(ratio, freq, kind)
+
+    o = ck.table(raw, "outputs", "outputs", required=False)
+    ck.unknown(o, ("fields", "field_interval", "history_interval"), "outputs")
+    fields = o.get("fields", list(FIELDS))
+    if not isinstance(fields, list) or any(f not in FIELDS for f in fields):
+        ck.fail("outputs.fields", f"must be a list drawn from {', '.join(FIELDS)}; got {fields!r}")
+        fields = list(FIELDS)
+    fi = ck.quantity(o, "field_interval", "outputs", "time", default=end_time / 10, positive=True)
+    hi = ck.quantity(o, "history_interval", "outputs", "time", default=0.0, nonnegative=True)
+    outputs = Outputs(tuple(fields), fi, hi)
+
+    if ck.problems:
+        raise SceneError(ck.problems)
+    return Scene(name, kin, element, end_time, sf, thickness, elimit, materials, tuple(bodies),
+                 tuple(boundaries), damping, outputs, raw)
+
+
+def replace(scene: Scene, **changes) -> Scene:
+    return dataclasses.replace(scene, **changes)
+
+
+def to_plain(scene: Scene) -> dict[str, Any]:
+    """The resolved scene (SI units) as plain data for ``resolved_scene.json``."""
+    d = dataclasses.asdict(scene)
+    d.pop("raw", None)
+    d["units"] = "SI (m, kg, s, N, Pa, J)"
+    return d

@@ -1,0 +1,1 @@
+"""The explicit solver: compiled element kernels and the central-difference time loop."""

@@ -1,0 +1,314 @@
+"""Central-difference (leapfrog) time integration as a generator of steps.
+
+    a_n        = M^-1 (f_ext_n - f_int_n)                       lumped (diagonal) mass
+    v_{n+1/2}  = v_{n-1/2} + (dt_{n-1/2} + dt_{n+1/2}) / 2 a_n  variable step
+    x_{n+1}    = x_n + dt_{n+1/2} v_{n+1/2}                     updated Lagrangian
+
+(Belytschko, Liu & Moran, *Nonlinear Finite Elements*, Box 6.1.)  Each ``next()`` of
+``ExplicitSolver.steps()`` advances one step in named phases (velocity, constraints,
+position, internal force, loads, acceleration, energy) and yields the solver, so that a
+progress bar, monitors, history recorders and field writers all consume the same stream.
+
+Energy bookkeeping (every step, summed over owned nodes and reduced over ranks):
+kinetic ``0.5 m v^2``; internal work ``int f_int . du`` (trapezoidal), of which the
+stiffness-proportional damping part is counted separately; mass-damping dissipation;
+external work of loads and of prescribed velocities (reactions).  The balance
+``kinetic + internal + damping - external - initial kinetic`` is zero for an exact
+integrator; its size relative to the largest energy in play is ``balance_error``.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+from dolfinx import fem
+from mpi4py import MPI
+
+from .. import compat
+from ..errors import UnstableRun
+from ..model import Model
+from . import kernels
+
+
+@dataclass
+class Energies:
+    kinetic: float = 0.0
+    internal: float = 0.0          # stored (elastic) energy = internal work less damping
+    damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts)
+    external: float = 0.0          # work of loads and prescribed velocities
+    initial: float = 0.0           # kinetic energy at t = 0
+    peak: float = 0.0              # largest energy in play so far (the balance reference)
+
+    @property
+    def balance(self) -> float:
+        return self.kinetic + self.internal + self.damping - self.external - self.initial
+
+    @property
+    def balance_error(self) -> float:
+        """|balance| as a fraction of the largest energy in play (initial total if it dominates)."""
+        ref = max(self.peak, self.initial, 1e-300)
+        return abs(self.balance) / ref
+
+
+@dataclass
+class RigidState:
+    center: np.ndarray
+    velocity: np.ndarray
+    momentum_angular: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    rotation: np.ndarray = field(default_factory=lambda: np.eye(3))
+
+
+@dataclass
+class PhaseTimes:
+    """Wall time spent in each phase of the step [s] (for ``shockfem bench``)."""
+    internal_force: float = 0.0
+    update: float = 0.0
+    energy: float = 0.0
+    total: float = 0.0
+
+
+def _cayley(w: np.ndarray, dt: float) -> np.ndarray:
+    """Rotation matrix (I - A)^-1 (I + A), A = skew(w) dt / 2: the exact-orthogonal step rotation."""
+    a = 0.5 * dt * w
+    A = np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
+    return np.eye(3) + 2.0 / (1.0 + a @ a) * (A + A @ A)
+
+
+class ExplicitSolver:
+    """Holds the state of a run and advances it; see the module docstring."""
+
+    def __init__(self, model: Model, initial_velocity=None):
+        """``initial_velocity(x) -> v``, arrays (nodes, gdim), replaces the scene's body velocities."""
+        self.model = model
+        self.comm = model.comm
+        self.parallel = self.comm.size > 1
+        m = model
+        gdim = m.gdim
+        self._v_fn = fem.Function(m.V, name="velocity")
+        self._f_fn = fem.Function(m.V, name="internal_force")
+        self.u_fn = fem.Function(m.V, name="displacement")
+        self.v = self._v_fn.x.array.reshape(-1, gdim)
+        self.f_int = self._f_fn.x.array.reshape(-1, gdim)
+        self.u = self.u_fn.x.array.reshape(-1, gdim)
+        self.x = m.X0.copy()
+        self.a = np.zeros_like(self.x)
+        self.f_ext = np.zeros_like(self.x)
+        self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
+        self.owned = np.zeros(len(self.x), dtype=bool)
+        self.owned[:m.num_owned] = True
+        self.inv_mass = np.where(m.mass > 0, 1.0 / np.where(m.mass > 0, m.mass, 1.0), 0.0)
+        self.t = 0.0
+        self.step = 0
+        self.dt = 0.0                 # last step taken, t_n - t_{n-1}
+        self.dt_stable = np.inf       # critical step of the current configuration (no safety factor)
+        self.energy = Energies()
+        self.times = PhaseTimes()
+        self.rigid_states = [RigidState(rb.center0.copy(), np.zeros(gdim)) for rb in m.rigid]
+        self._set_initial_velocity()
+        if initial_velocity is not None:
+            self.v[:] = initial_velocity(self.x)
+        self._internal_force(0.0)
+        self._external_force(0.0)
+        self._acceleration()
+        self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
+        self.energy.peak = self.energy.initial
+
+    # ----------------------------------------------------------------- set-up
+    def _set_initial_velocity(self):
+        m = self.model
+        for i, body in enumerate(m.scene.bodies):
+            nodes = m.node_body == i
+            self.v[nodes] = np.asarray(body.velocity)
+            if body.spin and m.gdim == 3:
+                # Spin about the body's own z axis through its position (x, y).
+                rel = self.x[nodes] - np.asarray(body.position)
+                self.v[nodes, 0] += -body.spin * rel[:, 1]
+                self.v[nodes, 1] += body.spin * rel[:, 0]
+        for k, (rb, rs) in enumerate(zip(m.rigid, self.rigid_states)):
+            body = m.scene.bodies[rb.index]
+            rs.velocity = np.asarray(body.velocity, dtype=float)
+            if m.gdim == 3 and body.spin:
+                omega = np.array([0.0, 0.0, body.spin])
+                rs.momentum_angular = rb.inertia0 @ omega
+                # rigid-body spin about the centre of mass axis parallel to z
+                self.v[rb.nodes] = rs.velocity + np.cross(omega, rb.rel0)
+
+    # ---------------------------------------------------------------- phases
+    def _sum(self, local: float) -> float:
+        return self.comm.allreduce(local, op=MPI.SUM) if self.parallel else local
+
+    def _kinetic_energy(self, v: np.ndarray) -> float:
+        o = self.owned
+        return self._sum(0.5 * float(np.dot(self.model.mass[o], (v[o] ** 2).sum(axis=1))))
+
+    def _internal_force(self, dt: float) -> float:
+        m = self.model
+        self.f_int[:] = 0.0
+        dt_stable, damping_power, bad = kernels.stress_divergence(
+            m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
+            m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, self.sigma, self.f_int)
+        if self.parallel:
+            compat.reverse_add(self._f_fn)
+            dt_stable = self.comm.allreduce(dt_stable, op=MPI.MIN)
+            damping_power = self.comm.allreduce(damping_power, op=MPI.SUM)
+            bad = self.comm.allreduce(bad, op=MPI.MAX)
+        if bad >= 0:
+            raise UnstableRun(self._diagnose_cell(bad, "non-positive element volume (the element inverted)"),
+                              self.t, self._body_of_cell(bad), bad)
+        if np.isfinite(dt_stable) and dt_stable < 1e300:
+            self.dt_stable = dt_stable
+        return damping_power
+
+    def _external_force(self, t: float):
+        self.f_ext[:] = 0.0
+        flat = self.f_ext.reshape(-1)
+        for load in self.model.loads:
+            flat[load.dofs] += load.value(t) * load.shares[load.dofs // self.model.gdim]
+
+    def _acceleration(self):
+        np.multiply(self.f_ext - self.f_int, self.inv_mass[:, None], out=self.a)
+
+    # ------------------------------------------------------------ diagnosis
+    def _body_of_cell(self, cell: int) -> str:
+        b = self.model.cell_body[cell] if 0 <= cell < len(self.model.cell_body) else -1
+        return self.model.scene.bodies[b].name if b >= 0 else "?"
+
+    def _diagnose_cell(self, cell: int, what: str) -> str:
+        tdim = self.model.meshed.mesh.topology.dim
+        first = self.model.meshed.mesh.topology.index_map(tdim).local_range[0]
+        centre = self.x[self.model.dofmap[cell]].mean(axis=0) if cell < len(self.model.dofmap) else None
+        where = f" at x = {np.array2string(centre, precision=4)} m" if centre is not None else ""
+        return (f"{what}: body '{self._body_of_cell(cell)}', element {first + cell}{where}, "
+                f"t = {self.t:.6g} s (step {self.step}). Check the impact speed against the material, "
+                f"refine the mesh there, or lower scene.safety_factor.")
+
+    def _check_finite(self):
+        if not np.isfinite(self.a).all():
+            node = int(np.flatnonzero(~np.isfinite(self.a).all(axis=1))[0])
+            body = self.model.scene.bodies[self.model.node_body[node]].name
+            raise UnstableRun(f"the solution is not finite (NaN/Inf): body '{body}', node {node} at "
+                              f"x = {np.array2string(self.x[node], precision=4)} m, t = {self.t:.6g} s "
+                              f"(step {self.step}). The step {self.dt:.3g} s may exceed the stable step "
+                              f"{self.dt_stable:.3g} s: lower scene.safety_factor.", self.t, body)
+
+    # ------------------------------------------------------------ the step
+    def stable_step(self) -> float:
+        return self.model.scene.safety_factor * self.dt_stable
+
+    def advance(self, dt: float):
+        """One central-difference step of size ``dt`` (t_n -> t_{n+1})."""
+        m = self.model
+        t0 = time.perf_counter()
+        dt_avg = 0.5 * (self.dt + dt)
+        v_old = self.v.copy()
+
+        # velocity: v_{n+1/2}, with mass-proportional damping treated implicitly (unconditionally stable)
+        if m.alpha > 0:
+            c = 0.5 * m.alpha * dt_avg
+            self.v[:] = ((1.0 - c) * v_old + dt_avg * self.a) / (1.0 + c)
+            v_n = 0.5 * (v_old + self.v)
+            self.energy.damping += self._sum(
+                m.alpha * dt_avg * float(np.dot(m.mass[self.owned], (v_n[self.owned] ** 2).sum(axis=1))))
+        else:
+            self.v += dt_avg * self.a
+        v_free = self.v.copy() if m.constraints else None
+
+        # rigid bodies: velocities that carry their nodes to the rigid-body positions at t_{n+1}
+        for rb, rs in zip(m.rigid, self.rigid_states):
+            self._advance_rigid(rb, rs, dt, dt_avg)
+
+        # prescribed velocities (and fixed / symmetry / axis constraints)
+        reaction_work = 0.0
+        if m.constraints:
+            flat = self.v.reshape(-1)
+            for con in m.constraints:
+                flat[con.dofs] = con.value(self.t + 0.5 * dt)
+            dv = (self.v - v_free)[self.owned]
+            reaction_work = self._sum(float(np.sum(m.mass[self.owned, None] * dv
+                                                   * 0.5 * (v_old[self.owned] + self.v[self.owned]))))
+        if self.parallel:
+            self._v_fn.x.scatter_forward()
+
+        # position
+        self.u += dt * self.v
+        self.x += dt * self.v
+        self.t += dt
+        self.dt = dt
+        self.step += 1
+        t1 = time.perf_counter()
+
+        # internal and external forces at t_{n+1}, acceleration a_{n+1}
+        f_int_old = self.f_int.copy()
+        f_ext_old = self.f_ext.copy()
+        damping_power = self._internal_force(dt)
+        t2 = time.perf_counter()
+        self._external_force(self.t)
+        self._acceleration()
+        self._check_finite()
+
+        # energy
+        o = self.owned
+        du = dt * self.v[o]
+        e = self.energy
+        w_int = self._sum(float(np.sum(du * 0.5 * (f_int_old[o] + self.f_int[o]))))
+        w_ext = self._sum(float(np.sum(du * 0.5 * (f_ext_old[o] + self.f_ext[o]))))
+        e.damping += dt * damping_power
+        e.internal += w_int - dt * damping_power
+        e.external += w_ext + reaction_work
+        v_np1 = self.v + 0.5 * dt * self.a
+        if m.constraints:
+            v_np1.reshape(-1)[np.concatenate([c.dofs for c in m.constraints])] = \
+                self.v.reshape(-1)[np.concatenate([c.dofs for c in m.constraints])]
+        e.kinetic = self._kinetic_energy(v_np1)
+        e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping)
+        t3 = time.perf_counter()
+        self.times.update += t1 - t0
+        self.times.internal_force += t2 - t1
+        self.times.energy += t3 - t2
+        self.times.total += t3 - t0
+
+    def _advance_rigid(self, rb, rs: RigidState, dt: float, dt_avg: float):
+        m = self.model
+        force = self.f_ext[rb.nodes] - self.f_int[rb.nodes]
+        F = self._sum(force[rb.owned].sum(axis=0))
+        if m.scene.kinematics == "axisymmetric":
+            F[0] = 0.0       # a ring's radial forces cancel: an axisymmetric rigid body moves along z
+        rs.velocity = rs.velocity + dt_avg * F / rb.mass
+        center_new = rs.center + dt * rs.velocity
+        if m.gdim == 3:
+            arm = self.x[rb.nodes] - rs.center
+            T = self._sum(np.cross(arm[rb.owned], force[rb.owned]).sum(axis=0))
+            rs.momentum_angular = rs.momentum_angular + dt_avg * T
+            inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
+            omega = np.linalg.solve(inertia, rs.momentum_angular) if rb.mass > 0 else np.zeros(3)
+            rs.rotation = _cayley(omega, dt) @ rs.rotation
+            x_new = center_new + rb.rel0 @ rs.rotation.T
+        else:
+            x_new = self.x[rb.nodes] + dt * rs.velocity
+        self.v[rb.nodes] = (x_new - self.x[rb.nodes]) / dt
+        rs.center = center_new
+
+    def steps(self, end_time: float):
+        """Yield the solver after every step until ``end_time``."""
+        while self.t < end_time * (1 - 1e-12):
+            dt = min(self.stable_step(), end_time - self.t)
+            self.advance(dt)
+            yield self
+
+    # ------------------------------------------------------------ results
+    def body_means(self):
+        """Mass-weighted mean velocity and acceleration of every body, (bodies, gdim) each."""
+        m = self.model
+        o = self.owned
+        nb = len(m.scene.bodies)
+        mv = np.zeros((nb, m.gdim))
+        ma = np.zeros((nb, m.gdim))
+        v_n = self.v + 0.5 * self.dt * self.a
+        for i in range(nb):
+            sel = o & (m.node_body == i)
+            mv[i] = (m.mass[sel, None] * v_n[sel]).sum(axis=0)
+            ma[i] = (m.mass[sel, None] * self.a[sel]).sum(axis=0)
+        mv = self.comm.allreduce(mv, op=MPI.SUM) if self.parallel else mv
+        ma = self.comm.allreduce(ma, op=MPI.SUM) if self.parallel else ma
+        return mv / m.body_mass[:, None], ma / m.body_mass[:, None]

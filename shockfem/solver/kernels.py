@@ -1,0 +1,445 @@
+"""Compiled element kernels: the hot loop of the explicit solver.
+
+The internal force of every deformable cell is the stress divergence
+
+    f_a = int_Omega sigma : grad(N_a) dV      (+ sigma_tt N_a / r  in axisymmetry)
+
+which is exactly the UFL form ``shockfem.model.kinematics.internal_force_form``.
+dolfinx 0.5.2 assembles that form at about 7.7 million Q1 cells per second on the
+reference machine; this numba twin computes the strain rate, updates the stress
+and assembles the force in one pass over the cells at several times that rate
+(``docs/performance.md``).  The unit test ``tests/unit/solver/test_kernels.py``
+checks it against the dolfinx assembly of the UFL form to round-off.
+
+Conventions
+-----------
+* Nodal arrays are in dolfinx P1 *block* order (one block = one node), shape
+  ``(num_nodes, gdim)``; ``dofmap`` is the P1 dofmap, ``(num_cells, nodes_per_cell)``.
+* Stress is stored per quadrature point as 6 components
+  ``[s11, s22, s33, s23, s13, s12]``; in 2D, index 2 is the out-of-plane (plane
+  strain) or hoop (axisymmetric, coordinates (r, z)) component.
+* Kinematics codes: 0 plane strain, 1 axisymmetric, 2 three-dimensional.
+
+Strain rates are taken on the mid-step configuration x_{n+1/2}: with central
+differences this makes the velocity gradient of a rigid rotation exactly skew
+(Cayley transform), so together with the Hughes-Winget rotation below a spinning
+body keeps zero stress (Hughes & Winget 1980, IJNME 15:1862).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+PLANE_STRAIN, AXISYMMETRIC, THREE_D = 0, 1, 2
+
+# Material parameter table columns (one row per material); see model/materials.py.
+P_MODEL, P_RHO, P_LAMBDA, P_MU, P_WAVE_SPEED, P_BETA = 0, 1, 2, 3, 4, 5
+NUM_PARAMS = 16
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _rotate_hughes_winget(s, w23, w13, w12, dt):
+    """Rotate the symmetric stress ``s`` (6,) in place by the Cayley rotation of dt*W.
+
+    Q = (I - A)^-1 (I + A), A = dt W / 2, in closed form Q = I + 2/(1 + a.a) (A + A^2),
+    a the axial vector of A.  Q is orthogonal, so stress invariants are kept exactly.
+    """
+    a1 = 0.5 * dt * w23
+    a2 = 0.5 * dt * w13
+    a3 = 0.5 * dt * w12
+    if a1 == 0.0 and a2 == 0.0 and a3 == 0.0:
+        return
+    # A = [[0, a3, a2], [-a3, 0, a1], [-a2, -a1, 0]] (W_ij = (L_ij - L_ji)/2); A^2 written out.
+    k = 2.0 / (1.0 + a1 * a1 + a2 * a2 + a3 * a3)
+    q00 = 1.0 + k * (-a3 * a3 - a2 * a2)
+    q01 = k * (a3 - a2 * a1)
+    q02 = k * (a2 + a3 * a1)
+    q10 = k * (-a3 - a1 * a2)
+    q11 = 1.0 + k * (-a3 * a3 - a1 * a1)
+    q12 = k * (a1 - a3 * a2)
+    q20 = k * (-a2 + a1 * a3)
+    q21 = k * (-a1 - a2 * a3)
+    q22 = 1.0 + k * (-a2 * a2 - a1 * a1)
+    s00, s11, s22, s12, s02, s01 = s[0], s[1], s[2], s[3], s[4], s[5]
+    # T = Q S
+    t00 = q00 * s00 + q01 * s01 + q02 * s02
+    t01 = q00 * s01 + q01 * s11 + q02 * s12
+    t02 = q00 * s02 + q01 * s12 + q02 * s22
+    t10 = q10 * s00 + q11 * s01 + q12 * s02
+    t11 = q10 * s01 + q11 * s11 + q12 * s12
+    t12 = q10 * s02 + q11 * s12 + q12 * s22
+    t20 = q20 * s00 + q21 * s01 + q22 * s02
+    t21 = q20 * s01 + q21 * s11 + q22 * s12
+    t22 = q20 * s02 + q21 * s12 + q22 * s22
+    # S' = T Q^T
+    s[0] = t00 * q00 + t01 * q01 + t02 * q02
+    s[1] = t10 * q10 + t11 * q11 + t12 * q12
+    s[2] = t20 * q20 + t21 * q21 + t22 * q22
+    s[3] = t10 * q20 + t11 * q21 + t12 * q22
+    s[4] = t00 * q20 + t01 * q21 + t02 * q22
+    s[5] = t00 * q10 + t01 * q11 + t02 * q12
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _elastic_increment(s, d, lam, mu, dt):
+    """Hypoelastic (Hooke) increment: s += dt (lam tr(d) I + 2 mu d); d as [11,22,33,23,13,12]."""
+    tr = d[0] + d[1] + d[2]
+    s[0] += dt * (lam * tr + 2.0 * mu * d[0])
+    s[1] += dt * (lam * tr + 2.0 * mu * d[1])
+    s[2] += dt * (lam * tr + 2.0 * mu * d[2])
+    s[3] += dt * 2.0 * mu * d[3]
+    s[4] += dt * 2.0 * mu * d[4]
+    s[5] += dt * 2.0 * mu * d[5]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _gradients_2d(xe, dNq, nn, dNdx):
+    """Spatial shape-function gradients dNdx (nn, 2) at one point; returns det(J)."""
+    j00 = 0.0
+    j01 = 0.0
+    j10 = 0.0
+    j11 = 0.0
+    for a in range(nn):
+        j00 += xe[a, 0] * dNq[a, 0]
+        j01 += xe[a, 0] * dNq[a, 1]
+        j10 += xe[a, 1] * dNq[a, 0]
+        j11 += xe[a, 1] * dNq[a, 1]
+    det = j00 * j11 - j01 * j10
+    idet = 1.0 / det
+    i00 = j11 * idet
+    i01 = -j01 * idet
+    i10 = -j10 * idet
+    i11 = j00 * idet
+    for a in range(nn):
+        g0 = dNq[a, 0]
+        g1 = dNq[a, 1]
+        dNdx[a, 0] = g0 * i00 + g1 * i10
+        dNdx[a, 1] = g0 * i01 + g1 * i11
+    return det
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _gradients_3d(xe, dNq, nn, dNdx):
+    """Spatial shape-function gradients dNdx (nn, 3) at one point; returns det(J)."""
+    j00 = j01 = j02 = j10 = j11 = j12 = j20 = j21 = j22 = 0.0
+    for a in range(nn):
+        g0 = dNq[a, 0]
+        g1 = dNq[a, 1]
+        g2 = dNq[a, 2]
+        j00 += xe[a, 0] * g0
+        j01 += xe[a, 0] * g1
+        j02 += xe[a, 0] * g2
+        j10 += xe[a, 1] * g0
+        j11 += xe[a, 1] * g1
+        j12 += xe[a, 1] * g2
+        j20 += xe[a, 2] * g0
+        j21 += xe[a, 2] * g1
+        j22 += xe[a, 2] * g2
+    c00 = j11 * j22 - j12 * j21
+    c01 = j02 * j21 - j01 * j22
+    c02 = j01 * j12 - j02 * j11
+    det = j00 * c00 + j10 * c01 + j20 * c02
+    idet = 1.0 / det
+    i00 = c00 * idet
+    i01 = c01 * idet
+    i02 = c02 * idet
+    i10 = (j12 * j20 - j10 * j22) * idet
+    i11 = (j00 * j22 - j02 * j20) * idet
+    i12 = (j02 * j10 - j00 * j12) * idet
+    i20 = (j10 * j21 - j11 * j20) * idet
+    i21 = (j01 * j20 - j00 * j21) * idet
+    i22 = (j00 * j11 - j01 * j10) * idet
+    for a in range(nn):
+        g0 = dNq[a, 0]
+        g1 = dNq[a, 1]
+        g2 = dNq[a, 2]
+        dNdx[a, 0] = g0 * i00 + g1 * i10 + g2 * i20
+        dNdx[a, 1] = g0 * i01 + g1 * i11 + g2 * i21
+        dNdx[a, 2] = g0 * i02 + g1 * i12 + g2 * i22
+    return det
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _gradients(xe, dNq, gdim, nn, dNdx):
+    if gdim == 2:
+        return _gradients_2d(xe, dNq, nn, dNdx)
+    return _gradients_3d(xe, dNq, nn, dNdx)
+
+
+@njit(cache=True, fastmath=True)
+def characteristic_length(xe, cell_kind, nn):
+    """Length l_e that sets the element's stable step l_e / c (LS-DYNA conventions).
+
+    cell_kind: 0 triangle (2 area / longest edge = smallest altitude), 1 quadrilateral
+    (area / longest diagonal), 2 tetrahedron (3 volume / largest face = smallest
+    altitude), 3 hexahedron (volume / largest face area / sqrt(3): a cube of side h with
+    2x2x2 Gauss points and lumped mass has omega_max = 2 sqrt(3) c / h).
+    Vertex order is dolfinx's (quad: 0-1-3-2 around; hex: bottom 0,1,2,3 as a tensor grid).
+    """
+    if cell_kind == 0:
+        ax = xe[1, 0] - xe[0, 0]
+        ay = xe[1, 1] - xe[0, 1]
+        bx = xe[2, 0] - xe[0, 0]
+        by = xe[2, 1] - xe[0, 1]
+        area = 0.5 * abs(ax * by - ay * bx)
+        e2 = 0.0
+        for (p, q) in ((0, 1), (1, 2), (2, 0)):
+            dx = xe[p, 0] - xe[q, 0]
+            dy = xe[p, 1] - xe[q, 1]
+            e2 = max(e2, dx * dx + dy * dy)
+        return 2.0 * area / math.sqrt(e2)
+    if cell_kind == 1:
+        d1x = xe[3, 0] - xe[0, 0]
+        d1y = xe[3, 1] - xe[0, 1]
+        d2x = xe[2, 0] - xe[1, 0]
+        d2y = xe[2, 1] - xe[1, 1]
+        area = 0.5 * abs(d1x * d2y - d1y * d2x)
+        dmax = math.sqrt(max(d1x * d1x + d1y * d1y, d2x * d2x + d2y * d2y))
+        return area / dmax
+    if cell_kind == 2:
+        ax = xe[1, 0] - xe[0, 0]
+        ay = xe[1, 1] - xe[0, 1]
+        az = xe[1, 2] - xe[0, 2]
+        bx = xe[2, 0] - xe[0, 0]
+        by = xe[2, 1] - xe[0, 1]
+        bz = xe[2, 2] - xe[0, 2]
+        qx = xe[3, 0] - xe[0, 0]
+        qy = xe[3, 1] - xe[0, 1]
+        qz = xe[3, 2] - xe[0, 2]
+        vol = abs(ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx)) / 6.0
+        amax = 0.0
+        for (p, q, r) in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)):
+            ux = xe[q, 0] - xe[p, 0]
+            uy = xe[q, 1] - xe[p, 1]
+            uz = xe[q, 2] - xe[p, 2]
+            wx = xe[r, 0] - xe[p, 0]
+            wy = xe[r, 1] - xe[p, 1]
+            wz = xe[r, 2] - xe[p, 2]
+            cx = uy * wz - uz * wy
+            cy = uz * wx - ux * wz
+            cz = ux * wy - uy * wx
+            amax = max(amax, 0.5 * math.sqrt(cx * cx + cy * cy + cz * cz))
+        return 3.0 * vol / amax
+    # hexahedron, dolfinx vertex order (tensor-product): faces by vertex quadruples, each
+    # listed around its boundary so that diagonals are (p, r) and (q, s).
+    vol = 0.0
+    amax = 0.0
+    faces = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
+    for (p, q, r, s) in faces:
+        ux = xe[r, 0] - xe[p, 0]
+        uy = xe[r, 1] - xe[p, 1]
+        uz = xe[r, 2] - xe[p, 2]
+        wx = xe[s, 0] - xe[q, 0]
+        wy = xe[s, 1] - xe[q, 1]
+        wz = xe[s, 2] - xe[q, 2]
+        cx = uy * wz - uz * wy
+        cy = uz * wx - ux * wz
+        cz = ux * wy - uy * wx
+        amax = max(amax, 0.5 * math.sqrt(cx * cx + cy * cy + cz * cz))
+    # volume as the sum of the 12 tetrahedra joining the centroid to the face triangles
+    cx0 = 0.0
+    cy0 = 0.0
+    cz0 = 0.0
+    for a in range(8):
+        cx0 += xe[a, 0] / 8.0
+        cy0 += xe[a, 1] / 8.0
+        cz0 += xe[a, 2] / 8.0
+    for (p, q, r, s) in faces:
+        for (i0, i1, i2) in ((p, q, r), (p, r, s)):
+            ax = xe[i0, 0] - cx0
+            ay = xe[i0, 1] - cy0
+            az = xe[i0, 2] - cz0
+            bx = xe[i1, 0] - cx0
+            by = xe[i1, 1] - cy0
+            bz = xe[i1, 2] - cz0
+            qx = xe[i2, 0] - cx0
+            qy = xe[i2, 1] - cy0
+            qz = xe[i2, 2] - cz0
+            vol += abs(ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx))
+    vol = vol / 6.0
+    return vol / amax / math.sqrt(3.0)
+
+
+@njit(cache=True)
+def cell_orientation(dofmap, x, dN):
+    """+1 or -1 per cell: the sign of det(J) at the first point in the reference configuration.
+
+    Meshes may list a cell's vertices clockwise (det J < 0); integrals use |det J|, and a cell
+    has inverted when det J changes sign from this one.
+    """
+    nn = dofmap.shape[1]
+    gdim = x.shape[1]
+    sign = np.empty(dofmap.shape[0])
+    xe = np.empty((nn, 3))
+    dNdx = np.empty((nn, 3))
+    for c in range(dofmap.shape[0]):
+        for a in range(nn):
+            for i in range(gdim):
+                xe[a, i] = x[dofmap[c, a], i]
+        sign[c] = 1.0 if _gradients(xe, dN[0], gdim, nn, dNdx) > 0 else -1.0
+    return sign
+
+
+@njit(cache=True, fastmath=True)
+def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics,
+                      thickness, cell_kind, mean_dilatation, params, sigma, f):
+    """Update the stress of ``cells`` over one step and add their internal force to ``f``.
+
+    Parameters
+    ----------
+    cells : (nc,) int32, the deformable cells this rank owns.
+    dofmap : (num_cells, nn) int32, P1 node numbers of every cell.
+    cell_material : (num_cells,) int32, row of ``params`` for every cell.
+    cell_sign : (num_cells,) float64, ``cell_orientation`` of the reference mesh.
+    x_np1 : (num_nodes, gdim) positions at t_{n+1} [m].
+    v_half : (num_nodes, gdim) velocities at t_{n+1/2} [m/s].
+    dt : step t_n -> t_{n+1} [s].
+    N, dN : shape functions (nq, nn) and reference gradients (nq, nn, tdim) at the points.
+    wq : (nq,) quadrature weights on the reference cell.
+    kinematics : 0 plane strain, 1 axisymmetric, 2 3D.
+    thickness : out-of-plane depth for plane strain [m] (ignored otherwise).
+    cell_kind : 0 tri, 1 quad, 2 tet, 3 hex (for the characteristic length).
+    mean_dilatation : replace each point's volumetric strain rate by the cell average
+        (Nagtegaal, Parks & Rice 1974), which removes volumetric locking.
+    params : (num_materials, NUM_PARAMS) material table.
+    sigma : (num_cells, nq, 6) Cauchy stress, updated in place from t_n to t_{n+1}.
+    f : (num_nodes, gdim) internal force, accumulated (caller zeroes it).
+
+    Returns
+    -------
+    dt_stable : smallest l_e / c_e over ``cells`` at t_{n+1} (before the safety factor).
+    damping_power : int sigma_visc : d dV, power of the stiffness-proportional damping [W].
+    bad_cell : a cell whose Jacobian changed sign (inverted) at t_{n+1}, or -1.
+    """
+    nq = wq.shape[0]
+    nn = dofmap.shape[1]
+    gdim = x_np1.shape[1]
+    xe = np.empty((nn, 3))
+    xm = np.empty((nn, 3))
+    ve = np.empty((nn, 3))
+    dNdx = np.empty((nn, 3))
+    L = np.zeros((nq, 3, 3))
+    wmid = np.empty(nq)
+    d = np.empty(6)
+    s = np.empty(6)
+    two_pi = 2.0 * math.pi
+    dt_stable = 1e300
+    damping_power = 0.0
+    bad_cell = -1
+    for ci in range(cells.shape[0]):
+        c = cells[ci]
+        m = cell_material[c]
+        sgn = cell_sign[c]
+        lam = params[m, P_LAMBDA]
+        mu = params[m, P_MU]
+        beta = params[m, P_BETA]
+        for a in range(nn):
+            node = dofmap[c, a]
+            for i in range(gdim):
+                xe[a, i] = x_np1[node, i]
+                ve[a, i] = v_half[node, i]
+                xm[a, i] = x_np1[node, i] - 0.5 * dt * v_half[node, i]
+        # Pass 1: velocity gradient on the mid-step configuration.
+        vol = 0.0
+        div = 0.0
+        for q in range(nq):
+            det = _gradients(xm, dN[q], gdim, nn, dNdx) * sgn
+            for i in range(3):
+                for k in range(3):
+                    L[q, i, k] = 0.0
+            for i in range(gdim):
+                for k in range(gdim):
+                    t = 0.0
+                    for a in range(nn):
+                        t += ve[a, i] * dNdx[a, k]
+                    L[q, i, k] = t
+            w = wq[q] * det
+            if kinematics == AXISYMMETRIC:
+                r = 0.0
+                vr = 0.0
+                for a in range(nn):
+                    r += N[q, a] * xm[a, 0]
+                    vr += N[q, a] * ve[a, 0]
+                L[q, 2, 2] = vr / r
+                w *= two_pi * r
+            wmid[q] = w
+            vol += w
+            div += w * (L[q, 0, 0] + L[q, 1, 1] + L[q, 2, 2])
+        div_avg = div / vol
+        # Pass 2: stress update and force on the end-of-step configuration.
+        for q in range(nq):
+            d[0] = L[q, 0, 0]
+            d[1] = L[q, 1, 1]
+            d[2] = L[q, 2, 2]
+            d[3] = 0.5 * (L[q, 1, 2] + L[q, 2, 1])
+            d[4] = 0.5 * (L[q, 0, 2] + L[q, 2, 0])
+            d[5] = 0.5 * (L[q, 0, 1] + L[q, 1, 0])
+            if mean_dilatation:
+                shift = (div_avg - (d[0] + d[1] + d[2])) / 3.0
+                d[0] += shift
+                d[1] += shift
+                d[2] += shift
+            for k in range(6):
+                s[k] = sigma[c, q, k]
+            _rotate_hughes_winget(s, 0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]),
+                                  0.5 * (L[q, 0, 1] - L[q, 1, 0]), dt)
+            _elastic_increment(s, d, lam, mu, dt)
+            for k in range(6):
+                sigma[c, q, k] = s[k]
+            if beta > 0.0:
+                # Stiffness-proportional (Rayleigh) damping: viscous stress beta * C : d.
+                tr = d[0] + d[1] + d[2]
+                sv0 = beta * (lam * tr + 2.0 * mu * d[0])
+                sv1 = beta * (lam * tr + 2.0 * mu * d[1])
+                sv2 = beta * (lam * tr + 2.0 * mu * d[2])
+                sv3 = beta * 2.0 * mu * d[3]
+                sv4 = beta * 2.0 * mu * d[4]
+                sv5 = beta * 2.0 * mu * d[5]
+                damping_power += wmid[q] * (sv0 * d[0] + sv1 * d[1] + sv2 * d[2]
+                                            + 2.0 * (sv3 * d[3] + sv4 * d[4] + sv5 * d[5]))
+                s[0] += sv0
+                s[1] += sv1
+                s[2] += sv2
+                s[3] += sv3
+                s[4] += sv4
+                s[5] += sv5
+            det = _gradients(xe, dN[q], gdim, nn, dNdx) * sgn
+            if det <= 0.0:
+                bad_cell = c
+            w = wq[q] * det
+            if gdim == 2:
+                if kinematics == AXISYMMETRIC:
+                    r = 0.0
+                    for a in range(nn):
+                        r += N[q, a] * xe[a, 0]
+                    w *= two_pi * r
+                    hoop = s[2] / r
+                    for a in range(nn):
+                        node = dofmap[c, a]
+                        f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + hoop * N[q, a])
+                        f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
+                else:
+                    w *= thickness
+                    for a in range(nn):
+                        node = dofmap[c, a]
+                        f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1])
+                        f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
+            else:
+                for a in range(nn):
+                    node = dofmap[c, a]
+                    f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + s[4] * dNdx[a, 2])
+                    f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1] + s[3] * dNdx[a, 2])
+                    f[node, 2] += w * (s[4] * dNdx[a, 0] + s[3] * dNdx[a, 1] + s[2] * dNdx[a, 2])
+        le = characteristic_length(xe, cell_kind, nn)
+        dtc = le / params[m, P_WAVE_SPEED]
+        if beta > 0.0:
+            # Stiffness damping shortens the step: dt <= (2/w)(sqrt(1+xi^2) - xi), xi = beta w / 2,
+            # w = 2 c / l_e the element's highest frequency (Belytschko et al., eq. 6.2.28).
+            omega = 2.0 / dtc
+            xi = 0.5 * beta * omega
+            dtc *= math.sqrt(1.0 + xi * xi) - xi
+        if dtc < dt_stable:
+            dt_stable = dtc
+    return dt_stable, damping_power, bad_cell

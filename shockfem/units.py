@@ -1,0 +1,98 @@
+"""Quantities with units in scene files: ``"12 lb"``, ``"1600 ft/s"``, ``"2000 psi"``, ``"5 ms"``.
+
+Everything inside shockfem is SI (m, kg, s, N, Pa, J); bare numbers in a scene are SI.
+"""
+from __future__ import annotations
+
+import functools
+
+import pint
+
+# Dimensions a scene field may ask for, as pint dimensionality strings.
+DIMENSIONS = {
+    "length": "[length]",
+    "mass": "[mass]",
+    "time": "[time]",
+    "velocity": "[length] / [time]",
+    "angular_velocity": "1 / [time]",
+    "acceleration": "[length] / [time] ** 2",
+    "force": "[mass] * [length] / [time] ** 2",
+    "pressure": "[mass] / [length] / [time] ** 2",
+    "density": "[mass] / [length] ** 3",
+    "frequency": "1 / [time]",
+    "energy": "[mass] * [length] ** 2 / [time] ** 2",
+    "stiffness": "[mass] / [time] ** 2",
+    "damping": "[mass] / [time]",
+    "dimensionless": "",
+}
+
+# SI unit each dimension is converted to.
+SI_UNITS = {
+    "length": "m", "mass": "kg", "time": "s", "velocity": "m/s", "angular_velocity": "rad/s",
+    "acceleration": "m/s**2", "force": "N", "pressure": "Pa", "density": "kg/m**3",
+    "frequency": "Hz", "energy": "J", "stiffness": "N/m", "damping": "N*s/m",
+    "dimensionless": "",
+}
+
+
+class UnitError(ValueError):
+    """A value whose unit cannot be read or has the wrong dimension."""
+
+
+@functools.lru_cache(maxsize=1)
+def registry() -> pint.UnitRegistry:
+    ureg = pint.UnitRegistry()
+    # "g" is gram in pint; shock engineers write accelerations in standard gravities as "gn"
+    # or "g0"; we accept "gee" too so that "10000 gee" is unambiguous.
+    ureg.define("gee = 9.80665 m/s**2")
+    return ureg
+
+
+def to_si(value, dimension: str) -> float:
+    """Convert a scene value (number or string with unit) to an SI float.
+
+    Parameters
+    ----------
+    value : int, float or str
+        Bare numbers are taken as SI; strings are parsed by pint ("12 lb", "5 ms").
+    dimension : str
+        A key of ``DIMENSIONS``.
+
+    Raises
+    ------
+    UnitError
+        With a message that says what was expected, e.g. "expected a velocity
+        (like '12 m/s' or '1600 ft/s'), got '3 kg'".
+    """
+    if isinstance(value, bool):
+        raise UnitError(f"expected a {dimension.replace('_', ' ')}, got {value!r}")
+    if isinstance(value, (int, float)):
+        return float(value)
+    if not isinstance(value, str):
+        raise UnitError(f"expected a number or a string with a unit, got {value!r}")
+    ureg = registry()
+    try:
+        q = ureg.Quantity(value.strip())
+    except Exception:
+        raise UnitError(f"cannot read {value!r} as a quantity (write e.g. '{_example(dimension)}')") from None
+    if not isinstance(q, pint.Quantity):
+        return float(q)
+    want = ureg.Quantity(1, SI_UNITS[dimension] or "dimensionless")
+    if q.dimensionality != want.dimensionality:
+        raise UnitError(f"expected a {dimension.replace('_', ' ')} (like '{_example(dimension)}'), "
+                        f"got {value!r}")
+    return float(q.to(want.units).magnitude)
+
+
+def _example(dimension: str) -> str:
+    return {"length": "25 mm", "mass": "12 lb", "time": "5 ms", "velocity": "1600 ft/s",
+            "pressure": "2000 psi", "density": "7850 kg/m^3", "frequency": "5 kHz",
+            "force": "10 kN", "acceleration": "10000 gee", "energy": "1 kJ",
+            "angular_velocity": "100 rad/s", "stiffness": "1e6 N/m", "damping": "100 N*s/m",
+            "dimensionless": "0.3"}.get(dimension, "1")
+
+
+def format_si(value: float, dimension: str) -> str:
+    """'3.000e-03 m' style text for messages."""
+    unit = SI_UNITS[dimension]
+    return f"{value:.4g} {unit}".strip()

@@ -1,0 +1,14 @@
+import os
+
+import pytest
+
+# Open MPI refuses root without these; the parallel verification case calls mpirun.
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+
+
+@pytest.fixture(autouse=True)
+def _mesh_cache(tmp_path_factory, monkeypatch):
+    """Keep test meshes out of the repository's meshes/ cache."""
+    monkeypatch.setenv("SHOCKFEM_MESH_CACHE", str(tmp_path_factory.getbasetemp() / "meshes"))

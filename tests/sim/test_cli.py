@@ -1,0 +1,61 @@
+"""The command line as a user meets it: exit codes, messages, the run directory."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCENE = os.path.join(REPO, "studies", "foundation", "bar_impact.toml")
+
+
+def shockfem(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "shockfem", *args], capture_output=True, text=True,
+                          cwd=cwd, timeout=600)
+
+
+def test_check_ok():
+    p = shockfem("check", SCENE)
+    assert p.returncode == 0, p.stderr
+    assert "ok" in p.stdout
+
+
+def test_bad_scene_lists_every_problem_and_exits_2(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(open(SCENE).read().replace('radius = "10 mm"', 'radius = "-3 mm"')
+                   .replace('value = "5 m/s"', 'value = "5 kg"'))
+    p = shockfem("check", str(bad))
+    assert p.returncode == 2
+    assert "bodies[0].radius: must be > 0, got -3 mm" in p.stderr
+    assert "boundary[0].value: expected a velocity" in p.stderr
+    assert "Traceback" not in p.stderr
+
+
+def test_run_writes_the_run_directory(tmp_path):
+    out = tmp_path / "run"
+    p = shockfem("run", SCENE, "--out", str(out), "--no-progress", "--set", 'scene.end_time="20 us"',
+                 "--set", 'bodies.bar.element_size="2.5 mm"')
+    assert p.returncode == 0, p.stderr
+    for name in ("resolved_scene.json", "provenance.json", "run.log", "fields.xdmf", "fields.h5",
+                 "history.h5", "history.csv", "summary.json", "energy.png", "bodies.png"):
+        assert (out / name).exists(), name
+    s = json.loads((out / "summary.json").read_text())
+    assert s["status"] == "completed"
+    assert s["end_time"] == pytest.approx(20e-6)
+    assert s["energy"]["balance_error"] < 0.01
+    for key in ("kinematics", "elements", "steps", "dt", "wall_time_s", "element_cycles_per_s"):
+        assert key in s
+    assert s["bodies"]["bar"]["mass"] == pytest.approx(7850 * 3.141592653589793 * 0.01 ** 2 * 0.3, rel=1e-9)
+
+
+def test_unstable_run_stops_with_diagnosis_and_exit_3(tmp_path):
+    out = tmp_path / "boom"
+    # 40 km/s into a free bar end crushes the first elements within a few steps
+    p = shockfem("run", SCENE, "--out", str(out), "--no-progress", "--set", 'boundary.0.value="40 km/s"',
+                 "--set", 'bodies.bar.element_size="2.5 mm"')
+    assert p.returncode == 3, p.stderr
+    assert "body 'bar'" in p.stderr and "element" in p.stderr
+    s = json.loads((out / "summary.json").read_text())
+    assert s["status"] == "unstable" and "bar" in s["diagnosis"]
+    assert (out / "fields.xdmf").exists() and (out / "history.csv").exists()

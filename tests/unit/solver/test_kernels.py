@@ -1,0 +1,128 @@
+"""The compiled stress-divergence kernel against its UFL definition, assembled by dolfinx."""
+import numpy as np
+import pytest
+import ufl
+from dolfinx import fem, mesh
+from mpi4py import MPI
+
+from shockfem import compat
+from shockfem.model import kinematics as kin
+from shockfem.solver import kernels
+
+CASES = [("axisymmetric", mesh.CellType.quadrilateral), ("axisymmetric", mesh.CellType.triangle),
+         ("plane-strain", mesh.CellType.quadrilateral), ("3d", mesh.CellType.hexahedron),
+         ("3d", mesh.CellType.tetrahedron)]
+
+
+def _mesh(kinematics, cell):
+    comm = MPI.COMM_SELF
+    if kinematics == "3d":
+        m = mesh.create_box(comm, [np.array([0.1, 0.0, 0.0]), np.array([0.4, 0.2, 0.3])], [3, 2, 3], cell)
+    else:
+        m = mesh.create_rectangle(comm, [np.array([0.0, 0.0]), np.array([0.3, 0.5])], [3, 4], cell)
+    # distort the mesh so that Jacobians vary from point to point
+    x = m.geometry.x
+    x[:, 0] += 0.02 * np.sin(7 * x[:, 1]) * x[:, 0]
+    x[:, 1] += 0.03 * np.cos(5 * x[:, 0])
+    return m
+
+
+def _arrays(m, kinematics):
+    V = fem.VectorFunctionSpace(m, ("CG", 1))
+    gdim = m.geometry.dim
+    cell = m.topology.cell_name()
+    nn = {"triangle": 3, "quadrilateral": 4, "tetrahedron": 4, "hexahedron": 8}[cell]
+    dofmap = np.ascontiguousarray(V.dofmap.list.array.reshape(-1, nn), dtype=np.int32)
+    X = np.ascontiguousarray(V.tabulate_dof_coordinates()[:, :gdim])
+    points, wq, N, dN = kin.quadrature(cell, kinematics)
+    return V, dofmap, X, wq, N, dN, kin.CELL_KINDS[cell]
+
+
+def _params(E=200e9, nu=0.3, rho=7800.0, beta=0.0):
+    p = np.zeros((1, kernels.NUM_PARAMS))
+    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    p[0, [kernels.P_RHO, kernels.P_LAMBDA, kernels.P_MU, kernels.P_WAVE_SPEED, kernels.P_BETA]] = \
+        [rho, lam, mu, np.sqrt((lam + 2 * mu) / rho), beta]
+    return p
+
+
+@pytest.mark.parametrize("kinematics, cell", CASES)
+def test_internal_force_matches_ufl_form(kinematics, cell):
+    m = _mesh(kinematics, cell)
+    V, dofmap, X, wq, N, dN, kind = _arrays(m, kinematics)
+    ncell = len(dofmap)
+    nq = len(wq)
+    rng = np.random.default_rng(1)
+    sigma = rng.normal(size=(ncell, nq, 6)) * 1e6
+    if kinematics != "3d":
+        sigma[..., 3:5] = 0.0        # no out-of-plane shear in 2D
+    f = np.zeros_like(X)
+    cells = np.arange(ncell, dtype=np.int32)
+    # dt = 0 and v = 0: the stress stays as given and the kernel only assembles the force
+    sign = kernels.cell_orientation(dofmap, X, dN)
+    kernels.stress_divergence(cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X), 0.0, N, dN, wq,
+                              kin.CODES[kinematics], 0.7, kind, True, _params(), sigma.copy(), f)
+    degree = kin.quadrature_degree(m.topology.cell_name(), kinematics)
+    Qe = ufl.VectorElement("Quadrature", m.ufl_cell(), degree=degree, dim=6, quad_scheme="default")
+    s6 = fem.Function(fem.FunctionSpace(m, Qe))
+    s6.x.array[:] = sigma.ravel()
+    w = ufl.TestFunction(V)
+    dx = ufl.dx(metadata={"quadrature_degree": degree, "quadrature_scheme": "default"})
+    form = fem.form(kin.internal_force_form(s6, w, kinematics, thickness=0.7) * dx)
+    b = np.zeros(f.size)
+    compat.assemble_vector_into(b, form)
+    assert np.allclose(f.ravel(), b, rtol=1e-12, atol=1e-12 * np.abs(b).max())
+
+
+def test_rigid_rotation_rotates_stress_exactly():
+    """Objectivity: a rigid rotation by R over the step leaves sigma_np1 = R sigma_n R^T."""
+    m = _mesh("3d", mesh.CellType.hexahedron)
+    V, dofmap, X, wq, N, dN, kind = _arrays(m, "3d")
+    theta, dt = 0.3, 1e-5
+    c, s = np.cos(theta), np.sin(theta)
+    R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1.0]]) @ np.array([[1, 0, 0], [0, 0.8, -0.6], [0, 0.6, 0.8]])
+    x_np1 = np.ascontiguousarray(X @ R.T)
+    v = (x_np1 - X) / dt
+    ncell, nq = len(dofmap), len(wq)
+    s0 = np.array([100e6, -20e6, 5e6, 7e6, -3e6, 11e6])
+    sigma = np.tile(s0, (ncell, nq, 1))
+    kernels.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
+                              kernels.cell_orientation(dofmap, X, dN), x_np1, v, dt,
+                              N, dN, wq, kernels.THREE_D, 1.0, kind, True, _params(), sigma, np.zeros_like(X))
+    S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
+    S1 = R @ S0 @ R.T
+    expected = np.array([S1[0, 0], S1[1, 1], S1[2, 2], S1[1, 2], S1[0, 2], S1[0, 1]])
+    assert np.allclose(sigma, expected, rtol=0, atol=1e-6 * np.abs(s0).max())
+
+
+def test_uniform_stretch_gives_hooke_stress():
+    """A uniform velocity gradient over one step adds dt * C : d at every point."""
+    m = _mesh("plane-strain", mesh.CellType.quadrilateral)
+    V, dofmap, X, wq, N, dN, kind = _arrays(m, "plane-strain")
+    L = np.array([[1.0, 0.0], [0.0, -0.5]])     # 1/s
+    dt = 1e-6
+    v = X @ L.T
+    x_np1 = X + dt * v
+    ncell, nq = len(dofmap), len(wq)
+    sigma = np.zeros((ncell, nq, 6))
+    p = _params()
+    kernels.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
+                              kernels.cell_orientation(dofmap, X, dN), x_np1, v, dt,
+                              N, dN, wq, kernels.PLANE_STRAIN, 1.0, kind, True, p, sigma, np.zeros_like(X))
+    lam, mu = p[0, kernels.P_LAMBDA], p[0, kernels.P_MU]
+    # the mid-step configuration differs from X by dt/2 * v: strain rate exact to O(dt)
+    tr = 0.5
+    assert np.allclose(sigma[..., 0], dt * (lam * tr + 2 * mu * 1.0), rtol=1e-5)
+    assert np.allclose(sigma[..., 1], dt * (lam * tr - 2 * mu * 0.5), rtol=1e-5)
+    assert np.allclose(sigma[..., 2], dt * lam * tr, rtol=1e-5)
+
+
+def test_characteristic_length_of_unit_cells():
+    sq = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.0]])
+    assert kernels.characteristic_length(sq, 1, 4) == pytest.approx(1 / np.sqrt(2))
+    tri = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
+    assert kernels.characteristic_length(tri, 0, 3) == pytest.approx(1 / np.sqrt(2))   # smallest altitude
+    cube = np.array([[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], dtype=float)
+    assert kernels.characteristic_length(cube, 3, 8) == pytest.approx(1 / np.sqrt(3))
+    tet = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0]])
+    assert kernels.characteristic_length(tet, 2, 4) == pytest.approx(1 / np.sqrt(3))

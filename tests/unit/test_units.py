@@ -1,0 +1,29 @@
+import pytest
+
+from shockfem.units import UnitError, to_si
+
+
+@pytest.mark.parametrize("text, dim, si", [
+    ("12 lb", "mass", 12 * 0.45359237),
+    ("1600 ft/s", "velocity", 1600 * 0.3048),
+    ("2000 psi", "pressure", 2000 * 6894.757293168),
+    ("5 ms", "time", 5e-3),
+    ("10000 gee", "acceleration", 98066.5),
+    ("7850 kg/m^3", "density", 7850.0),
+])
+def test_to_si(text, dim, si):
+    assert to_si(text, dim) == pytest.approx(si, rel=1e-9)
+
+
+def test_bare_numbers_are_si():
+    assert to_si(3, "length") == 3.0
+
+
+def test_wrong_dimension_names_expected_dimension():
+    with pytest.raises(UnitError, match="expected a velocity"):
+        to_si("3 kg", "velocity")
+
+
+def test_unreadable():
+    with pytest.raises(UnitError, match="cannot read"):
+        to_si("fast", "velocity")
