@@ -59,3 +59,21 @@ def test_unstable_run_stops_with_diagnosis_and_exit_3(tmp_path):
     s = json.loads((out / "summary.json").read_text())
     assert s["status"] == "unstable" and "bar" in s["diagnosis"]
     assert (out / "fields.xdmf").exists() and (out / "history.csv").exists()
+
+
+def test_bench_quick_reports_speed(tmp_path):
+    out = tmp_path / "bench.json"
+    p = shockfem("bench", "--quick", "--json", str(out))
+    assert p.returncode == 0, p.stderr
+    rows = json.loads(out.read_text())
+    assert {r["kinematics"] for r in rows} == {"axisymmetric", "3d"}
+    for r in rows:
+        assert r["element_cycles_per_s"] > 0 and r["elements"] > 0 and r["steps"] == 20
+
+
+def test_verify_list_names_the_cases():
+    p = shockfem("verify", "--list")
+    assert p.returncode == 0
+    for name in ("free_flight", "bar_wave", "free_free_frequency", "energy_conservation",
+                 "axisymmetric_vs_3d", "rayleigh_damping"):
+        assert name in p.stdout

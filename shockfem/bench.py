@@ -1,0 +1,86 @@
+"""``shockfem bench``: element-cycles per second, and speed against error.
+
+Speed: an elastic steel cylinder, axisymmetric (quads) and 3D (hexes), at three mesh sizes,
+a fixed number of steps of the whole time loop (single process).  Element-cycles per second
+= elements x steps / wall time of the loop; the shares of the phases (internal force =
+strain rate + material update + force assembly in one compiled pass; nodal update;
+energy bookkeeping) come from the solver's phase timers.
+
+Speed against error: the bar-wave verification case (front speed and plateau stress
+against 1D theory) at three mesh sizes with its wall time.
+"""
+from __future__ import annotations
+
+import time
+
+from mpi4py import MPI
+
+from .geometry import build_mesh
+from .model import build_model
+from .scene import resolve
+from .solver.explicit import ExplicitSolver
+from .verify.scenes import rod_scene, steel_c0, STEEL
+
+SPEED_CASES = {
+    # name: (kinematics, radius, length, element sizes [m])
+    "axisymmetric-quad": ("axisymmetric", 0.05, 1.0, (0.0045, 0.0022, 0.001)),
+    "3d-hex": ("3d", 0.02, 0.3, (0.005, 0.0035, 0.0025)),
+}
+QUICK_SIZES = {"axisymmetric-quad": (0.01,), "3d-hex": (0.006,)}
+
+
+def time_steps(raw: dict, steps: int) -> dict:
+    scene = resolve(raw)
+    model = build_model(scene, build_mesh(scene, MPI.COMM_WORLD, log=lambda m: None))
+    solver = ExplicitSolver(model, initial_velocity=lambda x: 1e-3 * x / x.max())
+    solver.advance(solver.stable_step())          # first call compiles nothing new, but warms caches
+    solver.times.__init__()
+    t0 = time.perf_counter()
+    for _ in range(steps):
+        solver.advance(solver.stable_step())
+    wall = time.perf_counter() - t0
+    n = model.num_cells_global
+    pt = solver.times
+    return {"kinematics": scene.kinematics, "elements": n, "steps": steps, "wall_time_s": wall,
+            "element_cycles_per_s": n * steps / wall,
+            "share_internal_force": pt.internal_force / wall, "share_update": pt.update / wall,
+            "share_energy": pt.energy / wall,
+            "share_python_overhead": max(0.0, 1 - pt.total / wall)}
+
+
+def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
+    results = []
+    echo(f"{'case':20s} {'elements':>9s} {'steps':>6s} {'wall[s]':>8s} {'Mcyc/s':>7s}  "
+         f"{'force':>6s} {'update':>6s} {'energy':>6s}")
+    for case, (kin, R, L, sizes) in SPEED_CASES.items():
+        for h in (QUICK_SIZES[case] if quick else sizes):
+            raw = rod_scene(f"bench_{case}_{h}", kin, radius=R, length=L, h=h, end_time=1.0)
+            r = time_steps(raw, 20 if quick else steps)
+            r["case"] = case
+            r["element_size_m"] = h
+            results.append(r)
+            echo(f"{case:20s} {r['elements']:9d} {r['steps']:6d} {r['wall_time_s']:8.2f} "
+                 f"{r['element_cycles_per_s'] / 1e6:7.2f}  {r['share_internal_force']:6.0%} "
+                 f"{r['share_update']:6.0%} {r['share_energy']:6.0%}")
+    if not quick:
+        results += speed_against_error(echo)
+    return results
+
+
+def speed_against_error(echo=print) -> list[dict]:
+    """Bar wave at three sizes: errors of front speed and plateau stress against wall time."""
+    from .verify.cases import _bar_step
+    out = []
+    echo("speed against error: bar wave (axisymmetric, R = 2 mm, L = 0.4 m, v = 1 m/s)")
+    echo(f"{'size':8s} {'elements':>9s} {'wall[s]':>8s} {'front err':>10s} {'stress err':>10s}")
+    c0, rho = steel_c0(), STEEL["density"]
+    for size in ("coarse", "default", "fine"):
+        solver, wall, plateau, speed = _bar_step("axisymmetric", size)
+        r = {"case": "bar_wave_accuracy", "size": size, "kinematics": "axisymmetric",
+             "elements": solver.model.num_cells_global, "steps": solver.step, "wall_time_s": wall,
+             "element_cycles_per_s": solver.model.num_cells_global * solver.step / wall,
+             "front_speed_error": abs(speed / c0 - 1), "stress_error": abs(plateau / (-rho * c0) - 1)}
+        out.append(r)
+        echo(f"{size:8s} {r['elements']:9d} {wall:8.2f} {r['front_speed_error']:10.2e} "
+             f"{r['stress_error']:10.2e}")
+    return out
