@@ -34,8 +34,8 @@ class RigidBody:
 
 
 @dataclass
-class Constraint:
-    """Prescribed velocity on flat dof indices (node * gdim + component)."""
+class _History:
+    """A piecewise-linear history (times [s], values) acting on flat dofs (node * gdim + component)."""
     dofs: np.ndarray
     times: np.ndarray
     values: np.ndarray
@@ -46,16 +46,14 @@ class Constraint:
 
 
 @dataclass
-class Load:
-    """A total force history on a region, shared among its nodes by consistent area."""
-    dofs: np.ndarray
-    shares: np.ndarray           # sums to 1 over all ranks
-    times: np.ndarray
-    values: np.ndarray
-    region: str
+class Constraint(_History):
+    """Prescribed velocity [m/s] on the dofs (zero for fixed, symmetry and axis conditions)."""
 
-    def value(self, t: float) -> float:
-        return float(np.interp(t, self.times, self.values))
+
+@dataclass
+class Load(_History):
+    """A total force history [N] on a region, shared among its nodes by consistent area."""
+    shares: np.ndarray = None    # per local node; sums to 1 over all ranks
 
 
 @dataclass
@@ -224,7 +222,7 @@ def _add_boundaries(model: Model):
             model.constraints.append(Constraint(nodes * gdim + bc.components[0], times, values, bc.region))
         else:
             shares = _region_shares(V, model.meshed, bc.region, scene, gdim)[nodes]
-            model.loads.append(Load(nodes * gdim + bc.components[0], shares, times, values, bc.region))
+            model.loads.append(Load(nodes * gdim + bc.components[0], times, values, bc.region, shares))
 
 
 def _plane_normal(model: Model, nodes: np.ndarray, region: str) -> int:

@@ -11,6 +11,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 from .history import read_history_csv  # noqa: E402
 
 
+def _save(fig, path: str) -> str:
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
 def plot_histories(run_dir: str, body_names) -> list[str]:
     h = read_history_csv(os.path.join(run_dir, "history.csv"))
     t = h["time"] * 1e3
@@ -23,11 +30,7 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
     ax.legend()
     ax.grid(alpha=0.3)
     ax.set_title("Energy balance")
-    path = os.path.join(run_dir, "energy.png")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    written.append(path)
+    written.append(_save(fig, os.path.join(run_dir, "energy.png")))
     fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
     for name in body_names:
         for key, ax, scale in ((f"{name}.v_", axes[0], 1.0), (f"{name}.a_", axes[1], 1 / 9.80665)):
@@ -41,9 +44,5 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle("Rigid-body motion of each body (mass-weighted means)")
-    path = os.path.join(run_dir, "bodies.png")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    written.append(path)
+    written.append(_save(fig, os.path.join(run_dir, "bodies.png")))
     return written

@@ -168,6 +168,21 @@ def _gradients(xe, dNq, gdim, nn, dNdx):
     return _gradients_3d(xe, dNq, nn, dNdx)
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def _half_cross_norm(xe, p, q, r, s):
+    """|(x_q - x_p) x (x_s - x_r)| / 2: a triangle's area (r = p) or a quadrilateral's from its diagonals."""
+    ux = xe[q, 0] - xe[p, 0]
+    uy = xe[q, 1] - xe[p, 1]
+    uz = xe[q, 2] - xe[p, 2]
+    wx = xe[s, 0] - xe[r, 0]
+    wy = xe[s, 1] - xe[r, 1]
+    wz = xe[s, 2] - xe[r, 2]
+    cx = uy * wz - uz * wy
+    cy = uz * wx - ux * wz
+    cz = ux * wy - uy * wx
+    return 0.5 * math.sqrt(cx * cx + cy * cy + cz * cz)
+
+
 @njit(cache=True, fastmath=True)
 def characteristic_length(xe, cell_kind, nn):
     """Length l_e that sets the element's stable step l_e / c (LS-DYNA conventions).
@@ -211,16 +226,7 @@ def characteristic_length(xe, cell_kind, nn):
         vol = abs(ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx)) / 6.0
         amax = 0.0
         for (p, q, r) in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)):
-            ux = xe[q, 0] - xe[p, 0]
-            uy = xe[q, 1] - xe[p, 1]
-            uz = xe[q, 2] - xe[p, 2]
-            wx = xe[r, 0] - xe[p, 0]
-            wy = xe[r, 1] - xe[p, 1]
-            wz = xe[r, 2] - xe[p, 2]
-            cx = uy * wz - uz * wy
-            cy = uz * wx - ux * wz
-            cz = ux * wy - uy * wx
-            amax = max(amax, 0.5 * math.sqrt(cx * cx + cy * cy + cz * cz))
+            amax = max(amax, _half_cross_norm(xe, p, q, p, r))
         return 3.0 * vol / amax
     # hexahedron, dolfinx vertex order (tensor-product): faces by vertex quadruples, each
     # listed around its boundary so that diagonals are (p, r) and (q, s).
@@ -228,16 +234,7 @@ def characteristic_length(xe, cell_kind, nn):
     amax = 0.0
     faces = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
     for (p, q, r, s) in faces:
-        ux = xe[r, 0] - xe[p, 0]
-        uy = xe[r, 1] - xe[p, 1]
-        uz = xe[r, 2] - xe[p, 2]
-        wx = xe[s, 0] - xe[q, 0]
-        wy = xe[s, 1] - xe[q, 1]
-        wz = xe[s, 2] - xe[q, 2]
-        cx = uy * wz - uz * wy
-        cy = uz * wx - ux * wz
-        cz = ux * wy - uy * wx
-        amax = max(amax, 0.5 * math.sqrt(cx * cx + cy * cy + cz * cz))
+        amax = max(amax, _half_cross_norm(xe, p, r, q, s))
     # volume as the sum of the 12 tetrahedra joining the centroid to the face triangles
     cx0 = 0.0
     cy0 = 0.0
