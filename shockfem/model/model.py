@@ -53,7 +53,7 @@ class Constraint(_History):
 @dataclass
 class Load(_History):
     """A total force history [N] on a region, shared among its nodes by consistent area."""
-    shares: np.ndarray = None    # per local node; sums to 1 over all ranks
+    shares: np.ndarray = None    # one per entry of ``dofs``; sums to 1 over the owned nodes of all ranks
 
 
 @dataclass

@@ -164,7 +164,7 @@ class ExplicitSolver:
         self.f_ext[:] = 0.0
         flat = self.f_ext.reshape(-1)
         for load in self.model.loads:
-            flat[load.dofs] += load.value(t) * load.shares[load.dofs // self.model.gdim]
+            flat[load.dofs] += load.value(t) * load.shares
 
     def _acceleration(self):
         np.multiply(self.f_ext - self.f_int, self.inv_mass[:, None], out=self.a)

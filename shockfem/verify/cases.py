@@ -54,7 +54,7 @@ def free_flight(size, workdir):
     return out
 
 
-def _bar_step(kinematics, size, v=1.0, radius=0.002, length=0.4):
+def bar_step(kinematics, size, v=1.0, radius=0.002, length=0.4):
     """A slender bar whose end z = 0 moves at v from t = 0; returns solver, wall and results."""
     c0 = steel_c0()
     t_end = 0.5 * length / c0        # the front is at mid-bar
@@ -78,7 +78,7 @@ def _bar_step(kinematics, size, v=1.0, radius=0.002, length=0.4):
 
 def bar_wave(size, workdir):
     """Long elastic bar, velocity step at one end: front speed c0 and stress rho c0 v (1D theory)."""
-    solver, wall, plateau, speed = _bar_step("axisymmetric", size)
+    solver, wall, plateau, speed = bar_step("axisymmetric", size)
     c0 = steel_c0()
     rho = STEEL["density"]
     return [
@@ -166,9 +166,9 @@ def rayleigh_damping(size, workdir):
 def axisymmetric_vs_3d(size, workdir):
     """The bar problem in axisymmetric and 3D agrees within 2%; under mpirun -n 2 agrees with 1 process."""
     out = []
-    sa, wa, pa, ca = _bar_step("axisymmetric", "coarse" if size == "coarse" else size, radius=0.004,
+    sa, wa, pa, ca = bar_step("axisymmetric", "coarse" if size == "coarse" else size, radius=0.004,
                                length=0.2)
-    s3, w3, p3, c3 = _bar_step("3d", "coarse" if size == "coarse" else size, radius=0.004, length=0.2)
+    s3, w3, p3, c3 = bar_step("3d", "coarse" if size == "coarse" else size, radius=0.004, length=0.2)
     # the two kinematics discretise the same 1D-like problem; their plateau stresses
     # and front speeds differ by discretisation only (issue tolerance 2%)
     out.append(check("axisym_vs_3d.stress [Pa]", pa, p3, 0.02, wa + w3, _elements(s3)))

@@ -77,3 +77,18 @@ def test_verify_list_names_the_cases():
     for name in ("free_flight", "bar_wave", "free_free_frequency", "energy_conservation",
                  "axisymmetric_vs_3d", "rayleigh_damping"):
         assert name in p.stdout
+
+
+def test_force_boundary_accelerates_a_free_bar(tmp_path):
+    """A total force F on one end of a free bar: the mean acceleration is F / m (Newton)."""
+    out = tmp_path / "push"
+    p = shockfem("run", SCENE, "--out", str(out), "--no-progress", "--no-fields",
+                 "--set", 'boundary.0.type="force"', "--set", 'boundary.0.value="10 kN"',
+                 "--set", 'scene.end_time="30 us"', "--set", 'bodies.bar.element_size="2.5 mm"',
+                 "--set", "damping.ratio=0.0")
+    assert p.returncode == 0, p.stderr
+    s = json.loads((out / "summary.json").read_text())
+    m = s["bodies"]["bar"]["mass"]
+    # momentum theorem: m * mean velocity = F * t exactly for a constant force (to round-off)
+    assert s["bodies"]["bar"]["velocity_final"][1] == pytest.approx(10e3 * 30e-6 / m, rel=1e-6)
+    assert s["energy"]["balance_error"] < 0.01
