@@ -1,16 +1,18 @@
 """``shockfem bench``: element-cycles per second, and speed against error.
 
-Speed: an elastic steel cylinder, axisymmetric (quads) and 3D (hexes), at three mesh sizes,
-a fixed number of steps of the whole time loop (single process).  Element-cycles per second
+Speed: an elastic steel cylinder, axisymmetric (quads) and 3D (hexes), at three mesh sizes
+with one-point elements (the default) and at one size with full integration, a fixed number
+of steps of the whole time loop (single process).  Element-cycles per second
 = elements x steps / wall time of the loop; the shares of the phases (internal force =
 strain rate + material update + force assembly in one compiled pass; nodal update;
 energy bookkeeping) come from the solver's phase timers.
 
 Speed against error: the bar-wave verification case (front speed and plateau stress
-against 1D theory) at three mesh sizes with its wall time.
+against 1D theory) at three mesh sizes, both integrations, with its wall time.
 """
 from __future__ import annotations
 
+import itertools
 import time
 
 from mpi4py import MPI
@@ -22,11 +24,14 @@ from .solver.explicit import ExplicitSolver, PhaseTimes
 from .verify.scenes import rod_scene, steel_c0, STEEL
 
 SPEED_CASES = {
-    # name: (kinematics, radius, length, element sizes [m])
-    "axisymmetric-quad": ("axisymmetric", 0.05, 1.0, (0.0045, 0.0022, 0.001)),
-    "3d-hex": ("3d", 0.02, 0.3, (0.005, 0.0035, 0.0025)),
+    # name: (kinematics, integration, radius, length, element sizes [m])
+    "axisymmetric-quad": ("axisymmetric", "reduced", 0.05, 1.0, (0.0045, 0.0022, 0.001)),
+    "axisymmetric-quad-full": ("axisymmetric", "full", 0.05, 1.0, (0.0022,)),
+    "3d-hex": ("3d", "reduced", 0.02, 0.3, (0.005, 0.0035, 0.0024)),
+    "3d-hex-full": ("3d", "full", 0.02, 0.3, (0.0035,)),
 }
-QUICK_SIZES = {"axisymmetric-quad": (0.01,), "3d-hex": (0.006,)}
+QUICK_SIZES = {"axisymmetric-quad": (0.01,), "axisymmetric-quad-full": (0.01,), "3d-hex": (0.006,),
+               "3d-hex-full": (0.006,)}
 
 
 def time_steps(raw: dict, steps: int) -> dict:
@@ -50,16 +55,18 @@ def time_steps(raw: dict, steps: int) -> dict:
 
 def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
     results = []
-    echo(f"{'case':20s} {'elements':>9s} {'steps':>6s} {'wall[s]':>8s} {'Mcyc/s':>7s}  "
+    echo(f"{'case':24s} {'elements':>9s} {'steps':>6s} {'wall[s]':>8s} {'Mcyc/s':>7s}  "
          f"{'force':>6s} {'update':>6s} {'energy':>6s}")
-    for case, (kin, R, L, sizes) in SPEED_CASES.items():
+    for case, (kin, integration, R, L, sizes) in SPEED_CASES.items():
         for h in (QUICK_SIZES[case] if quick else sizes):
-            raw = rod_scene(f"bench_{case}_{h}", kin, radius=R, length=L, h=h, end_time=1.0)
+            raw = rod_scene(f"bench_{case}_{h}", kin, radius=R, length=L, h=h, end_time=1.0,
+                            integration=integration)
             r = time_steps(raw, 20 if quick else steps)
             r["case"] = case
+            r["integration"] = integration
             r["element_size_m"] = h
             results.append(r)
-            echo(f"{case:20s} {r['elements']:9d} {r['steps']:6d} {r['wall_time_s']:8.2f} "
+            echo(f"{case:24s} {r['elements']:9d} {r['steps']:6d} {r['wall_time_s']:8.2f} "
                  f"{r['element_cycles_per_s'] / 1e6:7.2f}  {r['share_internal_force']:6.0%} "
                  f"{r['share_update']:6.0%} {r['share_energy']:6.0%}")
     if not quick:
@@ -72,15 +79,15 @@ def speed_against_error(echo=print) -> list[dict]:
     from .verify.cases import bar_step
     out = []
     echo("speed against error: bar wave (axisymmetric, R = 2 mm, L = 0.4 m, v = 1 m/s)")
-    echo(f"{'size':8s} {'elements':>9s} {'wall[s]':>8s} {'front err':>10s} {'stress err':>10s}")
+    echo(f"{'integration':11s} {'size':8s} {'elements':>9s} {'wall[s]':>8s} {'front err':>10s} {'stress err':>10s}")
     c0, rho = steel_c0(), STEEL["density"]
-    for size in ("coarse", "default", "fine"):
-        solver, wall, plateau, speed = bar_step("axisymmetric", size)
-        r = {"case": "bar_wave_accuracy", "size": size, "kinematics": "axisymmetric",
+    for integration, size in itertools.product(("reduced", "full"), ("coarse", "default", "fine")):
+        solver, wall, plateau, speed = bar_step("axisymmetric", size, integration=integration)
+        r = {"case": "bar_wave_accuracy", "integration": integration, "size": size, "kinematics": "axisymmetric",
              "elements": solver.model.num_cells_global, "steps": solver.step, "wall_time_s": wall,
              "element_cycles_per_s": solver.model.num_cells_global * solver.step / wall,
              "front_speed_error": abs(speed / c0 - 1), "stress_error": abs(plateau / (-rho * c0) - 1)}
         out.append(r)
-        echo(f"{size:8s} {r['elements']:9d} {wall:8.2f} {r['front_speed_error']:10.2e} "
+        echo(f"{integration:11s} {size:8s} {r['elements']:9d} {wall:8.2f} {r['front_speed_error']:10.2e} "
              f"{r['stress_error']:10.2e}")
     return out

@@ -24,19 +24,28 @@ BASIX_CELLS = {"triangle": basix.CellType.triangle, "quadrilateral": basix.CellT
                "tetrahedron": basix.CellType.tetrahedron, "hexahedron": basix.CellType.hexahedron}
 
 
-def quadrature_degree(cell: str, kinematics: str) -> int:
-    """Degree of the Gauss rule: 2x2 (2x2x2) for quads (hexes), the full rule Q1 needs;
-    one point for linear triangles/tetrahedra (constant strain), three points for
-    axisymmetric triangles, whose hoop strain u_r/r varies over the cell."""
+INTEGRATIONS = ("reduced", "full")
+
+
+def quadrature_degree(cell: str, kinematics: str, integration: str = "full") -> int:
+    """Degree of the Gauss rule.  Quads (hexes): one point at the centre for ``reduced``
+    integration (with hourglass control, ``solver/one_point.py``), 2x2 (2x2x2) for ``full``,
+    the rule Q1 needs.  One point for linear triangles/tetrahedra (constant strain), three
+    points for axisymmetric triangles, whose hoop strain u_r/r varies over the cell."""
     if cell in ("quadrilateral", "hexahedron"):
-        return 2
+        return 1 if integration == "reduced" else 2
     return 2 if kinematics == "axisymmetric" else 1
 
 
-def quadrature(cell: str, kinematics: str):
+def one_point(cell: str, integration: str) -> bool:
+    """True when the cells run the one-point kernels (reduced quads and hexes)."""
+    return integration == "reduced" and cell in ("quadrilateral", "hexahedron")
+
+
+def quadrature(cell: str, kinematics: str, integration: str = "full"):
     """Points, weights, shape functions N (nq, nn) and reference gradients dN (nq, nn, tdim)."""
     ct = BASIX_CELLS[cell]
-    points, weights = basix.make_quadrature(ct, quadrature_degree(cell, kinematics))
+    points, weights = basix.make_quadrature(ct, quadrature_degree(cell, kinematics, integration))
     element = basix.create_element(basix.ElementFamily.P, ct, 1)
     tab = element.tabulate(1, points)
     N = np.ascontiguousarray(tab[0, :, :, 0])

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import basix
 import numpy as np
 import ufl
 from dolfinx import fem
@@ -17,7 +18,7 @@ from .. import compat
 from ..geometry import MeshedScene
 from ..scene import Scene
 from . import kinematics as kin
-from ..solver import kernels
+from ..solver import kernels, one_point
 from .materials import parameter_table
 
 
@@ -82,6 +83,9 @@ class Model:
     loads: list[Load] = field(default_factory=list)
     alpha: float = 0.0                          # mass-proportional damping [1/s]
     body_mass: np.ndarray = None                # (bodies,) global masses [kg]
+    one_point: bool = False                     # reduced quads/hexes: solver/one_point.py kernels
+    hourglass_form: int = 0                     # one_point.HOURGLASS_FORMS
+    hourglass_coefficient: float = 0.0
 
     @property
     def comm(self):
@@ -168,7 +172,10 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     owned_cells = np.arange(cell_map.size_local, dtype=np.int32)
     kernel_cells = owned_cells[~np.isin(cell_body[owned_cells], rigid_ids)]
 
-    points, wq, N, dN = kin.quadrature(cell_name, scene.kinematics)
+    points, wq, N, dN = kin.quadrature(cell_name, scene.kinematics, scene.integration)
+    one_point_cells = kin.one_point(cell_name, scene.integration)
+    if one_point_cells:
+        one_point.check_vertex_order(basix.geometry(kin.BASIX_CELLS[cell_name]))
     alpha = scene.damping.coefficients()[0] if scene.damping else 0.0
 
     owned = np.arange(num_nodes) < imap.size_local
@@ -178,7 +185,9 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     cell_sign = kernels.cell_orientation(dofmap, X0, dN)
     model = Model(scene, meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
                   mass, node_body, cell_body, cell_material, kernel_cells, params,
-                  kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass)
+                  kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,
+                  one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
+                  hourglass_coefficient=scene.hourglass_coefficient)
     model.rigid = [_rigid_body(model, i) for i in rigid_ids]
     _add_boundaries(model)
     return model
@@ -243,9 +252,17 @@ def _plane_normal(model: Model, nodes: np.ndarray, region: str) -> int:
 def describe(model: Model) -> str:
     """One line per body saying which model runs for it ("model only what a scene needs")."""
     lines = []
-    for i, b in enumerate(model.scene.bodies):
-        kind = "rigid body (no stiffness)" if b.rigid else "linear elastic, updated Lagrangian"
-        lines.append(f"  {b.name}: {kind}, {model.scene.kinematics}, mass {model.body_mass[i]:.6g} kg")
+    sc = model.scene
+    cell = model.meshed.mesh.topology.cell_name()
+    if model.one_point:
+        element = (f"{cell}s, one point + {sc.hourglass} hourglass control "
+                   f"(coefficient {sc.hourglass_coefficient:g})")
+    else:
+        element = f"{cell}s, {model.num_quadrature_points}-point Gauss" + (
+            ", mean dilatation" if cell in ("quadrilateral", "hexahedron") else "")
+    for i, b in enumerate(sc.bodies):
+        kind = "rigid body (no stiffness)" if b.rigid else f"linear elastic, updated Lagrangian, {element}"
+        lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
     if model.scene.damping:
         d = model.scene.damping
         a, be = d.coefficients()

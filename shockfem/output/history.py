@@ -12,9 +12,10 @@ import numpy as np
 from ..solver.explicit import ExplicitSolver
 
 
-class HistoryRecorder:
-    ENERGY_COLUMNS = ("kinetic", "internal", "damping", "external", "balance")
+ENERGY_COLUMNS = ("kinetic", "internal", "damping", "hourglass", "external", "balance")
 
+
+class HistoryRecorder:
     def __init__(self, solver: ExplicitSolver):
         m = solver.model
         self.solver = solver
@@ -23,7 +24,7 @@ class HistoryRecorder:
         for b in m.scene.bodies:
             self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
             self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
-        self.columns += [(f"energy.{k}", "J") for k in self.ENERGY_COLUMNS]
+        self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
 
@@ -34,7 +35,7 @@ class HistoryRecorder:
         row = [s.t]
         for vb, ab in zip(v, a):
             row += list(vb) + list(ab)
-        row += [e.kinetic, e.internal, e.damping, e.external, e.balance, e.balance_error, s.dt]
+        row += [e.kinetic, e.internal, e.damping, e.hourglass, e.external, e.balance, e.balance_error, s.dt]
         self.rows.append(row)
 
     def array(self) -> np.ndarray:

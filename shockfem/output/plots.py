@@ -8,7 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .history import read_history_csv  # noqa: E402
+from .history import ENERGY_COLUMNS, read_history_csv  # noqa: E402
 
 
 def _save(fig, path: str) -> str:
@@ -23,7 +23,7 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
     t = h["time"] * 1e3
     written = []
     fig, ax = plt.subplots(figsize=(7, 4))
-    for k in ("kinetic", "internal", "damping", "external", "balance"):
+    for k in ENERGY_COLUMNS:
         ax.plot(t, h[f"energy.{k}"], label=k)
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("energy [J]")

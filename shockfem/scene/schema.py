@@ -26,6 +26,8 @@ SHAPE_REGIONS = {
 BC_TYPES = ("fixed", "symmetry", "velocity", "force")
 DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
 FIELDS = ("displacement", "velocity", "von_mises", "pressure")
+INTEGRATIONS = ("reduced", "full")
+HOURGLASS_FORMS = ("stiffness", "viscous")
 
 
 class SceneError(Exception):
@@ -125,6 +127,9 @@ class Scene:
     safety_factor: float
     thickness: float
     energy_error_limit: float
+    integration: str                 # reduced (one point + hourglass control) | full (2x2 Gauss)
+    hourglass: str                   # stiffness | viscous
+    hourglass_coefficient: float
     materials: dict[str, Material]
     bodies: tuple[Body, ...]
     boundaries: tuple[Boundary, ...]
@@ -240,7 +245,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "damping", "outputs"), "")
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
-                   "energy_error_limit"), "scene")
+                   "energy_error_limit", "integration", "hourglass", "hourglass_coefficient"), "scene")
     name = str(s.get("name", "scene"))
     kin = ck.choice(s, "kinematics", "scene", KINEMATICS)
     gdim = 3 if kin == "3d" else 2
@@ -251,6 +256,10 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         ck.fail("scene.safety_factor", f"must be <= 1 (explicit stability), got {sf}")
     thickness = ck.quantity(s, "thickness", "scene", "length", default=1.0, positive=True)
     elimit = ck.quantity(s, "energy_error_limit", "scene", "dimensionless", default=0.05, positive=True)
+    integration = ck.choice(s, "integration", "scene", INTEGRATIONS, default="reduced")
+    hourglass = ck.choice(s, "hourglass", "scene", HOURGLASS_FORMS, default="stiffness")
+    hg_coef = ck.quantity(s, "hourglass_coefficient", "scene", "dimensionless", default=0.05,
+                          nonnegative=True, upper=1.0)
 
     materials: dict[str, Material] = {}
     mats = ck.table(raw, "materials", "materials")
@@ -417,7 +426,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
 
     if ck.problems:
         raise SceneError(ck.problems)
-    return Scene(name, kin, element, end_time, sf, thickness, elimit, materials, tuple(bodies),
+    return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
+                 materials, tuple(bodies),
                  tuple(boundaries), damping, outputs, raw)
 
 

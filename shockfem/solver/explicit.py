@@ -28,7 +28,7 @@ from mpi4py import MPI
 from .. import compat
 from ..errors import UnstableRun
 from ..model import Model
-from . import kernels
+from . import kernels, nodal, one_point
 
 
 @dataclass
@@ -36,13 +36,14 @@ class Energies:
     kinetic: float = 0.0
     internal: float = 0.0          # stored (elastic) energy = internal work less damping
     damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts)
+    hourglass: float = 0.0         # work of the hourglass forces (one-point elements)
     external: float = 0.0          # work of loads and prescribed velocities
     initial: float = 0.0           # kinetic energy at t = 0
     peak: float = 0.0              # largest energy in play so far (the balance reference)
 
     @property
     def balance(self) -> float:
-        return self.kinetic + self.internal + self.damping - self.external - self.initial
+        return self.kinetic + self.internal + self.damping + self.hourglass - self.external - self.initial
 
     @property
     def balance_error(self) -> float:
@@ -95,9 +96,15 @@ class ExplicitSolver:
         self.a = np.zeros_like(self.x)
         self.f_ext = np.zeros_like(self.x)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
+        # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
+        self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         self.owned = np.zeros(len(self.x), dtype=bool)
         self.owned[:m.num_owned] = True
         self.inv_mass = np.where(m.mass > 0, 1.0 / np.where(m.mass > 0, m.mass, 1.0), 0.0)
+        self._constrained_dofs = (np.unique(np.concatenate([c.dofs for c in m.constraints]))
+                                  if m.constraints else np.zeros(0, dtype=np.int64))
+        self.constrained = np.zeros(self.x.shape, dtype=np.bool_)
+        self.constrained.reshape(-1)[self._constrained_dofs] = True
         self.t = 0.0
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
@@ -142,25 +149,40 @@ class ExplicitSolver:
         o = self.owned
         return self._sum(0.5 * float(np.dot(self.model.mass[o], (v[o] ** 2).sum(axis=1))))
 
-    def _internal_force(self, dt: float) -> float:
+    def _internal_force(self, dt: float) -> tuple[float, float]:
+        """f_int at t_{n+1} (stresses updated over the step); returns (damping power, hourglass power)."""
         m = self.model
         self.f_int[:] = 0.0
-        dt_stable, damping_power, bad = kernels.stress_divergence(
-            m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
-            m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, self.sigma, self.f_int)
+        hourglass_power = 0.0
+        if m.one_point and m.gdim == 2:
+            dt_stable, damping_power, hourglass_power, bad = one_point.quad_one_point(
+                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
+                m.kinematics == kernels.AXISYMMETRIC, m.scene.thickness, m.hourglass_form,
+                m.hourglass_coefficient, m.params, self.sigma, self.hourglass, self.f_int)
+        elif m.one_point:
+            dt_stable, damping_power, hourglass_power, bad = one_point.hex_one_point(
+                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
+                m.hourglass_coefficient, m.params, self.sigma, self.hourglass, self.f_int)
+        else:
+            dt_stable, damping_power, bad = kernels.stress_divergence(
+                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
+                m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, self.sigma, self.f_int)
         if self.parallel:
             compat.reverse_add(self._f_fn)
             dt_stable = self.comm.allreduce(dt_stable, op=MPI.MIN)
-            damping_power = self.comm.allreduce(damping_power, op=MPI.SUM)
+            damping_power, hourglass_power = self.comm.allreduce(
+                np.array([damping_power, hourglass_power]), op=MPI.SUM)
             bad = self.comm.allreduce(bad, op=MPI.MAX)
         if bad >= 0:
             raise UnstableRun(self._diagnose_cell(bad, "non-positive element volume (the element inverted)"),
                               self.t, self._body_of_cell(bad), bad)
         if np.isfinite(dt_stable) and dt_stable < 1e300:
             self.dt_stable = dt_stable
-        return damping_power
+        return damping_power, hourglass_power
 
     def _external_force(self, t: float):
+        if not self.model.loads:
+            return                      # f_ext stays zero
         self.f_ext[:] = 0.0
         flat = self.f_ext.reshape(-1)
         for load in self.model.loads:
@@ -183,9 +205,8 @@ class ExplicitSolver:
                 f"t = {self.t:.6g} s (step {self.step}). Check the impact speed against the material, "
                 f"refine the mesh there, or lower scene.safety_factor.")
 
-    def _check_finite(self):
-        if not np.isfinite(self.a).all():
-            node = int(np.flatnonzero(~np.isfinite(self.a).all(axis=1))[0])
+    def _check_finite(self, node: int):
+        if node >= 0:
             body = self.model.scene.bodies[self.model.node_body[node]].name
             raise UnstableRun(f"the solution is not finite (NaN/Inf): body '{body}', node {node} at "
                               f"x = {np.array2string(self.x[node], precision=4)} m, t = {self.t:.6g} s "
@@ -199,69 +220,60 @@ class ExplicitSolver:
     def advance(self, dt: float):
         """One central-difference step of size ``dt`` (t_n -> t_{n+1})."""
         m = self.model
+        e = self.energy
         t0 = time.perf_counter()
         dt_avg = 0.5 * (self.dt + dt)
-        v_old = self.v.copy()
+        constrained = self._constrained_dofs
+        v_old = self.v.reshape(-1)[constrained] if m.constraints else None
 
-        # velocity: v_{n+1/2}, with mass-proportional damping treated implicitly (unconditionally stable)
-        if m.alpha > 0:
-            c = 0.5 * m.alpha * dt_avg
-            self.v[:] = ((1.0 - c) * v_old + dt_avg * self.a) / (1.0 + c)
-            v_n = 0.5 * (v_old + self.v)
-            self.energy.damping += self._sum(
-                m.alpha * dt_avg * float(np.dot(m.mass[self.owned], (v_n[self.owned] ** 2).sum(axis=1))))
-        else:
-            self.v += dt_avg * self.a
-        v_free = self.v.copy() if m.constraints else None
+        # velocity v_{n+1/2}; mass-proportional damping taken implicitly
+        e.damping += self._sum(nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, m.mass, m.num_owned))
 
         # rigid bodies: velocities that carry their nodes to the rigid-body positions at t_{n+1}
         for rb, rs in zip(m.rigid, self.rigid_states):
             self._advance_rigid(rb, rs, dt, dt_avg)
 
-        # prescribed velocities (and fixed / symmetry / axis constraints)
+        # prescribed velocities (and fixed / symmetry / axis constraints); the reactions' work is
+        # m (v - v_free) . v_n over the constrained dofs
         reaction_work = 0.0
         if m.constraints:
             flat = self.v.reshape(-1)
+            v_free = flat[constrained]
             for con in m.constraints:
                 flat[con.dofs] = con.value(self.t + 0.5 * dt)
-            dv = (self.v - v_free)[self.owned]
-            reaction_work = self._sum(float(np.sum(m.mass[self.owned, None] * dv
-                                                   * 0.5 * (v_old[self.owned] + self.v[self.owned]))))
+            owned = constrained < m.num_owned * m.gdim
+            mass = m.mass[constrained // m.gdim]
+            v_new = flat[constrained]
+            reaction_work = self._sum(float(np.sum((mass * (v_new - v_free) * 0.5 * (v_old + v_new))[owned])))
         if self.parallel:
             self._v_fn.x.scatter_forward()
 
-        # position
-        self.u += dt * self.v
-        self.x += dt * self.v
+        # position, and the first halves of the work increments (forces at t_n)
+        w_int, w_ext = nodal.update_position(self.x, self.u, self.v, dt, self.f_int, self.f_ext, m.num_owned)
         self.t += dt
         self.dt = dt
         self.step += 1
         t1 = time.perf_counter()
 
-        # internal and external forces at t_{n+1}, acceleration a_{n+1}
-        f_int_old = self.f_int.copy()
-        f_ext_old = self.f_ext.copy()
-        damping_power = self._internal_force(dt)
+        # internal and external forces at t_{n+1}
+        damping_power, hourglass_power = self._internal_force(dt)
         t2 = time.perf_counter()
         self._external_force(self.t)
-        self._acceleration()
-        self._check_finite()
 
-        # energy
-        o = self.owned
-        du = dt * self.v[o]
-        e = self.energy
-        w_int = self._sum(float(np.sum(du * 0.5 * (f_int_old[o] + self.f_int[o]))))
-        w_ext = self._sum(float(np.sum(du * 0.5 * (f_ext_old[o] + self.f_ext[o]))))
+        # acceleration a_{n+1}, second halves of the work increments, kinetic energy
+        w_int2, w_ext2, kinetic, bad = nodal.finish_step(self.a, self.v, self.f_int, self.f_ext, self.inv_mass,
+                                                         m.mass, self.constrained, dt, m.num_owned)
+        if self.parallel:
+            w_int, w_ext, w_int2, w_ext2, kinetic = self.comm.allreduce(
+                np.array([w_int, w_ext, w_int2, w_ext2, kinetic]), op=MPI.SUM)
+            bad = self.comm.allreduce(bad, op=MPI.MAX)
+        self._check_finite(bad)
         e.damping += dt * damping_power
-        e.internal += w_int - dt * damping_power
-        e.external += w_ext + reaction_work
-        v_np1 = self.v + 0.5 * dt * self.a
-        if m.constraints:
-            v_np1.reshape(-1)[np.concatenate([c.dofs for c in m.constraints])] = \
-                self.v.reshape(-1)[np.concatenate([c.dofs for c in m.constraints])]
-        e.kinetic = self._kinetic_energy(v_np1)
-        e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping)
+        e.hourglass += dt * hourglass_power
+        e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power)
+        e.external += w_ext + w_ext2 + reaction_work
+        e.kinetic = kinetic
+        e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass))
         t3 = time.perf_counter()
         self.times.update += t1 - t0
         self.times.internal_force += t2 - t1

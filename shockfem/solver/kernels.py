@@ -40,31 +40,26 @@ NUM_PARAMS = 16
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _rotate_hughes_winget(s, w23, w13, w12, dt):
-    """Rotate the symmetric stress ``s`` (6,) in place by the Cayley rotation of dt*W.
+def _cayley_matrix(w23, w13, w12, dt):
+    """The rotation Q = (I - A)^-1 (I + A), A = dt W / 2, as 9 numbers (row-major).
 
-    Q = (I - A)^-1 (I + A), A = dt W / 2, in closed form Q = I + 2/(1 + a.a) (A + A^2),
-    a the axial vector of A.  Q is orthogonal, so stress invariants are kept exactly.
+    Closed form Q = I + 2/(1 + a.a) (A + A^2), a the axial vector of A; Q is orthogonal
+    for any step, so rotated stresses keep their invariants exactly.
     """
     a1 = 0.5 * dt * w23
     a2 = 0.5 * dt * w13
     a3 = 0.5 * dt * w12
-    if a1 == 0.0 and a2 == 0.0 and a3 == 0.0:
-        return
     # A = [[0, a3, a2], [-a3, 0, a1], [-a2, -a1, 0]] (W_ij = (L_ij - L_ji)/2); A^2 written out.
     k = 2.0 / (1.0 + a1 * a1 + a2 * a2 + a3 * a3)
-    q00 = 1.0 + k * (-a3 * a3 - a2 * a2)
-    q01 = k * (a3 - a2 * a1)
-    q02 = k * (a2 + a3 * a1)
-    q10 = k * (-a3 - a1 * a2)
-    q11 = 1.0 + k * (-a3 * a3 - a1 * a1)
-    q12 = k * (a1 - a3 * a2)
-    q20 = k * (-a2 + a1 * a3)
-    q21 = k * (-a1 - a2 * a3)
-    q22 = 1.0 + k * (-a2 * a2 - a1 * a1)
-    s00, s11, s22, s12, s02, s01 = s[0], s[1], s[2], s[3], s[4], s[5]
-    # T = Q S
-    t00 = q00 * s00 + q01 * s01 + q02 * s02
+    return (1.0 + k * (-a3 * a3 - a2 * a2), k * (a3 - a2 * a1), k * (a2 + a3 * a1),
+            k * (-a3 - a1 * a2), 1.0 + k * (-a3 * a3 - a1 * a1), k * (a1 - a3 * a2),
+            k * (-a2 + a1 * a3), k * (-a1 - a2 * a3), 1.0 + k * (-a2 * a2 - a1 * a1))
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _rotate_symmetric(s00, s11, s22, s12, s02, s01, q00, q01, q02, q10, q11, q12, q20, q21, q22):
+    """Q S Q^T for a symmetric S given and returned as (11, 22, 33, 23, 13, 12)."""
+    t00 = q00 * s00 + q01 * s01 + q02 * s02      # T = Q S
     t01 = q00 * s01 + q01 * s11 + q02 * s12
     t02 = q00 * s02 + q01 * s12 + q02 * s22
     t10 = q10 * s00 + q11 * s01 + q12 * s02
@@ -73,13 +68,19 @@ def _rotate_hughes_winget(s, w23, w13, w12, dt):
     t20 = q20 * s00 + q21 * s01 + q22 * s02
     t21 = q20 * s01 + q21 * s11 + q22 * s12
     t22 = q20 * s02 + q21 * s12 + q22 * s22
-    # S' = T Q^T
-    s[0] = t00 * q00 + t01 * q01 + t02 * q02
-    s[1] = t10 * q10 + t11 * q11 + t12 * q12
-    s[2] = t20 * q20 + t21 * q21 + t22 * q22
-    s[3] = t10 * q20 + t11 * q21 + t12 * q22
-    s[4] = t00 * q20 + t01 * q21 + t02 * q22
-    s[5] = t00 * q10 + t01 * q11 + t02 * q12
+    return (t00 * q00 + t01 * q01 + t02 * q02, t10 * q10 + t11 * q11 + t12 * q12,
+            t20 * q20 + t21 * q21 + t22 * q22, t10 * q20 + t11 * q21 + t12 * q22,
+            t00 * q20 + t01 * q21 + t02 * q22, t00 * q10 + t01 * q11 + t02 * q12)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _rotate_hughes_winget(s, w23, w13, w12, dt):
+    """Rotate the symmetric stress ``s`` (6,) in place: S <- Q S Q^T, Q = ``_cayley_matrix``."""
+    if w23 == 0.0 and w13 == 0.0 and w12 == 0.0:
+        return
+    q00, q01, q02, q10, q11, q12, q20, q21, q22 = _cayley_matrix(w23, w13, w12, dt)
+    s[0], s[1], s[2], s[3], s[4], s[5] = _rotate_symmetric(s[0], s[1], s[2], s[3], s[4], s[5], q00, q01, q02,
+                                                           q10, q11, q12, q20, q21, q22)
 
 
 @njit(cache=True, fastmath=True, inline="always")

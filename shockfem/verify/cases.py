@@ -54,14 +54,14 @@ def free_flight(size, workdir):
     return out
 
 
-def bar_step(kinematics, size, v=1.0, radius=0.002, length=0.4):
+def bar_step(kinematics, size, v=1.0, radius=0.002, length=0.4, integration="reduced"):
     """A slender bar whose end z = 0 moves at v from t = 0; returns solver, wall and results."""
     c0 = steel_c0()
     t_end = 0.5 * length / c0        # the front is at mid-bar
     h = 0.0005 * SIZES[size] * (2 if kinematics == "3d" else 1)
     raw = rod_scene(f"bar_step_{kinematics}", kinematics, radius=radius, length=length, h=h,
-                    end_time=t_end, boundary=[{"region": "rod.bottom", "type": "velocity",
-                                               "direction": "z", "value": v}])
+                    end_time=t_end, integration=integration,
+                    boundary=[{"region": "rod.bottom", "type": "velocity", "direction": "z", "value": v}])
     solver, wall = solve(raw)
     m = solver.model
     zc = solver.x[m.dofmap[m.kernel_cells]].mean(axis=1)[:, -1]

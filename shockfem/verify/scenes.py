@@ -21,7 +21,7 @@ def steel_c0() -> float:
 
 def rod_scene(name, kinematics="axisymmetric", element=None, radius=0.01, length=0.2, h=0.0025,
               end_time=1e-4, velocity=0.0, boundary=(), damping=None, safety_factor=0.9,
-              rigid=False) -> dict:
+              rigid=False, integration="reduced") -> dict:
     """A steel cylinder standing on z = 0 (3D: axis z through the origin), as a raw scene."""
     gdim = 3 if kinematics == "3d" else 2
     vel = [0.0] * gdim
@@ -31,7 +31,7 @@ def rod_scene(name, kinematics="axisymmetric", element=None, radius=0.01, length
         vel = [float(v) for v in velocity]
     raw = {"scene": {"name": name, "kinematics": kinematics,
                      "element": element or ("hex" if gdim == 3 else "quad"),
-                     "end_time": end_time, "safety_factor": safety_factor},
+                     "end_time": end_time, "safety_factor": safety_factor, "integration": integration},
            "materials": {"steel": dict(STEEL)},
            "bodies": [{"name": "rod", "material": "steel", "shape": "cylinder", "radius": radius,
                        "length": length, "element_size": h, "velocity": vel, "rigid": rigid,

@@ -68,3 +68,16 @@ def test_damping_coefficients_give_the_ratio_at_the_frequency():
     alpha, beta = d.coefficients()
     w = 2 * math.pi * 1000
     assert alpha / (2 * w) + beta * w / 2 == pytest.approx(0.02, rel=1e-12)
+
+
+def test_element_integration_defaults_and_checks():
+    s = resolve(base())
+    assert (s.integration, s.hourglass, s.hourglass_coefficient) == ("reduced", "stiffness", 0.05)
+    raw = base()
+    raw["scene"].update(integration="selective", hourglass="magic", hourglass_coefficient=-0.1)
+    with pytest.raises(SceneError) as e:
+        resolve(raw)
+    text = "\n".join(e.value.problems)
+    assert "scene.integration: must be one of reduced, full" in text
+    assert "scene.hourglass: must be one of stiffness, viscous" in text
+    assert "scene.hourglass_coefficient: must be >= 0" in text

@@ -9,22 +9,11 @@ from shockfem import compat
 from shockfem.model import kinematics as kin
 from shockfem.solver import kernels
 
+from solver_helpers import distorted_mesh as _mesh, steel_params as _params
+
 CASES = [("axisymmetric", mesh.CellType.quadrilateral), ("axisymmetric", mesh.CellType.triangle),
          ("plane-strain", mesh.CellType.quadrilateral), ("3d", mesh.CellType.hexahedron),
          ("3d", mesh.CellType.tetrahedron)]
-
-
-def _mesh(kinematics, cell):
-    comm = MPI.COMM_SELF
-    if kinematics == "3d":
-        m = mesh.create_box(comm, [np.array([0.1, 0.0, 0.0]), np.array([0.4, 0.2, 0.3])], [3, 2, 3], cell)
-    else:
-        m = mesh.create_rectangle(comm, [np.array([0.0, 0.0]), np.array([0.3, 0.5])], [3, 4], cell)
-    # distort the mesh so that Jacobians vary from point to point
-    x = m.geometry.x
-    x[:, 0] += 0.02 * np.sin(7 * x[:, 1]) * x[:, 0]
-    x[:, 1] += 0.03 * np.cos(5 * x[:, 0])
-    return m
 
 
 def _arrays(m, kinematics):
@@ -36,14 +25,6 @@ def _arrays(m, kinematics):
     X = np.ascontiguousarray(V.tabulate_dof_coordinates()[:, :gdim])
     points, wq, N, dN = kin.quadrature(cell, kinematics)
     return V, dofmap, X, wq, N, dN, kin.CELL_KINDS[cell]
-
-
-def _params(E=200e9, nu=0.3, rho=7800.0, beta=0.0):
-    p = np.zeros((1, kernels.NUM_PARAMS))
-    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
-    p[0, [kernels.P_RHO, kernels.P_LAMBDA, kernels.P_MU, kernels.P_WAVE_SPEED, kernels.P_BETA]] = \
-        [rho, lam, mu, np.sqrt((lam + 2 * mu) / rho), beta]
-    return p
 
 
 @pytest.mark.parametrize("kinematics, cell", CASES)

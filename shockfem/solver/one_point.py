@@ -1,0 +1,459 @@
+"""One-point (reduced) integration of quadrilaterals and hexahedra, with hourglass control.
+
+This is the default solid of explicit codes (LS-DYNA's ELFORM=1, type 15 in axisymmetry):
+stress at the cell centre only, so one strain-rate evaluation, one material update and one
+force assembly per cell instead of four (eight), and no shear or volumetric locking.
+The price is the hourglass modes, the nodal velocity patterns the centre point cannot see
+(for a quad, u_a = s * xi_a * eta_a).  They are resisted as Flanagan & Belytschko (1981,
+IJNME 17:679) prescribe, with the hourglass shape vectors made orthogonal to every linear
+field so that the control never resists a real deformation:
+
+    gamma^alpha_a = h^alpha_a - (sum_b h^alpha_b x_bi) b_ai,   b_ai = dN_a/dx_i at the centre
+    q^alpha_i     = sum_a gamma^alpha_a v_ai                   hourglass rate
+    f_ai         += sum_alpha gamma^alpha_a Q^alpha_i          Q the hourglass resultant
+
+with h^alpha the products of the reference coordinates (xi eta for a quad; xi eta, eta zeta,
+zeta xi, xi eta zeta for a hex), and Q either
+
+* stiffness form:  Q += k dt q, k = eps (lambda + 2 mu) V (b:b) / n^2, rotated with the
+  material like the stress (objective), energy stored and given back; or
+* viscous form:    Q  = c q,    c = eps rho c_d V sqrt(b:b) / n, energy dissipated;
+
+n the number of nodes and eps the user's coefficient (LS-DYNA's QH; 0.05 to 0.15 is usual).
+For a square (cube) the stiffness form gives an hourglass mode 1.5 eps (1.1 eps) times the
+stiffness a fully integrated element has for it (``docs/theory.md``).  The power of the
+hourglass forces, Q . q per cell, is returned so that the hourglass energy is reported as
+LS-DYNA reports it, and a run can be judged by its hourglass-to-internal energy ratio.
+
+Axisymmetric quads carry the ring volume V = 2 pi r_c A and the hoop term sigma_tt N_a / r_c
+with N_a = 1/4 at the centre; the hoop strain rate is v_r / r at the centre.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .kernels import P_BETA, P_LAMBDA, P_MU, P_RHO, P_WAVE_SPEED, _cayley_matrix, _rotate_symmetric
+
+HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
+
+
+def hourglass_vectors(vertices: np.ndarray) -> np.ndarray:
+    """The base hourglass vectors h^alpha (modes, nodes) of a reference quad or hex.
+
+    ``vertices`` are the reference vertex coordinates in [0, 1]^d in the mesh's vertex
+    order; rows: xi eta (quad); xi eta, eta zeta, zeta xi, xi eta zeta (hex), xi = 2 X - 1.
+    """
+    xi = 2.0 * np.asarray(vertices, dtype=float) - 1.0
+    if xi.shape[1] == 2:
+        return np.ascontiguousarray((xi[:, 0] * xi[:, 1])[None, :])
+    return np.ascontiguousarray(np.stack([xi[:, 0] * xi[:, 1], xi[:, 1] * xi[:, 2],
+                                          xi[:, 2] * xi[:, 0], xi[:, 0] * xi[:, 1] * xi[:, 2]]))
+
+
+def check_vertex_order(vertices: np.ndarray):
+    """The kernels assume dolfinx's tensor-product vertex order, vertex a = i + 2 j (+ 4 k)."""
+    v = np.asarray(vertices)
+    d = v.shape[1]
+    expected = np.array([[(a >> k) & 1 for k in range(d)] for a in range(2 ** d)], dtype=float)
+    if not np.array_equal(v, expected):
+        raise ValueError(f"one-point kernels need the tensor-product vertex order, got {v.tolist()}")
+
+
+# Walsh transforms.  For vertex values y_a of a quad (hex) in tensor order, the signed sums
+# sum_a y_a chi_m(a), chi = (1, xi, eta, xi eta[, zeta, xi zeta, eta zeta, xi eta zeta]),
+# take 8 (24) additions.  At the centre of the [0, 1]^d reference cell dN_a/dX_k = xi_ak / 2
+# (quad) or xi_ak / 4 (hex), so the Jacobian columns, the hourglass projections h.x and the
+# hourglass rates h.v of a cell are all entries of these transforms; the nodal forces are the
+# transposed transform of the cell's force coefficients.
+
+@njit(cache=True, fastmath=True, inline="always")
+def _walsh4(y0, y1, y2, y3):
+    a0 = y0 + y1
+    a1 = y1 - y0
+    a2 = y2 + y3
+    a3 = y3 - y2
+    return a0 + a2, a1 + a3, a2 - a0, a3 - a1
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _unwalsh4(c0, c1, c2, c3):
+    """f_a = c0 + c1 xi_a + c2 eta_a + c3 xi_a eta_a at the four vertices."""
+    lo = c0 - c2
+    dlo = c1 - c3
+    hi = c0 + c2
+    dhi = c1 + c3
+    return lo - dlo, lo + dlo, hi - dhi, hi + dhi
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _walsh8(y0, y1, y2, y3, y4, y5, y6, y7):
+    a0, a1, a2, a3 = _walsh4(y0, y1, y2, y3)
+    b0, b1, b2, b3 = _walsh4(y4, y5, y6, y7)
+    return a0 + b0, a1 + b1, a2 + b2, a3 + b3, b0 - a0, b1 - a1, b2 - a2, b3 - a3
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _inverse_2x2(j00, j01, j10, j11):
+    det = j00 * j11 - j01 * j10
+    idet = 1.0 / det
+    return det, j11 * idet, -j01 * idet, -j10 * idet, j00 * idet
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _inverse_3x3(j00, j01, j02, j10, j11, j12, j20, j21, j22):
+    c00 = j11 * j22 - j12 * j21
+    c01 = j02 * j21 - j01 * j22
+    c02 = j01 * j12 - j02 * j11
+    det = j00 * c00 + j10 * c01 + j20 * c02
+    idet = 1.0 / det
+    return (det, c00 * idet, c01 * idet, c02 * idet,
+            (j12 * j20 - j10 * j22) * idet, (j00 * j22 - j02 * j20) * idet, (j02 * j10 - j00 * j12) * idet,
+            (j10 * j21 - j11 * j20) * idet, (j01 * j20 - j00 * j21) * idet, (j00 * j11 - j01 * j10) * idet)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _rotate_2d(s0, s1, s5, w12, dt):
+    """In-plane Cayley rotation of (s11, s22, s12) by dt * W12 (``kernels._cayley_matrix`` with a1 = a2 = 0).
+
+    Returns the rotated components and (cos, sin) of the rotation Q = [[c, s], [-s, c]].
+    """
+    a3 = 0.5 * dt * w12
+    k = 2.0 / (1.0 + a3 * a3)
+    cq = 1.0 - k * a3 * a3
+    sq = k * a3
+    t00 = cq * s0 + sq * s5       # T = Q S, then S' = T Q^T
+    t01 = cq * s5 + sq * s1
+    t10 = cq * s5 - sq * s0
+    t11 = cq * s1 - sq * s5
+    return t00 * cq + t01 * sq, t11 * cq - t10 * sq, t01 * cq - t00 * sq, cq, sq
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _stable_step(nodes, bb, c, beta):
+    """2 / omega_max with Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b for a uniform-strain
+    element with lumped mass (a square of side h: h / (sqrt(2) c); a cube: h / (sqrt(3) c)),
+    shortened for stiffness-proportional damping (Belytschko et al., eq. 6.2.28)."""
+    dtc = 2.0 / (c * math.sqrt(nodes * bb))
+    if beta > 0.0:
+        xi = beta / dtc
+        dtc *= math.sqrt(1.0 + xi * xi) - xi
+    return dtc
+
+
+@njit(cache=True, fastmath=True)
+def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
+                   hourglass_form, hourglass_coefficient, params, sigma, hourglass, f):
+    """One-point quads (plane strain or axisymmetric): stress update and internal force.
+
+    Arguments as ``kernels.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
+    hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
+    hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
+    stiffness form accumulates them; both forms need them for the trapezoidal work).
+
+    Returns (dt_stable, damping_power, hourglass_power, bad_cell).
+    """
+    two_pi = 2.0 * math.pi
+    hdt = 0.5 * dt
+    dt_stable = 1e300
+    damping_power = 0.0
+    hourglass_power = 0.0
+    bad_cell = -1
+    for ci in range(cells.shape[0]):
+        c = cells[ci]
+        m = cell_material[c]
+        lam = params[m, P_LAMBDA]
+        mu = params[m, P_MU]
+        beta = params[m, P_BETA]
+        n0 = dofmap[c, 0]
+        n1 = dofmap[c, 1]
+        n2 = dofmap[c, 2]
+        n3 = dofmap[c, 3]
+        # transforms of x and v: (sum, sum xi ., sum eta ., sum xi eta .) per component
+        sx, j00, j01, hx0 = _walsh4(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0])
+        sy, j10, j11, hx1 = _walsh4(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1])
+        svx, v00, v01, hv0 = _walsh4(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0])
+        svy, v10, v11, hv1 = _walsh4(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1])
+        # J = sum_a x_a dN0_a^T with dN0_a = xi_a / 2; Jv likewise from v
+        j00 *= 0.5
+        j01 *= 0.5
+        j10 *= 0.5
+        j11 *= 0.5
+        v00 *= 0.5
+        v01 *= 0.5
+        v10 *= 0.5
+        v11 *= 0.5
+        r = 0.25 * sx
+        vr = 0.25 * svx
+        # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
+        det, i00, i01, i10, i11 = _inverse_2x2(j00 - hdt * v00, j01 - hdt * v01, j10 - hdt * v10, j11 - hdt * v11)
+        l00 = v00 * i00 + v01 * i10
+        l01 = v00 * i01 + v01 * i11
+        l10 = v10 * i00 + v11 * i10
+        l11 = v10 * i01 + v11 * i11
+        d2 = vr / (r - hdt * vr) if axisymmetric else 0.0
+        d0 = l00
+        d1 = l11
+        d5 = 0.5 * (l01 + l10)
+        # objective stress update (Hughes-Winget) and Hooke increment
+        s0, s1, s5, cq, sq = _rotate_2d(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 5], 0.5 * (l01 - l10), dt)
+        tr = d0 + d1 + d2
+        s0 += dt * (lam * tr + 2.0 * mu * d0)
+        s1 += dt * (lam * tr + 2.0 * mu * d1)
+        s2 = sigma[c, 0, 2] + dt * (lam * tr + 2.0 * mu * d2)
+        s5 += dt * 2.0 * mu * d5
+        sigma[c, 0, 0] = s0
+        sigma[c, 0, 1] = s1
+        sigma[c, 0, 2] = s2
+        sigma[c, 0, 5] = s5
+        # end-of-step configuration: volume and J^-1
+        det, i00, i01, i10, i11 = _inverse_2x2(j00, j01, j10, j11)
+        det *= cell_sign[c]
+        if det <= 0.0:
+            bad_cell = c
+        vol = det * (two_pi * r if axisymmetric else thickness)
+        if beta > 0.0:
+            # stiffness-proportional damping: viscous stress beta C : d
+            sv0 = beta * (lam * tr + 2.0 * mu * d0)
+            sv1 = beta * (lam * tr + 2.0 * mu * d1)
+            sv2 = beta * (lam * tr + 2.0 * mu * d2)
+            sv5 = beta * 2.0 * mu * d5
+            damping_power += vol * (sv0 * d0 + sv1 * d1 + sv2 * d2 + 2.0 * sv5 * d5)
+            s0 += sv0
+            s1 += sv1
+            s2 += sv2
+            s5 += sv5
+        # hourglass rate q = h.v - L_end (h.x), and resultant Q
+        e00 = v00 * i00 + v01 * i10
+        e01 = v00 * i01 + v01 * i11
+        e10 = v10 * i00 + v11 * i10
+        e11 = v10 * i01 + v11 * i11
+        q0 = hv0 - e00 * hx0 - e01 * hx1
+        q1 = hv1 - e10 * hx0 - e11 * hx1
+        bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
+        o0 = hourglass[c, 0]
+        o1 = hourglass[c, 1]
+        if hourglass_form == 1:
+            cv = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 4.0
+            Q0 = cv * q0
+            Q1 = cv * q1
+        else:
+            k = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 16.0
+            Q0 = cq * o0 + sq * o1 + k * dt * q0
+            Q1 = cq * o1 - sq * o0 + k * dt * q1
+        hourglass[c, 0] = Q0
+        hourglass[c, 1] = Q1
+        # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
+        hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
+        # f_a = S b_a + h_a Q (+ hoop N_a), S = V sigma - Q (h.x)^T, b_a = J^-T dN0_a: with
+        # M = J^-1 S^T the force is M^T dN0_a, i.e. the transposed transform of (hoop, M/2, Q).
+        t00 = vol * s0 - Q0 * hx0
+        t01 = vol * s5 - Q0 * hx1
+        t10 = vol * s5 - Q1 * hx0
+        t11 = vol * s1 - Q1 * hx1
+        hoop = 0.25 * vol * s2 / r if axisymmetric else 0.0
+        f00, f10, f20, f30 = _unwalsh4(hoop, 0.5 * (i00 * t00 + i01 * t01), 0.5 * (i10 * t00 + i11 * t01), Q0)
+        f01, f11, f21, f31 = _unwalsh4(0.0, 0.5 * (i00 * t10 + i01 * t11), 0.5 * (i10 * t10 + i11 * t11), Q1)
+        f[n0, 0] += f00
+        f[n1, 0] += f10
+        f[n2, 0] += f20
+        f[n3, 0] += f30
+        f[n0, 1] += f01
+        f[n1, 1] += f11
+        f[n2, 1] += f21
+        f[n3, 1] += f31
+        dtc = _stable_step(4.0, bb, params[m, P_WAVE_SPEED], beta)
+        if dtc < dt_stable:
+            dt_stable = dtc
+    return dt_stable, damping_power, hourglass_power, bad_cell
+
+
+@njit(cache=True, fastmath=True)
+def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
+                  hourglass_coefficient, params, sigma, hourglass, f):
+    """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
+
+    hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
+    xi eta zeta), 3 components each.  Returns (dt_stable, damping_power, hourglass_power, bad_cell).
+    """
+    hdt = 0.5 * dt
+    dt_stable = 1e300
+    damping_power = 0.0
+    hourglass_power = 0.0
+    bad_cell = -1
+    for ci in range(cells.shape[0]):
+        c = cells[ci]
+        m = cell_material[c]
+        lam = params[m, P_LAMBDA]
+        mu = params[m, P_MU]
+        beta = params[m, P_BETA]
+        n0, n1, n2, n3 = dofmap[c, 0], dofmap[c, 1], dofmap[c, 2], dofmap[c, 3]
+        n4, n5, n6, n7 = dofmap[c, 4], dofmap[c, 5], dofmap[c, 6], dofmap[c, 7]
+        # transforms of x and v per component (tuples stay in registers; small arrays would not):
+        # entries 1, 2, 4 are 4 J[i, :] (dN0_a = xi_a / 4); 3, 6, 5, 7 the hourglass projections
+        tx = _walsh8(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0],
+                     x_np1[n4, 0], x_np1[n5, 0], x_np1[n6, 0], x_np1[n7, 0])
+        ty = _walsh8(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1],
+                     x_np1[n4, 1], x_np1[n5, 1], x_np1[n6, 1], x_np1[n7, 1])
+        tz = _walsh8(x_np1[n0, 2], x_np1[n1, 2], x_np1[n2, 2], x_np1[n3, 2],
+                     x_np1[n4, 2], x_np1[n5, 2], x_np1[n6, 2], x_np1[n7, 2])
+        ux = _walsh8(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0],
+                     v_half[n4, 0], v_half[n5, 0], v_half[n6, 0], v_half[n7, 0])
+        uy = _walsh8(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1],
+                     v_half[n4, 1], v_half[n5, 1], v_half[n6, 1], v_half[n7, 1])
+        uz = _walsh8(v_half[n0, 2], v_half[n1, 2], v_half[n2, 2], v_half[n3, 2],
+                     v_half[n4, 2], v_half[n5, 2], v_half[n6, 2], v_half[n7, 2])
+        j00, j01, j02 = 0.25 * tx[1], 0.25 * tx[2], 0.25 * tx[4]
+        j10, j11, j12 = 0.25 * ty[1], 0.25 * ty[2], 0.25 * ty[4]
+        j20, j21, j22 = 0.25 * tz[1], 0.25 * tz[2], 0.25 * tz[4]
+        v00, v01, v02 = 0.25 * ux[1], 0.25 * ux[2], 0.25 * ux[4]
+        v10, v11, v12 = 0.25 * uy[1], 0.25 * uy[2], 0.25 * uy[4]
+        v20, v21, v22 = 0.25 * uz[1], 0.25 * uz[2], 0.25 * uz[4]
+        # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
+        (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
+            j00 - hdt * v00, j01 - hdt * v01, j02 - hdt * v02, j10 - hdt * v10, j11 - hdt * v11,
+            j12 - hdt * v12, j20 - hdt * v20, j21 - hdt * v21, j22 - hdt * v22)
+        l00 = v00 * i00 + v01 * i10 + v02 * i20
+        l01 = v00 * i01 + v01 * i11 + v02 * i21
+        l02 = v00 * i02 + v01 * i12 + v02 * i22
+        l10 = v10 * i00 + v11 * i10 + v12 * i20
+        l11 = v10 * i01 + v11 * i11 + v12 * i21
+        l12 = v10 * i02 + v11 * i12 + v12 * i22
+        l20 = v20 * i00 + v21 * i10 + v22 * i20
+        l21 = v20 * i01 + v21 * i11 + v22 * i21
+        l22 = v20 * i02 + v21 * i12 + v22 * i22
+        d0, d1, d2 = l00, l11, l22
+        d3 = 0.5 * (l12 + l21)
+        d4 = 0.5 * (l02 + l20)
+        d5 = 0.5 * (l01 + l10)
+        w23 = 0.5 * (l12 - l21)
+        w13 = 0.5 * (l02 - l20)
+        w12 = 0.5 * (l01 - l10)
+        # objective stress update (Hughes-Winget) and Hooke increment
+        r00, r01, r02, r10, r11, r12, r20, r21, r22 = _cayley_matrix(w23, w13, w12, dt)
+        s0, s1, s2, s3, s4, s5 = _rotate_symmetric(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3],
+                                                   sigma[c, 0, 4], sigma[c, 0, 5],
+                                                   r00, r01, r02, r10, r11, r12, r20, r21, r22)
+        tr = d0 + d1 + d2
+        s0 += dt * (lam * tr + 2.0 * mu * d0)
+        s1 += dt * (lam * tr + 2.0 * mu * d1)
+        s2 += dt * (lam * tr + 2.0 * mu * d2)
+        s3 += dt * 2.0 * mu * d3
+        s4 += dt * 2.0 * mu * d4
+        s5 += dt * 2.0 * mu * d5
+        sigma[c, 0, 0] = s0
+        sigma[c, 0, 1] = s1
+        sigma[c, 0, 2] = s2
+        sigma[c, 0, 3] = s3
+        sigma[c, 0, 4] = s4
+        sigma[c, 0, 5] = s5
+        # end-of-step configuration
+        (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
+            j00, j01, j02, j10, j11, j12, j20, j21, j22)
+        vol = det * cell_sign[c]
+        if vol <= 0.0:
+            bad_cell = c
+        if beta > 0.0:
+            # stiffness-proportional damping: viscous stress beta C : d
+            sv0 = beta * (lam * tr + 2.0 * mu * d0)
+            sv1 = beta * (lam * tr + 2.0 * mu * d1)
+            sv2 = beta * (lam * tr + 2.0 * mu * d2)
+            sv3 = beta * 2.0 * mu * d3
+            sv4 = beta * 2.0 * mu * d4
+            sv5 = beta * 2.0 * mu * d5
+            damping_power += vol * (sv0 * d0 + sv1 * d1 + sv2 * d2 + 2.0 * (sv3 * d3 + sv4 * d4 + sv5 * d5))
+            s0 += sv0
+            s1 += sv1
+            s2 += sv2
+            s3 += sv3
+            s4 += sv4
+            s5 += sv5
+        # hourglass: q^alpha = h^alpha.v - L_end (h^alpha.x), L_end = Jv J^-1, resultants Q^alpha
+        e00 = v00 * i00 + v01 * i10 + v02 * i20
+        e01 = v00 * i01 + v01 * i11 + v02 * i21
+        e02 = v00 * i02 + v01 * i12 + v02 * i22
+        e10 = v10 * i00 + v11 * i10 + v12 * i20
+        e11 = v10 * i01 + v11 * i11 + v12 * i21
+        e12 = v10 * i02 + v11 * i12 + v12 * i22
+        e20 = v20 * i00 + v21 * i10 + v22 * i20
+        e21 = v20 * i01 + v21 * i11 + v22 * i21
+        e22 = v20 * i02 + v21 * i12 + v22 * i22
+        bb = 0.5 * (i00 * i00 + i01 * i01 + i02 * i02 + i10 * i10 + i11 * i11 + i12 * i12
+                    + i20 * i20 + i21 * i21 + i22 * i22)          # b:b, sum_a dN0_a dN0_a^T = I / 2
+        if hourglass_form == 1:
+            coef = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 8.0
+        else:
+            coef = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 64.0
+        # S = V sigma - sum_alpha Q^alpha (h^alpha.x)^T, accumulated mode by mode
+        t00, t11, t22 = vol * s0, vol * s1, vol * s2
+        t12 = t21 = vol * s3
+        t02 = t20 = vol * s4
+        t01 = t10 = vol * s5
+        Q = (0.0, 0.0, 0.0)
+        Qa = Qb = Qc = Qd = Q
+        for al in range(4):
+            w = (3, 6, 5, 7)[al]          # transform entry of mode al (xi eta, eta zeta, zeta xi, xi eta zeta)
+            hx0, hx1, hx2 = tx[w], ty[w], tz[w]
+            q0 = ux[w] - e00 * hx0 - e01 * hx1 - e02 * hx2
+            q1 = uy[w] - e10 * hx0 - e11 * hx1 - e12 * hx2
+            q2 = uz[w] - e20 * hx0 - e21 * hx1 - e22 * hx2
+            o0 = hourglass[c, 3 * al]
+            o1 = hourglass[c, 3 * al + 1]
+            o2 = hourglass[c, 3 * al + 2]
+            if hourglass_form == 1:
+                Q0 = coef * q0
+                Q1 = coef * q1
+                Q2 = coef * q2
+            else:
+                Q0 = r00 * o0 + r01 * o1 + r02 * o2 + coef * dt * q0
+                Q1 = r10 * o0 + r11 * o1 + r12 * o2 + coef * dt * q1
+                Q2 = r20 * o0 + r21 * o1 + r22 * o2 + coef * dt * q2
+            hourglass[c, 3 * al] = Q0
+            hourglass[c, 3 * al + 1] = Q1
+            hourglass[c, 3 * al + 2] = Q2
+            hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1 + (o2 + Q2) * q2)
+            t00 -= Q0 * hx0
+            t01 -= Q0 * hx1
+            t02 -= Q0 * hx2
+            t10 -= Q1 * hx0
+            t11 -= Q1 * hx1
+            t12 -= Q1 * hx2
+            t20 -= Q2 * hx0
+            t21 -= Q2 * hx1
+            t22 -= Q2 * hx2
+            if al == 0:
+                Qa = (Q0, Q1, Q2)
+            elif al == 1:
+                Qb = (Q0, Q1, Q2)
+            elif al == 2:
+                Qc = (Q0, Q1, Q2)
+            else:
+                Qd = (Q0, Q1, Q2)
+        # M = J^-1 S^T; the forces are the transposed transform of the coefficients
+        # (0, M_0/4, M_1/4, Q_xieta, M_2/4, Q_zetaxi, Q_etazeta, Q_xietazeta), split by zeta layer
+        for i in range(3):
+            if i == 0:
+                ta, tb, tc = t00, t01, t02
+            elif i == 1:
+                ta, tb, tc = t10, t11, t12
+            else:
+                ta, tb, tc = t20, t21, t22
+            m0 = 0.25 * (i00 * ta + i01 * tb + i02 * tc)
+            m1 = 0.25 * (i10 * ta + i11 * tb + i12 * tc)
+            m2 = 0.25 * (i20 * ta + i21 * tb + i22 * tc)
+            lo = _unwalsh4(-m2, m0 - Qc[i], m1 - Qb[i], Qa[i] - Qd[i])
+            hi = _unwalsh4(m2, m0 + Qc[i], m1 + Qb[i], Qa[i] + Qd[i])
+            f[n0, i] += lo[0]
+            f[n1, i] += lo[1]
+            f[n2, i] += lo[2]
+            f[n3, i] += lo[3]
+            f[n4, i] += hi[0]
+            f[n5, i] += hi[1]
+            f[n6, i] += hi[2]
+            f[n7, i] += hi[3]
+        dtc = _stable_step(8.0, bb, params[m, P_WAVE_SPEED], beta)
+        if dtc < dt_stable:
+            dt_stable = dtc
+    return dt_stable, damping_power, hourglass_power, bad_cell

@@ -1,0 +1,27 @@
+"""Shared inputs of the kernel tests: a distorted mesh and a material table."""
+import numpy as np
+from dolfinx import mesh
+from mpi4py import MPI
+
+from shockfem.solver import kernels
+
+
+def distorted_mesh(kinematics, cell):
+    comm = MPI.COMM_SELF
+    if kinematics == "3d":
+        m = mesh.create_box(comm, [np.array([0.1, 0.0, 0.0]), np.array([0.4, 0.2, 0.3])], [3, 2, 3], cell)
+    else:
+        m = mesh.create_rectangle(comm, [np.array([0.0, 0.0]), np.array([0.3, 0.5])], [3, 4], cell)
+    # distort the mesh so that Jacobians vary from point to point
+    x = m.geometry.x
+    x[:, 0] += 0.02 * np.sin(7 * x[:, 1]) * x[:, 0]
+    x[:, 1] += 0.03 * np.cos(5 * x[:, 0])
+    return m
+
+
+def steel_params(E=200e9, nu=0.3, rho=7800.0, beta=0.0):
+    p = np.zeros((1, kernels.NUM_PARAMS))
+    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    p[0, [kernels.P_RHO, kernels.P_LAMBDA, kernels.P_MU, kernels.P_WAVE_SPEED, kernels.P_BETA]] = \
+        [rho, lam, mu, np.sqrt((lam + 2 * mu) / rho), beta]
+    return p
