@@ -57,6 +57,9 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     model = build_model(scene, meshed)
     say("models that run:\n" + describe(model))
     solver = ExplicitSolver(model)
+    for msg in solver.log_messages:
+        say(msg)
+    said = len(solver.log_messages)
     say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
         f"(safety factor {scene.safety_factor})")
     history = HistoryRecorder(solver)
@@ -85,6 +88,10 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
                     f"energy balance error {s.energy.balance_error:.3g} exceeds the limit "
                     f"{scene.energy_error_limit:.3g} at t = {s.t:.6g} s (step {s.step}): energy is being "
                     f"created, a sign of instability. Lower scene.safety_factor or refine the mesh.", s.t)
+            if len(s.log_messages) > said:
+                for msg in s.log_messages[said:]:
+                    say(msg)
+                said = len(s.log_messages)
             if bar is not None and s.step % 50 == 0:
                 bar.n = s.t * 1e6
                 bar.set_postfix_str(f"step {s.step}, dt {s.dt:.3g} s, E err {s.energy.balance_error:.1e}",
@@ -94,6 +101,9 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
         status, diagnosis = "unstable", e.diagnosis
         say(f"RUN STOPPED: {e.diagnosis}")
         history.record()
+        raise
+    except BaseException as e:           # keep what was written and say that the run did not finish
+        status, diagnosis = "failed", f"{type(e).__name__}: {e}"
         raise
     finally:
         wall = time.perf_counter() - wall0
@@ -153,9 +163,10 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "energy": {"initial_total": e.initial, "kinetic": e.kinetic, "internal": e.internal,
                    "damping": e.damping, "hourglass": e.hourglass,
                    "hourglass_to_internal": abs(e.hourglass) / max(abs(e.internal), 1e-300),
-                   "external_work": e.external, "balance": e.balance,
+                   "contact": e.contact, "external_work": e.external, "balance": e.balance,
                    "balance_error": e.balance_error},
         "models": describe(m).splitlines(),
+        "contacts": {p.name: p.summary(v) for p in solver.contacts},
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],
                             "max_von_mises": float(max_vm[i])}

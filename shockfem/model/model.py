@@ -263,6 +263,12 @@ def describe(model: Model) -> str:
     for i, b in enumerate(sc.bodies):
         kind = "rigid body (no stiffness)" if b.rigid else f"linear elastic, updated Lagrangian, {element}"
         lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
+    for c in sc.contacts:
+        other = c.b if c.b else f"rigid wall through {c.wall.point} normal {c.wall.normal}"
+        lines.append(f"  contact {c.name}: {c.a} <-> {other}, two-pass node-to-segment penalty "
+                     f"({c.penalty}, scale {c.penalty_scale:g}), damping {c.damping:g} of critical"
+                     if c.b else f"  contact {c.name}: {c.a} -> {other}, node-to-plane penalty "
+                     f"({c.penalty}, scale {c.penalty_scale:g}), damping {c.damping:g} of critical")
     if model.scene.damping:
         d = model.scene.damping
         a, be = d.coefficients()

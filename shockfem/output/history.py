@@ -12,7 +12,7 @@ import numpy as np
 from ..solver.explicit import ExplicitSolver
 
 
-ENERGY_COLUMNS = ("kinetic", "internal", "damping", "hourglass", "external", "balance")
+ENERGY_COLUMNS = ("kinetic", "internal", "damping", "hourglass", "contact", "external", "balance")
 
 
 class HistoryRecorder:
@@ -35,7 +35,7 @@ class HistoryRecorder:
         row = [s.t]
         for vb, ab in zip(v, a):
             row += list(vb) + list(ab)
-        row += [e.kinetic, e.internal, e.damping, e.hourglass, e.external, e.balance, e.balance_error, s.dt]
+        row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
 
     def array(self) -> np.ndarray:

@@ -112,6 +112,25 @@ class Boundary:
 
 
 @dataclass(frozen=True)
+class Wall:
+    """A rigid plane through ``point`` whose ``normal`` points to the side bodies stay on."""
+    point: tuple[float, ...]
+    normal: tuple[float, ...]        # unit vector
+    velocity: tuple[float, ...]      # [m/s], constant
+
+
+@dataclass(frozen=True)
+class Contact:
+    name: str
+    a: str                           # "body" or "body.region"
+    b: str | None                    # the other surface, or None for a wall
+    wall: Wall | None
+    penalty: str                     # segment | soft
+    penalty_scale: float
+    damping: float                   # fraction of critical (LS-DYNA VDC)
+
+
+@dataclass(frozen=True)
 class Outputs:
     fields: tuple[str, ...]
     field_interval: float
@@ -133,6 +152,7 @@ class Scene:
     materials: dict[str, Material]
     bodies: tuple[Body, ...]
     boundaries: tuple[Boundary, ...]
+    contacts: tuple[Contact, ...]
     damping: Damping | None
     outputs: Outputs
     raw: dict = field(repr=False, default_factory=dict)
@@ -242,7 +262,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     import os
 
     ck = _Checker()
-    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "damping", "outputs"), "")
+    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "damping", "outputs"), "")
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient"), "scene")
@@ -405,6 +425,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                 history = ((0.0, ck.quantity(bc, "value", path, dim)),)
         boundaries.append(Boundary(region, kind, comps, history))
 
+    contacts = _contacts(ck, raw, body_regions, gdim)
+
     damping = None
     if "damping" in raw:
         d = ck.table(raw, "damping", "damping")
@@ -428,7 +450,63 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         raise SceneError(ck.problems)
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
-                 tuple(boundaries), damping, outputs, raw)
+                 tuple(boundaries), tuple(contacts), damping, outputs, raw)
+
+
+PENALTIES = ("segment", "soft")
+
+
+def _contacts(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Contact]:
+    """[[contact]] entries: two surfaces (``a``, ``b``) or a surface and a rigid ``wall``."""
+    out = []
+    entries = raw.get("contact", [])
+    if not isinstance(entries, list):
+        ck.fail("contact", "must be a list of [[contact]] entries")
+        return out
+
+    def surface(c: dict, key: str, path: str):
+        spec = c.get(key)
+        if not isinstance(spec, str):
+            ck.fail(f"{path}.{key}", "missing ('body' or 'body.region')")
+            return None
+        bname, _, rname = spec.partition(".")
+        if bname not in body_regions:
+            ck.fail(f"{path}.{key}", f"unknown body {bname!r} (bodies: {', '.join(body_regions)})")
+        elif rname and rname not in body_regions[bname]:
+            ck.fail(f"{path}.{key}", f"body {bname!r} has regions {', '.join(body_regions[bname])}; got {rname!r}")
+        return spec
+
+    for i, c in enumerate(entries):
+        path = f"contact[{i}]"
+        if not isinstance(c, dict):
+            ck.fail(path, "must be a table")
+            continue
+        ck.unknown(c, ("name", "a", "b", "wall", "penalty", "penalty_scale", "damping"), path)
+        a = surface(c, "a", path)
+        b = wall = None
+        if ("b" in c) == ("wall" in c):
+            ck.fail(path, "give exactly one of b (a second surface) or wall (a rigid plane)")
+        elif "b" in c:
+            b = surface(c, "b", path)
+            if a and b and a.partition(".")[0] == b.partition(".")[0]:
+                ck.fail(f"{path}.b", "self-contact of a body is not supported; give two different bodies")
+        else:
+            w = ck.table(c, "wall", f"{path}.wall")
+            ck.unknown(w, ("point", "normal", "velocity"), f"{path}.wall")
+            point = ck.vector(w, "point", f"{path}.wall", "length", gdim, [0.0] * gdim)
+            normal = ck.vector(w, "normal", f"{path}.wall", "dimensionless", gdim, [0.0] * (gdim - 1) + [1.0])
+            norm = sum(x * x for x in normal) ** 0.5
+            if norm == 0:
+                ck.fail(f"{path}.wall.normal", "must not be zero")
+                norm = 1.0
+            vel = ck.vector(w, "velocity", f"{path}.wall", "velocity", gdim, [0.0] * gdim)
+            wall = Wall(point, tuple(x / norm for x in normal), vel)
+        penalty = ck.choice(c, "penalty", path, PENALTIES, default="segment")
+        scale = ck.quantity(c, "penalty_scale", path, "dimensionless", default=0.1, positive=True)
+        zeta = ck.quantity(c, "damping", path, "dimensionless", default=0.1, nonnegative=True, upper=1.0)
+        name = c.get("name", f"{a}-{b or 'wall'}")
+        out.append(Contact(str(name), a or "", b, wall, penalty, scale, zeta))
+    return out
 
 
 def replace(scene: Scene, **changes) -> Scene:

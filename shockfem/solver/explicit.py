@@ -28,6 +28,7 @@ from mpi4py import MPI
 from .. import compat
 from ..errors import UnstableRun
 from ..model import Model
+from ..contact.pairs import ContactPair
 from . import kernels, nodal, one_point
 
 
@@ -37,13 +38,15 @@ class Energies:
     internal: float = 0.0          # stored (elastic) energy = internal work less damping
     damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts)
     hourglass: float = 0.0         # work of the hourglass forces (one-point elements)
+    contact: float = 0.0           # taken up by contact (penalty springs, contact damping) = -work
     external: float = 0.0          # work of loads and prescribed velocities
     initial: float = 0.0           # kinetic energy at t = 0
     peak: float = 0.0              # largest energy in play so far (the balance reference)
 
     @property
     def balance(self) -> float:
-        return self.kinetic + self.internal + self.damping + self.hourglass - self.external - self.initial
+        return (self.kinetic + self.internal + self.damping + self.hourglass + self.contact
+                - self.external - self.initial)
 
     @property
     def balance_error(self) -> float:
@@ -95,6 +98,11 @@ class ExplicitSolver:
         self.x = m.X0.copy()
         self.a = np.zeros_like(self.x)
         self.f_ext = np.zeros_like(self.x)
+        self.f_con = np.zeros_like(self.x)
+        self.dt_contact = np.inf       # smallest stable step of the active contact springs
+        self._said_contact_dt = False
+        self.log_messages: list[str] = []
+        self.contacts = [ContactPair(m, c) for c in m.scene.contacts]
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
@@ -117,6 +125,13 @@ class ExplicitSolver:
             self.v[:] = initial_velocity(self.x)
         self._internal_force(0.0)
         self._external_force(0.0)
+        for pair in self.contacts:
+            nodes, deepest = pair.start(self.x, self.v, m.mass)
+            if nodes:
+                self.log_messages.append(
+                    f"contact '{pair.name}': {nodes} nodes start inside the other surface (deepest "
+                    f"{deepest * 1e3:.4g} mm); each keeps its initial penetration as its zero")
+        self._contact_forces(0.0)
         self._acceleration()
         self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
         self.energy.peak = self.energy.initial
@@ -188,8 +203,24 @@ class ExplicitSolver:
         for load in self.model.loads:
             flat[load.dofs] += load.value(t) * load.shares
 
+    def _contact_forces(self, dt: float):
+        if not self.contacts:
+            return
+        self.f_con[:] = 0.0
+        limit = np.inf
+        for pair in self.contacts:
+            limit = min(limit, pair.compute(self.x, self.v, self.model.mass, dt, self.t))
+            self.f_con[pair.nodes] += pair.f[pair.nodes]
+        if np.isfinite(limit) and not self._said_contact_dt:
+            self._said_contact_dt = True
+            combined = 1.0 / np.sqrt(1.0 / self.dt_stable ** 2 + 1.0 / limit ** 2)
+            self.log_messages.append(f"t = {self.t:.6g} s: contact springs lower the stable step from "
+                                     f"{self.dt_stable:.4g} s to {combined:.4g} s while they act (before "
+                                     f"the safety factor)")
+        self.dt_contact = limit
+
     def _acceleration(self):
-        np.multiply(self.f_ext - self.f_int, self.inv_mass[:, None], out=self.a)
+        np.multiply(self.f_ext + self.f_con - self.f_int, self.inv_mass[:, None], out=self.a)
 
     # ------------------------------------------------------------ diagnosis
     def _body_of_cell(self, cell: int) -> str:
@@ -215,7 +246,12 @@ class ExplicitSolver:
 
     # ------------------------------------------------------------ the step
     def stable_step(self) -> float:
-        return self.model.scene.safety_factor * self.dt_stable
+        """safety x the critical step; active contact springs add to the highest frequency of the nodes
+        they join (omega^2 <= omega_elements^2 + omega_contact^2, Gershgorin), so the steps combine."""
+        dt = self.dt_stable
+        if np.isfinite(self.dt_contact):
+            dt = 1.0 / np.sqrt(1.0 / dt ** 2 + 1.0 / self.dt_contact ** 2)
+        return self.model.scene.safety_factor * dt
 
     def advance(self, dt: float):
         """One central-difference step of size ``dt`` (t_n -> t_{n+1})."""
@@ -249,7 +285,8 @@ class ExplicitSolver:
             self._v_fn.x.scatter_forward()
 
         # position, and the first halves of the work increments (forces at t_n)
-        w_int, w_ext = nodal.update_position(self.x, self.u, self.v, dt, self.f_int, self.f_ext, m.num_owned)
+        w_int, w_ext, w_con = nodal.update_position(self.x, self.u, self.v, dt, self.f_int, self.f_ext,
+                                                    self.f_con, m.num_owned)
         self.t += dt
         self.dt = dt
         self.step += 1
@@ -259,21 +296,28 @@ class ExplicitSolver:
         damping_power, hourglass_power = self._internal_force(dt)
         t2 = time.perf_counter()
         self._external_force(self.t)
+        self._contact_forces(dt)
 
         # acceleration a_{n+1}, second halves of the work increments, kinetic energy
-        w_int2, w_ext2, kinetic, bad = nodal.finish_step(self.a, self.v, self.f_int, self.f_ext, self.inv_mass,
-                                                         m.mass, self.constrained, dt, m.num_owned)
+        w_int2, w_ext2, w_con2, kinetic, bad = nodal.finish_step(
+            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.inv_mass, m.mass, self.constrained, dt,
+            m.num_owned)
         if self.parallel:
-            w_int, w_ext, w_int2, w_ext2, kinetic = self.comm.allreduce(
-                np.array([w_int, w_ext, w_int2, w_ext2, kinetic]), op=MPI.SUM)
+            w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic = self.comm.allreduce(
+                np.array([w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic]), op=MPI.SUM)
             bad = self.comm.allreduce(bad, op=MPI.MAX)
         self._check_finite(bad)
         e.damping += dt * damping_power
         e.hourglass += dt * hourglass_power
         e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power)
         e.external += w_ext + w_ext2 + reaction_work
+        e.contact -= w_con + w_con2
+        if self.contacts:
+            for pair in self.contacts:
+                pair.account(dt, self.v, self.t, lambda: self.body_means()[0])
         e.kinetic = kinetic
-        e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass))
+        e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass),
+                     abs(e.contact))
         t3 = time.perf_counter()
         self.times.update += t1 - t0
         self.times.internal_force += t2 - t1
@@ -282,7 +326,7 @@ class ExplicitSolver:
 
     def _advance_rigid(self, rb, rs: RigidState, dt: float, dt_avg: float):
         m = self.model
-        force = self.f_ext[rb.nodes] - self.f_int[rb.nodes]
+        force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
         F = self._sum(force[rb.owned].sum(axis=0))
         if m.scene.kinematics == "axisymmetric":
             F[0] = 0.0       # a ring's radial forces cancel: an axisymmetric rigid body moves along z

@@ -42,16 +42,17 @@ def update_velocity(v, a, dt_avg, alpha, mass, num_owned):
 
 
 @njit(cache=True, fastmath=True)
-def update_position(x, u, v, dt, f_int, f_ext, num_owned):
+def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
     """x_{n+1} = x_n + dt v_{n+1/2} (and u likewise).
 
     Returns the first halves of the trapezoidal work increments over the step,
-    (1/2 du . f_int_n, 1/2 du . f_ext_n) summed over owned nodes; ``finish_step`` adds the
-    halves with the forces at t_{n+1}.
+    (1/2 du . f_int_n, 1/2 du . f_ext_n, 1/2 du . f_con_n) summed over owned nodes (f_con: contact
+    forces); ``finish_step`` adds the halves with the forces at t_{n+1}.
     """
     gdim = v.shape[1]
     w_int = 0.0
     w_ext = 0.0
+    w_con = 0.0
     for n in range(v.shape[0]):
         for i in range(gdim):
             du = dt * v[n, i]
@@ -60,32 +61,35 @@ def update_position(x, u, v, dt, f_int, f_ext, num_owned):
             if n < num_owned:
                 w_int += du * f_int[n, i]
                 w_ext += du * f_ext[n, i]
-    return 0.5 * w_int, 0.5 * w_ext
+                w_con += du * f_con[n, i]
+    return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con
 
 
 @njit(cache=True, fastmath=True)
-def finish_step(a, v, f_int, f_ext, inv_mass, mass, constrained, dt, num_owned):
-    """a_{n+1} = M^-1 (f_ext - f_int), the second halves of the work increments, and the
+def finish_step(a, v, f_int, f_ext, f_con, inv_mass, mass, constrained, dt, num_owned):
+    """a_{n+1} = M^-1 (f_ext + f_con - f_int), the second halves of the work increments, and the
     kinetic energy 1/2 m |v_{n+1}|^2 with v_{n+1} = v_{n+1/2} + dt/2 a_{n+1} (constrained dofs,
     flagged in ``constrained`` (nodes, gdim), keep their prescribed velocity).
 
-    Returns (half internal work, half external work, kinetic energy, first non-finite node or -1).
+    Returns (half internal, external and contact work, kinetic energy, first non-finite node or -1).
     """
     gdim = v.shape[1]
     w_int = 0.0
     w_ext = 0.0
+    w_con = 0.0
     kinetic = 0.0
     bad = -1
     for n in range(v.shape[0]):
         for i in range(gdim):
-            an = (f_ext[n, i] - f_int[n, i]) * inv_mass[n]
+            an = (f_ext[n, i] + f_con[n, i] - f_int[n, i]) * inv_mass[n]
             a[n, i] = an
             if n < num_owned:
                 du = dt * v[n, i]
                 w_int += du * f_int[n, i]
                 w_ext += du * f_ext[n, i]
+                w_con += du * f_con[n, i]
                 vn = v[n, i] if constrained[n, i] else v[n, i] + 0.5 * dt * an
                 kinetic += 0.5 * mass[n] * vn * vn
             if not math.isfinite(an) and bad < 0:
                 bad = n
-    return 0.5 * w_int, 0.5 * w_ext, kinetic, bad
+    return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con, kinetic, bad

@@ -218,6 +218,8 @@ def _parallel_check(size, workdir):
                  absolute=True)
 
 
+from .contact_cases import rod_on_rod, rod_on_wall  # noqa: E402  (they use check and SIZES above)
+
 CASES = {
     "free_flight": free_flight,
     "bar_wave": bar_wave,
@@ -225,5 +227,7 @@ CASES = {
     "energy_conservation": energy_conservation,
     "axisymmetric_vs_3d": axisymmetric_vs_3d,
     "rayleigh_damping": rayleigh_damping,
+    "rod_on_rod": rod_on_rod,
+    "rod_on_wall": rod_on_wall,
 }
 

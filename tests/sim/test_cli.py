@@ -75,7 +75,7 @@ def test_verify_list_names_the_cases():
     p = shockfem("verify", "--list")
     assert p.returncode == 0
     for name in ("free_flight", "bar_wave", "free_free_frequency", "energy_conservation",
-                 "axisymmetric_vs_3d", "rayleigh_damping"):
+                 "axisymmetric_vs_3d", "rayleigh_damping", "rod_on_rod", "rod_on_wall"):
         assert name in p.stdout
 
 

@@ -1,11 +1,16 @@
-"""The foundation's verification cases at coarse size, with the tolerances they state."""
+"""The verification cases with the tolerances they state: coarse size, except the contact cases,
+which run at their default size (3 s each): the penalty's compliance scales with the element size,
+and at coarse size the rod-on-rod contact lasts 2.3% longer than 2L/c0 (tolerance 2%)."""
 import pytest
 
 from shockfem.verify import CASES, run_cases
 
+DEFAULT_SIZE = {"rod_on_rod", "rod_on_wall"}
+
 
 @pytest.mark.parametrize("name", list(CASES))
-def test_case_passes_at_coarse_size(name, tmp_path):
-    checks = run_cases([name], "coarse", str(tmp_path), echo=lambda *a: None)
+def test_case_passes(name, tmp_path):
+    size = "default" if name in DEFAULT_SIZE else "coarse"
+    checks = run_cases([name], size, str(tmp_path), echo=lambda *a: None)
     failed = [c for c in checks if not c["passed"]]
     assert checks and not failed, failed

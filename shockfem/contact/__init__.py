@@ -1,0 +1,1 @@
+"""Contact: surfaces, the compiled penalty kernels, and contact pairs at run time."""
