@@ -166,7 +166,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
                    "contact": e.contact, "external_work": e.external, "balance": e.balance,
                    "balance_error": e.balance_error},
         "models": describe(m).splitlines(),
-        "contacts": {p.name: p.summary(v) for p in solver.contacts},
+        "contacts": {p.name: p.summary() for p in solver.contacts},
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],
                             "max_von_mises": float(max_vm[i])}

@@ -19,6 +19,22 @@ import math
 from numba import njit
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def _beyond_initial(g, offset, i):
+    """The penetration that counts: the gap g less the slave's initial penetration offset[i] (<= 0),
+    which is released as far as the node comes back out."""
+    if g > offset[i]:
+        offset[i] = min(g, 0.0)
+    return g - offset[i]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _spring(k, g, g_dot, m_eff, zeta):
+    """Normal force -k g - 2 zeta sqrt(k m*) g_dot of a penetration g < 0 (the caller applies it only
+    when positive: contact never pulls) and the stable step sqrt(2 m*/k) of the spring."""
+    return -k * g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot, math.sqrt(2.0 * m_eff / k)
+
+
 @njit(cache=True, fastmath=True)
 def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, depth, f,
                        gap, offset):
@@ -62,9 +78,7 @@ def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v
             offset[i] = 0.0
             continue
         gap[i] = best_g
-        if best_g > offset[i]:
-            offset[i] = min(best_g, 0.0) if offset[i] < 0.0 else 0.0
-        best_g -= offset[i]
+        best_g = _beyond_initial(best_g, offset, i)
         if best_g >= 0.0:
             continue
         a = segments[best, 0]
@@ -77,9 +91,9 @@ def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v
         m_eff = ms * mm / (ms + mm)
         g_dot = ((v[s, 0] - w0 * v[a, 0] - w1 * v[b, 0]) * best_nx
                  + (v[s, 1] - w0 * v[a, 1] - w1 * v[b, 1]) * best_ny)
-        fn = -k * best_g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot
+        fn, dt_spring = _spring(k, best_g, g_dot, m_eff, zeta)
         active += 1
-        dt_min = min(dt_min, math.sqrt(2.0 * m_eff / k))
+        dt_min = min(dt_min, dt_spring)
         if fn <= 0.0:
             continue
         f[s, 0] += fn * best_nx
@@ -110,15 +124,12 @@ def node_to_plane(slaves, node_stiffness, point, normal, wall_velocity, x, v, ma
             offset[i] = 0.0
             continue
         gap[i] = g
-        if g > offset[i]:
-            offset[i] = min(g, 0.0) if offset[i] < 0.0 else 0.0
-        g -= offset[i]
+        g = _beyond_initial(g, offset, i)
         if g >= 0.0:
             continue
-        k = node_stiffness[i]
+        fn, dt_spring = _spring(node_stiffness[i], g, g_dot, mass[s], zeta)
         active += 1
-        dt_min = min(dt_min, math.sqrt(2.0 * mass[s] / k))
-        fn = -k * g - 2.0 * zeta * math.sqrt(k * mass[s]) * g_dot
+        dt_min = min(dt_min, dt_spring)
         if fn <= 0.0:
             continue
         for d in range(gdim):

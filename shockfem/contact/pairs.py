@@ -16,8 +16,10 @@ import math
 import numpy as np
 from scipy.spatial import cKDTree
 
+from ..errors import ModelError
 from ..model import Model
 from ..scene.schema import Contact
+from ..solver.kernels import P_LAMBDA, P_MU
 from . import kernels
 from .surfaces import Surface, build_surface
 
@@ -41,40 +43,42 @@ def _weight(model: Model, r: np.ndarray) -> np.ndarray:
 
 
 def _bulk_modulus(model: Model, cells: np.ndarray) -> np.ndarray:
-    from ..solver.kernels import P_LAMBDA, P_MU
     p = model.params[model.cell_material[cells]]
     return p[:, P_LAMBDA] + 2.0 * p[:, P_MU] / 3.0
 
 
+def segment_lengths(X: np.ndarray, surface: Surface) -> np.ndarray:
+    return np.linalg.norm(X[surface.segments[:, 1]] - X[surface.segments[:, 0]], axis=1)
+
+
+def _segment_areas(model: Model, surface: Surface) -> np.ndarray:
+    """Areas of 2D segments in the reference configuration: length x (2 pi r at the midpoint, or thickness)."""
+    X = model.X0
+    r_mid = 0.5 * (X[surface.segments[:, 0], 0] + X[surface.segments[:, 1], 0])
+    return segment_lengths(X, surface) * _weight(model, r_mid)
+
+
 def segment_stiffness(model: Model, surface: Surface, scale: float) -> np.ndarray:
     """LS-DYNA's penalty for solids, k = scale K A^2 / V, per segment (A its area, V its cell's volume)."""
-    X = model.X0
-    p0, p1 = X[surface.segments[:, 0]], X[surface.segments[:, 1]]
-    area = np.linalg.norm(p1 - p0, axis=1) * _weight(model, 0.5 * (p0[:, 0] + p1[:, 0]))
-    return scale * _bulk_modulus(model, surface.cells) * area ** 2 / _cell_volumes(model, surface.cells)
+    return (scale * _bulk_modulus(model, surface.cells) * _segment_areas(model, surface) ** 2
+            / _cell_volumes(model, surface.cells))
 
 
 def node_stiffness(model: Model, surface: Surface, scale: float) -> np.ndarray:
-    """Per surface node: k = scale K A_i^2 / V_i with A_i half the area of its segments and V_i the
-    mean volume of their cells (for a node against a rigid wall)."""
-    X = model.X0
-    p0, p1 = X[surface.segments[:, 0]], X[surface.segments[:, 1]]
-    area = np.linalg.norm(p1 - p0, axis=1) * _weight(model, 0.5 * (p0[:, 0] + p1[:, 0]))
-    vol = _cell_volumes(model, surface.cells)
-    K = _bulk_modulus(model, surface.cells)
-    index = {n: i for i, n in enumerate(surface.nodes)}
-    A = np.zeros(len(surface.nodes))
-    V = np.zeros(len(surface.nodes))
-    KV = np.zeros(len(surface.nodes))
-    count = np.zeros(len(surface.nodes))
-    for j, seg in enumerate(surface.segments):
-        for n in seg:
-            i = index[n]
-            A[i] += 0.5 * area[j]
-            V[i] += vol[j]
-            KV[i] += K[j]
-            count[i] += 1
-    return scale * (KV / count) * A ** 2 / (V / count)
+    """Per surface node: k = scale K A_i^2 / V_i with A_i half the area of its segments, and K and V_i
+    the means over the cells of those segments (for a node against a rigid wall)."""
+    per_node = len(surface.segments[0])
+    node = np.searchsorted(surface.nodes, surface.segments.ravel())     # nodes is sorted and unique
+
+    def node_sum(per_segment):
+        out = np.zeros(len(surface.nodes))
+        np.add.at(out, node, np.repeat(per_segment, per_node))
+        return out
+    count = node_sum(np.ones(len(surface.segments)))
+    A = node_sum(_segment_areas(model, surface) / per_node)
+    K = node_sum(_bulk_modulus(model, surface.cells)) / count
+    V = node_sum(_cell_volumes(model, surface.cells)) / count
+    return scale * K * A ** 2 / V
 
 
 class _Pass:
@@ -99,11 +103,9 @@ class _Pass:
 class ContactPair:
     def __init__(self, model: Model, spec: Contact):
         if model.gdim != 2:
-            from ..errors import ModelError
             raise ModelError(f"contact '{spec.name}': this version has contact in axisymmetric and plane "
                              f"strain scenes; 3D contact is not built yet (use a 2D scene)")
         if model.comm.size > 1:
-            from ..errors import ModelError
             raise ModelError(f"contact '{spec.name}': contact runs on one process in this version; run "
                              f"without mpirun")
         self.model = model
@@ -124,14 +126,11 @@ class ContactPair:
             self.wall_offset = np.zeros(len(self.a.nodes))
             self.passes = []
             self.nodes = self.a.nodes
-            seg_len = np.linalg.norm(model.X0[self.a.segments[:, 1]] - model.X0[self.a.segments[:, 0]], axis=1)
         else:
             self.passes = [_Pass(self.a, self.b, segment_stiffness(model, self.b, seg_scale)),
                            _Pass(self.b, self.a, segment_stiffness(model, self.a, seg_scale))]
             self.nodes = np.union1d(self.a.nodes, self.b.nodes)
-            seg_len = np.concatenate([
-                np.linalg.norm(model.X0[s.segments[:, 1]] - model.X0[s.segments[:, 0]], axis=1)
-                for s in (self.a, self.b)])
+        seg_len = np.concatenate([segment_lengths(model.X0, s) for s in (self.a, self.b) if s is not None])
         # a node counts as penetrating only within `depth` of the surface (half the thinnest element
         # is a safe bound for a single step's travel); the search reaches a segment length beyond that
         self.depth = 0.5 * float(seg_len.min()) if self.b is not None else float(seg_len.max())
@@ -150,7 +149,6 @@ class ContactPair:
         self.searches = 0
         self.initial_overlap = (0, 0.0)      # (nodes, deepest [m]) at t = 0
         self.v_before = self.v_after = None  # body mean velocities around contact (for restitution)
-        self.dt_limit = np.inf
 
     # --------------------------------------------------------------- search
     def _boxes_apart(self, x: np.ndarray) -> bool:
@@ -198,7 +196,6 @@ class ContactPair:
         self.active = active
         dt_limit = dt_limit if active else np.inf
         self.max_penetration = max(self.max_penetration, deepest)
-        self.dt_limit = dt_limit
         self.force_a = f[self.a.nodes].sum(axis=0)
         return dt_limit
 
@@ -243,7 +240,7 @@ class ContactPair:
         self.initial_overlap = (nodes, deepest)
         return self.initial_overlap
 
-    def restitution(self, body_velocities_now) -> float | None:
+    def restitution(self) -> float | None:
         """e = -(v_a' - v_b') . n / ((v_a - v_b) . n), n the direction of the impulse on a;
         from the body mean velocities before first contact and after final separation."""
         if self.v_before is None:
@@ -260,12 +257,12 @@ class ContactPair:
         before = rel(self.v_before)
         return -rel(after) / before if before != 0 else None
 
-    def summary(self, body_velocities_now) -> dict:
+    def summary(self) -> dict:
         return {"surfaces": [self.spec.a, self.spec.b or "wall"],
                 "penalty": self.spec.penalty, "damping_ratio": self.spec.damping,
                 "impulse_on_a": self.impulse.tolist(), "max_normal_force": self.max_force,
                 "friction_force_max": 0.0,
                 "contact_energy": -self.work, "max_penetration": self.max_penetration,
-                "intervals": self.intervals, "restitution": self.restitution(body_velocities_now),
+                "intervals": self.intervals, "restitution": self.restitution(),
                 "initial_overlap": {"nodes": self.initial_overlap[0], "deepest": self.initial_overlap[1]},
                 "searches": self.searches}

@@ -113,6 +113,9 @@ class ExplicitSolver:
                                   if m.constraints else np.zeros(0, dtype=np.int64))
         self.constrained = np.zeros(self.x.shape, dtype=np.bool_)
         self.constrained.reshape(-1)[self._constrained_dofs] = True
+        # for the reactions' work: the mass behind each constrained dof, and which dofs this rank owns
+        self._constrained_mass = m.mass[self._constrained_dofs // gdim]
+        self._constrained_owned = self._constrained_dofs < m.num_owned * gdim
         self.t = 0.0
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
@@ -277,10 +280,9 @@ class ExplicitSolver:
             v_free = flat[constrained]
             for con in m.constraints:
                 flat[con.dofs] = con.value(self.t + 0.5 * dt)
-            owned = constrained < m.num_owned * m.gdim
-            mass = m.mass[constrained // m.gdim]
             v_new = flat[constrained]
-            reaction_work = self._sum(float(np.sum((mass * (v_new - v_free) * 0.5 * (v_old + v_new))[owned])))
+            reaction_work = self._sum(float(np.sum((self._constrained_mass * (v_new - v_free)
+                                                    * 0.5 * (v_old + v_new))[self._constrained_owned])))
         if self.parallel:
             self._v_fn.x.scatter_forward()
 
@@ -312,9 +314,8 @@ class ExplicitSolver:
         e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power)
         e.external += w_ext + w_ext2 + reaction_work
         e.contact -= w_con + w_con2
-        if self.contacts:
-            for pair in self.contacts:
-                pair.account(dt, self.v, self.t, lambda: self.body_means()[0])
+        for pair in self.contacts:
+            pair.account(dt, self.v, self.t, lambda: self.body_means()[0])
         e.kinetic = kinetic
         e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass),
                      abs(e.contact))

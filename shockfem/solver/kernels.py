@@ -84,15 +84,26 @@ def _rotate_hughes_winget(s, w23, w13, w12, dt):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _elastic_increment(s, d, lam, mu, dt):
-    """Hypoelastic (Hooke) increment: s += dt (lam tr(d) I + 2 mu d); d as [11,22,33,23,13,12]."""
-    tr = d[0] + d[1] + d[2]
-    s[0] += dt * (lam * tr + 2.0 * mu * d[0])
-    s[1] += dt * (lam * tr + 2.0 * mu * d[1])
-    s[2] += dt * (lam * tr + 2.0 * mu * d[2])
-    s[3] += dt * 2.0 * mu * d[3]
-    s[4] += dt * 2.0 * mu * d[4]
-    s[5] += dt * 2.0 * mu * d[5]
+def _hooke(d0, d1, d2, d3, d4, d5, lam, mu):
+    """C : d = lam tr(d) I + 2 mu d for a symmetric d given as (11, 22, 33, 23, 13, 12).
+
+    The one place of Hooke's law: the elastic stress rate, and (times beta) the viscous
+    stress of stiffness-proportional damping.
+    """
+    ltr = lam * (d0 + d1 + d2)
+    return (ltr + 2.0 * mu * d0, ltr + 2.0 * mu * d1, ltr + 2.0 * mu * d2,
+            2.0 * mu * d3, 2.0 * mu * d4, 2.0 * mu * d5)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _damped_step(dtc, beta):
+    """The stable step dtc of an element shortened by stiffness-proportional damping beta:
+    dt <= (2/w)(sqrt(1 + xi^2) - xi), xi = beta w / 2, w = 2 / dtc the element's highest
+    frequency (Belytschko et al., eq. 6.2.28)."""
+    if beta > 0.0:
+        xi = beta / dtc
+        dtc *= math.sqrt(1.0 + xi * xi) - xi
+    return dtc
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -383,26 +394,16 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
                 s[k] = sigma[c, q, k]
             _rotate_hughes_winget(s, 0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]),
                                   0.5 * (L[q, 0, 1] - L[q, 1, 0]), dt)
-            _elastic_increment(s, d, lam, mu, dt)
+            cd = _hooke(d[0], d[1], d[2], d[3], d[4], d[5], lam, mu)        # C : d
             for k in range(6):
+                s[k] += dt * cd[k]
                 sigma[c, q, k] = s[k]
             if beta > 0.0:
                 # Stiffness-proportional (Rayleigh) damping: viscous stress beta * C : d.
-                tr = d[0] + d[1] + d[2]
-                sv0 = beta * (lam * tr + 2.0 * mu * d[0])
-                sv1 = beta * (lam * tr + 2.0 * mu * d[1])
-                sv2 = beta * (lam * tr + 2.0 * mu * d[2])
-                sv3 = beta * 2.0 * mu * d[3]
-                sv4 = beta * 2.0 * mu * d[4]
-                sv5 = beta * 2.0 * mu * d[5]
-                damping_power += wmid[q] * (sv0 * d[0] + sv1 * d[1] + sv2 * d[2]
-                                            + 2.0 * (sv3 * d[3] + sv4 * d[4] + sv5 * d[5]))
-                s[0] += sv0
-                s[1] += sv1
-                s[2] += sv2
-                s[3] += sv3
-                s[4] += sv4
-                s[5] += sv5
+                for k in range(6):
+                    sv = beta * cd[k]
+                    damping_power += wmid[q] * sv * d[k] * (1.0 if k < 3 else 2.0)
+                    s[k] += sv
             det = _gradients(xe, dN[q], gdim, nn, dNdx) * sgn
             if det <= 0.0:
                 bad_cell = c
@@ -431,13 +432,7 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
                     f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1] + s[3] * dNdx[a, 2])
                     f[node, 2] += w * (s[4] * dNdx[a, 0] + s[3] * dNdx[a, 1] + s[2] * dNdx[a, 2])
         le = characteristic_length(xe, cell_kind, nn)
-        dtc = le / params[m, P_WAVE_SPEED]
-        if beta > 0.0:
-            # Stiffness damping shortens the step: dt <= (2/w)(sqrt(1+xi^2) - xi), xi = beta w / 2,
-            # w = 2 c / l_e the element's highest frequency (Belytschko et al., eq. 6.2.28).
-            omega = 2.0 / dtc
-            xi = 0.5 * beta * omega
-            dtc *= math.sqrt(1.0 + xi * xi) - xi
+        dtc = _damped_step(le / params[m, P_WAVE_SPEED], beta)
         if dtc < dt_stable:
             dt_stable = dtc
     return dt_stable, damping_power, bad_cell

@@ -35,7 +35,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .kernels import P_BETA, P_LAMBDA, P_MU, P_RHO, P_WAVE_SPEED, _cayley_matrix, _rotate_symmetric
+from .kernels import (P_BETA, P_LAMBDA, P_MU, P_RHO, P_WAVE_SPEED, _cayley_matrix, _damped_step, _hooke,
+                      _rotate_symmetric)
 
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
@@ -136,11 +137,7 @@ def _stable_step(nodes, bb, c, beta):
     """2 / omega_max with Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b for a uniform-strain
     element with lumped mass (a square of side h: h / (sqrt(2) c); a cube: h / (sqrt(3) c)),
     shortened for stiffness-proportional damping (Belytschko et al., eq. 6.2.28)."""
-    dtc = 2.0 / (c * math.sqrt(nodes * bb))
-    if beta > 0.0:
-        xi = beta / dtc
-        dtc *= math.sqrt(1.0 + xi * xi) - xi
-    return dtc
+    return _damped_step(2.0 / (c * math.sqrt(nodes * bb)), beta)
 
 
 @njit(cache=True, fastmath=True)
@@ -199,11 +196,11 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         d5 = 0.5 * (l01 + l10)
         # objective stress update (Hughes-Winget) and Hooke increment
         s0, s1, s5, cq, sq = _rotate_2d(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 5], 0.5 * (l01 - l10), dt)
-        tr = d0 + d1 + d2
-        s0 += dt * (lam * tr + 2.0 * mu * d0)
-        s1 += dt * (lam * tr + 2.0 * mu * d1)
-        s2 = sigma[c, 0, 2] + dt * (lam * tr + 2.0 * mu * d2)
-        s5 += dt * 2.0 * mu * d5
+        c0, c1, c2, _, _, c5 = _hooke(d0, d1, d2, 0.0, 0.0, d5, lam, mu)      # C : d
+        s0 += dt * c0
+        s1 += dt * c1
+        s2 = sigma[c, 0, 2] + dt * c2
+        s5 += dt * c5
         sigma[c, 0, 0] = s0
         sigma[c, 0, 1] = s1
         sigma[c, 0, 2] = s2
@@ -216,10 +213,7 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         vol = det * (two_pi * r if axisymmetric else thickness)
         if beta > 0.0:
             # stiffness-proportional damping: viscous stress beta C : d
-            sv0 = beta * (lam * tr + 2.0 * mu * d0)
-            sv1 = beta * (lam * tr + 2.0 * mu * d1)
-            sv2 = beta * (lam * tr + 2.0 * mu * d2)
-            sv5 = beta * 2.0 * mu * d5
+            sv0, sv1, sv2, sv5 = beta * c0, beta * c1, beta * c2, beta * c5
             damping_power += vol * (sv0 * d0 + sv1 * d1 + sv2 * d2 + 2.0 * sv5 * d5)
             s0 += sv0
             s1 += sv1
@@ -336,13 +330,13 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         s0, s1, s2, s3, s4, s5 = _rotate_symmetric(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3],
                                                    sigma[c, 0, 4], sigma[c, 0, 5],
                                                    r00, r01, r02, r10, r11, r12, r20, r21, r22)
-        tr = d0 + d1 + d2
-        s0 += dt * (lam * tr + 2.0 * mu * d0)
-        s1 += dt * (lam * tr + 2.0 * mu * d1)
-        s2 += dt * (lam * tr + 2.0 * mu * d2)
-        s3 += dt * 2.0 * mu * d3
-        s4 += dt * 2.0 * mu * d4
-        s5 += dt * 2.0 * mu * d5
+        c0, c1, c2, c3, c4, c5 = _hooke(d0, d1, d2, d3, d4, d5, lam, mu)      # C : d
+        s0 += dt * c0
+        s1 += dt * c1
+        s2 += dt * c2
+        s3 += dt * c3
+        s4 += dt * c4
+        s5 += dt * c5
         sigma[c, 0, 0] = s0
         sigma[c, 0, 1] = s1
         sigma[c, 0, 2] = s2
@@ -357,12 +351,7 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
             bad_cell = c
         if beta > 0.0:
             # stiffness-proportional damping: viscous stress beta C : d
-            sv0 = beta * (lam * tr + 2.0 * mu * d0)
-            sv1 = beta * (lam * tr + 2.0 * mu * d1)
-            sv2 = beta * (lam * tr + 2.0 * mu * d2)
-            sv3 = beta * 2.0 * mu * d3
-            sv4 = beta * 2.0 * mu * d4
-            sv5 = beta * 2.0 * mu * d5
+            sv0, sv1, sv2, sv3, sv4, sv5 = beta * c0, beta * c1, beta * c2, beta * c3, beta * c4, beta * c5
             damping_power += vol * (sv0 * d0 + sv1 * d1 + sv2 * d2 + 2.0 * (sv3 * d3 + sv4 * d4 + sv5 * d5))
             s0 += sv0
             s1 += sv1
