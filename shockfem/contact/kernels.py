@@ -29,19 +29,25 @@ def _beyond_initial(g, offset, i):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _spring(k, g, g_dot, m_eff, zeta):
+def _spring(k, g, g_dot, m_eff, zeta, soft_scale, dt):
     """Normal force -k g - 2 zeta sqrt(k m*) g_dot of a penetration g < 0 (the caller applies it only
-    when positive: contact never pulls) and the stable step sqrt(2 m*/k) of the spring."""
+    when positive: contact never pulls) and the stable step sqrt(2 m*/k) of the spring.
+
+    soft_scale > 0 (``penalty = "soft"``, LS-DYNA's SOFT=1) raises k to at least
+    soft_scale m* / (2 dt^2), the stiffness that stops the nodes whatever their elements.
+    """
+    if soft_scale > 0.0 and dt > 0.0:
+        k = max(k, 0.5 * soft_scale * m_eff / (dt * dt))
     return -k * g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot, math.sqrt(2.0 * m_eff / k)
 
 
 @njit(cache=True, fastmath=True)
-def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, depth, f,
-                       gap, offset):
+def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
+                       depth, f, gap, offset):
     """One pass of 2D node-to-segment contact; forces are added to ``f`` (nodes, 2).
 
     slaves : (ns,) slave node numbers; segments : (nm, 2) master segments, outward order;
-    seg_stiffness : (nm,) penalty stiffness [N/m]; cand_ptr, cand_seg : CSR candidate segments
+    seg_stiffness : (nm,) penalty stiffness [N/m]; soft_scale, dt : see ``_spring``; cand_ptr, cand_seg : CSR candidate segments
     of each slave (from the search); gap : (ns,) out, the signed gap of each slave (0 if none).
 
     Returns (active slaves, smallest stable step sqrt(2 m*/k) of the active springs).
@@ -91,7 +97,7 @@ def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v
         m_eff = ms * mm / (ms + mm)
         g_dot = ((v[s, 0] - w0 * v[a, 0] - w1 * v[b, 0]) * best_nx
                  + (v[s, 1] - w0 * v[a, 1] - w1 * v[b, 1]) * best_ny)
-        fn, dt_spring = _spring(k, best_g, g_dot, m_eff, zeta)
+        fn, dt_spring = _spring(k, best_g, g_dot, m_eff, zeta, soft_scale, dt)
         active += 1
         dt_min = min(dt_min, dt_spring)
         if fn <= 0.0:
@@ -106,7 +112,8 @@ def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v
 
 
 @njit(cache=True, fastmath=True)
-def node_to_plane(slaves, node_stiffness, point, normal, wall_velocity, x, v, mass, zeta, depth, f, gap, offset):
+def node_to_plane(slaves, node_stiffness, point, normal, wall_velocity, x, v, mass, zeta, soft_scale, dt, depth, f,
+                  gap, offset):
     """Slave nodes against a rigid plane through ``point`` with unit ``normal`` (pointing to the
     allowed side), moving at ``wall_velocity``.  Returns (active slaves, smallest sqrt(2 m/k))."""
     gdim = x.shape[1]
@@ -127,7 +134,7 @@ def node_to_plane(slaves, node_stiffness, point, normal, wall_velocity, x, v, ma
         g = _beyond_initial(g, offset, i)
         if g >= 0.0:
             continue
-        fn, dt_spring = _spring(node_stiffness[i], g, g_dot, mass[s], zeta)
+        fn, dt_spring = _spring(node_stiffness[i], g, g_dot, mass[s], zeta, soft_scale, dt)
         active += 1
         dt_min = min(dt_min, dt_spring)
         if fn <= 0.0:

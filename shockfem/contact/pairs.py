@@ -182,14 +182,15 @@ class ContactPair:
             if self.b is None:
                 active, dt_limit = kernels.node_to_plane(
                     self.a.nodes, self.wall_stiffness, self.point + t * self.wall_velocity, self.normal,
-                    self.wall_velocity, x, v, mass, zeta, self.depth, f, self.wall_gap, self.wall_offset)
+                    self.wall_velocity, x, v, mass, zeta, self.soft_scale, dt, self.depth, f, self.wall_gap,
+                    self.wall_offset)
                 deepest = -self.wall_gap.min()
             else:
                 self._refresh(x)
                 for p in self.passes:
                     n, dl = kernels.node_to_segment_2d(p.slaves, p.master.segments, p.stiffness, p.cand_ptr,
-                                                       p.cand_seg, x, v, mass, zeta, self.depth, f, p.gap,
-                                                       p.offset)
+                                                       p.cand_seg, x, v, mass, zeta, self.soft_scale, dt,
+                                                       self.depth, f, p.gap, p.offset)
                     active += n
                     dt_limit = min(dt_limit, dl)
                     deepest = max(deepest, -p.gap.min())
@@ -228,7 +229,7 @@ class ContactPair:
             for p in self.passes:
                 p.offset[:] = -1e300          # accept any initial penetration as the zero
                 kernels.node_to_segment_2d(p.slaves, p.master.segments, p.stiffness, p.cand_ptr, p.cand_seg,
-                                           x, v, mass, 0.0, self.depth, self.f, p.gap, p.offset)
+                                           x, v, mass, 0.0, 0.0, 0.0, self.depth, self.f, p.gap, p.offset)
                 p.offset[:] = np.minimum(p.gap, 0.0)
             self.f[self.nodes] = 0.0
             offsets = [p.offset for p in self.passes]

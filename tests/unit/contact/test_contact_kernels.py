@@ -5,7 +5,7 @@ import pytest
 from shockfem.contact import kernels
 
 
-def _one_node_on_segment(gap, v_close=0.0, zeta=0.0, k=1e6):
+def _one_node_on_segment(gap, v_close=0.0, zeta=0.0, k=1e6, soft_scale=0.0, dt=0.0):
     # master segment from (1, 0) to (0, 0): outward normal (t_y, -t_x) = (0, +1), slave above it
     x = np.array([[1.0, 0.0], [0.0, 0.0], [0.25, gap]])
     v = np.array([[0.0, 0.0], [0.0, 0.0], [0.0, -v_close]])
@@ -13,8 +13,8 @@ def _one_node_on_segment(gap, v_close=0.0, zeta=0.0, k=1e6):
     f = np.zeros_like(x)
     g = np.zeros(1)
     active, dt = kernels.node_to_segment_2d(np.array([2]), np.array([[0, 1]]), np.array([k]),
-                                            np.array([0, 1]), np.array([0]), x, v, mass, zeta, 0.1, f, g,
-                                            np.zeros(1))
+                                            np.array([0, 1]), np.array([0]), x, v, mass, zeta, soft_scale, dt,
+                                            0.1, f, g, np.zeros(1))
     return f, g, active, dt
 
 
@@ -54,7 +54,20 @@ def test_node_against_moving_plane():
     f = np.zeros_like(x)
     g = np.zeros(2)
     active, _ = kernels.node_to_plane(np.array([0, 1]), np.array([1e7, 1e7]), np.array([0.0, 0.0]),
-                                      np.array([0.0, 1.0]), np.array([0.0, 0.0]), x, v, np.ones(2), 0.0, 0.1, f,
-                                      g, np.zeros(2))
+                                      np.array([0.0, 1.0]), np.array([0.0, 0.0]), x, v, np.ones(2), 0.0, 0.0, 0.0,
+                                      0.1, f, g, np.zeros(2))
     assert active == 1
     assert f[0] == pytest.approx([0.0, 1e7 * 2e-5]) and not f[1].any()
+
+
+def test_soft_penalty_raises_a_weak_spring_to_the_nodal_mass_stiffness():
+    """penalty = "soft": k = max(k_segment, scale m* / (2 dt^2)) (LS-DYNA SOFT=1); a stiffer segment wins."""
+    dt, scale = 1e-6, 0.1
+    m_master = 1.0
+    m_eff = 2.0 * m_master / (2.0 + m_master)
+    k_soft = 0.5 * scale * m_eff / dt ** 2
+    f, *_ = _one_node_on_segment(-1e-6, k=1.0, soft_scale=scale, dt=dt)
+    assert f[2, 1] == pytest.approx(k_soft * 1e-6)
+    f, *_ = _one_node_on_segment(-1e-6, k=10 * k_soft, soft_scale=scale, dt=dt)
+    assert f[2, 1] == pytest.approx(10 * k_soft * 1e-6)
+
