@@ -23,6 +23,7 @@ DIMENSIONS = {
     "energy": "[mass] * [length] ** 2 / [time] ** 2",
     "stiffness": "[mass] / [time] ** 2",
     "damping": "[mass] / [time]",
+    "slowness": "[time] / [length]",
     "dimensionless": "",
 }
 
@@ -30,7 +31,7 @@ DIMENSIONS = {
 SI_UNITS = {
     "length": "m", "mass": "kg", "time": "s", "velocity": "m/s", "angular_velocity": "rad/s",
     "acceleration": "m/s**2", "force": "N", "pressure": "Pa", "density": "kg/m**3",
-    "frequency": "Hz", "energy": "J", "stiffness": "N/m", "damping": "N*s/m",
+    "frequency": "Hz", "energy": "J", "stiffness": "N/m", "damping": "N*s/m", "slowness": "s/m",
     "dimensionless": "",
 }
 

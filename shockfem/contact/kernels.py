@@ -1,22 +1,39 @@
-"""Compiled penalty contact: slave nodes against master segments (2D) or a rigid plane.
+"""Compiled penalty contact: slave nodes against master facets or a rigid analytic surface.
 
 For a slave node s penetrating a master (gap g < 0 along the master's outward normal n):
 
     f_n = max(0, -k g - c g_dot),   c = 2 zeta sqrt(k m*),   m* = m_s m_m / (m_s + m_m)
 
-pushes s along +n and the master points back along -n (shared by the segment's shape
+pushes s along +n and the master points back along -n (shared by the facet's shape
 functions at the contact point).  k is the master's penalty stiffness, zeta the contact
 damping as a fraction of critical (LS-DYNA's VDC), g_dot the normal closing rate; f_n >= 0,
 so contact never pulls.  Only penetrations shallower than ``depth`` count, so that a node
 is never caught by the far side of a thin part.  ``offset`` (per slave, <= 0) is a penetration
 present at the start, taken as the node's zero and released as the node comes out
 (LS-DYNA's IGNORE=1): initial overlaps are reported, not exploded.
+
+Friction is Coulomb's law with an elastic stick zone (a tangential spring of the same k,
+LS-DYNA's approach): each step the slave's tangential force is moved by -k dt v_t (v_t the
+tangential sliding velocity) and capped at mu f_n, with
+mu = mu_d + (mu_s - mu_d) exp(-decay |v_t|).  The force is history: ``ft`` keeps it per slave
+(three components, z = 0 in 2D), turned onto the current tangent plane each step.
+
+Master facets are segments (2 nodes, 2D), triangles (3) or bilinear quadrilaterals (4), their
+nodes ordered so that the normal points out of the body.  Normal forces go to ``f``,
+friction forces to ``ff``, so that the pair can report the two works apart.
 """
 from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
+
+# rigid surface kinds (node_to_rigid)
+PLANE, CYLINDER = 0, 1
+# friction coefficients: [mu_static, mu_dynamic, decay [s/m]]
+MU_S, MU_D, DECAY = 0, 1, 2
+_TOL = 1e-6        # parametric tolerance: a node on the edge between two facets belongs to both
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -31,27 +48,158 @@ def _beyond_initial(g, offset, i):
 @njit(cache=True, fastmath=True, inline="always")
 def _spring(k, g, g_dot, m_eff, zeta, soft_scale, dt):
     """Normal force -k g - 2 zeta sqrt(k m*) g_dot of a penetration g < 0 (the caller applies it only
-    when positive: contact never pulls) and the stable step sqrt(2 m*/k) of the spring.
+    when positive: contact never pulls), the stable step sqrt(2 m*/k) of the spring, and k.
 
     soft_scale > 0 (``penalty = "soft"``, LS-DYNA's SOFT=1) raises k to at least
     soft_scale m* / (2 dt^2), the stiffness that stops the nodes whatever their elements.
     """
     if soft_scale > 0.0 and dt > 0.0:
         k = max(k, 0.5 * soft_scale * m_eff / (dt * dt))
-    return -k * g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot, math.sqrt(2.0 * m_eff / k)
+    return -k * g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot, math.sqrt(2.0 * m_eff / k), k
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _friction(ft, i, n, w, fn, k, dt, friction):
+    """Update and return the tangential force on slave i (see the module docstring).
+
+    n : unit normal (3); w : velocity of the slave relative to the master point (3);
+    fn : normal force >= 0; k : tangential stiffness.
+    """
+    wn = w[0] * n[0] + w[1] * n[1] + w[2] * n[2]
+    t0, t1, t2 = w[0] - wn * n[0], w[1] - wn * n[1], w[2] - wn * n[2]
+    speed = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
+    # last step's force, turned onto the current tangent plane with its size kept
+    o0, o1, o2 = ft[i, 0], ft[i, 1], ft[i, 2]
+    size = math.sqrt(o0 * o0 + o1 * o1 + o2 * o2)
+    on = o0 * n[0] + o1 * n[1] + o2 * n[2]
+    o0, o1, o2 = o0 - on * n[0], o1 - on * n[1], o2 - on * n[2]
+    kept = math.sqrt(o0 * o0 + o1 * o1 + o2 * o2)
+    if kept > 0.0:
+        o0, o1, o2 = o0 * size / kept, o1 * size / kept, o2 * size / kept
+    # elastic trial (stick), then the Coulomb cap (slip)
+    a0, a1, a2 = o0 - k * dt * t0, o1 - k * dt * t1, o2 - k * dt * t2
+    mu = friction[MU_D] + (friction[MU_S] - friction[MU_D]) * math.exp(-friction[DECAY] * speed)
+    limit = mu * fn
+    trial = math.sqrt(a0 * a0 + a1 * a1 + a2 * a2)
+    if trial > limit:
+        s = limit / trial
+        a0, a1, a2 = a0 * s, a1 * s, a2 * s
+    ft[i, 0], ft[i, 1], ft[i, 2] = a0, a1, a2
+    return a0, a1, a2
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _project(facet, x, s, w, n):
+    """Closest point of node s on a master facet: fills the facet nodes' weights ``w`` and the
+    unit outward normal ``n`` (3 components, z = 0 in 2D); returns (gap, within the facet)."""
+    nf = facet.shape[0]
+    if nf == 2:
+        a, b = facet[0], facet[1]
+        tx, ty = x[b, 0] - x[a, 0], x[b, 1] - x[a, 1]
+        L2 = tx * tx + ty * ty
+        xi = ((x[s, 0] - x[a, 0]) * tx + (x[s, 1] - x[a, 1]) * ty) / L2
+        L = math.sqrt(L2)
+        n[0], n[1], n[2] = ty / L, -tx / L, 0.0
+        xi = min(max(xi, 0.0), 1.0) if -_TOL <= xi <= 1.0 + _TOL else xi
+        w[0], w[1] = 1.0 - xi, xi
+        g = (x[s, 0] - x[a, 0]) * n[0] + (x[s, 1] - x[a, 1]) * n[1]
+        return g, 0.0 <= xi <= 1.0
+    p0 = facet[0]
+    if nf == 3:
+        e10, e11, e12 = x[facet[1], 0] - x[p0, 0], x[facet[1], 1] - x[p0, 1], x[facet[1], 2] - x[p0, 2]
+        e20, e21, e22 = x[facet[2], 0] - x[p0, 0], x[facet[2], 1] - x[p0, 1], x[facet[2], 2] - x[p0, 2]
+        r0, r1, r2 = x[s, 0] - x[p0, 0], x[s, 1] - x[p0, 1], x[s, 2] - x[p0, 2]
+        a11 = e10 * e10 + e11 * e11 + e12 * e12
+        a12 = e10 * e20 + e11 * e21 + e12 * e22
+        a22 = e20 * e20 + e21 * e21 + e22 * e22
+        b1 = r0 * e10 + r1 * e11 + r2 * e12
+        b2 = r0 * e20 + r1 * e21 + r2 * e22
+        det = a11 * a22 - a12 * a12
+        l1 = (a22 * b1 - a12 * b2) / det
+        l2 = (a11 * b2 - a12 * b1) / det
+        w[0], w[1], w[2] = 1.0 - l1 - l2, l1, l2
+        c0, c1, c2 = e11 * e22 - e12 * e21, e12 * e20 - e10 * e22, e10 * e21 - e11 * e20
+        inside = w[0] >= -_TOL and w[1] >= -_TOL and w[2] >= -_TOL
+        if inside:
+            total = 0.0
+            for j in range(3):
+                w[j] = max(w[j], 0.0)
+                total += w[j]
+            for j in range(3):
+                w[j] /= total
+    else:
+        # bilinear quadrilateral, corners at (xi, eta) = (-1,-1), (1,-1), (1,1), (-1,1):
+        # Gauss-Newton on |x(xi, eta) - x_s|^2 (exact in one iteration on a flat parallelogram)
+        xi = 0.0
+        eta = 0.0
+        c0 = c1 = c2 = 0.0
+        for _ in range(6):
+            N0, N1 = 0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta)
+            N2, N3 = 0.25 * (1 + xi) * (1 + eta), 0.25 * (1 - xi) * (1 + eta)
+            dx0 = dx1 = dx2 = de0 = de1 = de2 = r0 = r1 = r2 = 0.0
+            for d in range(3):
+                q0, q1, q2, q3 = x[facet[0], d], x[facet[1], d], x[facet[2], d], x[facet[3], d]
+                dxi = 0.25 * ((q1 - q0) * (1 - eta) + (q2 - q3) * (1 + eta))
+                deta = 0.25 * ((q3 - q0) * (1 - xi) + (q2 - q1) * (1 + xi))
+                r = N0 * q0 + N1 * q1 + N2 * q2 + N3 * q3 - x[s, d]
+                if d == 0:
+                    dx0, de0, r0 = dxi, deta, r
+                elif d == 1:
+                    dx1, de1, r1 = dxi, deta, r
+                else:
+                    dx2, de2, r2 = dxi, deta, r
+            a11 = dx0 * dx0 + dx1 * dx1 + dx2 * dx2
+            a12 = dx0 * de0 + dx1 * de1 + dx2 * de2
+            a22 = de0 * de0 + de1 * de1 + de2 * de2
+            b1 = -(r0 * dx0 + r1 * dx1 + r2 * dx2)
+            b2 = -(r0 * de0 + r1 * de1 + r2 * de2)
+            det = a11 * a22 - a12 * a12
+            dxi_step = (a22 * b1 - a12 * b2) / det
+            deta_step = (a11 * b2 - a12 * b1) / det
+            xi += dxi_step
+            eta += deta_step
+            c0, c1, c2 = dx1 * de2 - dx2 * de1, dx2 * de0 - dx0 * de2, dx0 * de1 - dx1 * de0
+            if abs(dxi_step) + abs(deta_step) < 1e-10:
+                break
+            if abs(xi) > 2.0 or abs(eta) > 2.0:
+                break                     # far outside: no need to converge
+        inside = abs(xi) <= 1.0 + _TOL and abs(eta) <= 1.0 + _TOL
+        xi = min(max(xi, -1.0), 1.0)
+        eta = min(max(eta, -1.0), 1.0)
+        w[0], w[1] = 0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta)
+        w[2], w[3] = 0.25 * (1 + xi) * (1 + eta), 0.25 * (1 - xi) * (1 + eta)
+    norm = math.sqrt(c0 * c0 + c1 * c1 + c2 * c2)
+    n[0], n[1], n[2] = c0 / norm, c1 / norm, c2 / norm
+    g = 0.0
+    for d in range(3):
+        point = 0.0
+        for j in range(nf):
+            point += w[j] * x[facet[j], d]
+        g += (x[s, d] - point) * n[d]
+    return g, inside
 
 
 @njit(cache=True, fastmath=True)
-def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
-                       depth, f, gap, offset):
-    """One pass of 2D node-to-segment contact; forces are added to ``f`` (nodes, 2).
+def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
+                   depth, friction, f, ff, ft, gap, offset):
+    """One pass of node-to-facet contact; normal forces are added to ``f``, friction to ``ff``.
 
-    slaves : (ns,) slave node numbers; segments : (nm, 2) master segments, outward order;
-    seg_stiffness : (nm,) penalty stiffness [N/m]; soft_scale, dt : see ``_spring``; cand_ptr, cand_seg : CSR candidate segments
-    of each slave (from the search); gap : (ns,) out, the signed gap of each slave (0 if none).
+    slaves : (ns,) slave node numbers; facets : (nm, 2|3|4) master facets, outward order;
+    facet_stiffness : (nm,) penalty stiffness [N/m]; cand_ptr, cand_seg : CSR candidate facets
+    of each slave (from the search); soft_scale, dt : see ``_spring``; friction : [mu_s, mu_d,
+    decay]; ft : (ns, 3) tangential force history; gap : (ns,) out, the signed gap of each slave
+    (0 if none).
 
     Returns (active slaves, smallest stable step sqrt(2 m*/k) of the active springs).
     """
+    gdim = x.shape[1]
+    nf = facets.shape[1]
+    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
+    w = np.zeros(4)
+    n = np.zeros(3)
+    bw = np.zeros(4)
+    bn = np.zeros(3)
+    rel = np.zeros(3)
     active = 0
     dt_min = 1e300
     for i in range(slaves.shape[0]):
@@ -59,86 +207,119 @@ def node_to_segment_2d(slaves, segments, seg_stiffness, cand_ptr, cand_seg, x, v
         gap[i] = 0.0
         best = -1
         best_g = -1e300
-        best_xi = 0.0
-        best_nx = 0.0
-        best_ny = 0.0
         for jj in range(cand_ptr[i], cand_ptr[i + 1]):
             j = cand_seg[jj]
-            a = segments[j, 0]
-            b = segments[j, 1]
-            if a == s or b == s:
+            mine = False
+            for q in range(nf):
+                mine = mine or facets[j, q] == s
+            if mine:
                 continue
-            tx = x[b, 0] - x[a, 0]
-            ty = x[b, 1] - x[a, 1]
-            L2 = tx * tx + ty * ty
-            xi = ((x[s, 0] - x[a, 0]) * tx + (x[s, 1] - x[a, 1]) * ty) / L2
-            if xi < -1e-6 or xi > 1.0 + 1e-6:
-                continue
-            L = math.sqrt(L2)
-            nx = ty / L
-            ny = -tx / L
-            g = (x[s, 0] - x[a, 0]) * nx + (x[s, 1] - x[a, 1]) * ny
-            if g < 0.0 and g > -depth and g > best_g:
-                best, best_g, best_xi, best_nx, best_ny = j, g, min(max(xi, 0.0), 1.0), nx, ny
+            g, inside = _project(facets[j], x, s, w, n)
+            # among the facets the node is behind, the shallowest (a node in a concave corner
+            # belongs to the face it just crossed, not to the one it is deep behind)
+            if inside and g < 0.0 and g > -depth and g > best_g:
+                best, best_g = j, g
+                for q in range(nf):
+                    bw[q] = w[q]
+                for d in range(3):
+                    bn[d] = n[d]
         if best < 0:
             offset[i] = 0.0
+            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
         gap[i] = best_g
         best_g = _beyond_initial(best_g, offset, i)
         if best_g >= 0.0:
+            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
-        a = segments[best, 0]
-        b = segments[best, 1]
-        w0 = 1.0 - best_xi
-        w1 = best_xi
-        k = seg_stiffness[best]
-        mm = w0 * mass[a] + w1 * mass[b]
+        mm = 0.0
+        for q in range(nf):
+            mm += bw[q] * mass[facets[best, q]]
         ms = mass[s]
         m_eff = ms * mm / (ms + mm)
-        g_dot = ((v[s, 0] - w0 * v[a, 0] - w1 * v[b, 0]) * best_nx
-                 + (v[s, 1] - w0 * v[a, 1] - w1 * v[b, 1]) * best_ny)
-        fn, dt_spring = _spring(k, best_g, g_dot, m_eff, zeta, soft_scale, dt)
+        rel[2] = 0.0
+        for d in range(gdim):
+            rel[d] = v[s, d]
+            for q in range(nf):
+                rel[d] -= bw[q] * v[facets[best, q], d]
+        g_dot = rel[0] * bn[0] + rel[1] * bn[1] + rel[2] * bn[2]
+        fn, dt_spring, k = _spring(facet_stiffness[best], best_g, g_dot, m_eff, zeta, soft_scale, dt)
         active += 1
         dt_min = min(dt_min, dt_spring)
         if fn <= 0.0:
+            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
-        f[s, 0] += fn * best_nx
-        f[s, 1] += fn * best_ny
-        f[a, 0] -= w0 * fn * best_nx
-        f[a, 1] -= w0 * fn * best_ny
-        f[b, 0] -= w1 * fn * best_nx
-        f[b, 1] -= w1 * fn * best_ny
+        for d in range(gdim):
+            f[s, d] += fn * bn[d]
+            for q in range(nf):
+                f[facets[best, q], d] -= bw[q] * fn * bn[d]
+        if has_friction:
+            t = _friction(ft, i, bn, rel, fn, k, dt, friction)
+            for d in range(gdim):
+                ff[s, d] += t[d]
+                for q in range(nf):
+                    ff[facets[best, q], d] -= bw[q] * t[d]
     return active, dt_min
 
 
 @njit(cache=True, fastmath=True)
-def node_to_plane(slaves, node_stiffness, point, normal, wall_velocity, x, v, mass, zeta, soft_scale, dt, depth, f,
-                  gap, offset):
-    """Slave nodes against a rigid plane through ``point`` with unit ``normal`` (pointing to the
-    allowed side), moving at ``wall_velocity``.  Returns (active slaves, smallest sqrt(2 m/k))."""
+def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass, zeta,
+                  soft_scale, dt, depth, friction, f, ff, ft, gap, offset):
+    """Slave nodes against a rigid surface moving at ``velocity``: a plane (kind PLANE) through
+    ``point`` with unit normal ``direction`` toward the allowed side, or a cylinder (kind CYLINDER)
+    of ``radius`` about the axis through ``point`` along the unit ``direction`` (a zero direction
+    in 2D makes it the circle about ``point``), the nodes staying ``inside`` or outside it.
+    Returns (active slaves, smallest sqrt(2 m/k))."""
     gdim = x.shape[1]
+    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
+    n = np.zeros(3)
+    rel = np.zeros(3)
     active = 0
     dt_min = 1e300
     for i in range(slaves.shape[0]):
         s = slaves[i]
         g = 0.0
-        g_dot = 0.0
-        for d in range(gdim):
-            g += (x[s, d] - point[d]) * normal[d]
-            g_dot += (v[s, d] - wall_velocity[d]) * normal[d]
+        if kind == PLANE:
+            for d in range(gdim):
+                n[d] = direction[d]
+                g += (x[s, d] - point[d]) * n[d]
+        else:
+            along = 0.0
+            for d in range(gdim):
+                along += (x[s, d] - point[d]) * direction[d]
+            dist = 0.0
+            for d in range(gdim):
+                n[d] = x[s, d] - point[d] - along * direction[d]
+                dist += n[d] * n[d]
+            dist = math.sqrt(dist)
+            sign = -1.0 if inside else 1.0
+            for d in range(gdim):
+                n[d] = sign * n[d] / dist if dist > 0.0 else 0.0
+            g = sign * (dist - radius)
         gap[i] = 0.0
         if g >= 0.0 or g <= -depth:
             offset[i] = 0.0
+            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
         gap[i] = g
         g = _beyond_initial(g, offset, i)
         if g >= 0.0:
+            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
-        fn, dt_spring = _spring(node_stiffness[i], g, g_dot, mass[s], zeta, soft_scale, dt)
+        g_dot = 0.0
+        for d in range(gdim):
+            rel[d] = v[s, d] - velocity[d]
+            g_dot += rel[d] * n[d]
+        fn, dt_spring, k = _spring(node_stiffness[i], g, g_dot, mass[s], zeta, soft_scale, dt)
         active += 1
         dt_min = min(dt_min, dt_spring)
         if fn <= 0.0:
+            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
         for d in range(gdim):
-            f[s, d] += fn * normal[d]
+            f[s, d] += fn * n[d]
+        if has_friction:
+            t = _friction(ft, i, n, rel, fn, k, dt, friction)
+            for d in range(gdim):
+                ff[s, d] += t[d]
     return active, dt_min

@@ -1,148 +1,155 @@
-"""Contact pairs at run time: search, penalty forces, and what each pair reports.
+"""Contact pairs at run time: search, penalty and friction forces, and what each pair reports.
 
-A pair is two surfaces (two-pass: the nodes of each against the segments of the other, so
-neither side is privileged) or one surface against a rigid plane.  The search finds, for
-every slave node, the master segments within reach (a KD-tree on segment midpoints) and is
-refreshed only when some node of the pair has travelled half the search margin since the
-last search; while the bounding boxes of the two surfaces are further apart than the margin
-the pair costs nothing but the box test.  Penetrations present at the start are reported
-and not pushed out: each slave node's initial penetration is its zero (LS-DYNA's IGNORE=1),
-released as the node comes out.
+A pair is two surfaces (two-pass: the nodes of each against the facets of the other, so
+neither side is privileged) or one surface against a rigid analytic surface (plane or
+cylinder).  Every rank holds the pair's surfaces whole and works on compact copies of their
+nodes (``surfaces.NodeExchange``), so a pair computes the same forces on one process or many.
+
+The search finds, for every slave node, the master facets within reach (a KD-tree on facet
+centres) and is refreshed only when some node of the pair has travelled a quarter of the
+search margin since the last search; while the bounding boxes of the two surfaces are further
+apart than the margin the pair costs nothing but the box test.  Penetrations present at the
+start are reported and not pushed out: each slave node's initial penetration is its zero
+(LS-DYNA's IGNORE=1), released as the node comes out.
 """
 from __future__ import annotations
-
-import math
 
 import numpy as np
 from scipy.spatial import cKDTree
 
-from ..errors import ModelError
 from ..model import Model
 from ..scene.schema import Contact
-from ..solver.kernels import P_LAMBDA, P_MU
 from . import kernels
-from .surfaces import Surface, build_surface
-
-TWO_PI = 2.0 * math.pi
+from .surfaces import NodeExchange, Surface, build_surface
 
 
-def _cell_volumes(model: Model, cells: np.ndarray) -> np.ndarray:
-    """Volumes of 2D cells in the reference configuration, with the 2 pi r or thickness weight."""
-    X = model.X0
-    nodes = model.dofmap[cells]
-    if nodes.shape[1] == 4:
-        nodes = nodes[:, [0, 1, 3, 2]]           # tensor order -> around
-    p = X[nodes]
-    x, y = p[..., 0], p[..., 1]
-    area = 0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1))
-    return area * _weight(model, p[..., 0].mean(axis=1))
+def facet_stiffness(surface: Surface, scale: float) -> np.ndarray:
+    """LS-DYNA's penalty for solids, k = scale K A^2 / V, per facet (A its area, V its cell's volume)."""
+    return scale * surface.bulk * surface.area ** 2 / surface.volume
 
 
-def _weight(model: Model, r: np.ndarray) -> np.ndarray:
-    return TWO_PI * r if model.scene.kinematics == "axisymmetric" else np.full_like(r, model.scene.thickness)
+def node_stiffness(surface: Surface, facets: np.ndarray, nodes: np.ndarray, scale: float) -> np.ndarray:
+    """Per surface node (``nodes``, sorted, numbering as ``facets``): k = scale K A_i^2 / V_i with
+    A_i its share of the area of its facets, and K and V_i the means over the cells of those facets
+    (for a node against a rigid surface)."""
+    per_node = facets.shape[1]
+    node = np.searchsorted(nodes, facets.ravel())
 
-
-def _bulk_modulus(model: Model, cells: np.ndarray) -> np.ndarray:
-    p = model.params[model.cell_material[cells]]
-    return p[:, P_LAMBDA] + 2.0 * p[:, P_MU] / 3.0
-
-
-def segment_lengths(X: np.ndarray, surface: Surface) -> np.ndarray:
-    return np.linalg.norm(X[surface.segments[:, 1]] - X[surface.segments[:, 0]], axis=1)
-
-
-def _segment_areas(model: Model, surface: Surface) -> np.ndarray:
-    """Areas of 2D segments in the reference configuration: length x (2 pi r at the midpoint, or thickness)."""
-    X = model.X0
-    r_mid = 0.5 * (X[surface.segments[:, 0], 0] + X[surface.segments[:, 1], 0])
-    return segment_lengths(X, surface) * _weight(model, r_mid)
-
-
-def segment_stiffness(model: Model, surface: Surface, scale: float) -> np.ndarray:
-    """LS-DYNA's penalty for solids, k = scale K A^2 / V, per segment (A its area, V its cell's volume)."""
-    return (scale * _bulk_modulus(model, surface.cells) * _segment_areas(model, surface) ** 2
-            / _cell_volumes(model, surface.cells))
-
-
-def node_stiffness(model: Model, surface: Surface, scale: float) -> np.ndarray:
-    """Per surface node: k = scale K A_i^2 / V_i with A_i half the area of its segments, and K and V_i
-    the means over the cells of those segments (for a node against a rigid wall)."""
-    per_node = len(surface.segments[0])
-    node = np.searchsorted(surface.nodes, surface.segments.ravel())     # nodes is sorted and unique
-
-    def node_sum(per_segment):
-        out = np.zeros(len(surface.nodes))
-        np.add.at(out, node, np.repeat(per_segment, per_node))
+    def node_sum(per_facet):
+        out = np.zeros(len(nodes))
+        np.add.at(out, node, np.repeat(per_facet, per_node))
         return out
-    count = node_sum(np.ones(len(surface.segments)))
-    A = node_sum(_segment_areas(model, surface) / per_node)
-    K = node_sum(_bulk_modulus(model, surface.cells)) / count
-    V = node_sum(_cell_volumes(model, surface.cells)) / count
+    count = node_sum(np.ones(len(facets)))
+    A = node_sum(surface.area / per_node)
+    K = node_sum(surface.bulk) / count
+    V = node_sum(surface.volume) / count
     return scale * K * A ** 2 / V
 
 
 class _Pass:
-    """Slave nodes of one surface against the segments of another."""
+    """Slave nodes of one surface against the facets of another (compact node numbers)."""
 
-    def __init__(self, slave: Surface, master: Surface, stiffness: np.ndarray):
-        self.slaves = slave.nodes
-        self.master = master
+    def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray):
+        self.slaves = slaves
+        self.facets = facets
         self.stiffness = stiffness
-        self.gap = np.zeros(len(self.slaves))
-        self.offset = np.zeros(len(self.slaves))
-        self.cand_ptr = np.zeros(len(self.slaves) + 1, dtype=np.int64)
+        self.gap = np.zeros(len(slaves))
+        self.offset = np.zeros(len(slaves))
+        self.ft = np.zeros((len(slaves), 3))          # tangential (friction) force history
+        self.cand_ptr = np.zeros(len(slaves) + 1, dtype=np.int64)
         self.cand_seg = np.zeros(0, dtype=np.int64)
 
     def search(self, x: np.ndarray, reach: float):
-        mid = 0.5 * (x[self.master.segments[:, 0]] + x[self.master.segments[:, 1]])
-        hits = cKDTree(mid).query_ball_point(x[self.slaves], reach)
+        centre = x[self.facets].mean(axis=1)
+        hits = cKDTree(centre).query_ball_point(x[self.slaves], reach)
         self.cand_ptr = np.concatenate([[0], np.cumsum([len(h) for h in hits])]).astype(np.int64)
         self.cand_seg = np.array([j for h in hits for j in h], dtype=np.int64)
+
+    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff):
+        return kernels.node_to_facets(self.slaves, self.facets, self.stiffness, self.cand_ptr, self.cand_seg,
+                                      x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, self.ft,
+                                      self.gap, self.offset)
+
+
+class _RigidPass:
+    """Nodes of a surface against a rigid plane or cylinder."""
+
+    def __init__(self, model: Model, spec: Contact, slaves: np.ndarray, stiffness: np.ndarray):
+        r = spec.rigid
+        gdim = model.gdim
+        self.slaves = slaves
+        self.stiffness = stiffness
+        self.kind = kernels.PLANE if r.kind == "plane" else kernels.CYLINDER
+        self.point = np.array(r.point, dtype=float)
+        self.direction = np.array(r.direction, dtype=float)
+        self.radius = r.radius
+        self.inside = r.inside
+        self.velocity = np.array(r.velocity, dtype=float)
+        self.gap = np.zeros(len(slaves))
+        self.offset = np.zeros(len(slaves))
+        self.ft = np.zeros((len(slaves), 3))
+        self.t = 0.0
+        assert len(self.point) == gdim
+
+    def gaps(self, x: np.ndarray) -> np.ndarray:
+        p = x[self.slaves] - (self.point + self.t * self.velocity)
+        if self.kind == kernels.PLANE:
+            return p @ self.direction
+        dist = np.linalg.norm(p - np.outer(p @ self.direction, self.direction), axis=1)
+        return self.radius - dist if self.inside else dist - self.radius
+
+    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff):
+        return kernels.node_to_rigid(self.slaves, self.stiffness, self.kind, self.point + self.t * self.velocity,
+                                     self.direction, self.radius, self.inside, self.velocity, x, v, mass, zeta,
+                                     soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset)
 
 
 class ContactPair:
     def __init__(self, model: Model, spec: Contact):
-        if model.gdim != 2:
-            raise ModelError(f"contact '{spec.name}': this version has contact in axisymmetric and plane "
-                             f"strain scenes; 3D contact is not built yet (use a 2D scene)")
-        if model.comm.size > 1:
-            raise ModelError(f"contact '{spec.name}': contact runs on one process in this version; run "
-                             f"without mpirun")
         self.model = model
         self.spec = spec
         self.name = spec.name
         gdim = model.gdim
         self.a = build_surface(model, spec.a)
         self.b = build_surface(model, spec.b) if spec.b else None
+        surfaces = [s for s in (self.a, self.b) if s is not None]
+        self.global_nodes = np.unique(np.concatenate([s.facets.ravel() for s in surfaces]))
+        self.exchange = NodeExchange(model, self.global_nodes)
+        compact = [np.searchsorted(self.global_nodes, s.facets) for s in surfaces]
+        self.nodes_a = np.unique(compact[0])
+        self.mass = self.exchange.gather(model.mass[:, None])[:, 0]
         seg_scale = 0.1 if spec.penalty == "soft" else spec.penalty_scale
         self.soft_scale = spec.penalty_scale if spec.penalty == "soft" else 0.0
+        self.friction = np.array(spec.friction, dtype=float)
+        sizes = np.concatenate([s.size for s in surfaces])
         if self.b is None:
-            w = spec.wall
-            self.point = np.array(w.point, dtype=float)
-            self.normal = np.array(w.normal, dtype=float)
-            self.wall_velocity = np.array(w.velocity, dtype=float)
-            self.wall_stiffness = node_stiffness(model, self.a, seg_scale)
-            self.wall_gap = np.zeros(len(self.a.nodes))
-            self.wall_offset = np.zeros(len(self.a.nodes))
-            self.passes = []
-            self.nodes = self.a.nodes
+            self.passes = [_RigidPass(model, spec, self.nodes_a,
+                                      node_stiffness(self.a, compact[0], self.nodes_a, seg_scale))]
+            # a node is caught by a rigid surface up to a facet size behind it
+            self.depth = float(sizes.max())
         else:
-            self.passes = [_Pass(self.a, self.b, segment_stiffness(model, self.b, seg_scale)),
-                           _Pass(self.b, self.a, segment_stiffness(model, self.a, seg_scale))]
-            self.nodes = np.union1d(self.a.nodes, self.b.nodes)
-        seg_len = np.concatenate([segment_lengths(model.X0, s) for s in (self.a, self.b) if s is not None])
-        # a node counts as penetrating only within `depth` of the surface (half the thinnest element
-        # is a safe bound for a single step's travel); the search reaches a segment length beyond that
-        self.depth = 0.5 * float(seg_len.min()) if self.b is not None else float(seg_len.max())
-        self.margin = float(seg_len.max())
-        self.reach = 0.5 * float(seg_len.max()) + self.margin
+            self.passes = [_Pass(self.nodes_a, compact[1], facet_stiffness(self.b, seg_scale)),
+                           _Pass(np.unique(compact[1]), compact[0], facet_stiffness(self.a, seg_scale))]
+            # a node counts as penetrating only within `depth` of the surface (half the smallest facet
+            # is a safe bound for a single step's travel); the search reaches a facet size beyond that
+            self.depth = 0.5 * float(sizes.min())
+        self.margin = float(sizes.max())
+        self.reach = 0.5 * float(sizes.max()) + self.margin
+        n = len(self.global_nodes)
+        self.x = np.zeros((n, gdim))
+        self.v = np.zeros((n, gdim))
         self.x_search = None
-        self.f = np.zeros((len(model.X0), gdim))
-        self._f_old = np.zeros((len(self.nodes), gdim))
-        self.work = 0.0                      # work done by the contact forces on the bodies [J]
+        self.f = np.zeros((n, gdim))              # normal forces on the compact nodes [N]
+        self.ff = np.zeros((n, gdim))             # friction forces [N]
+        self._f_old = np.zeros((n, gdim))
+        self._ff_old = np.zeros((n, gdim))
+        self.work = 0.0                      # work done by the normal contact forces on the bodies [J]
+        self.friction_work = 0.0             # work done by the friction forces [J] (<= 0: dissipated)
         self.impulse = np.zeros(gdim)        # of the force on surface a [N s]
-        self.force_a = np.zeros(gdim)        # current force on surface a [N]
+        self.force_a = np.zeros(gdim)        # current normal force on surface a [N]
+        self.friction_a = np.zeros(gdim)     # current friction force on surface a [N]
         self.max_force = 0.0
+        self.max_friction = 0.0
         self.max_penetration = 0.0
         self.active = 0
         self.intervals: list[list[float]] = []
@@ -151,62 +158,72 @@ class ContactPair:
         self.v_before = self.v_after = None  # body mean velocities around contact (for restitution)
 
     # --------------------------------------------------------------- search
-    def _boxes_apart(self, x: np.ndarray) -> bool:
+    def _boxes_apart(self) -> bool:
+        x = self.x
         if self.b is None:
-            g = (x[self.a.nodes] - self.point) @ self.normal
-            return bool(g.min() > self.margin)
-        pa, pb = x[self.a.nodes], x[self.b.nodes]
+            return bool(self.passes[0].gaps(x).min() > self.margin)
+        pa, pb = x[self.passes[0].slaves], x[self.passes[1].slaves]
         gap = np.maximum(pa.min(axis=0) - pb.max(axis=0), pb.min(axis=0) - pa.max(axis=0))
         return bool(gap.max() > self.margin)
 
-    def _refresh(self, x: np.ndarray):
-        if self.x_search is not None:
-            travel = np.abs(x[self.nodes] - self.x_search).max()
-            if travel < 0.25 * self.margin:
-                return
+    def _refresh(self):
+        if self.b is None:
+            return
+        if self.x_search is not None and np.abs(self.x - self.x_search).max() < 0.25 * self.margin:
+            return
         for p in self.passes:
-            p.search(x, self.reach)
-        self.x_search = x[self.nodes].copy()
+            p.search(self.x, self.reach)
+        self.x_search = self.x.copy()
         self.searches += 1
 
     # --------------------------------------------------------------- forces
-    def compute(self, x: np.ndarray, v: np.ndarray, mass: np.ndarray, dt: float, t: float) -> float:
-        """Contact forces at the current positions into ``self.f``; returns the step limit (inf if none)."""
-        f = self.f
-        f[self.nodes] = 0.0
+    def compute(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> float:
+        """Contact forces at the current positions (collective: gathers the surface nodes).
+
+        ``v`` is v_{n+1/2} of the step of size ``dt`` just taken: the work of the contact forces
+        over that step is counted here, trapezoidally, as the solver counts it.  Returns the
+        step limit of the active penalty springs (inf if none)."""
+        self.x = self.exchange.gather(x)
+        self.v = self.exchange.gather(v)
+        self.f[:] = 0.0
+        self.ff[:] = 0.0
         active = 0
         dt_limit = np.inf
         deepest = 0.0
-        if not self._boxes_apart(x):
-            zeta = self.spec.damping
-            if self.b is None:
-                active, dt_limit = kernels.node_to_plane(
-                    self.a.nodes, self.wall_stiffness, self.point + t * self.wall_velocity, self.normal,
-                    self.wall_velocity, x, v, mass, zeta, self.soft_scale, dt, self.depth, f, self.wall_gap,
-                    self.wall_offset)
-                deepest = -self.wall_gap.min()
-            else:
-                self._refresh(x)
-                for p in self.passes:
-                    n, dl = kernels.node_to_segment_2d(p.slaves, p.master.segments, p.stiffness, p.cand_ptr,
-                                                       p.cand_seg, x, v, mass, zeta, self.soft_scale, dt,
-                                                       self.depth, f, p.gap, p.offset)
-                    active += n
-                    dt_limit = min(dt_limit, dl)
-                    deepest = max(deepest, -p.gap.min())
+        for p in self.passes:
+            if isinstance(p, _RigidPass):
+                p.t = t
+        if not self._boxes_apart():
+            self._refresh()
+            for p in self.passes:
+                n, dl = p.forces(self.x, self.v, self.mass, self.spec.damping, self.soft_scale, dt, self.depth,
+                                 self.friction, self.f, self.ff)
+                active += n
+                dt_limit = min(dt_limit, dl)
+                deepest = max(deepest, -p.gap.min())
+        else:
+            for p in self.passes:
+                p.ft[:] = 0.0
         self.active = active
-        dt_limit = dt_limit if active else np.inf
         self.max_penetration = max(self.max_penetration, deepest)
-        self.force_a = f[self.a.nodes].sum(axis=0)
-        return dt_limit
+        self.force_a = self.f[self.nodes_a].sum(axis=0)
+        self.friction_a = self.ff[self.nodes_a].sum(axis=0)
+        self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * self.v))
+        self.friction_work += 0.5 * dt * float(np.sum((self._ff_old + self.ff) * self.v))
+        self._f_old[:] = self.f
+        self._ff_old[:] = self.ff
+        return dt_limit if active else np.inf
 
-    def account(self, dt: float, v_half: np.ndarray, t: float, body_velocities):
-        """After a step of size dt ending at t: work, impulse, intervals, restitution velocities."""
-        f_new = self.f[self.nodes]
-        self.work += 0.5 * dt * float(np.sum((self._f_old + f_new) * v_half[self.nodes]))
-        self._f_old = f_new.copy()
-        self.impulse += dt * self.force_a
+    def add_forces(self, f: np.ndarray):
+        """Add this pair's forces on the nodes this rank owns into the solver's array ``f``."""
+        self.exchange.add_to(self.f + self.ff, f)
+
+    def account(self, dt: float, t: float, body_velocities):
+        """After a step ending at t: impulse, peak forces, open/closed intervals, restitution velocities.
+        Collective when contact opens or closes (``body_velocities`` reduces over ranks)."""
+        self.impulse += dt * (self.force_a + self.friction_a)
         self.max_force = max(self.max_force, float(np.linalg.norm(self.force_a)))
+        self.max_friction = max(self.max_friction, float(np.linalg.norm(self.friction_a)))
         closed = self.active > 0
         if closed and (not self.intervals or self.intervals[-1][1] is not None):
             self.intervals.append([t, None])
@@ -216,24 +233,22 @@ class ContactPair:
             self.intervals[-1][1] = t
             self.v_after = body_velocities()
 
-    def start(self, x: np.ndarray, v: np.ndarray, mass: np.ndarray) -> tuple[int, float]:
+    def start(self, x: np.ndarray, v: np.ndarray) -> tuple[int, float]:
         """At t = 0: take every initial penetration as its node's zero; returns (nodes, deepest [m])."""
-        if self._boxes_apart(x):
+        self.x = self.exchange.gather(x)
+        self.v = self.exchange.gather(v)
+        if self._boxes_apart():
             return self.initial_overlap
-        if self.b is None:
-            self.wall_offset[:] = np.minimum((x[self.a.nodes] - self.point) @ self.normal, 0.0)
-            self.wall_offset[self.wall_offset <= -self.depth] = 0.0
-            offsets = [self.wall_offset]
-        else:
-            self._refresh(x)
-            for p in self.passes:
-                p.offset[:] = -1e300          # accept any initial penetration as the zero
-                kernels.node_to_segment_2d(p.slaves, p.master.segments, p.stiffness, p.cand_ptr, p.cand_seg,
-                                           x, v, mass, 0.0, 0.0, 0.0, self.depth, self.f, p.gap, p.offset)
-                p.offset[:] = np.minimum(p.gap, 0.0)
-            self.f[self.nodes] = 0.0
-            offsets = [p.offset for p in self.passes]
+        self._refresh()
+        no_friction = np.zeros(3)
+        for p in self.passes:
+            p.offset[:] = -1e300          # accept any initial penetration as the zero
+            p.forces(self.x, self.v, self.mass, 0.0, 0.0, 0.0, self.depth, no_friction, self.f, self.ff)
+            p.offset[:] = np.minimum(p.gap, 0.0)
+        self.f[:] = 0.0
+        self.ff[:] = 0.0
         tiny = -1e-6 * self.depth                 # round-off of coincident meshes is no overlap
+        offsets = [p.offset for p in self.passes]
         for o in offsets:
             o[o > tiny] = 0.0
         nodes = sum(int((o < 0).sum()) for o in offsets)
@@ -253,17 +268,20 @@ class ContactPair:
         ia = self.a.body
 
         def rel(vel):
-            vb = vel[self.b.body] if self.b is not None else self.wall_velocity
+            vb = vel[self.b.body] if self.b is not None else np.array(self.spec.rigid.velocity)
             return float(np.dot(vel[ia] - vb, n))
         before = rel(self.v_before)
         return -rel(after) / before if before != 0 else None
 
     def summary(self) -> dict:
-        return {"surfaces": [self.spec.a, self.spec.b or "wall"],
+        return {"surfaces": [self.spec.a, self.spec.b or self.spec.rigid.kind],
                 "penalty": self.spec.penalty, "damping_ratio": self.spec.damping,
+                "friction": {"static": self.spec.friction[0], "dynamic": self.spec.friction[1],
+                             "decay": self.spec.friction[2]},
                 "impulse_on_a": self.impulse.tolist(), "max_normal_force": self.max_force,
-                "friction_force_max": 0.0,
-                "contact_energy": -self.work, "max_penetration": self.max_penetration,
+                "max_friction_force": self.max_friction,
+                "contact_energy": -(self.work + self.friction_work),
+                "friction_work": self.friction_work, "max_penetration": self.max_penetration,
                 "intervals": self.intervals, "restitution": self.restitution(),
                 "initial_overlap": {"nodes": self.initial_overlap[0], "deepest": self.initial_overlap[1]},
                 "searches": self.searches}

@@ -1,37 +1,87 @@
-"""Contact surfaces: the boundary segments of a body or of one of its named regions.
+"""Contact surfaces: the boundary facets of a body or of one of its named regions, on every rank.
 
-A segment is a boundary facet of the mesh given by its nodes (local P1 numbers), ordered so
-that its normal points out of the body: in 2D the segment (p0, p1) has the outward normal
-(t_y, -t_x) / |t|, t = p1 - p0.  The order is fixed once on the reference mesh; kernels
-recompute the normal from the current positions every step.
+A facet is given by its nodes, ordered so that its normal points out of the body: in 2D the
+segment (p0, p1) has the outward normal (t_y, -t_x) / |t|, t = p1 - p0; in 3D the facet
+(p0, p1, ..., p_last) has the normal (p1 - p0) x (p_last - p0), quadrilaterals going around.
+The order is fixed once on the reference mesh; kernels recompute normals every step.
+
+Under MPI each rank finds the facets of its own part of the mesh and all ranks then share
+them (global node numbers), so every rank holds the whole surface: contact needs no
+partition-aware search, at the price of gathering the surface nodes each step
+(``NodeExchange``).  Surfaces are a small fraction of the nodes at the sizes shockfem runs;
+docs/theory.md says how this would scale further.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import basix
 import numpy as np
 from dolfinx import mesh as dmesh
+from mpi4py import MPI
 
 from ..model import Model
 from ..model.kinematics import BASIX_CELLS
+from ..solver.kernels import P_LAMBDA, P_MU
+
+TWO_PI = 2.0 * math.pi
+# tensor-ordered hexahedron (vertex k at (k & 1, k >> 1 & 1, k >> 2 & 1)) as six tetrahedra
+# around its diagonal 0-7
+_HEX_TETS = np.array([[0, 1, 3, 7], [0, 1, 5, 7], [0, 2, 3, 7], [0, 2, 6, 7], [0, 4, 5, 7], [0, 4, 6, 7]])
 
 
 @dataclass
 class Surface:
     name: str                   # "body" or "body.region"
     body: int                   # body index in the scene
-    segments: np.ndarray        # (segments, nodes per facet) local node numbers, outward order
-    cells: np.ndarray           # (segments,) the cell each segment bounds
-    nodes: np.ndarray           # unique nodes of the segments
+    facets: np.ndarray          # (facets, nodes per facet) global node numbers, outward order
+    area: np.ndarray            # (facets,) reference area [m^2] (2D: length x 2 pi r, or x thickness)
+    size: np.ndarray            # (facets,) longest edge [m]
+    bulk: np.ndarray            # (facets,) bulk modulus of the cell behind the facet [Pa]
+    volume: np.ndarray          # (facets,) reference volume of that cell [m^3]
 
     @property
-    def num_segments(self) -> int:
-        return len(self.segments)
+    def nodes(self) -> np.ndarray:
+        return np.unique(self.facets)
+
+
+def _weight(model: Model, r: np.ndarray) -> np.ndarray:
+    """The out-of-plane measure of 2D entities: 2 pi r (axisymmetric) or the thickness."""
+    return TWO_PI * r if model.scene.kinematics == "axisymmetric" else np.full_like(r, model.scene.thickness)
+
+
+def cell_volumes(model: Model, cells: np.ndarray) -> np.ndarray:
+    """Reference volumes of cells (2D: area x 2 pi r at the centroid of the nodes, or x thickness)."""
+    p = model.X0[model.dofmap[cells]]
+    nn = p.shape[1]
+    if model.gdim == 2:
+        if nn == 4:
+            p = p[:, [0, 1, 3, 2]]                   # tensor order -> around
+        x, y = p[..., 0], p[..., 1]
+        area = 0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1))
+        return area * _weight(model, x.mean(axis=1))
+    tets = p[:, _HEX_TETS] if nn == 8 else p[:, None, :, :]
+    e = tets[:, :, 1:] - tets[:, :, :1]
+    return np.abs(np.linalg.det(e)).sum(axis=1) / 6.0
+
+
+def _facet_geometry(model: Model, facets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Reference area and longest edge of facets given by local node numbers."""
+    p = model.X0[facets]
+    edges = np.linalg.norm(np.roll(p, -1, axis=1) - p, axis=2)
+    if model.gdim == 2:
+        length = np.linalg.norm(p[:, 1] - p[:, 0], axis=1)
+        return length * _weight(model, p[..., 0].mean(axis=1)), length
+    if facets.shape[1] == 3:
+        area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    else:
+        area = 0.5 * np.linalg.norm(np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1]), axis=1)
+    return area, edges.max(axis=1)
 
 
 def _boundary_facets(model: Model, spec: str) -> tuple[int, np.ndarray]:
-    """Body index and the facets of a "body" (its whole exterior) or a "body.region"."""
+    """Body index and the local facets of a "body" (its whole exterior) or a "body.region"."""
     body_name, _, region = spec.partition(".")
     names = [b.name for b in model.scene.bodies]
     body = names.index(body_name)
@@ -45,12 +95,11 @@ def _boundary_facets(model: Model, spec: str) -> tuple[int, np.ndarray]:
     facets = dmesh.exterior_facet_indices(topology)
     f_to_c = topology.connectivity(tdim - 1, tdim)
     first_cell = np.array([f_to_c.links(f)[0] for f in facets], dtype=np.int64)
-    return body, facets[model.cell_body[first_cell] == body]
+    return body, facets[model.cell_body[first_cell] == body] if len(facets) else facets
 
 
-def build_surface(model: Model, spec: str) -> Surface:
-    """The segments of ``spec`` ("body" or "body.region") with outward-ordered nodes."""
-    body, facets = _boundary_facets(model, spec)
+def _outward_facets(model: Model, facets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Local node numbers of each facet in outward order, and the cell behind each."""
     topology = model.meshed.mesh.topology
     tdim = topology.dim
     topology.create_connectivity(tdim - 1, tdim)
@@ -58,27 +107,88 @@ def build_surface(model: Model, spec: str) -> Surface:
     f_to_c = topology.connectivity(tdim - 1, tdim)
     c_to_f = topology.connectivity(tdim, tdim - 1)
     ref_facets = basix.topology(BASIX_CELLS[topology.cell_name()])[tdim - 1]
-    segments, cells = [], []
     X = model.X0
+    out, cells = [], []
     for f in facets:
         c = f_to_c.links(f)[0]
         local = int(np.flatnonzero(c_to_f.links(c) == f)[0])
         nodes = model.dofmap[c, ref_facets[local]].astype(np.int64)
+        if len(nodes) == 4:
+            nodes = nodes[[0, 1, 3, 2]]              # tensor order -> around
+        p = X[nodes]
         if tdim == 2:
-            p0, p1 = X[nodes[0]], X[nodes[1]]
-            t = p1 - p0
+            t = p[1] - p[0]
             normal = np.array([t[1], -t[0]])
-            if np.dot(X[model.dofmap[c]].mean(axis=0) - p0, normal) > 0:
-                nodes = nodes[::-1]
         else:
-            # quadrilateral facets in tensor order (0, 1, 2, 3) -> around (0, 1, 3, 2)
-            if len(nodes) == 4:
-                nodes = nodes[[0, 1, 3, 2]]
-            p = X[nodes]
             normal = np.cross(p[1] - p[0], p[-1] - p[0])
-            if np.dot(X[model.dofmap[c]].mean(axis=0) - p[0], normal) > 0:
-                nodes = nodes[::-1]
-        segments.append(nodes)
+        if np.dot(X[model.dofmap[c]].mean(axis=0) - p[0], normal) > 0:
+            nodes = nodes[::-1]
+        out.append(nodes)
         cells.append(c)
-    seg = np.array(segments, dtype=np.int64).reshape(-1, 2 if tdim == 2 else len(ref_facets[0]))
-    return Surface(spec, body, np.ascontiguousarray(seg), np.array(cells, dtype=np.int64), np.unique(seg))
+    width = len(ref_facets[0])
+    return np.array(out, dtype=np.int64).reshape(-1, width), np.array(cells, dtype=np.int64)
+
+
+def _allgather(comm, a: np.ndarray) -> np.ndarray:
+    if comm.size == 1:
+        return a
+    return np.concatenate(comm.allgather(a))
+
+
+def build_surface(model: Model, spec: str) -> Surface:
+    """The facets of ``spec`` ("body" or "body.region") from all ranks, in global node numbers.
+
+    Collective.  A facet seen by two ranks (a ghost facet) is kept once.
+    """
+    body, facets = _boundary_facets(model, spec)
+    local, cells = _outward_facets(model, facets)
+    area, size = _facet_geometry(model, local)
+    p = model.params[model.cell_material[cells]]
+    bulk = p[:, P_LAMBDA] + 2.0 * p[:, P_MU] / 3.0
+    volume = cell_volumes(model, cells)
+    imap = model.V.dofmap.index_map
+    to_global = imap.local_to_global(np.arange(imap.size_local + imap.num_ghosts, dtype=np.int32))
+    glob = to_global[local].reshape(local.shape).astype(np.int64)
+    comm = model.comm
+    glob = _allgather(comm, glob).reshape(-1, local.shape[1])
+    area, size, bulk, volume = (_allgather(comm, a) for a in (area, size, bulk, volume))
+    _, first = np.unique(np.sort(glob, axis=1), axis=0, return_index=True)
+    keep = np.sort(first)
+    return Surface(spec, body, np.ascontiguousarray(glob[keep]), area[keep], size[keep], bulk[keep],
+                   volume[keep])
+
+
+class NodeExchange:
+    """Copies between a rank's local node arrays and a compact array of chosen global nodes that
+    every rank holds in full (the nodes of the contact surfaces, or of discrete springs)."""
+
+    def __init__(self, model: Model, global_nodes: np.ndarray):
+        self.comm = model.comm
+        self.size = len(global_nodes)
+        imap = model.V.dofmap.index_map
+        owned_global = imap.local_to_global(np.arange(imap.size_local, dtype=np.int32)).astype(np.int64)
+        mine = np.isin(owned_global, global_nodes)
+        self.local = np.flatnonzero(mine)                               # owned local nodes
+        self.slot = np.searchsorted(global_nodes, owned_global[mine])   # their place in the compact array
+        if self.comm.size > 1:
+            self.counts = np.array(self.comm.allgather(len(self.local)))
+            self.order = np.concatenate(self.comm.allgather(self.slot))
+            if len(self.order) != self.size:
+                raise RuntimeError("contact surface nodes are not owned exactly once over the ranks")
+
+    def gather(self, values: np.ndarray) -> np.ndarray:
+        """(local nodes, k) -> (compact nodes, k): every rank gets every value.  Collective."""
+        k = values.shape[1]
+        mine = np.ascontiguousarray(values[self.local])
+        out = np.empty((self.size, k))
+        if self.comm.size == 1:
+            out[self.slot] = mine
+            return out
+        received = np.empty((self.size, k))
+        self.comm.Allgatherv(mine, [received, self.counts * k, None, MPI.DOUBLE])
+        out[self.order] = received
+        return out
+
+    def add_to(self, compact: np.ndarray, local: np.ndarray):
+        """Add compact values into the owned local nodes of this rank."""
+        local[self.local] += compact[self.slot]

@@ -16,10 +16,11 @@ from dataclasses import dataclass
 import numpy as np
 from mpi4py import MPI
 
+from ..errors import ModelError
 from ..scene import Scene
 from . import parts
 
-MESH_FORMAT_VERSION = 1   # bump when part drawing changes, to invalidate caches
+MESH_FORMAT_VERSION = 2   # bump when part drawing changes, to invalidate caches
 
 
 @dataclass
@@ -37,37 +38,123 @@ def default_cache_dir() -> str:
     return os.environ.get("SHOCKFEM_MESH_CACHE", repo_meshes)
 
 
+def _file_stamp(path: str | None) -> str | None:
+    """Content hash of a body's mesh file (so an edited file is remeshed)."""
+    if not path:
+        return None
+    with open(path, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()[:16]
+
+
 def mesh_key(scene: Scene) -> str:
-    """Hash of everything that determines the mesh (shapes, sizes, placement, element, gmsh)."""
+    """Hash of everything that determines the mesh (shapes, sizes, placement, files, element, gmsh)."""
     import gmsh
     desc = {"v": MESH_FORMAT_VERSION, "gmsh": gmsh.__version__, "kinematics": scene.kinematics,
             "element": scene.element,
-            "bodies": [(b.name, b.shape, sorted(b.dims.items()), b.element_size, b.position)
+            "bodies": [(b.name, b.shape, sorted(b.dims.items()), b.element_size, b.position,
+                        _file_stamp(b.mesh_file), sorted(b.regions.items()))
                        for b in scene.bodies]}
     return hashlib.sha256(json.dumps(desc, sort_keys=True).encode()).hexdigest()[:16]
 
 
-def _build_gmsh_model(scene: Scene) -> dict[str, int]:
-    """Draw every body into the current gmsh model; returns region name -> facet tag."""
+# gmsh element types of the cells and facets shockfem meshes with (first order only)
+CELL_TYPES = {"tri": 2, "quad": 3, "tet": 4, "hex": 5}
+FACET_TYPES = {"tri": 1, "quad": 1, "tet": 2, "hex": 3}
+
+
+@dataclass
+class BodyMesh:
+    """One body's mesh, taken out of its own gmsh model: nodes, cells and region facets."""
+    coords: np.ndarray                  # (nodes, 3)
+    node_tags: np.ndarray               # gmsh tags of the nodes
+    cells: np.ndarray                   # (cells, nodes per cell) node tags
+    regions: dict[str, np.ndarray]      # region name -> (facets, nodes per facet) node tags
+
+
+def _elements(dim: int, entities, gmsh_type: int) -> np.ndarray:
     import gmsh
-    gdim = scene.gdim
-    structured = scene.element in ("quad", "hex")
-    drawn = []
-    for body in scene.bodies:
+    nodes = [gmsh.model.mesh.getElementsByType(gmsh_type, e)[1] for e in entities]
+    nodes = [n for n in nodes if len(n)]
+    _, _, _, per_element, *_ = gmsh.model.mesh.getElementProperties(gmsh_type)
+    return np.concatenate(nodes).reshape(-1, per_element) if nodes else np.zeros((0, per_element), dtype=np.int64)
+
+
+def _draw_body(body, gdim: int, element: str) -> BodyMesh:
+    """Mesh one body in a gmsh model of its own (current model) and take its mesh out.
+
+    Each body gets its own model so that gmsh's coherence, which the built-in kernel needs to
+    join the pieces of one part, never joins two bodies that touch (a striker resting on its
+    target would be glued to it)."""
+    import gmsh
+    if body.shape == "mesh":
+        gmsh.merge(body.mesh_file)
+        entities = [tag for _, tag in gmsh.model.getEntities(gdim)]
+        regions = {}
+        for name, tag in body.regions.items():
+            if tag not in [t for _, t in gmsh.model.getPhysicalGroups(gdim - 1)]:
+                raise ModelError(f"body {body.name}: {body.mesh_file} has no physical group of dimension "
+                                 f"{gdim - 1} with tag {tag} (for region '{name}'); fix bodies.regions")
+            regions[name] = list(gmsh.model.getEntitiesForPhysicalGroup(gdim - 1, tag))
+    else:
         builder = parts.BUILDERS[(body.shape, gdim)]
         position = body.position if gdim == 3 else (body.position[0], body.position[1])
-        drawn.append(builder(body.dims, position, body.element_size, structured))
-    gmsh.model.geo.synchronize()
+        entities, regions = builder(body.dims, position, body.element_size, element in ("quad", "hex"))
+        gmsh.model.geo.synchronize()
+        gmsh.model.mesh.generate(gdim)
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    coords = coords.reshape(-1, 3)
+    cells = _elements(gdim, entities, CELL_TYPES[element])
+    if not len(cells):
+        found = sorted({int(t) for e in entities for t in gmsh.model.mesh.getElementTypes(gdim, e)})
+        raise ModelError(f"body {body.name}: no {element} cells in its mesh (gmsh element types found: {found}); "
+                         f"set scene.element to match the mesh, or mesh the file with {element} cells")
+    if body.shape == "mesh":
+        coords = coords + np.array(list(body.position) + [0.0] * (3 - gdim))
+    # only the nodes of cells (a construction point, such as an arc's centre, also gets a node)
+    used = np.isin(node_tags, cells)
+    node_tags, coords = node_tags[used], coords[used]
+    return BodyMesh(coords, node_tags.astype(np.int64), cells.astype(np.int64),
+                    {name: _elements(gdim - 1, ents, FACET_TYPES[element]).astype(np.int64)
+                     for name, ents in regions.items()})
+
+
+def _build_gmsh_model(scene: Scene) -> dict[str, int]:
+    """Mesh every body on its own, then gather them, disconnected, into the current gmsh model as
+    discrete entities with physical groups (body number per cell, region number per facet);
+    returns region name -> facet tag."""
+    import gmsh
+    gdim = scene.gdim
+    combined = gmsh.model.getCurrent()
+    meshes = []
+    for i, body in enumerate(scene.bodies):
+        gmsh.model.add(f"{combined}-body{i}")
+        meshes.append(_draw_body(body, gdim, scene.element))
+        gmsh.model.remove()
+    gmsh.model.setCurrent(combined)
     region_ids: dict[str, int] = {}
-    for i, (body, (entities, regions)) in enumerate(zip(scene.bodies, drawn)):
-        gmsh.model.addPhysicalGroup(gdim, entities, i + 1)
+    node_offset = element_offset = 0
+    cell_type, facet_type = CELL_TYPES[scene.element], FACET_TYPES[scene.element]
+    for i, (body, bm) in enumerate(zip(scene.bodies, meshes)):
+        # renumber the body's nodes 1..n after the previous bodies'
+        renumber = np.zeros(bm.node_tags.max() + 1, dtype=np.int64)
+        renumber[bm.node_tags] = node_offset + 1 + np.arange(len(bm.node_tags))
+        volume = gmsh.model.addDiscreteEntity(gdim)
+        gmsh.model.mesh.addNodes(gdim, volume, renumber[bm.node_tags], bm.coords.ravel())
+        gmsh.model.mesh.addElementsByType(volume, cell_type, element_offset + 1 + np.arange(len(bm.cells)),
+                                          renumber[bm.cells].ravel())
+        element_offset += len(bm.cells)
+        node_offset += len(bm.node_tags)
+        gmsh.model.addPhysicalGroup(gdim, [volume], i + 1)
         gmsh.model.setPhysicalName(gdim, i + 1, body.name)
-        for rname, tags in regions.items():
+        for rname, facets in bm.regions.items():
             rid = len(region_ids) + 1
             region_ids[f"{body.name}.{rname}"] = rid
-            gmsh.model.addPhysicalGroup(gdim - 1, tags, rid)
+            surface = gmsh.model.addDiscreteEntity(gdim - 1)
+            gmsh.model.mesh.addElementsByType(surface, facet_type, element_offset + 1 + np.arange(len(facets)),
+                                              renumber[facets].ravel())
+            element_offset += len(facets)
+            gmsh.model.addPhysicalGroup(gdim - 1, [surface], rid)
             gmsh.model.setPhysicalName(gdim - 1, rid, f"{body.name}.{rname}")
-    gmsh.model.mesh.generate(gdim)
     return region_ids
 
 

@@ -264,11 +264,18 @@ def describe(model: Model) -> str:
         kind = "rigid body (no stiffness)" if b.rigid else f"linear elastic, updated Lagrangian, {element}"
         lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
     for c in sc.contacts:
-        other = c.b if c.b else f"rigid wall through {c.wall.point} normal {c.wall.normal}"
-        lines.append(f"  contact {c.name}: {c.a} <-> {other}, two-pass node-to-segment penalty "
-                     f"({c.penalty}, scale {c.penalty_scale:g}), damping {c.damping:g} of critical"
-                     if c.b else f"  contact {c.name}: {c.a} -> {other}, node-to-plane penalty "
-                     f"({c.penalty}, scale {c.penalty_scale:g}), damping {c.damping:g} of critical")
+        friction = (f", Coulomb friction mu_s = {c.friction[0]:g}, mu_d = {c.friction[1]:g}"
+                    if c.friction[0] > 0 else ", frictionless")
+        how = (f"two-pass node-to-{'segment' if model.gdim == 2 else 'face'} penalty" if c.b
+               else f"node-to-{c.rigid.kind} penalty")
+        lines.append(f"  contact {c.name}: {c.a} <-> {c.b or c.rigid.describe()}, {how} ({c.penalty}, scale "
+                     f"{c.penalty_scale:g}), damping {c.damping:g} of critical{friction}")
+    for sp in sc.springs:
+        law = (f"tabulated curve of {len(sp.curve)} points" if sp.curve else f"k = {sp.stiffness:.4g} N/m")
+        lines.append(f"  spring {sp.name}: {sp.a} <-> {sp.b}, {law}, c = {sp.damping:.4g} N s/m"
+                     + (", compression only" if sp.compression_only else ""))
+    if sc.gravity:
+        lines.append(f"  gravity: {sc.gravity} m/s^2")
     if model.scene.damping:
         d = model.scene.damping
         a, be = d.coefficients()

@@ -112,22 +112,53 @@ class Boundary:
 
 
 @dataclass(frozen=True)
-class Wall:
-    """A rigid plane through ``point`` whose ``normal`` points to the side bodies stay on."""
+class RigidSurface:
+    """A rigid analytic surface moving at a constant velocity.
+
+    ``plane``: through ``point``, ``direction`` the unit normal toward the side bodies stay on.
+    ``cylinder``: of ``radius`` about the axis through ``point`` along the unit ``direction``
+    (axisymmetric: the symmetry axis; plane strain: zero, the cylinder is the circle about
+    ``point``); bodies stay ``inside`` or outside it.
+    """
+    kind: str                        # plane | cylinder
     point: tuple[float, ...]
-    normal: tuple[float, ...]        # unit vector
+    direction: tuple[float, ...]
     velocity: tuple[float, ...]      # [m/s], constant
+    radius: float = 0.0
+    inside: bool = False
+
+    def describe(self) -> str:
+        if self.kind == "plane":
+            return f"rigid plane through {self.point} m, normal {self.direction}"
+        side = "inside" if self.inside else "outside"
+        return f"rigid cylinder of radius {self.radius:g} m about {self.point} m ({side})"
 
 
 @dataclass(frozen=True)
 class Contact:
     name: str
     a: str                           # "body" or "body.region"
-    b: str | None                    # the other surface, or None for a wall
-    wall: Wall | None
+    b: str | None                    # the other surface, or None for a rigid surface
+    rigid: RigidSurface | None
     penalty: str                     # segment | soft
     penalty_scale: float
     damping: float                   # fraction of critical (LS-DYNA VDC)
+    friction: tuple[float, float, float] = (0.0, 0.0, 0.0)   # mu_static, mu_dynamic, decay [s/m]
+
+
+@dataclass(frozen=True)
+class Spring:
+    """A discrete spring and dashpot between two bodies (or named regions of them), acting along
+    ``direction`` on the mass-weighted mean motion of each side (LS-DYNA's *ELEMENT_DISCRETE
+    between rigidly averaged node sets)."""
+    name: str
+    a: str
+    b: str
+    direction: tuple[float, ...] | None     # unit; None: from a's centre of mass to b's at t = 0
+    stiffness: float                        # [N/m] (linear spring), 0 with a curve
+    curve: tuple[tuple[float, float], ...]  # (extension [m], tension [N]) pairs, or ()
+    damping: float                          # [N s/m]
+    compression_only: bool                  # pads: push, never pull
 
 
 @dataclass(frozen=True)
@@ -155,6 +186,8 @@ class Scene:
     contacts: tuple[Contact, ...]
     damping: Damping | None
     outputs: Outputs
+    springs: tuple[Spring, ...] = ()
+    gravity: tuple[float, ...] = ()              # [m/s^2]; empty or zero: none
     raw: dict = field(repr=False, default_factory=dict)
 
     @property
@@ -262,10 +295,11 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     import os
 
     ck = _Checker()
-    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "damping", "outputs"), "")
+    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "damping", "outputs"), "")
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
-                   "energy_error_limit", "integration", "hourglass", "hourglass_coefficient"), "scene")
+                   "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity"),
+               "scene")
     name = str(s.get("name", "scene"))
     kin = ck.choice(s, "kinematics", "scene", KINEMATICS)
     gdim = 3 if kin == "3d" else 2
@@ -280,6 +314,9 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     hourglass = ck.choice(s, "hourglass", "scene", HOURGLASS_FORMS, default="stiffness")
     hg_coef = ck.quantity(s, "hourglass_coefficient", "scene", "dimensionless", default=0.05,
                           nonnegative=True, upper=1.0)
+    gravity = ck.vector(s, "gravity", "scene", "acceleration", gdim, [0.0] * gdim)
+    if kin == "axisymmetric" and gravity[0] != 0.0:
+        ck.fail("scene.gravity", "axisymmetric gravity acts along the axis: the r component must be 0")
 
     materials: dict[str, Material] = {}
     mats = ck.table(raw, "materials", "materials")
@@ -425,7 +462,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                 history = ((0.0, ck.quantity(bc, "value", path, dim)),)
         boundaries.append(Boundary(region, kind, comps, history))
 
-    contacts = _contacts(ck, raw, body_regions, gdim)
+    contacts = _contacts(ck, raw, body_regions, kin)
+    springs = _springs(ck, raw, body_regions, gdim)
 
     damping = None
     if "damping" in raw:
@@ -450,62 +488,153 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         raise SceneError(ck.problems)
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
-                 tuple(boundaries), tuple(contacts), damping, outputs, raw)
+                 tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
+                 gravity if any(gravity) else (), raw)
 
 
 PENALTIES = ("segment", "soft")
+CYLINDER_SIDES = ("outside", "inside")
 
 
-def _contacts(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Contact]:
-    """[[contact]] entries: two surfaces (``a``, ``b``) or a surface and a rigid ``wall``."""
+def _surface_spec(ck: _Checker, c: dict, key: str, path: str, body_regions: dict) -> str | None:
+    """A "body" or "body.region" reference, checked against the scene's bodies."""
+    spec = c.get(key)
+    if not isinstance(spec, str):
+        ck.fail(f"{path}.{key}", "missing ('body' or 'body.region')")
+        return None
+    bname, _, rname = spec.partition(".")
+    if bname not in body_regions:
+        ck.fail(f"{path}.{key}", f"unknown body {bname!r} (bodies: {', '.join(body_regions)})")
+    elif rname and rname not in body_regions[bname]:
+        ck.fail(f"{path}.{key}", f"body {bname!r} has regions {', '.join(body_regions[bname])}; got {rname!r}")
+    return spec
+
+
+def _unit_vector(ck: _Checker, d: dict, key: str, path: str, gdim: int, default) -> tuple:
+    v = ck.vector(d, key, path, "dimensionless", gdim, default)
+    norm = sum(x * x for x in v) ** 0.5
+    if norm == 0:
+        ck.fail(f"{path}.{key}", "must not be zero")
+        return tuple(default)
+    return tuple(x / norm for x in v)
+
+
+def _rigid_surface(ck: _Checker, c: dict, path: str, kin: str) -> RigidSurface:
+    """``wall = {point, normal, velocity}`` or ``cylinder = {point, axis, radius, side, velocity}``."""
+    gdim = 3 if kin == "3d" else 2
+    zero = [0.0] * gdim
+    if "wall" in c:
+        p = f"{path}.wall"
+        w = ck.table(c, "wall", p)
+        ck.unknown(w, ("point", "normal", "velocity"), p)
+        point = ck.vector(w, "point", p, "length", gdim, zero)
+        normal = _unit_vector(ck, w, "normal", p, gdim, zero[:-1] + [1.0])
+        vel = ck.vector(w, "velocity", p, "velocity", gdim, zero)
+        return RigidSurface("plane", point, normal, vel)
+    p = f"{path}.cylinder"
+    cyl = ck.table(c, "cylinder", p)
+    allowed = ("point", "radius", "side", "velocity") + (("axis",) if gdim == 3 else ())
+    ck.unknown(cyl, allowed, p)
+    point = ck.vector(cyl, "point", p, "length", gdim, zero)
+    radius = ck.quantity(cyl, "radius", p, "length", positive=True)
+    side = ck.choice(cyl, "side", p, CYLINDER_SIDES, default="outside")
+    vel = ck.vector(cyl, "velocity", p, "velocity", gdim, zero)
+    if kin == "3d":
+        axis = _unit_vector(ck, cyl, "axis", p, 3, [0.0, 0.0, 1.0])
+    elif kin == "axisymmetric":
+        axis = (0.0, 1.0)                 # coaxial with the bodies
+        if point[0] != 0.0 or vel[0] != 0.0:
+            ck.fail(p, "an axisymmetric cylinder is coaxial with the bodies: point and velocity need r = 0")
+    else:
+        axis = (0.0, 0.0)                 # plane strain: the circle about point
+    return RigidSurface("cylinder", point, axis, vel, radius, side == "inside")
+
+
+def _contacts(ck: _Checker, raw: dict, body_regions: dict, kin: str) -> list[Contact]:
+    """[[contact]] entries: two surfaces (``a``, ``b``) or a surface and a rigid ``wall`` or ``cylinder``."""
     out = []
     entries = raw.get("contact", [])
     if not isinstance(entries, list):
         ck.fail("contact", "must be a list of [[contact]] entries")
         return out
-
-    def surface(c: dict, key: str, path: str):
-        spec = c.get(key)
-        if not isinstance(spec, str):
-            ck.fail(f"{path}.{key}", "missing ('body' or 'body.region')")
-            return None
-        bname, _, rname = spec.partition(".")
-        if bname not in body_regions:
-            ck.fail(f"{path}.{key}", f"unknown body {bname!r} (bodies: {', '.join(body_regions)})")
-        elif rname and rname not in body_regions[bname]:
-            ck.fail(f"{path}.{key}", f"body {bname!r} has regions {', '.join(body_regions[bname])}; got {rname!r}")
-        return spec
-
     for i, c in enumerate(entries):
         path = f"contact[{i}]"
         if not isinstance(c, dict):
             ck.fail(path, "must be a table")
             continue
-        ck.unknown(c, ("name", "a", "b", "wall", "penalty", "penalty_scale", "damping"), path)
-        a = surface(c, "a", path)
-        b = wall = None
-        if ("b" in c) == ("wall" in c):
-            ck.fail(path, "give exactly one of b (a second surface) or wall (a rigid plane)")
+        ck.unknown(c, ("name", "a", "b", "wall", "cylinder", "penalty", "penalty_scale", "damping", "friction",
+                       "friction_dynamic", "friction_decay"), path)
+        a = _surface_spec(ck, c, "a", path, body_regions)
+        b = rigid = None
+        if sum(k in c for k in ("b", "wall", "cylinder")) != 1:
+            ck.fail(path, "give exactly one of b (a second surface), wall (a rigid plane) or cylinder "
+                          "(a rigid cylinder)")
         elif "b" in c:
-            b = surface(c, "b", path)
+            b = _surface_spec(ck, c, "b", path, body_regions)
             if a and b and a.partition(".")[0] == b.partition(".")[0]:
                 ck.fail(f"{path}.b", "self-contact of a body is not supported; give two different bodies")
         else:
-            w = ck.table(c, "wall", f"{path}.wall")
-            ck.unknown(w, ("point", "normal", "velocity"), f"{path}.wall")
-            point = ck.vector(w, "point", f"{path}.wall", "length", gdim, [0.0] * gdim)
-            normal = ck.vector(w, "normal", f"{path}.wall", "dimensionless", gdim, [0.0] * (gdim - 1) + [1.0])
-            norm = sum(x * x for x in normal) ** 0.5
-            if norm == 0:
-                ck.fail(f"{path}.wall.normal", "must not be zero")
-                norm = 1.0
-            vel = ck.vector(w, "velocity", f"{path}.wall", "velocity", gdim, [0.0] * gdim)
-            wall = Wall(point, tuple(x / norm for x in normal), vel)
+            rigid = _rigid_surface(ck, c, path, kin)
         penalty = ck.choice(c, "penalty", path, PENALTIES, default="segment")
         scale = ck.quantity(c, "penalty_scale", path, "dimensionless", default=0.1, positive=True)
         zeta = ck.quantity(c, "damping", path, "dimensionless", default=0.1, nonnegative=True, upper=1.0)
-        name = c.get("name", f"{a}-{b or 'wall'}")
-        out.append(Contact(str(name), a or "", b, wall, penalty, scale, zeta))
+        mu_s = ck.quantity(c, "friction", path, "dimensionless", default=0.0, nonnegative=True)
+        mu_d = ck.quantity(c, "friction_dynamic", path, "dimensionless", default=mu_s, nonnegative=True)
+        if mu_d > mu_s:
+            ck.fail(f"{path}.friction_dynamic", f"must not exceed the static coefficient friction = {mu_s:g}")
+        decay = ck.quantity(c, "friction_decay", path, "slowness", default=0.0, nonnegative=True)
+        name = c.get("name", f"{a}-{b or (rigid.kind if rigid else '?')}")
+        out.append(Contact(str(name), a or "", b, rigid, penalty, scale, zeta, (mu_s, mu_d, decay)))
+    return out
+
+
+def _springs(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Spring]:
+    """[[spring]] entries: a linear ``stiffness`` or a tabulated ``curve``, and a ``damping``."""
+    out = []
+    entries = raw.get("spring", [])
+    if not isinstance(entries, list):
+        ck.fail("spring", "must be a list of [[spring]] entries")
+        return out
+    for i, c in enumerate(entries):
+        path = f"spring[{i}]"
+        if not isinstance(c, dict):
+            ck.fail(path, "must be a table")
+            continue
+        ck.unknown(c, ("name", "a", "b", "direction", "stiffness", "curve", "damping", "compression_only"), path)
+        a = _surface_spec(ck, c, "a", path, body_regions)
+        b = _surface_spec(ck, c, "b", path, body_regions)
+        if a and b and a.partition(".")[0] == b.partition(".")[0]:
+            ck.fail(f"{path}.b", "a spring joins two different bodies")
+        direction = _unit_vector(ck, c, "direction", path, gdim, [0.0] * (gdim - 1) + [1.0]) \
+            if "direction" in c else None
+        stiffness = ck.quantity(c, "stiffness", path, "stiffness", default=0.0, nonnegative=True)
+        curve: list[tuple[float, float]] = []
+        if "curve" in c:
+            if "stiffness" in c:
+                ck.fail(path, "give stiffness (linear) or curve (tabulated), not both")
+            raw_curve = c["curve"]
+            if not isinstance(raw_curve, list) or len(raw_curve) < 2:
+                ck.fail(f"{path}.curve", "must be a list of at least two [extension, force] pairs")
+                raw_curve = []
+            for j, pair in enumerate(raw_curve):
+                if not isinstance(pair, list) or len(pair) != 2:
+                    ck.fail(f"{path}.curve[{j}]", "must be an [extension, force] pair")
+                    continue
+                try:
+                    curve.append((to_si(pair[0], "length"), to_si(pair[1], "force")))
+                except UnitError as e:
+                    ck.fail(f"{path}.curve[{j}]", str(e))
+            if any(e1 <= e0 for (e0, _), (e1, _) in zip(curve, curve[1:])):
+                ck.fail(f"{path}.curve", "extensions must increase")
+        damping = ck.quantity(c, "damping", path, "damping", default=0.0, nonnegative=True)
+        if not stiffness and not curve and not damping:
+            ck.fail(path, "needs a stiffness, a curve or a damping")
+        only = c.get("compression_only", False)
+        if not isinstance(only, bool):
+            ck.fail(f"{path}.compression_only", f"must be true or false, got {only!r}")
+            only = False
+        name = str(c.get("name", f"spring{i}"))
+        out.append(Spring(name, a or "", b or "", direction, stiffness, tuple(curve), damping, only))
     return out
 
 

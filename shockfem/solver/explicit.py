@@ -29,6 +29,7 @@ from .. import compat
 from ..errors import UnstableRun
 from ..model import Model
 from ..contact.pairs import ContactPair
+from ..contact.springs import DiscreteSpring
 from . import kernels, nodal, one_point
 
 
@@ -38,7 +39,8 @@ class Energies:
     internal: float = 0.0          # stored (elastic) energy = internal work less damping
     damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts)
     hourglass: float = 0.0         # work of the hourglass forces (one-point elements)
-    contact: float = 0.0           # taken up by contact (penalty springs, contact damping) = -work
+    contact: float = 0.0           # taken up by contact (penalty, contact damping, friction) and
+                                   # discrete springs = -their work on the bodies
     external: float = 0.0          # work of loads and prescribed velocities
     initial: float = 0.0           # kinetic energy at t = 0
     peak: float = 0.0              # largest energy in play so far (the balance reference)
@@ -103,6 +105,9 @@ class ExplicitSolver:
         self._said_contact_dt = False
         self.log_messages: list[str] = []
         self.contacts = [ContactPair(m, c) for c in m.scene.contacts]
+        self.springs = [DiscreteSpring(m, c) for c in m.scene.springs]
+        self.f_gravity = (m.mass[:, None] * np.asarray(m.scene.gravity)[None, :] if m.scene.gravity
+                          else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
@@ -129,7 +134,7 @@ class ExplicitSolver:
         self._internal_force(0.0)
         self._external_force(0.0)
         for pair in self.contacts:
-            nodes, deepest = pair.start(self.x, self.v, m.mass)
+            nodes, deepest = pair.start(self.x, self.v)
             if nodes:
                 self.log_messages.append(
                     f"contact '{pair.name}': {nodes} nodes start inside the other surface (deepest "
@@ -199,26 +204,29 @@ class ExplicitSolver:
         return damping_power, hourglass_power
 
     def _external_force(self, t: float):
-        if not self.model.loads:
+        if not self.model.loads and self.f_gravity is None:
             return                      # f_ext stays zero
-        self.f_ext[:] = 0.0
+        self.f_ext[:] = 0.0 if self.f_gravity is None else self.f_gravity
         flat = self.f_ext.reshape(-1)
         for load in self.model.loads:
             flat[load.dofs] += load.value(t) * load.shares
 
     def _contact_forces(self, dt: float):
-        if not self.contacts:
+        """Contact and discrete-spring forces at t_{n+1} into f_con (v is v_{n+1/2})."""
+        if not self.contacts and not self.springs:
             return
         self.f_con[:] = 0.0
         limit = np.inf
         for pair in self.contacts:
-            limit = min(limit, pair.compute(self.x, self.v, self.model.mass, dt, self.t))
-            self.f_con[pair.nodes] += pair.f[pair.nodes]
+            limit = min(limit, pair.compute(self.x, self.v, dt, self.t))
+            pair.add_forces(self.f_con)
+        for spring in self.springs:
+            limit = min(limit, spring.compute(self.u, self.v, dt, self.f_con))
         if np.isfinite(limit) and not self._said_contact_dt:
             self._said_contact_dt = True
             combined = 1.0 / np.sqrt(1.0 / self.dt_stable ** 2 + 1.0 / limit ** 2)
-            self.log_messages.append(f"t = {self.t:.6g} s: contact springs lower the stable step from "
-                                     f"{self.dt_stable:.4g} s to {combined:.4g} s while they act (before "
+            self.log_messages.append(f"t = {self.t:.6g} s: contact and discrete springs lower the stable step "
+                                     f"from {self.dt_stable:.4g} s to {combined:.4g} s while they act (before "
                                      f"the safety factor)")
         self.dt_contact = limit
 
@@ -315,7 +323,7 @@ class ExplicitSolver:
         e.external += w_ext + w_ext2 + reaction_work
         e.contact -= w_con + w_con2
         for pair in self.contacts:
-            pair.account(dt, self.v, self.t, lambda: self.body_means()[0])
+            pair.account(dt, self.t, lambda: self.body_means()[0])
         e.kinetic = kinetic
         e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass),
                      abs(e.contact))

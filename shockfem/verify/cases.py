@@ -218,7 +218,8 @@ def _parallel_check(size, workdir):
                  absolute=True)
 
 
-from .contact_cases import rod_on_rod, rod_on_wall  # noqa: E402  (they use check and SIZES above)
+from .contact_cases import (rod_on_rod, rod_on_rod_3d, rod_on_wall, sliding_block,  # noqa: E402
+                            unequal_rods)  # (they use check and SIZES above)
 
 CASES = {
     "free_flight": free_flight,
@@ -229,5 +230,8 @@ CASES = {
     "rayleigh_damping": rayleigh_damping,
     "rod_on_rod": rod_on_rod,
     "rod_on_wall": rod_on_wall,
+    "unequal_rods": unequal_rods,
+    "rod_on_rod_3d": rod_on_rod_3d,
+    "sliding_block": sliding_block,
 }
 

@@ -1,9 +1,15 @@
-"""Verification of contact: elastic rods striking each other and a rigid wall (1D wave theory).
+"""Verification of contact: elastic rods striking each other and a rigid wall (1D wave theory),
+and a block sliding to rest under Coulomb friction.
 
-Two rods of the same material and section, striker L1 at v onto a target at rest: contact lasts
-2 L1 / c0, the interface stress is rho c0 v / 2, the striker ends at rest and the target at v
-(restitution 1).  A rod striking a rigid wall rebounds at v after 2 L / c0.  The rods are
-slender (L = 20 D) so that 1D theory holds; their lateral ringing is physics, not error.
+Two rods of the same material and section, striker L1 at v onto a target L2 >= L1 at rest:
+contact lasts 2 L1 / c0, the interface stress is rho c0 v / 2, the striker ends at rest and
+the target carries the striker's momentum: restitution (of the mean velocities) L1/L2, and a
+share 1 - L1/L2 of the energy stays in the target as a travelling wave.  A rod striking a
+rigid wall rebounds at v after 2 L / c0.  The rods are slender (L = 20 D) so that 1D theory
+holds; their lateral ringing is physics, not error.
+
+A block launched at v0 along a rigid floor under gravity g with friction mu decelerates at
+mu g and stops after v0^2 / (2 mu g), the friction dissipating all its kinetic energy.
 """
 from __future__ import annotations
 
@@ -15,13 +21,13 @@ from .scenes import STEEL, solve, steel_c0
 RADIUS, LENGTH, SPEED = 0.0025, 0.1, 1.0
 
 
-def _rod(name, z0, velocity, h):
-    return {"name": name, "material": "steel", "shape": "cylinder", "radius": RADIUS, "length": LENGTH,
-            "element_size": h, "position": [0.0, z0], "velocity": [0.0, velocity]}
+def _rod(name, z0, velocity, h, length=LENGTH, gdim=2):
+    return {"name": name, "material": "steel", "shape": "cylinder", "radius": RADIUS, "length": length,
+            "element_size": h, "position": [0.0] * (gdim - 1) + [z0], "velocity": [0.0] * (gdim - 1) + [velocity]}
 
 
-def _scene(name, bodies, contact, end_time):
-    return {"scene": {"name": name, "kinematics": "axisymmetric", "end_time": end_time},
+def _scene(name, bodies, contact, end_time, kinematics="axisymmetric"):
+    return {"scene": {"name": name, "kinematics": kinematics, "end_time": end_time},
             "materials": {"steel": dict(STEEL)}, "bodies": bodies, "contact": [contact],
             "outputs": {"field_interval": end_time, "history_interval": end_time / 100}}
 
@@ -32,30 +38,53 @@ def _contact_time(pair) -> float:
     return closed[-1][1] - pair.intervals[0][0] if closed else float("nan")
 
 
-def rod_on_rod(size, workdir):
-    """Identical rods: contact time 2L/c0, plateau force rho c0 v / 2 A, velocities exchanged, e = 1."""
-    h = 0.00025 * SIZES[size]
-    c0, rho = steel_c0(), STEEL["density"]
-    t_contact = 2 * LENGTH / c0
-    raw = _scene("rod_on_rod", [_rod("striker", LENGTH, -SPEED, h), _rod("target", 0.0, 0.0, h)],
-                 {"name": "impact", "a": "striker.bottom", "b": "target.top"}, 1.4 * t_contact)
+def _rod_pair(h, workdir, kinematics="axisymmetric"):
+    """Identical rods, the striker at SPEED onto the target at rest: the measured figures."""
+    gdim = 3 if kinematics == "3d" else 2
+    t_contact = 2 * LENGTH / steel_c0()
+    raw = _scene(f"rod_on_rod_{kinematics}",
+                 [_rod("striker", LENGTH, -SPEED, h, gdim=gdim), _rod("target", 0.0, 0.0, h, gdim=gdim)],
+                 {"name": "impact", "a": "striker.bottom", "b": "target.top"}, 1.4 * t_contact, kinematics)
     forces = []
-    solver, wall = solve(raw, cache_dir=workdir, probe=lambda s: forces.append(
-        (s.t, s.contacts[0].force_a[1]) if s.contacts else (s.t, 0.0)))
+    solver, wall = solve(raw, cache_dir=workdir, probe=lambda s: forces.append((s.t, s.contacts[0].force_a[-1])))
     pair = solver.contacts[0]
     v, _ = solver.body_means()
     t, F = np.array(forces).T
-    plateau = F[(t > 0.25 * t_contact) & (t < 0.75 * t_contact)].mean()
-    n = _elements(solver)
+    return {"contact_time": _contact_time(pair),
+            "plateau_force": F[(t > 0.25 * t_contact) & (t < 0.75 * t_contact)].mean(),
+            "striker_velocity": v[0, -1], "target_velocity": v[1, -1], "restitution": pair.restitution() or 0.0,
+            "balance_error": solver.energy.balance_error, "wall": wall, "elements": _elements(solver)}
+
+
+def rod_on_rod(size, workdir):
+    """Identical rods: contact time 2L/c0, plateau force rho c0 v / 2 A, velocities exchanged, e = 1."""
+    c0, rho = steel_c0(), STEEL["density"]
+    r = _rod_pair(0.00025 * SIZES[size], workdir)
+    wall, n = r["wall"], r["elements"]
     return [
-        check("rod_on_rod.contact_time [s]", t_contact, _contact_time(pair), 0.02, wall, n),
-        check("rod_on_rod.plateau_force [N]", rho * c0 * SPEED / 2 * np.pi * RADIUS ** 2, plateau, 0.03, wall, n),
-        check("rod_on_rod.striker_velocity [m/s, abs]", 0.0, v[0, 1], 0.02 * SPEED, wall, n, absolute=True),
-        check("rod_on_rod.target_velocity [m/s]", -SPEED, v[1, 1], 0.02, wall, n),
-        check("rod_on_rod.restitution [-]", 1.0, pair.restitution() or 0.0, 0.02, wall, n),
-        check("rod_on_rod.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
+        check("rod_on_rod.contact_time [s]", 2 * LENGTH / c0, r["contact_time"], 0.02, wall, n),
+        check("rod_on_rod.plateau_force [N]", rho * c0 * SPEED / 2 * np.pi * RADIUS ** 2, r["plateau_force"], 0.03,
+              wall, n),
+        check("rod_on_rod.striker_velocity [m/s, abs]", 0.0, r["striker_velocity"], 0.02 * SPEED, wall, n,
               absolute=True),
+        check("rod_on_rod.target_velocity [m/s]", -SPEED, r["target_velocity"], 0.02, wall, n),
+        check("rod_on_rod.restitution [-]", 1.0, r["restitution"], 0.02, wall, n),
+        check("rod_on_rod.energy_balance [-, abs]", 0.0, r["balance_error"], 0.01, wall, n, absolute=True),
     ]
+
+
+def rod_on_rod_3d(size, workdir):
+    """The rod-on-rod impact with hexahedra in 3D (node-to-face contact) against the axisymmetric run:
+    contact time, plateau force and final velocities within 3%.  3D elements are twice the size."""
+    axi = _rod_pair(0.00025 * SIZES[size], workdir)
+    r = _rod_pair(0.0005 * SIZES[size], workdir, "3d")
+    wall, n = r["wall"], r["elements"]
+    out = [check(f"rod_on_rod_3d.{key} [vs axisymmetric]", axi[key], r[key], 0.03, wall, n)
+           for key in ("contact_time", "plateau_force", "target_velocity", "restitution")]
+    out.append(check("rod_on_rod_3d.striker_velocity [m/s, abs, vs axisymmetric]", axi["striker_velocity"],
+                     r["striker_velocity"], 0.03 * SPEED, wall, n, absolute=True))
+    out.append(check("rod_on_rod_3d.energy_balance [-, abs]", 0.0, r["balance_error"], 0.01, wall, n, absolute=True))
+    return out
 
 
 def rod_on_wall(size, workdir):
@@ -78,4 +107,69 @@ def rod_on_wall(size, workdir):
         # no energy gained: what is left in the rod never exceeds what it came with
         check("rod_on_wall.energy_gain [-, abs]", 0.0, max(0.0, (e.kinetic + e.internal) / e.initial - 1), 1e-3,
               wall, n, absolute=True),
+    ]
+
+
+def unequal_rods(size, workdir):
+    """Striker half as long as the target: e = L1/L2 and a share 1 - L1/L2 of the energy left vibrating.
+
+    Nothing pulls the rods apart when the striker stops (both faces come to rest at 2 L1 / c0), so
+    the dispersive ringing of a short striker keeps them touching a little longer: the striker
+    is as slender as in rod_on_rod (L1 = 20 D)."""
+    h = 0.00025 * SIZES[size]
+    c0 = steel_c0()
+    L1, L2 = LENGTH, 2 * LENGTH
+    t_contact = 2 * L1 / c0
+    raw = _scene("unequal_rods", [_rod("striker", L2, -SPEED, h, L1), _rod("target", 0.0, 0.0, h, L2)],
+                 {"name": "impact", "a": "striker.bottom", "b": "target.top"}, 2.5 * t_contact)
+    solver, wall = solve(raw, cache_dir=workdir)
+    pair = solver.contacts[0]
+    v, _ = solver.body_means()
+    m = solver.model.body_mass
+    rigid_motion = 0.5 * float(m @ (v ** 2).sum(axis=1))
+    vibration = 1.0 - rigid_motion / solver.energy.initial
+    n = _elements(solver)
+    return [
+        # not one of the issue's checks: 1D theory ends the pulse sharply at 2 L1/c0, the rods' dispersive
+        # tail (nothing pulls the faces apart) keeps it 4.4% longer at the default size; a regression guard
+        check("unequal_rods.contact_time [s]", t_contact, _contact_time(pair), 0.06, wall, n),
+        check("unequal_rods.restitution [-]", L1 / L2, pair.restitution() or 0.0, 0.03, wall, n),
+        check("unequal_rods.vibration_share [-]", 1 - L1 / L2, vibration, 0.03, wall, n),
+        check("unequal_rods.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
+              absolute=True),
+    ]
+
+
+def sliding_block(size, workdir):
+    """A block sliding on a rigid floor with friction mu: deceleration mu g, stopping distance
+    v0^2 / (2 mu g), all the kinetic energy dissipated by friction.
+
+    A soft plane-strain block (E = 2.5 MPa) keeps the run to a few thousand steps; its stiffness
+    does not enter the answer."""
+    mu, g, v0 = 0.3, 9.81, 1.0
+    t_stop = v0 / (mu * g)
+    h = 0.005 * SIZES[size]
+    raw = {"scene": {"name": "sliding_block", "kinematics": "plane-strain", "end_time": 1.25 * t_stop,
+                     "gravity": [0.0, -g], "thickness": 0.01},
+           "materials": {"soft": {"density": 1000.0, "youngs_modulus": 2.5e6, "poisson_ratio": 0.3}},
+           "bodies": [{"name": "block", "material": "soft", "shape": "box", "size": [0.04, 0.02],
+                       "element_size": h, "velocity": [v0, 0.0]}],
+           "contact": [{"name": "floor", "a": "block.bottom", "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]},
+                        "friction": mu}],
+           "outputs": {"field_interval": 1.25 * t_stop}}
+    samples = []
+    solver, wall = solve(raw, cache_dir=workdir,
+                         probe=lambda s: samples.append((s.t, s.body_means()[0][0, 0], s.u[s.owned, 0].mean())))
+    t, vx, ux = np.array(samples).T
+    # deceleration: slope of v(t) over the middle of the slide, clear of the start and the stop
+    sel = (t > 0.2 * t_stop) & (t < 0.8 * t_stop)
+    decel = -np.polyfit(t[sel], vx[sel], 1)[0]
+    pair = solver.contacts[0]
+    n = _elements(solver)
+    e = solver.energy
+    return [
+        check("sliding_block.deceleration [m/s^2]", mu * g, decel, 0.01, wall, n),
+        check("sliding_block.stopping_distance [m]", v0 ** 2 / (2 * mu * g), ux[-1], 0.01, wall, n),
+        check("sliding_block.friction_dissipation [J]", e.initial, -pair.friction_work, 0.01, wall, n),
+        check("sliding_block.energy_balance [-, abs]", 0.0, e.balance_error, 0.01, wall, n, absolute=True),
     ]
