@@ -18,6 +18,12 @@ tangential sliding velocity) and capped at mu f_n, with
 mu = mu_d + (mu_s - mu_d) exp(-decay |v_t|).  The force is history: ``ft`` keeps it per slave
 (three components, z = 0 in 2D), turned onto the current tangent plane each step.
 
+Every active spring adds to ``stiff`` the absolute row sums of its stiffness matrix
+(2 k w_i at each node i it joins, w = 1 at the slave, the shape-function weights at the master;
+doubled with friction, whose tangential spring has the same k): the pair turns them into the
+Gershgorin bound of the contact's highest frequency, max_i stiff_i / m_i >= omega^2, which
+stays right when many slaves lean on one master node.
+
 Master facets are segments (2 nodes, 2D), triangles (3) or bilinear quadrilaterals (4), their
 nodes ordered so that the normal points out of the body.  Normal forces go to ``f``,
 friction forces to ``ff``, so that the pair can report the two works apart.
@@ -34,6 +40,10 @@ PLANE, CYLINDER = 0, 1
 # friction coefficients: [mu_static, mu_dynamic, decay [s/m]]
 MU_S, MU_D, DECAY = 0, 1, 2
 _TOL = 1e-6        # parametric tolerance: a node on the edge between two facets belongs to both
+# A node inside the master but behind a concave (dented) vertex projects just outside both facets
+# that meet there; when no facet takes it, the facets it misses by less than this share of their
+# size take it at their edge (a convex vertex is always covered by a facet that does take it)
+_REACH_BEYOND_EDGE = 0.1
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -48,14 +58,14 @@ def _beyond_initial(g, offset, i):
 @njit(cache=True, fastmath=True, inline="always")
 def _spring(k, g, g_dot, m_eff, zeta, soft_scale, dt):
     """Normal force -k g - 2 zeta sqrt(k m*) g_dot of a penetration g < 0 (the caller applies it only
-    when positive: contact never pulls), the stable step sqrt(2 m*/k) of the spring, and k.
+    when positive: contact never pulls), and the stiffness k used.
 
     soft_scale > 0 (``penalty = "soft"``, LS-DYNA's SOFT=1) raises k to at least
     soft_scale m* / (2 dt^2), the stiffness that stops the nodes whatever their elements.
     """
     if soft_scale > 0.0 and dt > 0.0:
         k = max(k, 0.5 * soft_scale * m_eff / (dt * dt))
-    return -k * g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot, math.sqrt(2.0 * m_eff / k), k
+    return -k * g - 2.0 * zeta * math.sqrt(k * m_eff) * g_dot, k
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -90,8 +100,10 @@ def _friction(ft, i, n, w, fn, k, dt, friction):
 
 @njit(cache=True, fastmath=True, inline="always")
 def _project(facet, x, s, w, n):
-    """Closest point of node s on a master facet: fills the facet nodes' weights ``w`` and the
-    unit outward normal ``n`` (3 components, z = 0 in 2D); returns (gap, within the facet)."""
+    """Projection of node s on a master facet: fills the facet nodes' weights ``w`` at the
+    projection clamped to the facet and the unit outward normal ``n`` (3 components, z = 0 in 2D);
+    returns (gap along n, how far outside the facet the projection falls in parametric units,
+    0 when within)."""
     nf = facet.shape[0]
     if nf == 2:
         a, b = facet[0], facet[1]
@@ -100,10 +112,11 @@ def _project(facet, x, s, w, n):
         xi = ((x[s, 0] - x[a, 0]) * tx + (x[s, 1] - x[a, 1]) * ty) / L2
         L = math.sqrt(L2)
         n[0], n[1], n[2] = ty / L, -tx / L, 0.0
-        xi = min(max(xi, 0.0), 1.0) if -_TOL <= xi <= 1.0 + _TOL else xi
+        outside = max(-xi, xi - 1.0, 0.0)
+        xi = min(max(xi, 0.0), 1.0)
         w[0], w[1] = 1.0 - xi, xi
         g = (x[s, 0] - x[a, 0]) * n[0] + (x[s, 1] - x[a, 1]) * n[1]
-        return g, 0.0 <= xi <= 1.0
+        return g, outside
     p0 = facet[0]
     if nf == 3:
         e10, e11, e12 = x[facet[1], 0] - x[p0, 0], x[facet[1], 1] - x[p0, 1], x[facet[1], 2] - x[p0, 2]
@@ -119,14 +132,13 @@ def _project(facet, x, s, w, n):
         l2 = (a11 * b2 - a12 * b1) / det
         w[0], w[1], w[2] = 1.0 - l1 - l2, l1, l2
         c0, c1, c2 = e11 * e22 - e12 * e21, e12 * e20 - e10 * e22, e10 * e21 - e11 * e20
-        inside = w[0] >= -_TOL and w[1] >= -_TOL and w[2] >= -_TOL
-        if inside:
-            total = 0.0
-            for j in range(3):
-                w[j] = max(w[j], 0.0)
-                total += w[j]
-            for j in range(3):
-                w[j] /= total
+        outside = max(-w[0], -w[1], -w[2], 0.0)
+        total = 0.0
+        for j in range(3):
+            w[j] = max(w[j], 0.0)
+            total += w[j]
+        for j in range(3):
+            w[j] /= total
     else:
         # bilinear quadrilateral, corners at (xi, eta) = (-1,-1), (1,-1), (1,1), (-1,1):
         # Gauss-Newton on |x(xi, eta) - x_s|^2 (exact in one iteration on a flat parallelogram)
@@ -163,7 +175,7 @@ def _project(facet, x, s, w, n):
                 break
             if abs(xi) > 2.0 or abs(eta) > 2.0:
                 break                     # far outside: no need to converge
-        inside = abs(xi) <= 1.0 + _TOL and abs(eta) <= 1.0 + _TOL
+        outside = 0.5 * max(abs(xi) - 1.0, abs(eta) - 1.0, 0.0)      # in units of the facet's side
         xi = min(max(xi, -1.0), 1.0)
         eta = min(max(eta, -1.0), 1.0)
         w[0], w[1] = 0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta)
@@ -176,21 +188,21 @@ def _project(facet, x, s, w, n):
         for j in range(nf):
             point += w[j] * x[facet[j], d]
         g += (x[s, d] - point) * n[d]
-    return g, inside
+    return g, outside
 
 
 @njit(cache=True, fastmath=True)
 def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
-                   depth, friction, f, ff, ft, gap, offset):
+                   depth, friction, f, ff, ft, gap, offset, stiff):
     """One pass of node-to-facet contact; normal forces are added to ``f``, friction to ``ff``.
 
     slaves : (ns,) slave node numbers; facets : (nm, 2|3|4) master facets, outward order;
     facet_stiffness : (nm,) penalty stiffness [N/m]; cand_ptr, cand_seg : CSR candidate facets
     of each slave (from the search); soft_scale, dt : see ``_spring``; friction : [mu_s, mu_d,
     decay]; ft : (ns, 3) tangential force history; gap : (ns,) out, the signed gap of each slave
-    (0 if none).
+    (0 if none); stiff : (nodes,) in/out, row sums of the active springs (see the module docstring).
 
-    Returns (active slaves, smallest stable step sqrt(2 m*/k) of the active springs).
+    Returns the number of active slaves.
     """
     gdim = x.shape[1]
     nf = facets.shape[1]
@@ -201,12 +213,15 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
     bn = np.zeros(3)
     rel = np.zeros(3)
     active = 0
-    dt_min = 1e300
+    row = 4.0 if has_friction else 2.0
     for i in range(slaves.shape[0]):
         s = slaves[i]
         gap[i] = 0.0
         best = -1
         best_g = -1e300
+        near_within = False          # some facet takes the node's projection and is near it
+        beyond = -1                  # fallback: the shallowest penetration just beyond a facet edge
+        beyond_g = -1e300
         for jj in range(cand_ptr[i], cand_ptr[i + 1]):
             j = cand_seg[jj]
             mine = False
@@ -214,19 +229,24 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
                 mine = mine or facets[j, q] == s
             if mine:
                 continue
-            g, inside = _project(facets[j], x, s, w, n)
-            # among the facets the node is behind, the shallowest (a node in a concave corner
-            # belongs to the face it just crossed, not to the one it is deep behind)
-            if inside and g < 0.0 and g > -depth and g > best_g:
-                best, best_g = j, g
-                for q in range(nf):
-                    bw[q] = w[q]
-                for d in range(3):
-                    bn[d] = n[d]
+            g, outside = _project(facets[j], x, s, w, n)
+            if g <= -depth or g >= depth:
+                continue
+            if outside <= _TOL:
+                near_within = True
+                # among the facets the node is behind, the shallowest (a node in a concave corner
+                # belongs to the face it just crossed, not to the one it is deep behind)
+                if g < 0.0 and g > best_g:
+                    best, best_g = j, g
+            elif outside < _REACH_BEYOND_EDGE and g < 0.0 and g > beyond_g:
+                beyond, beyond_g = j, g
+        if best < 0 and not near_within and beyond >= 0:
+            best, best_g = beyond, beyond_g
         if best < 0:
             offset[i] = 0.0
             ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
+        _project(facets[best], x, s, bw, bn)
         gap[i] = best_g
         best_g = _beyond_initial(best_g, offset, i)
         if best_g >= 0.0:
@@ -243,9 +263,11 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
             for q in range(nf):
                 rel[d] -= bw[q] * v[facets[best, q], d]
         g_dot = rel[0] * bn[0] + rel[1] * bn[1] + rel[2] * bn[2]
-        fn, dt_spring, k = _spring(facet_stiffness[best], best_g, g_dot, m_eff, zeta, soft_scale, dt)
+        fn, k = _spring(facet_stiffness[best], best_g, g_dot, m_eff, zeta, soft_scale, dt)
         active += 1
-        dt_min = min(dt_min, dt_spring)
+        stiff[s] += row * k
+        for q in range(nf):
+            stiff[facets[best, q]] += row * k * bw[q]
         if fn <= 0.0:
             ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
@@ -259,23 +281,23 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
                 ff[s, d] += t[d]
                 for q in range(nf):
                     ff[facets[best, q], d] -= bw[q] * t[d]
-    return active, dt_min
+    return active
 
 
 @njit(cache=True, fastmath=True)
 def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass, zeta,
-                  soft_scale, dt, depth, friction, f, ff, ft, gap, offset):
+                  soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff):
     """Slave nodes against a rigid surface moving at ``velocity``: a plane (kind PLANE) through
     ``point`` with unit normal ``direction`` toward the allowed side, or a cylinder (kind CYLINDER)
     of ``radius`` about the axis through ``point`` along the unit ``direction`` (a zero direction
     in 2D makes it the circle about ``point``), the nodes staying ``inside`` or outside it.
-    Returns (active slaves, smallest sqrt(2 m/k))."""
+    Returns the number of active slaves (``stiff`` as in ``node_to_facets``)."""
     gdim = x.shape[1]
     has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
     n = np.zeros(3)
     rel = np.zeros(3)
     active = 0
-    dt_min = 1e300
+    row = 2.0 if has_friction else 1.0
     for i in range(slaves.shape[0]):
         s = slaves[i]
         g = 0.0
@@ -310,9 +332,9 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
         for d in range(gdim):
             rel[d] = v[s, d] - velocity[d]
             g_dot += rel[d] * n[d]
-        fn, dt_spring, k = _spring(node_stiffness[i], g, g_dot, mass[s], zeta, soft_scale, dt)
+        fn, k = _spring(node_stiffness[i], g, g_dot, mass[s], zeta, soft_scale, dt)
         active += 1
-        dt_min = min(dt_min, dt_spring)
+        stiff[s] += row * k
         if fn <= 0.0:
             ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
             continue
@@ -322,4 +344,4 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
             t = _friction(ft, i, n, rel, fn, k, dt, friction)
             for d in range(gdim):
                 ff[s, d] += t[d]
-    return active, dt_min
+    return active

@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
+from ..errors import ModelError
 from ..model import Model
 from ..scene.schema import Contact
 from . import kernels
@@ -65,10 +66,10 @@ class _Pass:
         self.cand_ptr = np.concatenate([[0], np.cumsum([len(h) for h in hits])]).astype(np.int64)
         self.cand_seg = np.array([j for h in hits for j in h], dtype=np.int64)
 
-    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff):
+    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         return kernels.node_to_facets(self.slaves, self.facets, self.stiffness, self.cand_ptr, self.cand_seg,
                                       x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, self.ft,
-                                      self.gap, self.offset)
+                                      self.gap, self.offset, stiff)
 
 
 class _RigidPass:
@@ -98,10 +99,10 @@ class _RigidPass:
         dist = np.linalg.norm(p - np.outer(p @ self.direction, self.direction), axis=1)
         return self.radius - dist if self.inside else dist - self.radius
 
-    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff):
+    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         return kernels.node_to_rigid(self.slaves, self.stiffness, self.kind, self.point + self.t * self.velocity,
                                      self.direction, self.radius, self.inside, self.velocity, x, v, mass, zeta,
-                                     soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset)
+                                     soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset, stiff)
 
 
 class ContactPair:
@@ -113,6 +114,10 @@ class ContactPair:
         self.a = build_surface(model, spec.a)
         self.b = build_surface(model, spec.b) if spec.b else None
         surfaces = [s for s in (self.a, self.b) if s is not None]
+        for s in surfaces:
+            if not len(s.facets):
+                raise ModelError(f"contact '{spec.name}': surface '{s.name}' has no boundary facets; check the "
+                                 f"region (a facet belongs to one region only)")
         self.global_nodes = np.unique(np.concatenate([s.facets.ravel() for s in surfaces]))
         self.exchange = NodeExchange(model, self.global_nodes)
         compact = [np.searchsorted(self.global_nodes, s.facets) for s in surfaces]
@@ -141,6 +146,7 @@ class ContactPair:
         self.x_search = None
         self.f = np.zeros((n, gdim))              # normal forces on the compact nodes [N]
         self.ff = np.zeros((n, gdim))             # friction forces [N]
+        self.stiff = np.zeros(n)                  # row sums of the active springs' stiffness [N/m]
         self._f_old = np.zeros((n, gdim))
         self._ff_old = np.zeros((n, gdim))
         self.work = 0.0                      # work done by the normal contact forces on the bodies [J]
@@ -187,8 +193,8 @@ class ContactPair:
         self.v = self.exchange.gather(v)
         self.f[:] = 0.0
         self.ff[:] = 0.0
+        self.stiff[:] = 0.0
         active = 0
-        dt_limit = np.inf
         deepest = 0.0
         for p in self.passes:
             if isinstance(p, _RigidPass):
@@ -196,10 +202,8 @@ class ContactPair:
         if not self._boxes_apart():
             self._refresh()
             for p in self.passes:
-                n, dl = p.forces(self.x, self.v, self.mass, self.spec.damping, self.soft_scale, dt, self.depth,
-                                 self.friction, self.f, self.ff)
-                active += n
-                dt_limit = min(dt_limit, dl)
+                active += p.forces(self.x, self.v, self.mass, self.spec.damping, self.soft_scale, dt, self.depth,
+                                   self.friction, self.f, self.ff, self.stiff)
                 deepest = max(deepest, -p.gap.min())
         else:
             for p in self.passes:
@@ -212,7 +216,14 @@ class ContactPair:
         self.friction_work += 0.5 * dt * float(np.sum((self._ff_old + self.ff) * self.v))
         self._f_old[:] = self.f
         self._ff_old[:] = self.ff
-        return dt_limit if active else np.inf
+        return self._stable_step() if active else np.inf
+
+    def _stable_step(self) -> float:
+        """2 / omega of the active springs alone, omega^2 <= max_i stiff_i / m_i (Gershgorin), shortened
+        by the contact damping: (2 / omega)(sqrt(1 + zeta^2) - zeta) (Belytschko et al., eq. 6.2.28)."""
+        omega2 = float(np.max(self.stiff / self.mass))
+        zeta = self.spec.damping
+        return 2.0 / np.sqrt(omega2) * (np.sqrt(1.0 + zeta * zeta) - zeta)
 
     def add_forces(self, f: np.ndarray):
         """Add this pair's forces on the nodes this rank owns into the solver's array ``f``."""
@@ -243,10 +254,11 @@ class ContactPair:
         no_friction = np.zeros(3)
         for p in self.passes:
             p.offset[:] = -1e300          # accept any initial penetration as the zero
-            p.forces(self.x, self.v, self.mass, 0.0, 0.0, 0.0, self.depth, no_friction, self.f, self.ff)
+            p.forces(self.x, self.v, self.mass, 0.0, 0.0, 0.0, self.depth, no_friction, self.f, self.ff, self.stiff)
             p.offset[:] = np.minimum(p.gap, 0.0)
         self.f[:] = 0.0
         self.ff[:] = 0.0
+        self.stiff[:] = 0.0
         tiny = -1e-6 * self.depth                 # round-off of coincident meshes is no overlap
         offsets = [p.offset for p in self.passes]
         for o in offsets:

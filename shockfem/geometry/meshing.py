@@ -20,7 +20,7 @@ from ..errors import ModelError
 from ..scene import Scene
 from . import parts
 
-MESH_FORMAT_VERSION = 2   # bump when part drawing changes, to invalidate caches
+MESH_FORMAT_VERSION = 3   # bump when part drawing changes, to invalidate caches
 
 
 @dataclass
@@ -96,6 +96,7 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
                                  f"{gdim - 1} with tag {tag} (for region '{name}'); fix bodies.regions")
             regions[name] = list(gmsh.model.getEntitiesForPhysicalGroup(gdim - 1, tag))
     else:
+        gmsh.option.setNumber("Mesh.Algorithm", 6)       # gmsh's default; a part may choose another
         builder = parts.BUILDERS[(body.shape, gdim)]
         position = body.position if gdim == 3 else (body.position[0], body.position[1])
         entities, regions = builder(body.dims, position, body.element_size, element in ("quad", "hex"))

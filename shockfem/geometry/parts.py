@@ -105,5 +105,29 @@ def box_3d(dims, position, size, hexes):
                      "back": [back], "left": [left]}
 
 
-BUILDERS = {("cylinder", 2): cylinder_2d, ("box", 2): box_2d,
+def sphere_2d(dims, position, size, quads):
+    """Axisymmetric sphere: the half disc r >= 0 of radius R centred at (0, z0), meshed with
+    unstructured quads graded from ``pole_element_size`` at the two poles (where spheres strike)
+    to ``size`` at the equator."""
+    geo = gmsh.model.geo
+    R, z0 = dims["radius"], position[1]
+    h_pole = dims.get("pole_element_size", size) or size
+    south = geo.addPoint(0.0, z0 - R, 0.0, h_pole)
+    north = geo.addPoint(0.0, z0 + R, 0.0, h_pole)
+    centre = geo.addPoint(0.0, z0, 0.0, size)
+    equator = geo.addPoint(R, z0, 0.0, size)
+    lower = geo.addCircleArc(south, centre, equator)
+    upper = geo.addCircleArc(equator, centre, north)
+    axis_top = geo.addLine(north, centre)
+    axis_bottom = geo.addLine(centre, south)
+    surf = geo.addPlaneSurface([geo.addCurveLoop([lower, upper, axis_top, axis_bottom])])
+    if quads:
+        geo.mesh.setRecombine(2, surf)
+        gmsh.option.setNumber("Mesh.Algorithm", 8)            # frontal-Delaunay for quads
+        gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 2)
+    # regions must not overlap (a facet carries one tag): the whole surface is the body itself
+    return [surf], {"bottom": [lower], "top": [upper], "axis": [axis_top, axis_bottom]}
+
+
+BUILDERS = {("cylinder", 2): cylinder_2d, ("box", 2): box_2d, ("sphere", 2): sphere_2d,
             ("cylinder", 3): cylinder_3d, ("box", 3): box_3d}

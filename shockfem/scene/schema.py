@@ -15,11 +15,12 @@ from ..units import UnitError, to_si
 
 KINEMATICS = ("axisymmetric", "plane-strain", "3d")
 ELEMENTS = {"axisymmetric": ("quad", "tri"), "plane-strain": ("quad", "tri"), "3d": ("hex", "tet")}
-SHAPES = ("cylinder", "box", "mesh")
+SHAPES = ("cylinder", "box", "sphere", "mesh")
 # Named regions each shape provides, by kinematics family (2D or 3D).
 SHAPE_REGIONS = {
     ("cylinder", 2): ("bottom", "top", "side", "axis"),
     ("cylinder", 3): ("bottom", "top", "side"),
+    ("sphere", 2): ("bottom", "top", "axis"),      # bottom/top: the lower/upper hemisphere
     ("box", 2): ("left", "right", "bottom", "top"),
     ("box", 3): ("left", "right", "front", "back", "bottom", "top"),
 }
@@ -360,6 +361,14 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             allowed |= {"radius", "length"}
             dims["radius"] = ck.quantity(b, "radius", path, "length", positive=True)
             dims["length"] = ck.quantity(b, "length", path, "length", positive=True)
+        elif shape == "sphere":
+            allowed |= {"radius", "pole_element_size"}
+            dims["radius"] = ck.quantity(b, "radius", path, "length", positive=True)
+            dims["pole_element_size"] = ck.quantity(b, "pole_element_size", path, "length", default=0.0,
+                                                    nonnegative=True)
+            if kin != "axisymmetric":
+                ck.fail(f"{path}.shape", "spheres are axisymmetric in this version (kinematics = 'axisymmetric'); "
+                                         "otherwise mesh the sphere in gmsh and use shape = 'mesh'")
         elif shape == "box":
             allowed |= {"size"}
             size = ck.vector(b, "size", path, "length", gdim, [1.0] * gdim)
@@ -409,7 +418,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         bodies.append(Body(bname, mat if mat in materials else "", shape, dims, h, pos, vel, spin,
                            rigid, mesh_file, regions))
 
-    body_regions = {b.name: (tuple(b.regions) if b.shape == "mesh" else SHAPE_REGIONS[(b.shape, gdim)])
+    body_regions = {b.name: (tuple(b.regions) if b.shape == "mesh" else SHAPE_REGIONS.get((b.shape, gdim), ()))
                     for b in bodies}
     boundaries: list[Boundary] = []
     raw_bcs = raw.get("boundary", [])

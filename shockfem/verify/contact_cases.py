@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from .cases import SIZES, _elements, check
-from .scenes import STEEL, solve, steel_c0
+from .scenes import STEEL, resample, solve, steel_c0
 
 RADIUS, LENGTH, SPEED = 0.0025, 0.1, 1.0
 
@@ -38,13 +38,18 @@ def _contact_time(pair) -> float:
     return closed[-1][1] - pair.intervals[0][0] if closed else float("nan")
 
 
-def _rod_pair(h, workdir, kinematics="axisymmetric"):
-    """Identical rods, the striker at SPEED onto the target at rest: the measured figures."""
+def _rod_pair_scene(h, kinematics="axisymmetric"):
     gdim = 3 if kinematics == "3d" else 2
     t_contact = 2 * LENGTH / steel_c0()
-    raw = _scene(f"rod_on_rod_{kinematics}",
-                 [_rod("striker", LENGTH, -SPEED, h, gdim=gdim), _rod("target", 0.0, 0.0, h, gdim=gdim)],
-                 {"name": "impact", "a": "striker.bottom", "b": "target.top"}, 1.4 * t_contact, kinematics)
+    return _scene(f"rod_on_rod_{kinematics}",
+                  [_rod("striker", LENGTH, -SPEED, h, gdim=gdim), _rod("target", 0.0, 0.0, h, gdim=gdim)],
+                  {"name": "impact", "a": "striker.bottom", "b": "target.top"}, 1.4 * t_contact, kinematics)
+
+
+def _rod_pair(h, workdir, kinematics="axisymmetric"):
+    """Identical rods, the striker at SPEED onto the target at rest: the measured figures."""
+    t_contact = 2 * LENGTH / steel_c0()
+    raw = _rod_pair_scene(h, kinematics)
     forces = []
     solver, wall = solve(raw, cache_dir=workdir, probe=lambda s: forces.append((s.t, s.contacts[0].force_a[-1])))
     pair = solver.contacts[0]
@@ -140,25 +145,33 @@ def unequal_rods(size, workdir):
     ]
 
 
+SLIDE = (0.3, 9.81, 1.0)     # friction coefficient, gravity [m/s^2], launch speed [m/s]
+
+
+def _sliding_block_scene(size):
+    mu, g, v0 = SLIDE
+    t_stop = v0 / (mu * g)
+    h = 0.005 * SIZES[size]
+    return {"scene": {"name": "sliding_block", "kinematics": "plane-strain", "end_time": 1.25 * t_stop,
+                      "gravity": [0.0, -g], "thickness": 0.01},
+            "materials": {"soft": {"density": 1000.0, "youngs_modulus": 2.5e6, "poisson_ratio": 0.3}},
+            "bodies": [{"name": "block", "material": "soft", "shape": "box", "size": [0.04, 0.02],
+                        "element_size": h, "velocity": [v0, 0.0]}],
+            "contact": [{"name": "floor", "a": "block.bottom", "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]},
+                         "friction": mu}],
+            "outputs": {"field_interval": 1.25 * t_stop, "history_interval": t_stop / 100}}
+
+
 def sliding_block(size, workdir):
     """A block sliding on a rigid floor with friction mu: deceleration mu g, stopping distance
     v0^2 / (2 mu g), all the kinetic energy dissipated by friction.
 
     A soft plane-strain block (E = 2.5 MPa) keeps the run to a few thousand steps; its stiffness
     does not enter the answer."""
-    mu, g, v0 = 0.3, 9.81, 1.0
+    mu, g, v0 = SLIDE
     t_stop = v0 / (mu * g)
-    h = 0.005 * SIZES[size]
-    raw = {"scene": {"name": "sliding_block", "kinematics": "plane-strain", "end_time": 1.25 * t_stop,
-                     "gravity": [0.0, -g], "thickness": 0.01},
-           "materials": {"soft": {"density": 1000.0, "youngs_modulus": 2.5e6, "poisson_ratio": 0.3}},
-           "bodies": [{"name": "block", "material": "soft", "shape": "box", "size": [0.04, 0.02],
-                       "element_size": h, "velocity": [v0, 0.0]}],
-           "contact": [{"name": "floor", "a": "block.bottom", "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]},
-                        "friction": mu}],
-           "outputs": {"field_interval": 1.25 * t_stop}}
     samples = []
-    solver, wall = solve(raw, cache_dir=workdir,
+    solver, wall = solve(_sliding_block_scene(size), cache_dir=workdir,
                          probe=lambda s: samples.append((s.t, s.body_means()[0][0, 0], s.u[s.owned, 0].mean())))
     t, vx, ux = np.array(samples).T
     # deceleration: slope of v(t) over the middle of the slide, clear of the start and the stop
@@ -172,4 +185,51 @@ def sliding_block(size, workdir):
         check("sliding_block.stopping_distance [m]", v0 ** 2 / (2 * mu * g), ux[-1], 0.01, wall, n),
         check("sliding_block.friction_dissipation [J]", e.initial, -pair.friction_work, 0.01, wall, n),
         check("sliding_block.energy_balance [-, abs]", 0.0, e.balance_error, 0.01, wall, n, absolute=True),
+    ]
+
+
+def contact_parallel(size, workdir):
+    """Contact under mpirun -n 2 gives the one-process results: body-to-body (rod on rod) and a
+    rigid floor with friction and gravity (the sliding block)."""
+    from .cases import parallel_agreement
+    return [parallel_agreement(_rod_pair_scene(0.0005 * SIZES[size]), "contact_parallel.rod_on_rod", workdir,
+                               ["striker.v_z", "target.v_z", "energy.contact", "energy.internal"]),
+            parallel_agreement(_sliding_block_scene(size), "contact_parallel.sliding_block", workdir,
+                               ["block.v_x", "block.v_y", "energy.contact"])]
+
+
+def hertz_spheres(size, workdir):
+    """Two equal elastic steel spheres (R = 10 mm, axisymmetric), one at rest, closing at 5 m/s:
+    contact time 2.9432 delta*/v and peak force (4/3) E* sqrt(R*) delta*^(3/2) of Hertz theory
+    (shared/references/README.md), within 5%.
+
+    The mesh is graded to 0.1 mm at the poles (the contact radius is 0.61 mm), and the pair uses
+    penalty_scale = 1: the default 0.1 makes the interface as compliant as the Hertz approach
+    itself.  The force is compared after a moving average over t_c / 20, as Hertz's is
+    quasi-static and the elements ring at their own frequencies on top of it."""
+    radius, speed = 0.01, 5.0
+    E, nu, rho = STEEL["youngs_modulus"], STEEL["poisson_ratio"], STEEL["density"]
+    e_star, r_star = E / (2 * (1 - nu ** 2)), radius / 2
+    m_star = rho * 4 / 3 * np.pi * radius ** 3 / 2
+    approach = (15 * m_star * speed ** 2 / (16 * e_star * np.sqrt(r_star))) ** 0.4
+    t_contact = 2.9432 * approach / speed
+    peak = 4 / 3 * e_star * np.sqrt(r_star) * approach ** 1.5
+    h = 0.001 * SIZES[size]
+
+    def sphere(name, z, v):
+        return {"name": name, "material": "steel", "shape": "sphere", "radius": radius, "element_size": h,
+                "pole_element_size": 0.1 * h, "position": [0.0, z], "velocity": [0.0, v]}
+    raw = _scene("hertz_spheres", [sphere("upper", 2 * radius, -speed), sphere("lower", 0.0, 0.0)],
+                 {"name": "impact", "a": "upper.bottom", "b": "lower.top", "penalty_scale": 1.0}, 1.5 * t_contact)
+    forces = []
+    solver, wall = solve(raw, cache_dir=workdir, probe=lambda s: forces.append((s.t, s.contacts[0].force_a[1])))
+    t, F = resample(*np.array(forces).T, t_contact / 2000)
+    smooth = np.convolve(F, np.ones(100) / 100, mode="same")
+    pair = solver.contacts[0]
+    n = _elements(solver)
+    return [
+        check("hertz.contact_time [s]", t_contact, _contact_time(pair), 0.05, wall, n),
+        check("hertz.peak_force [N]", peak, smooth.max(), 0.05, wall, n),
+        check("hertz.restitution [-]", 1.0, pair.restitution() or 0.0, 0.02, wall, n),
+        check("hertz.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n, absolute=True),
     ]

@@ -81,3 +81,45 @@ def test_element_integration_defaults_and_checks():
     assert "scene.integration: must be one of reduced, full" in text
     assert "scene.hourglass: must be one of stiffness, viscous" in text
     assert "scene.hourglass_coefficient: must be >= 0" in text
+
+
+def _two_bodies():
+    raw = base()
+    raw["bodies"].append(dict(raw["bodies"][0], name="anvil", position=["0 m", "-100 mm"], velocity="0 m/s"))
+    return raw
+
+
+def test_contact_friction_rigid_cylinder_and_spring_resolve_to_si():
+    raw = _two_bodies()
+    raw["scene"]["gravity"] = "-1 gravity"
+    raw["contact"] = [{"a": "bar", "b": "anvil", "friction": 0.4, "friction_dynamic": 0.3,
+                       "friction_decay": "2 s/m"},
+                      {"a": "bar.side", "cylinder": {"radius": "6 mm", "side": "inside"}}]
+    raw["spring"] = [{"a": "bar.bottom", "b": "anvil.top", "curve": [["0 mm", "0 N"], ["1 mm", "2 kN"]],
+                      "damping": "10 N*s/m", "compression_only": True}]
+    s = resolve(raw)
+    assert s.gravity == pytest.approx((0.0, -9.80665))
+    assert s.contacts[0].friction == (0.4, 0.3, 2.0)
+    cyl = s.contacts[1].rigid
+    assert (cyl.kind, cyl.radius, cyl.inside, cyl.direction) == ("cylinder", 0.006, True, (0.0, 1.0))
+    sp = s.springs[0]
+    assert sp.curve == ((0.0, 0.0), (0.001, 2000.0)) and sp.damping == 10.0 and sp.compression_only
+
+
+def test_contact_and_spring_problems_are_listed():
+    raw = _two_bodies()
+    raw["contact"] = [{"a": "bar", "b": "anvil", "wall": {}, "friction": 0.2, "friction_dynamic": 0.5},
+                      {"a": "bar", "cylinder": {"radius": "-1 mm", "point": ["1 mm", "0 m"]}}]
+    raw["spring"] = [{"a": "bar", "b": "bar.top"}, {"a": "bar", "b": "anvil", "stiffness": "1 kN/m",
+                                                    "curve": [["1 mm", "1 N"], ["0 mm", "0 N"]]}]
+    with pytest.raises(SceneError) as e:
+        resolve(raw)
+    text = "\n".join(e.value.problems)
+    assert "contact[0]: give exactly one of b" in text
+    assert "contact[0].friction_dynamic: must not exceed" in text
+    assert "contact[1].cylinder.radius: must be > 0" in text
+    assert "contact[1].cylinder: an axisymmetric cylinder is coaxial" in text
+    assert "spring[0].b: a spring joins two different bodies" in text
+    assert "spring[0]: needs a stiffness, a curve or a damping" in text
+    assert "spring[1]: give stiffness (linear) or curve (tabulated), not both" in text
+    assert "spring[1].curve: extensions must increase" in text
