@@ -19,7 +19,8 @@ mu = mu_d + (mu_s - mu_d) exp(-decay |v_t|).  The force is history: ``ft`` keeps
 (three components, z = 0 in 2D), turned onto the current tangent plane each step.
 
 Every active spring adds to ``stiff`` the absolute row sums of its stiffness matrix
-(2 k w_i at each node i it joins, w = 1 at the slave, the shape-function weights at the master;
+(k w_i (1 + sum of the master weights) at each node i it joins, w = 1 at the slave and the
+shape-function weights at the master: 2 k w_i against a facet, k against a rigid surface;
 doubled with friction, whose tangential spring has the same k): the pair turns them into the
 Gershgorin bound of the contact's highest frequency, max_i stiff_i / m_i >= omega^2, which
 stays right when many slaves lean on one master node.
@@ -191,6 +192,54 @@ def _project(facet, x, s, w, n):
     return g, outside
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def _forget(ft, i):
+    """Slave i is out of contact: its friction history goes."""
+    ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
+
+
+@njit(cache=True, fastmath=True)
+def _respond(i, s, g, n, rel, m_eff, k, master, w, zeta, soft_scale, dt, friction, f, ff, ft, gap, offset,
+             stiff):
+    """Penalty and friction response of slave i (node s) found at gap g (-depth < g < 0 checked by
+    the caller) along the unit normal n, with velocity ``rel`` relative to the contact point and
+    effective mass m_eff.  The reaction goes to the ``master`` nodes with weights ``w`` (none for a
+    rigid surface).  Returns 1 if the spring is active, else 0."""
+    gdim = f.shape[1]
+    nm = master.shape[0]
+    gap[i] = g
+    g = _beyond_initial(g, offset, i)
+    if g >= 0.0:
+        _forget(ft, i)
+        return 0
+    g_dot = rel[0] * n[0] + rel[1] * n[1] + rel[2] * n[2]
+    fn, k = _spring(k, g, g_dot, m_eff, zeta, soft_scale, dt)
+    # row sums of the spring's stiffness matrix: k (1 + sum w) at the slave, k w_q (1 + sum w) at the
+    # master nodes; doubled with friction (a tangential spring of the same k)
+    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
+    weight_sum = 0.0
+    for q in range(nm):
+        weight_sum += w[q]
+    row = (2.0 if has_friction else 1.0) * (1.0 + weight_sum) * k
+    stiff[s] += row
+    for q in range(nm):
+        stiff[master[q]] += row * w[q]
+    if fn <= 0.0:
+        _forget(ft, i)
+        return 1
+    for d in range(gdim):
+        f[s, d] += fn * n[d]
+        for q in range(nm):
+            f[master[q], d] -= w[q] * fn * n[d]
+    if has_friction:
+        t = _friction(ft, i, n, rel, fn, k, dt, friction)
+        for d in range(gdim):
+            ff[s, d] += t[d]
+            for q in range(nm):
+                ff[master[q], d] -= w[q] * t[d]
+    return 1
+
+
 @njit(cache=True, fastmath=True)
 def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
                    depth, friction, f, ff, ft, gap, offset, stiff):
@@ -206,14 +255,12 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
     """
     gdim = x.shape[1]
     nf = facets.shape[1]
-    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
     w = np.zeros(4)
     n = np.zeros(3)
     bw = np.zeros(4)
     bn = np.zeros(3)
     rel = np.zeros(3)
     active = 0
-    row = 4.0 if has_friction else 2.0
     for i in range(slaves.shape[0]):
         s = slaves[i]
         gap[i] = 0.0
@@ -244,14 +291,9 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
             best, best_g = beyond, beyond_g
         if best < 0:
             offset[i] = 0.0
-            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
+            _forget(ft, i)
             continue
         _project(facets[best], x, s, bw, bn)
-        gap[i] = best_g
-        best_g = _beyond_initial(best_g, offset, i)
-        if best_g >= 0.0:
-            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
-            continue
         mm = 0.0
         for q in range(nf):
             mm += bw[q] * mass[facets[best, q]]
@@ -262,25 +304,8 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
             rel[d] = v[s, d]
             for q in range(nf):
                 rel[d] -= bw[q] * v[facets[best, q], d]
-        g_dot = rel[0] * bn[0] + rel[1] * bn[1] + rel[2] * bn[2]
-        fn, k = _spring(facet_stiffness[best], best_g, g_dot, m_eff, zeta, soft_scale, dt)
-        active += 1
-        stiff[s] += row * k
-        for q in range(nf):
-            stiff[facets[best, q]] += row * k * bw[q]
-        if fn <= 0.0:
-            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
-            continue
-        for d in range(gdim):
-            f[s, d] += fn * bn[d]
-            for q in range(nf):
-                f[facets[best, q], d] -= bw[q] * fn * bn[d]
-        if has_friction:
-            t = _friction(ft, i, bn, rel, fn, k, dt, friction)
-            for d in range(gdim):
-                ff[s, d] += t[d]
-                for q in range(nf):
-                    ff[facets[best, q], d] -= bw[q] * t[d]
+        active += _respond(i, s, best_g, bn, rel, m_eff, facet_stiffness[best], facets[best], bw, zeta,
+                           soft_scale, dt, friction, f, ff, ft, gap, offset, stiff)
     return active
 
 
@@ -293,11 +318,10 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
     in 2D makes it the circle about ``point``), the nodes staying ``inside`` or outside it.
     Returns the number of active slaves (``stiff`` as in ``node_to_facets``)."""
     gdim = x.shape[1]
-    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
     n = np.zeros(3)
     rel = np.zeros(3)
+    no_master = np.zeros(0, dtype=slaves.dtype)     # a rigid surface takes no reaction
     active = 0
-    row = 2.0 if has_friction else 1.0
     for i in range(slaves.shape[0]):
         s = slaves[i]
         g = 0.0
@@ -321,27 +345,10 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
         gap[i] = 0.0
         if g >= 0.0 or g <= -depth:
             offset[i] = 0.0
-            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
+            _forget(ft, i)
             continue
-        gap[i] = g
-        g = _beyond_initial(g, offset, i)
-        if g >= 0.0:
-            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
-            continue
-        g_dot = 0.0
         for d in range(gdim):
             rel[d] = v[s, d] - velocity[d]
-            g_dot += rel[d] * n[d]
-        fn, k = _spring(node_stiffness[i], g, g_dot, mass[s], zeta, soft_scale, dt)
-        active += 1
-        stiff[s] += row * k
-        if fn <= 0.0:
-            ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
-            continue
-        for d in range(gdim):
-            f[s, d] += fn * n[d]
-        if has_friction:
-            t = _friction(ft, i, n, rel, fn, k, dt, friction)
-            for d in range(gdim):
-                ff[s, d] += t[d]
+        active += _respond(i, s, g, n, rel, mass[s], node_stiffness[i], no_master, n, zeta, soft_scale, dt,
+                           friction, f, ff, ft, gap, offset, stiff)
     return active

@@ -18,11 +18,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from dolfinx import fem
 from mpi4py import MPI
 
 from ..errors import ModelError
 from ..model import Model
+from ..model.model import region_nodes
 from ..scene.schema import Spring
 from ..solver.kernels import _damped_step
 
@@ -31,10 +31,7 @@ def _end_nodes(model: Model, spec: str) -> np.ndarray:
     """Owned local nodes of "body" or "body.region"."""
     body_name, _, region = spec.partition(".")
     if region:
-        meshed = model.meshed
-        tdim = meshed.mesh.topology.dim
-        facets = meshed.facet_tags.indices[meshed.facet_tags.values == meshed.region_ids[spec]]
-        nodes = fem.locate_dofs_topological(model.V, tdim - 1, facets)
+        nodes = region_nodes(model.V, model.meshed, spec)
     else:
         index = [b.name for b in model.scene.bodies].index(body_name)
         nodes = np.flatnonzero(model.node_body == index)
@@ -51,7 +48,7 @@ class DiscreteSpring:
         if min(self.end_mass) <= 0:
             raise ModelError(f"spring '{spec.name}': an end has no mass (check spec.a and spec.b)")
         self.share = [model.mass[n] / M for n, M in zip(self.nodes, self.end_mass)]
-        centres = [self._mean(model.X0, k) for k in (0, 1)]
+        centres = self._means(model.X0)[0]
         if spec.direction is not None:
             n = np.array(spec.direction, dtype=float)
         elif model.scene.kinematics == "axisymmetric":
@@ -85,8 +82,11 @@ class DiscreteSpring:
     def _sum(self, local):
         return self.comm.allreduce(local, op=MPI.SUM) if self.comm.size > 1 else local
 
-    def _mean(self, field: np.ndarray, end: int) -> np.ndarray:
-        return self._sum((self.share[end][:, None] * field[self.nodes[end]]).sum(axis=0))
+    def _means(self, *fields: np.ndarray) -> np.ndarray:
+        """Mass-weighted means of each field over each end, (fields, 2 ends, gdim), in one reduction."""
+        local = np.array([[(self.share[k][:, None] * f[self.nodes[k]]).sum(axis=0) for k in (0, 1)]
+                          for f in fields])
+        return self._sum(local)
 
     def force_law(self, e: float) -> float:
         """Spring tension F(e) [N] at extension e [m]."""
@@ -103,8 +103,7 @@ class DiscreteSpring:
         """Add the spring's forces at u_{n+1} (rate from v_{n+1/2}) to ``f``; returns its step limit.
         Collective."""
         n = self.direction
-        mean_u = [self._mean(u, k) for k in (0, 1)]
-        mean_v = [self._mean(v, k) for k in (0, 1)]
+        mean_u, mean_v = self._means(u, v)
         e = float((mean_u[1] - mean_u[0]) @ n)
         e_dot = float((mean_v[1] - mean_v[0]) @ n)
         T = self.force_law(e) + self.spec.damping * e_dot

@@ -21,6 +21,7 @@ import numpy as np
 from dolfinx import mesh as dmesh
 from mpi4py import MPI
 
+from ..geometry import region_facets
 from ..model import Model
 from ..model.kinematics import BASIX_CELLS
 from ..solver.kernels import P_LAMBDA, P_MU
@@ -40,10 +41,6 @@ class Surface:
     size: np.ndarray            # (facets,) longest edge [m]
     bulk: np.ndarray            # (facets,) bulk modulus of the cell behind the facet [Pa]
     volume: np.ndarray          # (facets,) reference volume of that cell [m^3]
-
-    @property
-    def nodes(self) -> np.ndarray:
-        return np.unique(self.facets)
 
 
 def _weight(model: Model, r: np.ndarray) -> np.ndarray:
@@ -85,11 +82,9 @@ def _boundary_facets(model: Model, spec: str) -> tuple[int, np.ndarray]:
     body_name, _, region = spec.partition(".")
     names = [b.name for b in model.scene.bodies]
     body = names.index(body_name)
-    meshed = model.meshed
     if region:
-        tags = meshed.facet_tags
-        return body, tags.indices[tags.values == meshed.region_ids[spec]]
-    topology = meshed.mesh.topology
+        return body, region_facets(model.meshed, spec)
+    topology = model.meshed.mesh.topology
     tdim = topology.dim
     topology.create_connectivity(tdim - 1, tdim)
     facets = dmesh.exterior_facet_indices(topology)

@@ -15,7 +15,7 @@ from dolfinx import fem
 from mpi4py import MPI
 
 from .. import compat
-from ..geometry import MeshedScene
+from ..geometry import MeshedScene, region_facets
 from ..scene import Scene
 from . import kinematics as kin
 from ..solver import kernels, one_point
@@ -117,10 +117,10 @@ def _lumped_mass(V, cell_rho, scene: Scene, gdim: int) -> np.ndarray:
     return m.x.array.reshape(-1, gdim)[:, 0].copy()
 
 
-def _region_nodes(V, meshed: MeshedScene, region: str) -> np.ndarray:
+def region_nodes(V, meshed: MeshedScene, region: str) -> np.ndarray:
+    """Local nodes (owned and ghost) of a named region ("body.region")."""
     tdim = meshed.mesh.topology.dim
-    facets = meshed.facet_tags.indices[meshed.facet_tags.values == meshed.region_ids[region]]
-    return fem.locate_dofs_topological(V, tdim - 1, facets)
+    return fem.locate_dofs_topological(V, tdim - 1, region_facets(meshed, region))
 
 
 def _region_shares(V, meshed: MeshedScene, region: str, scene: Scene, gdim: int) -> np.ndarray:
@@ -217,7 +217,7 @@ def _add_boundaries(model: Model):
         axis = np.flatnonzero(np.abs(model.X0[:, 0]) < 1e-12 * max(1.0, np.abs(model.X0).max()))
         model.constraints.append(Constraint(axis * gdim, np.array([0.0]), np.array([0.0]), "axis"))
     for bc in scene.boundaries:
-        nodes = _region_nodes(V, model.meshed, bc.region)
+        nodes = region_nodes(V, model.meshed, bc.region)
         times = np.array([p[0] for p in bc.history])
         values = np.array([p[1] for p in bc.history])
         if bc.kind == "fixed":

@@ -260,6 +260,42 @@ class _Checker:
             return choices[0]
         return v
 
+    def entries(self, raw: dict, key: str):
+        """(path, table) of every ``[[key]]`` entry; a non-list or a non-table entry is a problem."""
+        items = raw.get(key, [])
+        if not isinstance(items, list):
+            self.fail(key, f"must be a list of [[{key}]] entries")
+            return
+        for i, item in enumerate(items):
+            path = f"{key}[{i}]"
+            if not isinstance(item, dict):
+                self.fail(path, "must be a table")
+                continue
+            yield path, item
+
+    def pairs(self, d: dict, key: str, path: str, names: tuple[str, str], dimensions: tuple[str, str],
+              minimum: int = 1) -> list[tuple[float, float]]:
+        """A table of ``[x, y]`` pairs with units (a history, a force curve), x increasing."""
+        raw = d.get(key)
+        what = f"[{names[0]}, {names[1]}]"
+        if not isinstance(raw, list) or len(raw) < minimum:
+            at_least = f"at least {minimum} " if minimum > 1 else ""
+            self.fail(f"{path}.{key}", f"must be a list of {at_least}{what} pairs")
+            return []
+        out = []
+        for j, pair in enumerate(raw):
+            if not isinstance(pair, list) or len(pair) != 2:
+                article = "an" if names[0][0] in "aeiou" else "a"
+                self.fail(f"{path}.{key}[{j}]", f"must be {article} {what} pair")
+                continue
+            try:
+                out.append((to_si(pair[0], dimensions[0]), to_si(pair[1], dimensions[1])))
+            except UnitError as e:
+                self.fail(f"{path}.{key}[{j}]", str(e))
+        if any(x1 <= x0 for (x0, _), (x1, _) in zip(out, out[1:])):
+            self.fail(f"{path}.{key}", f"{names[0]}s must increase")
+        return out
+
     def vector(self, d: dict, key: str, path: str, dimension: str, n: int, default) -> tuple:
         if key not in d:
             return tuple(default)
@@ -421,16 +457,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     body_regions = {b.name: (tuple(b.regions) if b.shape == "mesh" else SHAPE_REGIONS.get((b.shape, gdim), ()))
                     for b in bodies}
     boundaries: list[Boundary] = []
-    raw_bcs = raw.get("boundary", [])
-    if not isinstance(raw_bcs, list):
-        ck.fail("boundary", "must be a list of [[boundary]] entries")
-        raw_bcs = []
     axes = "xyz"[:gdim] if kin != "axisymmetric" else "rz"
-    for i, bc in enumerate(raw_bcs):
-        path = f"boundary[{i}]"
-        if not isinstance(bc, dict):
-            ck.fail(path, "must be a table")
-            continue
+    for path, bc in ck.entries(raw, "boundary"):
         ck.unknown(bc, ("region", "type", "direction", "value", "history"), path)
         region = bc.get("region", "")
         bname, _, rname = str(region).partition(".")
@@ -450,23 +478,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             comps = (axes.index(d),)
             dim = "velocity" if kind == "velocity" else "force"
             if "history" in bc:
-                hist = bc["history"]
-                pairs = []
-                if not isinstance(hist, list) or not hist:
-                    ck.fail(f"{path}.history", "must be a list of [time, value] pairs")
-                else:
-                    for j, pair in enumerate(hist):
-                        if not isinstance(pair, list) or len(pair) != 2:
-                            ck.fail(f"{path}.history[{j}]", "must be a [time, value] pair")
-                            continue
-                        try:
-                            pairs.append((to_si(pair[0], "time"), to_si(pair[1], dim)))
-                        except UnitError as e:
-                            ck.fail(f"{path}.history[{j}]", str(e))
-                    times = [p[0] for p in pairs]
-                    if any(t1 <= t0 for t0, t1 in zip(times, times[1:])):
-                        ck.fail(f"{path}.history", "times must increase")
-                history = tuple(pairs) or history
+                history = tuple(ck.pairs(bc, "history", path, ("time", "value"), ("time", dim))) or history
             else:
                 history = ((0.0, ck.quantity(bc, "value", path, dim)),)
         boundaries.append(Boundary(region, kind, comps, history))
@@ -562,15 +574,7 @@ def _rigid_surface(ck: _Checker, c: dict, path: str, kin: str) -> RigidSurface:
 def _contacts(ck: _Checker, raw: dict, body_regions: dict, kin: str) -> list[Contact]:
     """[[contact]] entries: two surfaces (``a``, ``b``) or a surface and a rigid ``wall`` or ``cylinder``."""
     out = []
-    entries = raw.get("contact", [])
-    if not isinstance(entries, list):
-        ck.fail("contact", "must be a list of [[contact]] entries")
-        return out
-    for i, c in enumerate(entries):
-        path = f"contact[{i}]"
-        if not isinstance(c, dict):
-            ck.fail(path, "must be a table")
-            continue
+    for path, c in ck.entries(raw, "contact"):
         ck.unknown(c, ("name", "a", "b", "wall", "cylinder", "penalty", "penalty_scale", "damping", "friction",
                        "friction_dynamic", "friction_decay"), path)
         a = _surface_spec(ck, c, "a", path, body_regions)
@@ -600,15 +604,7 @@ def _contacts(ck: _Checker, raw: dict, body_regions: dict, kin: str) -> list[Con
 def _springs(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Spring]:
     """[[spring]] entries: a linear ``stiffness`` or a tabulated ``curve``, and a ``damping``."""
     out = []
-    entries = raw.get("spring", [])
-    if not isinstance(entries, list):
-        ck.fail("spring", "must be a list of [[spring]] entries")
-        return out
-    for i, c in enumerate(entries):
-        path = f"spring[{i}]"
-        if not isinstance(c, dict):
-            ck.fail(path, "must be a table")
-            continue
+    for i, (path, c) in enumerate(ck.entries(raw, "spring")):
         ck.unknown(c, ("name", "a", "b", "direction", "stiffness", "curve", "damping", "compression_only"), path)
         a = _surface_spec(ck, c, "a", path, body_regions)
         b = _surface_spec(ck, c, "b", path, body_regions)
@@ -621,20 +617,7 @@ def _springs(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Spr
         if "curve" in c:
             if "stiffness" in c:
                 ck.fail(path, "give stiffness (linear) or curve (tabulated), not both")
-            raw_curve = c["curve"]
-            if not isinstance(raw_curve, list) or len(raw_curve) < 2:
-                ck.fail(f"{path}.curve", "must be a list of at least two [extension, force] pairs")
-                raw_curve = []
-            for j, pair in enumerate(raw_curve):
-                if not isinstance(pair, list) or len(pair) != 2:
-                    ck.fail(f"{path}.curve[{j}]", "must be an [extension, force] pair")
-                    continue
-                try:
-                    curve.append((to_si(pair[0], "length"), to_si(pair[1], "force")))
-                except UnitError as e:
-                    ck.fail(f"{path}.curve[{j}]", str(e))
-            if any(e1 <= e0 for (e0, _), (e1, _) in zip(curve, curve[1:])):
-                ck.fail(f"{path}.curve", "extensions must increase")
+            curve = ck.pairs(c, "curve", path, ("extension", "force"), ("length", "force"), minimum=2)
         damping = ck.quantity(c, "damping", path, "damping", default=0.0, nonnegative=True)
         if not stiffness and not curve and not damping:
             ck.fail(path, "needs a stiffness, a curve or a damping")

@@ -11,6 +11,13 @@ def base():
                         "length": "100 mm", "element_size": "1 mm", "velocity": "-5 m/s"}]}
 
 
+def _problems(raw):
+    """Every problem resolve() lists for a bad scene."""
+    with pytest.raises(SceneError) as e:
+        resolve(raw)
+    return e.value.problems
+
+
 def test_resolves_units_to_si():
     s = resolve(base())
     b = s.bodies[0]
@@ -26,14 +33,13 @@ def test_every_problem_listed_with_path():
     raw["bodies"][0]["material"] = "unobtainium"
     raw["scene"]["kinematics"] = "2.5d"
     raw["bodies"][0]["colour"] = "red"
-    with pytest.raises(SceneError) as e:
-        resolve(raw)
-    text = "\n".join(e.value.problems)
+    problems = _problems(raw)
+    text = "\n".join(problems)
     assert "bodies[0].radius: must be > 0, got -3 mm" in text
     assert "bodies[0].material: unknown material 'unobtainium'" in text
     assert "scene.kinematics: must be one of" in text
     assert "bodies[0].colour: unknown field" in text
-    assert len(e.value.problems) >= 4
+    assert len(problems) >= 4
 
 
 def test_axisymmetric_body_off_axis_rejected():
@@ -75,9 +81,8 @@ def test_element_integration_defaults_and_checks():
     assert (s.integration, s.hourglass, s.hourglass_coefficient) == ("reduced", "stiffness", 0.05)
     raw = base()
     raw["scene"].update(integration="selective", hourglass="magic", hourglass_coefficient=-0.1)
-    with pytest.raises(SceneError) as e:
-        resolve(raw)
-    text = "\n".join(e.value.problems)
+    problems = _problems(raw)
+    text = "\n".join(problems)
     assert "scene.integration: must be one of reduced, full" in text
     assert "scene.hourglass: must be one of stiffness, viscous" in text
     assert "scene.hourglass_coefficient: must be >= 0" in text
@@ -112,9 +117,8 @@ def test_contact_and_spring_problems_are_listed():
                       {"a": "bar", "cylinder": {"radius": "-1 mm", "point": ["1 mm", "0 m"]}}]
     raw["spring"] = [{"a": "bar", "b": "bar.top"}, {"a": "bar", "b": "anvil", "stiffness": "1 kN/m",
                                                     "curve": [["1 mm", "1 N"], ["0 mm", "0 N"]]}]
-    with pytest.raises(SceneError) as e:
-        resolve(raw)
-    text = "\n".join(e.value.problems)
+    problems = _problems(raw)
+    text = "\n".join(problems)
     assert "contact[0]: give exactly one of b" in text
     assert "contact[0].friction_dynamic: must not exceed" in text
     assert "contact[1].cylinder.radius: must be > 0" in text

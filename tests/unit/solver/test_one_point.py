@@ -4,7 +4,6 @@ import numpy as np
 import pytest
 import ufl
 from dolfinx import fem, mesh
-from mpi4py import MPI
 
 from shockfem import compat
 from shockfem.model import kinematics as kin
