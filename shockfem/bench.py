@@ -8,7 +8,10 @@ strain rate + material update + force assembly in one compiled pass; nodal updat
 energy bookkeeping) come from the solver's phase timers.
 
 Speed against error: the bar-wave verification case (front speed and plateau stress
-against 1D theory) at three mesh sizes, both integrations, with its wall time.
+against 1D theory) at three mesh sizes, both integrations, with its wall time; and the
+elastic-plastic copper Taylor bar (final length and radius against the converged benchmark)
+at two refinements, with the share of the internal-force pass spent in the plastic return
+(the same pass timed on the bar's final state with the material switched to elastic).
 """
 from __future__ import annotations
 
@@ -71,7 +74,58 @@ def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
                  f"{r['share_update']:6.0%} {r['share_energy']:6.0%}")
     if not quick:
         results += speed_against_error(echo)
+    results += taylor_bar_bench((0.0004,) if quick else (0.0004, 0.0002), echo)
     return results
+
+
+def _material_update_share(solver, repeats: int = 20) -> float:
+    """Share of the internal-force pass taken by the plastic return: the pass on the solver's
+    state timed with its materials as they are and switched to elastic (state restored after)."""
+    from .solver import columns
+    m = solver.model
+    saved = (solver.sigma.copy(), solver.plastic_state.copy(),
+             None if solver.hourglass is None else solver.hourglass.copy(), solver.f_int.copy())
+    params = m.params.copy()
+    times = []
+    for model_code in (None, columns.ELASTIC):
+        if model_code is not None:
+            m.params[:, columns.P_MODEL] = model_code
+        t0 = time.perf_counter()
+        for _ in range(repeats):
+            solver._internal_force(solver.dt)
+        times.append(time.perf_counter() - t0)
+    m.params[:] = params
+    solver.sigma[:], solver.plastic_state[:] = saved[0], saved[1]
+    if saved[2] is not None:
+        solver.hourglass[:] = saved[2]
+    solver.f_int[:] = saved[3]
+    return max(0.0, (times[0] - times[1]) / times[0])
+
+
+def taylor_bar_bench(sizes, echo=print) -> list[dict]:
+    """Copper Taylor bar: final length and radius errors against wall time and element-cycles/s."""
+    from .verify.plasticity_cases import TAYLOR, taylor_measures, taylor_scene
+    from .verify.scenes import solve
+    echo("speed against error: copper Taylor bar (axisymmetric, one-point quads, 80 us)")
+    echo(f"{'size[mm]':>8s} {'elements':>9s} {'steps':>7s} {'wall[s]':>8s} {'Mcyc/s':>7s} {'length err':>10s} "
+         f"{'radius err':>10s} {'eps_max':>7s} {'E err':>8s} {'return share':>12s}")
+    out = []
+    for h in sizes:
+        solver, wall = solve(taylor_scene(h))
+        r = taylor_measures(solver)
+        n = solver.model.num_cells_global
+        row = {"case": "taylor_bar", "element_size_m": h, "elements": n, "steps": solver.step, "wall_time_s": wall,
+               "element_cycles_per_s": n * solver.step / wall,
+               "length_error": r["length"] / TAYLOR["final_length"] - 1,
+               "radius_error": r["radius"] / TAYLOR["final_radius"] - 1,
+               "max_plastic_strain": r["max_plastic_strain"], "balance_error": solver.energy.balance_error,
+               "share_internal_force": solver.times.internal_force / wall,
+               "share_plastic_return_of_internal_force": _material_update_share(solver)}
+        out.append(row)
+        echo(f"{h * 1e3:8.2f} {n:9d} {solver.step:7d} {wall:8.2f} {row['element_cycles_per_s'] / 1e6:7.2f} "
+             f"{row['length_error']:+10.2%} {row['radius_error']:+10.2%} {r['max_plastic_strain']:7.3g} "
+             f"{row['balance_error']:8.1e} {row['share_plastic_return_of_internal_force']:12.0%}")
+    return out
 
 
 def speed_against_error(echo=print) -> list[dict]:

@@ -15,11 +15,12 @@ from mpi4py import MPI
 from .errors import UnstableRun
 from .geometry import build_mesh
 from .model import build_model, describe
-from .output.fields import FieldWriter, von_mises
+from .output.fields import FieldWriter, von_mises, write_final_shape
 from .output.history import HistoryRecorder
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene
+from .solver import plasticity
 from .solver.explicit import ExplicitSolver
 
 
@@ -115,6 +116,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
             if status != "completed":
                 fields.write(solver.t)   # the state at the stop, for the diagnosis
             fields.close()
+            write_final_shape(rd.file("final_shape.xdmf"), solver)
         history.write(rd.file("history.h5"), rd.file("history.csv"))
         summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
         rd.write_json("summary.json", summary)
@@ -128,19 +130,33 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     return RunResult(summary, solver, history, out_dir)
 
 
-def _track_max_von_mises(solver: ExplicitSolver, max_vm: np.ndarray):
+def _body_maxima(solver: ExplicitSolver, per_cell: np.ndarray) -> np.ndarray:
+    """The largest value of a per-cell quantity in every body, over all ranks."""
     m = solver.model
+    out = np.zeros(len(m.scene.bodies))
+    for i in range(len(out)):
+        sel = m.cell_body[:len(per_cell)] == i
+        out[i] = solver.comm.allreduce(float(per_cell[sel].max()) if sel.any() else 0.0, op=MPI.MAX)
+    return out
+
+
+def _track_max_von_mises(solver: ExplicitSolver, max_vm: np.ndarray):
     vm = von_mises(solver.sigma).max(axis=1) if len(solver.sigma) else np.zeros(0)
-    for i in range(len(max_vm)):
-        sel = m.cell_body[:len(vm)] == i
-        local = float(vm[sel].max()) if sel.any() else 0.0
-        max_vm[i] = max(max_vm[i], solver.comm.allreduce(local, op=MPI.MAX))
+    np.maximum(max_vm, _body_maxima(solver, vm), out=max_vm)
+
+
+def _max_plastic_strain(solver: ExplicitSolver) -> np.ndarray:
+    """Per body (the plastic strain only grows, so its final value is its maximum)."""
+    if not solver.model.plastic:
+        return np.zeros(len(solver.model.scene.bodies))
+    return _body_maxima(solver, solver.plastic_state[:, :, plasticity.S_EPS].max(axis=1))
 
 
 def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, max_vm) -> dict:
     m = solver.model
     v, _ = solver.body_means()
     e = solver.energy
+    max_eps = _max_plastic_strain(solver)
     elements = m.num_cells_global
     kernel_elements = solver.comm.allreduce(len(m.kernel_cells), op=MPI.SUM)
     return {
@@ -161,6 +177,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "phase_times_s": {"internal_force": solver.times.internal_force, "update": solver.times.update,
                           "energy": solver.times.energy, "step_total": solver.times.total},
         "energy": {"initial_total": e.initial, "kinetic": e.kinetic, "internal": e.internal,
+                   "plastic": e.plastic, "bulk_viscosity": e.bulk_viscosity,
                    "damping": e.damping, "hourglass": e.hourglass,
                    "hourglass_to_internal": abs(e.hourglass) / max(abs(e.internal), 1e-300),
                    "contact": e.contact, "external_work": e.external, "balance": e.balance,
@@ -170,6 +187,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "springs": {s.name: s.summary() for s in solver.springs},
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],
-                            "max_von_mises": float(max_vm[i])}
+                            "max_von_mises": float(max_vm[i]),
+                            "max_plastic_strain": float(max_eps[i])}
                    for i, b in enumerate(scene.bodies)},
     }

@@ -20,6 +20,7 @@ DIMENSIONS = {
     "pressure": "[mass] / [length] / [time] ** 2",
     "density": "[mass] / [length] ** 3",
     "frequency": "1 / [time]",
+    "strain_rate": "1 / [time]",
     "energy": "[mass] * [length] ** 2 / [time] ** 2",
     "stiffness": "[mass] / [time] ** 2",
     "damping": "[mass] / [time]",
@@ -31,7 +32,7 @@ DIMENSIONS = {
 SI_UNITS = {
     "length": "m", "mass": "kg", "time": "s", "velocity": "m/s", "angular_velocity": "rad/s",
     "acceleration": "m/s**2", "force": "N", "pressure": "Pa", "density": "kg/m**3",
-    "frequency": "Hz", "energy": "J", "stiffness": "N/m", "damping": "N*s/m", "slowness": "s/m",
+    "frequency": "Hz", "strain_rate": "1/s", "energy": "J", "stiffness": "N/m", "damping": "N*s/m", "slowness": "s/m",
     "dimensionless": "",
 }
 

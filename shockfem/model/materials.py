@@ -1,27 +1,43 @@
-"""Material table for the compiled kernels: one row of parameters per scene material."""
+"""Material tables for the compiled kernels: one row of parameters per scene material
+(columns ``solver/columns.py``) and one row of hardening-curve points per material."""
 from __future__ import annotations
 
 import numpy as np
 
 from ..scene import Damping, Material
-from ..solver import kernels
+from ..scene.schema import RATE_FORMS
+from ..solver import columns as col
 
-ELASTIC = 0
 
+def parameter_table(materials: list[Material], damping: Damping | None,
+                    bulk_viscosity: tuple[float, float] = (1.5, 0.06)) -> tuple[np.ndarray, np.ndarray]:
+    """(params, curves): params (materials, ``col.NUM_PARAMS``); curves (materials, points, 2) holds
+    each plastic material's isotropic hardening curve (plastic strain, yield stress).
 
-def parameter_table(materials: list[Material], damping: Damping | None) -> np.ndarray:
-    """Rows of ``kernels.NUM_PARAMS`` numbers (columns named ``kernels.P_*``).
-
-    The stiffness-proportional damping coefficient beta [s] sits in the table because
-    it acts through the material: a viscous stress beta * C : d.
+    The stiffness-proportional damping coefficient beta [s] and the bulk viscosity sit in the
+    table because they act through the material: viscous stresses beta C : d and -q I.
     """
     beta = damping.coefficients()[1] if damping else 0.0
-    table = np.zeros((max(len(materials), 1), kernels.NUM_PARAMS))
+    n = max(len(materials), 1)
+    points = max([len(m.plasticity.curve) for m in materials if m.plasticity] or [1])
+    table = np.zeros((n, col.NUM_PARAMS))
+    curves = np.zeros((n, points, 2))
     for i, m in enumerate(materials):
-        table[i, kernels.P_MODEL] = ELASTIC
-        table[i, kernels.P_RHO] = m.rho
-        table[i, kernels.P_LAMBDA] = m.lam
-        table[i, kernels.P_MU] = m.mu
-        table[i, kernels.P_WAVE_SPEED] = m.c_dilatational
-        table[i, kernels.P_BETA] = beta
-    return table
+        table[i, col.P_MODEL] = col.ELASTIC
+        table[i, col.P_RHO] = m.rho
+        table[i, col.P_LAMBDA] = m.lam
+        table[i, col.P_MU] = m.mu
+        table[i, col.P_WAVE_SPEED] = m.c_dilatational
+        table[i, col.P_BETA] = beta
+        table[i, col.P_Q_QUADRATIC], table[i, col.P_Q_LINEAR] = bulk_viscosity
+        p = m.plasticity
+        if p is None:
+            continue
+        table[i, col.P_MODEL] = col.PLASTIC
+        table[i, col.P_KINEMATIC] = p.kinematic_modulus
+        table[i, col.P_RATE_D] = p.rate_D
+        table[i, col.P_RATE_Q] = p.rate_q
+        table[i, col.P_RATE_FORM] = RATE_FORMS.index(p.rate_form)
+        table[i, col.P_CURVE_POINTS] = len(p.curve)
+        curves[i, :len(p.curve)] = p.curve
+    return table, curves

@@ -72,7 +72,8 @@ class Model:
     cell_body: np.ndarray                      # (cells,) body index
     cell_material: np.ndarray                  # (cells,) row of ``params``
     kernel_cells: np.ndarray                   # owned cells of deformable bodies
-    params: np.ndarray
+    params: np.ndarray                         # material table (solver/columns.py)
+    curves: np.ndarray                         # hardening curves of plastic materials
     cell_kind: int
     cell_sign: np.ndarray                      # (cells,) orientation of the reference cells
     N: np.ndarray
@@ -99,6 +100,11 @@ class Model:
     @property
     def num_quadrature_points(self) -> int:
         return self.wq.shape[0]
+
+    @property
+    def plastic(self) -> bool:
+        """Does any deformable body yield?  Only then is the plastic state stored."""
+        return any(self.scene.material_of(b).plasticity for b in self.scene.bodies if not b.rigid)
 
 
 def _lumped_mass(V, cell_rho, scene: Scene, gdim: int) -> np.ndarray:
@@ -164,7 +170,8 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     material_names = list(scene.materials)
     body_material = np.array([material_names.index(b.material) for b in scene.bodies], dtype=np.int32)
     cell_material = body_material[cell_body]
-    params = parameter_table([scene.materials[n] for n in material_names], scene.damping)
+    params, curves = parameter_table([scene.materials[n] for n in material_names], scene.damping,
+                                     scene.bulk_viscosity)
     cell_rho = np.array([scene.materials[n].rho for n in material_names])[cell_material]
     mass = _lumped_mass(V, cell_rho, scene, gdim)
 
@@ -184,7 +191,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
 
     cell_sign = kernels.cell_orientation(dofmap, X0, dN)
     model = Model(scene, meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
-                  mass, node_body, cell_body, cell_material, kernel_cells, params,
+                  mass, node_body, cell_body, cell_material, kernel_cells, params, curves,
                   kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,
                   one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
                   hourglass_coefficient=scene.hourglass_coefficient)
@@ -261,8 +268,15 @@ def describe(model: Model) -> str:
         element = f"{cell}s, {model.num_quadrature_points}-point Gauss" + (
             ", mean dilatation" if cell in ("quadrilateral", "hexahedron") else "")
     for i, b in enumerate(sc.bodies):
-        kind = "rigid body (no stiffness)" if b.rigid else f"linear elastic, updated Lagrangian, {element}"
+        material = sc.material_of(b)
+        law = material.plasticity.model if material.plasticity else "linear elastic"
+        kind = "rigid body (no stiffness)" if b.rigid else f"{law}, updated Lagrangian, {element}"
         lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
+        if material.source and not b.rigid:
+            lines.append(f"    material {material.name} from the {material.source}")
+    q1, q2 = sc.bulk_viscosity
+    lines.append(f"  bulk viscosity: Q1 = {q1:g} (quadratic), Q2 = {q2:g} (linear), in compression"
+                 if q1 or q2 else "  bulk viscosity: off")
     for c in sc.contacts:
         friction = (f", Coulomb friction mu_s = {c.friction[0]:g}, mu_d = {c.friction[1]:g}"
                     if c.friction[0] > 0 else ", frictionless")

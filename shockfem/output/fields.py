@@ -1,16 +1,23 @@
 """Field output to XDMF/HDF5 (opens in ParaView and pyvista).
 
-The mesh is written once in its reference configuration with a ``body`` cell tag;
-displacement and velocity are P1 fields (use ParaView's *Warp By Vector* with
-``displacement`` for the deformed shape), von Mises stress and pressure are cell
-averages (DG0).  Select one body with a *Threshold* on ``body``.
+``fields.xdmf``: the mesh is written once in its reference configuration with a ``body`` cell
+tag; displacement and velocity are P1 fields (use ParaView's *Warp By Vector* with
+``displacement`` for the deformed shape); von Mises stress, pressure, equivalent plastic
+strain and plastic strain rate are cell averages (DG0).  Select one body with a *Threshold*
+on ``body``.
+
+``final_shape.xdmf``: the mesh in its final, deformed configuration with the same cell fields,
+for measuring a deformed part directly (a Taylor bar's length and footprint).
 """
 from __future__ import annotations
 
 import numpy as np
 from dolfinx import fem, io
 
+from ..solver import plasticity
 from ..solver.explicit import ExplicitSolver
+
+CELL_FIELDS = ("von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
 
 
 def von_mises(sigma: np.ndarray) -> np.ndarray:
@@ -25,6 +32,36 @@ def pressure(sigma: np.ndarray) -> np.ndarray:
     return -sigma[..., :3].mean(axis=-1)
 
 
+def cell_values(solver: ExplicitSolver, name: str) -> np.ndarray:
+    """A cell field (one of ``CELL_FIELDS``) averaged over each cell's points, (cells,)."""
+    if name == "von_mises":
+        return von_mises(solver.sigma.mean(axis=1))
+    if name == "pressure":
+        return pressure(solver.sigma.mean(axis=1))
+    if not solver.model.plastic:
+        return np.zeros(len(solver.sigma))
+    column = plasticity.S_EPS if name == "plastic_strain" else plasticity.S_RATE
+    return solver.plastic_state[:, :, column].mean(axis=1)
+
+
+class _CellFields:
+    """DG0 functions for the requested cell fields of a mesh, written to an XDMF file."""
+
+    def __init__(self, solver: ExplicitSolver, names):
+        mesh = solver.model.meshed.mesh
+        DG0 = fem.FunctionSpace(mesh, ("DG", 0))
+        self.solver = solver
+        self.functions = {n: fem.Function(DG0, name=n) for n in CELL_FIELDS if n in names}
+        self.num_cells = mesh.topology.index_map(mesh.topology.dim).size_local
+
+    def write(self, file: io.XDMFFile, t: float):
+        n = self.num_cells
+        for name, fn in self.functions.items():
+            fn.x.array[:n] = cell_values(self.solver, name)[:n]
+            fn.x.scatter_forward()
+            file.write_function(fn, t)
+
+
 class FieldWriter:
     def __init__(self, path: str, solver: ExplicitSolver, fields):
         m = solver.model
@@ -35,11 +72,8 @@ class FieldWriter:
         self.file.write_mesh(mesh)
         m.meshed.cell_tags.name = "body"
         self.file.write_meshtags(m.meshed.cell_tags)
-        DG0 = fem.FunctionSpace(mesh, ("DG", 0))
-        self.vm = fem.Function(DG0, name="von_mises")
-        self.p = fem.Function(DG0, name="pressure")
+        self.cells = _CellFields(solver, self.fields)
         self.vel = fem.Function(m.V, name="velocity")
-        self.num_cells = mesh.topology.index_map(mesh.topology.dim).size_local
 
     def write(self, t: float):
         s = self.solver
@@ -51,16 +85,26 @@ class FieldWriter:
             self.vel.x.array[:] = (s.v + 0.5 * s.dt * s.a).reshape(-1)
             self.vel.x.scatter_forward()
             self.file.write_function(self.vel, t)
-        n = self.num_cells
-        cell_sigma = s.sigma[:n].mean(axis=1)
-        if "von_mises" in self.fields:
-            self.vm.x.array[:n] = von_mises(cell_sigma)
-            self.vm.x.scatter_forward()
-            self.file.write_function(self.vm, t)
-        if "pressure" in self.fields:
-            self.p.x.array[:n] = pressure(cell_sigma)
-            self.p.x.scatter_forward()
-            self.file.write_function(self.p, t)
+        self.cells.write(self.file, t)
 
     def close(self):
         self.file.close()
+
+
+def write_final_shape(path: str, solver: ExplicitSolver):
+    """The deformed mesh at the solver's time with all cell fields, to ``path`` (XDMF)."""
+    m = solver.model
+    mesh = m.meshed.mesh
+    x = mesh.geometry.x
+    reference = x.copy()
+    nodes_per_cell = m.dofmap.shape[1]
+    # P1 dofs and geometry nodes list a cell's vertices in the same (reference) order
+    geometry = mesh.geometry.dofmap.array.reshape(-1, nodes_per_cell)[:len(m.dofmap)]
+    x[geometry, :m.gdim] = solver.x[m.dofmap]
+    try:
+        with io.XDMFFile(mesh.comm, path, "w") as f:
+            f.write_mesh(mesh)
+            f.write_meshtags(m.meshed.cell_tags)
+            _CellFields(solver, CELL_FIELDS).write(f, solver.t)
+    finally:
+        x[:] = reference

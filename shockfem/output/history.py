@@ -1,4 +1,4 @@
-"""Time histories: per-body mean velocity and acceleration, energies; HDF5 and CSV.
+"""Time histories: per-body mean velocity and acceleration, contact forces, energies; HDF5 and CSV.
 
 Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes.
 """
@@ -12,7 +12,8 @@ import numpy as np
 from ..solver.explicit import ExplicitSolver
 
 
-ENERGY_COLUMNS = ("kinetic", "internal", "damping", "hourglass", "contact", "external", "balance")
+ENERGY_COLUMNS = ("kinetic", "internal", "plastic", "damping", "hourglass", "bulk_viscosity", "contact",
+                  "external", "balance")
 
 
 class HistoryRecorder:
@@ -24,6 +25,10 @@ class HistoryRecorder:
         for b in m.scene.bodies:
             self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
             self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
+        for c in m.scene.contacts:
+            # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
+            self.columns += [(f"contact.{c.name}.normal_{a}", "N") for a in axes]
+            self.columns += [(f"contact.{c.name}.friction_{a}", "N") for a in axes]
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
@@ -35,6 +40,8 @@ class HistoryRecorder:
         row = [s.t]
         for vb, ab in zip(v, a):
             row += list(vb) + list(ab)
+        for pair in s.contacts:
+            row += list(pair.force_a) + list(pair.friction_a)
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
 

@@ -30,15 +30,22 @@ from ..errors import UnstableRun
 from ..model import Model
 from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
-from . import kernels, nodal, one_point
+from . import kernels, nodal, one_point, plasticity
+
+
+# A run stops when the elements' stable step falls below this share of its first value: an element
+# is being crushed flat, and the run would otherwise crawl on for millions of steps.
+STEP_COLLAPSE = 1e-3
 
 
 @dataclass
 class Energies:
     kinetic: float = 0.0
-    internal: float = 0.0          # stored (elastic) energy = internal work less damping
+    internal: float = 0.0          # stored (elastic) energy = internal work less all the parts below
     damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts)
     hourglass: float = 0.0         # work of the hourglass forces (one-point elements)
+    plastic: float = 0.0           # plastic work int sigma : d eps_p dV
+    bulk_viscosity: float = 0.0    # dissipated by the artificial bulk viscosity
     contact: float = 0.0           # taken up by contact (penalty, contact damping, friction) and
                                    # discrete springs = -their work on the bodies
     external: float = 0.0          # work of loads and prescribed velocities
@@ -47,8 +54,8 @@ class Energies:
 
     @property
     def balance(self) -> float:
-        return (self.kinetic + self.internal + self.damping + self.hourglass + self.contact
-                - self.external - self.initial)
+        return (self.kinetic + self.internal + self.damping + self.hourglass + self.plastic
+                + self.bulk_viscosity + self.contact - self.external - self.initial)
 
     @property
     def balance_error(self) -> float:
@@ -109,6 +116,9 @@ class ExplicitSolver:
         self.f_gravity = (m.mass[:, None] * np.asarray(m.scene.gravity)[None, :] if m.scene.gravity
                           else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
+        # plastic state per point (equivalent plastic strain, its rate, back stress); a stub if all elastic
+        self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, plasticity.STATE_SIZE)
+                                      if m.plastic else (1, 1, plasticity.STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         self.owned = np.zeros(len(self.x), dtype=bool)
@@ -125,6 +135,7 @@ class ExplicitSolver:
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
         self.dt_stable = np.inf       # critical step of the current configuration (no safety factor)
+        self.critical_cell = -1       # the cell that sets it (on the rank that holds it; -1 elsewhere)
         self.energy = Energies()
         self.times = PhaseTimes()
         self.rigid_states = [RigidState(rb.center0.copy(), np.zeros(gdim)) for rb in m.rigid]
@@ -172,36 +183,43 @@ class ExplicitSolver:
         o = self.owned
         return self._sum(0.5 * float(np.dot(self.model.mass[o], (v[o] ** 2).sum(axis=1))))
 
-    def _internal_force(self, dt: float) -> tuple[float, float]:
-        """f_int at t_{n+1} (stresses updated over the step); returns (damping power, hourglass power)."""
+    def _internal_force(self, dt: float) -> tuple[float, float, float, float]:
+        """f_int at t_{n+1} (stresses updated over the step); returns the powers of damping, hourglass
+        control and bulk viscosity [W] and the plastic work of the step [J]."""
         m = self.model
         self.f_int[:] = 0.0
         hourglass_power = 0.0
         if m.one_point and m.gdim == 2:
-            dt_stable, damping_power, hourglass_power, bad = one_point.quad_one_point(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = (one_point.quad_one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
                 m.kinematics == kernels.AXISYMMETRIC, m.scene.thickness, m.hourglass_form,
-                m.hourglass_coefficient, m.params, self.sigma, self.hourglass, self.f_int)
+                m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
+                self.f_int))
         elif m.one_point:
-            dt_stable, damping_power, hourglass_power, bad = one_point.hex_one_point(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = (one_point.hex_one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
-                m.hourglass_coefficient, m.params, self.sigma, self.hourglass, self.f_int)
+                m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
+                self.f_int))
         else:
-            dt_stable, damping_power, bad = kernels.stress_divergence(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = kernels.stress_divergence(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
-                m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, self.sigma, self.f_int)
+                m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
+                self.sigma, self.f_int)
         if self.parallel:
             compat.reverse_add(self._f_fn)
+            dt_local = dt_stable
             dt_stable = self.comm.allreduce(dt_stable, op=MPI.MIN)
-            damping_power, hourglass_power = self.comm.allreduce(
-                np.array([damping_power, hourglass_power]), op=MPI.SUM)
+            critical = critical if dt_local == dt_stable else -1
+            damping_power, hourglass_power, viscosity_power, plastic_work = self.comm.allreduce(
+                np.array([damping_power, hourglass_power, viscosity_power, plastic_work]), op=MPI.SUM)
             bad = self.comm.allreduce(bad, op=MPI.MAX)
         if bad >= 0:
             raise UnstableRun(self._diagnose_cell(bad, "non-positive element volume (the element inverted)"),
                               self.t, self._body_of_cell(bad), bad)
         if np.isfinite(dt_stable) and dt_stable < 1e300:
             self.dt_stable = dt_stable
-        return damping_power, hourglass_power
+            self.critical_cell = critical
+        return damping_power, hourglass_power, viscosity_power, plastic_work
 
     def _external_force(self, t: float):
         if not self.model.loads and self.f_gravity is None:
@@ -303,7 +321,7 @@ class ExplicitSolver:
         t1 = time.perf_counter()
 
         # internal and external forces at t_{n+1}
-        damping_power, hourglass_power = self._internal_force(dt)
+        damping_power, hourglass_power, viscosity_power, plastic_work = self._internal_force(dt)
         t2 = time.perf_counter()
         self._external_force(self.t)
         self._contact_forces(dt)
@@ -319,14 +337,16 @@ class ExplicitSolver:
         self._check_finite(bad)
         e.damping += dt * damping_power
         e.hourglass += dt * hourglass_power
-        e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power)
+        e.bulk_viscosity += dt * viscosity_power
+        e.plastic += plastic_work
+        e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power + viscosity_power) - plastic_work
         e.external += w_ext + w_ext2 + reaction_work
         e.contact -= w_con + w_con2
         for pair in self.contacts:
             pair.account(dt, self.t, lambda: self.body_means()[0])
         e.kinetic = kinetic
         e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass),
-                     abs(e.contact))
+                     abs(e.contact), e.plastic, e.bulk_viscosity)
         t3 = time.perf_counter()
         self.times.update += t1 - t0
         self.times.internal_force += t2 - t1
@@ -355,11 +375,26 @@ class ExplicitSolver:
         rs.center = center_new
 
     def steps(self, end_time: float):
-        """Yield the solver after every step until ``end_time``."""
+        """Yield the solver after every step until ``end_time``; stop with a diagnosis if the
+        elements' stable step collapses below ``STEP_COLLAPSE`` of its first value."""
+        first = self.dt_stable
         while self.t < end_time * (1 - 1e-12):
+            if self.dt_stable < STEP_COLLAPSE * first:
+                self._step_collapsed(first)
             dt = min(self.stable_step(), end_time - self.t)
             self.advance(dt)
             yield self
+
+    def _step_collapsed(self, first: float):
+        cell = self.critical_cell
+        if self.parallel:     # the rank holding the critical cell tells the others what it is
+            holders = self.comm.allgather(self._diagnose_cell(cell, "") if cell >= 0 else None)
+            where = next((h for h in holders if h), "")
+        else:
+            where = self._diagnose_cell(cell, "") if cell >= 0 else ""
+        raise UnstableRun(f"the stable time step collapsed from {first:.3g} s to {self.dt_stable:.3g} s (below "
+                          f"{STEP_COLLAPSE:g} of its first value): an element is crushed{where}",
+                          self.t, self._body_of_cell(cell), cell)
 
     # ------------------------------------------------------------ results
     def body_means(self):

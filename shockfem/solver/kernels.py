@@ -34,9 +34,9 @@ from numba import njit
 
 PLANE_STRAIN, AXISYMMETRIC, THREE_D = 0, 1, 2
 
-# Material parameter table columns (one row per material); see model/materials.py.
-P_MODEL, P_RHO, P_LAMBDA, P_MU, P_WAVE_SPEED, P_BETA = 0, 1, 2, 3, 4, 5
-NUM_PARAMS = 16
+from .plasticity import radial_return
+from .columns import (NUM_PARAMS, P_BETA, P_KINEMATIC, P_LAMBDA, P_MODEL, P_MU, P_Q_LINEAR, P_Q_QUADRATIC,  # noqa: F401
+                      P_RHO, P_WAVE_SPEED, PLASTIC)
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -104,6 +104,41 @@ def _damped_step(dtc, beta):
         xi = beta / dtc
         dtc *= math.sqrt(1.0 + xi * xi) - xi
     return dtc
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def bulk_viscosity(rho, c, length, trd, q1, q2):
+    """LS-DYNA's artificial bulk viscosity q = rho l (Q1 l tr(d)^2 - Q2 c tr(d)), in compression only.
+
+    A pressure [Pa] added to the force stress (never stored): it spreads a shock over a few
+    elements instead of letting it ring (von Neumann & Richtmyer; Q1 the quadratic, Q2 the
+    linear coefficient, defaults 1.5 and 0.06)."""
+    if trd >= 0.0:
+        return 0.0
+    return rho * length * (q1 * length * trd * trd - q2 * c * trd)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def viscous_step(step_length, c, length, trd, q1, q2, beta):
+    """An element's stable step: step_length / c, shortened in compression by the bulk viscosity to
+    step_length / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 l |tr(d)| (LS-DYNA), and by stiffness-
+    proportional damping (``_damped_step``)."""
+    if trd < 0.0:
+        Q = q2 * c - q1 * length * trd
+        dtc = step_length / (Q + math.sqrt(Q * Q + c * c))
+    else:
+        dtc = step_length / c
+    return _damped_step(dtc, beta)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def rotate_back_stress(state, c, p, w23, w13, w12, dt):
+    """Kinematic hardening's back stress (state columns 2..7) turns with the material like the stress."""
+    q00, q01, q02, q10, q11, q12, q20, q21, q22 = _cayley_matrix(w23, w13, w12, dt)
+    (state[c, p, 2], state[c, p, 3], state[c, p, 4], state[c, p, 5], state[c, p, 6],
+     state[c, p, 7]) = _rotate_symmetric(state[c, p, 2], state[c, p, 3], state[c, p, 4], state[c, p, 5],
+                                         state[c, p, 6], state[c, p, 7], q00, q01, q02, q10, q11, q12,
+                                         q20, q21, q22)
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -293,7 +328,7 @@ def cell_orientation(dofmap, x, dN):
 
 @njit(cache=True, fastmath=True)
 def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics,
-                      thickness, cell_kind, mean_dilatation, params, sigma, f):
+                      thickness, cell_kind, mean_dilatation, params, curves, state, sigma, f):
     """Update the stress of ``cells`` over one step and add their internal force to ``f``.
 
     Parameters
@@ -312,14 +347,20 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
     cell_kind : 0 tri, 1 quad, 2 tet, 3 hex (for the characteristic length).
     mean_dilatation : replace each point's volumetric strain rate by the cell average
         (Nagtegaal, Parks & Rice 1974), which removes volumetric locking.
-    params : (num_materials, NUM_PARAMS) material table.
+    params : (num_materials, NUM_PARAMS) material table (``columns.py``).
+    curves : (num_materials, points, 2) hardening curves (plastic strain, stress) of plastic materials.
+    state : (num_cells, nq, plasticity.STATE_SIZE) plastic state, updated in place (unused by
+        elastic materials; may then be (1, 1, STATE_SIZE)).
     sigma : (num_cells, nq, 6) Cauchy stress, updated in place from t_n to t_{n+1}.
     f : (num_nodes, gdim) internal force, accumulated (caller zeroes it).
 
     Returns
     -------
-    dt_stable : smallest l_e / c_e over ``cells`` at t_{n+1} (before the safety factor).
+    dt_stable : smallest stable step over ``cells`` at t_{n+1} (before the safety factor).
+    critical_cell : the cell that sets it.
     damping_power : int sigma_visc : d dV, power of the stiffness-proportional damping [W].
+    viscosity_power : int -q tr(d) dV, power of the bulk viscosity [W].
+    plastic_work : int sigma : d eps_p dV over the step [J].
     bad_cell : a cell whose Jacobian changed sign (inverted) at t_{n+1}, or -1.
     """
     nq = wq.shape[0]
@@ -335,11 +376,15 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
     s = np.empty(6)
     two_pi = 2.0 * math.pi
     dt_stable = 1e300
+    critical_cell = -1
     damping_power = 0.0
+    viscosity_power = 0.0
+    plastic_work = 0.0
     bad_cell = -1
     for ci in range(cells.shape[0]):
         c = cells[ci]
         m = cell_material[c]
+        plastic = params[m, P_MODEL] == PLASTIC
         sgn = cell_sign[c]
         lam = params[m, P_LAMBDA]
         mu = params[m, P_MU]
@@ -377,6 +422,9 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
             vol += w
             div += w * (L[q, 0, 0] + L[q, 1, 1] + L[q, 2, 2])
         div_avg = div / vol
+        le = characteristic_length(xe, cell_kind, nn)
+        c_m = params[m, P_WAVE_SPEED]
+        pq = bulk_viscosity(params[m, P_RHO], c_m, le, div_avg, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
         # Pass 2: stress update and force on the end-of-step configuration.
         for q in range(nq):
             d[0] = L[q, 0, 0]
@@ -392,11 +440,21 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
                 d[2] += shift
             for k in range(6):
                 s[k] = sigma[c, q, k]
-            _rotate_hughes_winget(s, 0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]),
-                                  0.5 * (L[q, 0, 1] - L[q, 1, 0]), dt)
+            w23 = 0.5 * (L[q, 1, 2] - L[q, 2, 1])
+            w13 = 0.5 * (L[q, 0, 2] - L[q, 2, 0])
+            w12 = 0.5 * (L[q, 0, 1] - L[q, 1, 0])
+            _rotate_hughes_winget(s, w23, w13, w12, dt)
             cd = _hooke(d[0], d[1], d[2], d[3], d[4], d[5], lam, mu)        # C : d
             for k in range(6):
                 s[k] += dt * cd[k]
+            if plastic:
+                if params[m, P_KINEMATIC] > 0.0:
+                    rotate_back_stress(state, c, q, w23, w13, w12, dt)
+                s[0], s[1], s[2], s[3], s[4], s[5], wp = radial_return(
+                    params, curves, m, state, c, q, s[0], s[1], s[2], s[3], s[4], s[5],
+                    d[0], d[1], d[2], d[3], d[4], d[5], dt)
+                plastic_work += wmid[q] * wp
+            for k in range(6):
                 sigma[c, q, k] = s[k]
             if beta > 0.0:
                 # Stiffness-proportional (Rayleigh) damping: viscous stress beta * C : d.
@@ -404,6 +462,11 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
                     sv = beta * cd[k]
                     damping_power += wmid[q] * sv * d[k] * (1.0 if k < 3 else 2.0)
                     s[k] += sv
+            if pq > 0.0:
+                viscosity_power -= wmid[q] * pq * (d[0] + d[1] + d[2])
+                s[0] -= pq
+                s[1] -= pq
+                s[2] -= pq
             det = _gradients(xe, dN[q], gdim, nn, dNdx) * sgn
             if det <= 0.0:
                 bad_cell = c
@@ -431,8 +494,8 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
                     f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + s[4] * dNdx[a, 2])
                     f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1] + s[3] * dNdx[a, 2])
                     f[node, 2] += w * (s[4] * dNdx[a, 0] + s[3] * dNdx[a, 1] + s[2] * dNdx[a, 2])
-        le = characteristic_length(xe, cell_kind, nn)
-        dtc = _damped_step(le / params[m, P_WAVE_SPEED], beta)
+        dtc = viscous_step(le, c_m, le, div_avg, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR], beta)
         if dtc < dt_stable:
             dt_stable = dtc
-    return dt_stable, damping_power, bad_cell
+            critical_cell = c
+    return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, bad_cell

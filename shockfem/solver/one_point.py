@@ -35,8 +35,10 @@ import math
 import numpy as np
 from numba import njit
 
-from .kernels import (P_BETA, P_LAMBDA, P_MU, P_RHO, P_WAVE_SPEED, _cayley_matrix, _damped_step, _hooke,
-                      _rotate_symmetric)
+from .columns import (P_BETA, P_KINEMATIC, P_LAMBDA, P_MODEL, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO,
+                      P_WAVE_SPEED, PLASTIC)
+from .kernels import _cayley_matrix, _hooke, _rotate_symmetric, bulk_viscosity, rotate_back_stress, viscous_step
+from .plasticity import radial_return
 
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
@@ -133,16 +135,16 @@ def _rotate_2d(s0, s1, s5, w12, dt):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _stable_step(nodes, bb, c, beta):
-    """2 / omega_max with Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b for a uniform-strain
-    element with lumped mass (a square of side h: h / (sqrt(2) c); a cube: h / (sqrt(3) c)),
-    shortened for stiffness-proportional damping (Belytschko et al., eq. 6.2.28)."""
-    return _damped_step(2.0 / (c * math.sqrt(nodes * bb)), beta)
+def _step_length(nodes, bb):
+    """c times the stable step of a uniform-strain element with lumped mass, 2 / sqrt(n b:b), from
+    Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b (a square of side h: h / sqrt(2),
+    LS-DYNA's area / longest diagonal; a cube: h / sqrt(3))."""
+    return 2.0 / math.sqrt(nodes * bb)
 
 
 @njit(cache=True, fastmath=True)
 def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
-                   hourglass_form, hourglass_coefficient, params, sigma, hourglass, f):
+                   hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f):
     """One-point quads (plane strain or axisymmetric): stress update and internal force.
 
     Arguments as ``kernels.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
@@ -150,12 +152,15 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
     hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
     stiffness form accumulates them; both forms need them for the trapezoidal work).
 
-    Returns (dt_stable, damping_power, hourglass_power, bad_cell).
+    Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
     """
     two_pi = 2.0 * math.pi
     hdt = 0.5 * dt
     dt_stable = 1e300
+    critical_cell = -1
     damping_power = 0.0
+    viscosity_power = 0.0
+    plastic_work = 0.0
     hourglass_power = 0.0
     bad_cell = -1
     for ci in range(cells.shape[0]):
@@ -201,6 +206,12 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         s1 += dt * c1
         s2 = sigma[c, 0, 2] + dt * c2
         s5 += dt * c5
+        wp = 0.0
+        if params[m, P_MODEL] == PLASTIC:
+            if params[m, P_KINEMATIC] > 0.0:
+                rotate_back_stress(state, c, 0, 0.0, 0.0, 0.5 * (l01 - l10), dt)
+            s0, s1, s2, _, _, s5, wp = radial_return(params, curves, m, state, c, 0, s0, s1, s2, 0.0, 0.0, s5,
+                                                     d0, d1, d2, 0.0, 0.0, d5, dt)
         sigma[c, 0, 0] = s0
         sigma[c, 0, 1] = s1
         sigma[c, 0, 2] = s2
@@ -211,6 +222,7 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         if det <= 0.0:
             bad_cell = c
         vol = det * (two_pi * r if axisymmetric else thickness)
+        plastic_work += vol * wp
         if beta > 0.0:
             # stiffness-proportional damping: viscous stress beta C : d
             sv0, sv1, sv2, sv5 = beta * c0, beta * c1, beta * c2, beta * c5
@@ -227,6 +239,15 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         q0 = hv0 - e00 * hx0 - e01 * hx1
         q1 = hv1 - e10 * hx0 - e11 * hx1
         bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
+        ls = _step_length(4.0, bb)
+        trd = d0 + d1 + d2
+        pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC],
+                            params[m, P_Q_LINEAR])
+        if pq > 0.0:
+            viscosity_power -= vol * pq * trd
+            s0 -= pq
+            s1 -= pq
+            s2 -= pq
         o0 = hourglass[c, 0]
         o1 = hourglass[c, 1]
         if hourglass_form == 1:
@@ -258,23 +279,28 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         f[n1, 1] += f11
         f[n2, 1] += f21
         f[n3, 1] += f31
-        dtc = _stable_step(4.0, bb, params[m, P_WAVE_SPEED], beta)
+        dtc = viscous_step(ls, params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR],
+                           beta)
         if dtc < dt_stable:
             dt_stable = dtc
-    return dt_stable, damping_power, hourglass_power, bad_cell
+            critical_cell = c
+    return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
 
 
 @njit(cache=True, fastmath=True)
 def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
-                  hourglass_coefficient, params, sigma, hourglass, f):
+                  hourglass_coefficient, params, curves, state, sigma, hourglass, f):
     """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
 
     hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
-    xi eta zeta), 3 components each.  Returns (dt_stable, damping_power, hourglass_power, bad_cell).
+    xi eta zeta), 3 components each.  Returns (dt_stable, critical_cell, damping_power, hourglass_power, bad_cell).
     """
     hdt = 0.5 * dt
     dt_stable = 1e300
+    critical_cell = -1
     damping_power = 0.0
+    viscosity_power = 0.0
+    plastic_work = 0.0
     hourglass_power = 0.0
     bad_cell = -1
     for ci in range(cells.shape[0]):
@@ -337,6 +363,12 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         s3 += dt * c3
         s4 += dt * c4
         s5 += dt * c5
+        wp = 0.0
+        if params[m, P_MODEL] == PLASTIC:
+            if params[m, P_KINEMATIC] > 0.0:
+                rotate_back_stress(state, c, 0, w23, w13, w12, dt)
+            s0, s1, s2, s3, s4, s5, wp = radial_return(params, curves, m, state, c, 0, s0, s1, s2, s3, s4, s5,
+                                                       d0, d1, d2, d3, d4, d5, dt)
         sigma[c, 0, 0] = s0
         sigma[c, 0, 1] = s1
         sigma[c, 0, 2] = s2
@@ -349,6 +381,7 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         vol = det * cell_sign[c]
         if vol <= 0.0:
             bad_cell = c
+        plastic_work += vol * wp
         if beta > 0.0:
             # stiffness-proportional damping: viscous stress beta C : d
             sv0, sv1, sv2, sv3, sv4, sv5 = beta * c0, beta * c1, beta * c2, beta * c3, beta * c4, beta * c5
@@ -371,6 +404,16 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         e22 = v20 * i02 + v21 * i12 + v22 * i22
         bb = 0.5 * (i00 * i00 + i01 * i01 + i02 * i02 + i10 * i10 + i11 * i11 + i12 * i12
                     + i20 * i20 + i21 * i21 + i22 * i22)          # b:b, sum_a dN0_a dN0_a^T = I / 2
+        ls = _step_length(8.0, bb)
+        trd = d0 + d1 + d2
+        # the viscosity's length is LS-DYNA's volume / largest face, sqrt(3) ls for a cube
+        pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd,
+                            params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
+        if pq > 0.0:
+            viscosity_power -= vol * pq * trd
+            s0 -= pq
+            s1 -= pq
+            s2 -= pq
         if hourglass_form == 1:
             coef = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 8.0
         else:
@@ -442,7 +485,9 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
             f[n5, i] += hi[1]
             f[n6, i] += hi[2]
             f[n7, i] += hi[3]
-        dtc = _stable_step(8.0, bb, params[m, P_WAVE_SPEED], beta)
+        dtc = viscous_step(ls, params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd, params[m, P_Q_QUADRATIC],
+                           params[m, P_Q_LINEAR], beta)
         if dtc < dt_stable:
             dt_stable = dtc
-    return dt_stable, damping_power, hourglass_power, bad_cell
+            critical_cell = c
+    return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell

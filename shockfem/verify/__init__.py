@@ -27,6 +27,8 @@ def run_cases(names, size: str = "default", workdir: str = "results/verify", ech
             if rank0:
                 echo(f"{c['name']:44s} {c['reference']:13.6g} {c['result']:13.6g} {c['error']:10.3g} "
                      f"{c['tolerance']:8.2g}  {'PASS' if c['passed'] else 'FAIL'}  {c['wall_time_s']:7.2f}")
+                if c.get("note"):
+                    echo(f"    {c['note']}")
         results.extend(checks)
         if rank0:
             echo(f"  ({name}: {time.perf_counter() - t0:.1f} s including meshing and compilation)")

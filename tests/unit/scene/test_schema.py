@@ -127,3 +127,44 @@ def test_contact_and_spring_problems_are_listed():
     assert "spring[0]: needs a stiffness, a curve or a damping" in text
     assert "spring[1]: give stiffness (linear) or curve (tabulated), not both" in text
     assert "spring[1].curve: extensions must increase" in text
+
+
+def _with_material(**fields):
+    raw = base()
+    raw["materials"]["steel"].update(fields)
+    return raw
+
+
+def test_bilinear_plastic_material_resolves():
+    m = resolve(_with_material(yield_stress="250 MPa", tangent_modulus="1 GPa", isotropic_fraction=0.25,
+                               cowper_symonds_D="40.4 /s", cowper_symonds_q=5)).materials["steel"]
+    p = m.plasticity
+    H = 210e9 * 1e9 / (210e9 - 1e9)
+    assert p.curve[0] == (0.0, 250e6)
+    assert p.curve[1][1] == pytest.approx(250e6 + 0.25 * H)
+    assert p.kinematic_modulus == pytest.approx(0.75 * H)
+    assert (p.rate_D, p.rate_q, p.rate_form) == (40.4, 5.0, "plastic-strain-rate")
+
+
+def test_library_material_and_override():
+    m = resolve({**base(), "materials": {"steel": {"library": "mild_steel", "yield_stress": "300 MPa"}}}
+                ).materials["steel"]
+    assert m.E == 210e9 and m.plasticity.yield_stress == 300e6 and m.plasticity.rate_D == 40.4
+    assert "Jones" in m.source
+    curve = resolve({**base(), "materials": {"steel": {"library": "steel_4340"}}}).materials["steel"]
+    assert curve.plasticity.curve[0] == (0.0, 792e6) and len(curve.plasticity.curve) == 10
+
+
+def test_bad_plastic_fields_are_named():
+    problems = _problems(_with_material(yield_stress="250 MPa", tangent_modulus="300 GPa",
+                                        cowper_symonds_D="40 /s", isotropic_fraction=2))
+    assert any(p.startswith("materials.steel.tangent_modulus: must be < youngs_modulus") for p in problems)
+    assert any(p.startswith("materials.steel.cowper_symonds_q: missing") for p in problems)
+    assert any(p.startswith("materials.steel.isotropic_fraction: must be in [0, 1]") for p in problems)
+    problems = _problems(_with_material(hardening_curve=[[0.1, "300 MPa"], [0.2, "250 MPa"]],
+                                        yield_stress="250 MPa"))
+    assert any("must start at plastic strain 0" in p for p in problems)
+    assert any("must not decrease" in p for p in problems)
+    assert any(p.startswith("materials.steel.yield_stress: give either") for p in problems)
+    assert any("unknown library material" in p
+               for p in _problems({**base(), "materials": {"steel": {"library": "unobtainium"}}}))

@@ -3,7 +3,11 @@ import numpy as np
 from dolfinx import mesh
 from mpi4py import MPI
 
-from shockfem.solver import kernels
+from shockfem.solver import kernels, plasticity
+
+# elastic materials read neither hardening curves nor plastic state: one-entry stubs
+NO_CURVES = np.zeros((1, 1, 2))
+NO_STATE = np.zeros((1, 1, plasticity.STATE_SIZE))
 
 
 def distorted_mesh(kinematics, cell):

@@ -8,7 +8,7 @@ from shockfem import compat
 from shockfem.model import kinematics as kin
 from shockfem.solver import kernels
 
-from solver_helpers import distorted_mesh as _mesh, steel_params as _params
+from solver_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
 
 CASES = [("axisymmetric", mesh.CellType.quadrilateral), ("axisymmetric", mesh.CellType.triangle),
          ("plane-strain", mesh.CellType.quadrilateral), ("3d", mesh.CellType.hexahedron),
@@ -41,7 +41,7 @@ def test_internal_force_matches_ufl_form(kinematics, cell):
     # dt = 0 and v = 0: the stress stays as given and the kernel only assembles the force
     sign = kernels.cell_orientation(dofmap, X, dN)
     kernels.stress_divergence(cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X), 0.0, N, dN, wq,
-                              kin.CODES[kinematics], 0.7, kind, True, _params(), sigma.copy(), f)
+                              kin.CODES[kinematics], 0.7, kind, True, _params(), NO_CURVES, NO_STATE, sigma.copy(), f)
     degree = kin.quadrature_degree(m.topology.cell_name(), kinematics)
     Qe = ufl.VectorElement("Quadrature", m.ufl_cell(), degree=degree, dim=6, quad_scheme="default")
     s6 = fem.Function(fem.FunctionSpace(m, Qe))
@@ -68,7 +68,8 @@ def test_rigid_rotation_rotates_stress_exactly():
     sigma = np.tile(s0, (ncell, nq, 1))
     kernels.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
                               kernels.cell_orientation(dofmap, X, dN), x_np1, v, dt,
-                              N, dN, wq, kernels.THREE_D, 1.0, kind, True, _params(), sigma, np.zeros_like(X))
+                              N, dN, wq, kernels.THREE_D, 1.0, kind, True, _params(), NO_CURVES, NO_STATE, sigma,
+                              np.zeros_like(X))
     S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
     S1 = R @ S0 @ R.T
     expected = np.array([S1[0, 0], S1[1, 1], S1[2, 2], S1[1, 2], S1[0, 2], S1[0, 1]])
@@ -88,7 +89,8 @@ def test_uniform_stretch_gives_hooke_stress():
     p = _params()
     kernels.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
                               kernels.cell_orientation(dofmap, X, dN), x_np1, v, dt,
-                              N, dN, wq, kernels.PLANE_STRAIN, 1.0, kind, True, p, sigma, np.zeros_like(X))
+                              N, dN, wq, kernels.PLANE_STRAIN, 1.0, kind, True, p, NO_CURVES, NO_STATE, sigma,
+                              np.zeros_like(X))
     lam, mu = p[0, kernels.P_LAMBDA], p[0, kernels.P_MU]
     # the mid-step configuration differs from X by dt/2 * v: strain rate exact to O(dt)
     tr = 0.5

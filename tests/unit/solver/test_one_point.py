@@ -9,7 +9,7 @@ from shockfem import compat
 from shockfem.model import kinematics as kin
 from shockfem.solver import kernels, one_point
 
-from solver_helpers import distorted_mesh as _mesh, steel_params as _params
+from solver_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
 
 STIFFNESS, VISCOUS = one_point.HOURGLASS_FORMS["stiffness"], one_point.HOURGLASS_FORMS["viscous"]
 
@@ -25,17 +25,20 @@ def _arrays(m):
 
 
 def _run(kinematics, dofmap, sign, x, v, dt, sigma, hourglass, form=STIFFNESS, coefficient=0.05, params=None):
-    """Call the one-point kernel for the kinematics; returns (f, dt_stable, damping_power, hourglass_power, bad)."""
+    """Call the one-point kernel for the kinematics; returns (f, dt_stable, damping_power, hourglass_power, bad)
+    (the critical cell, bulk viscosity power and plastic work are left out: elastic, no viscosity)."""
     f = np.zeros_like(x)
     cells = np.arange(len(dofmap), dtype=np.int32)
     mats = np.zeros(len(dofmap), np.int32)
     p = _params() if params is None else params
     if kinematics == "3d":
-        out = one_point.hex_one_point(cells, dofmap, mats, sign, x, v, dt, form, coefficient, p, sigma, hourglass, f)
+        out = one_point.hex_one_point(cells, dofmap, mats, sign, x, v, dt, form, coefficient, p, NO_CURVES, NO_STATE,
+                                      sigma, hourglass, f)
     else:
         out = one_point.quad_one_point(cells, dofmap, mats, sign, x, v, dt, kinematics == "axisymmetric", 0.7,
-                                       form, coefficient, p, sigma, hourglass, f)
-    return (f,) + tuple(out)
+                                       form, coefficient, p, NO_CURVES, NO_STATE, sigma, hourglass, f)
+    dt_stable, _, damping_power, _, _, hourglass_power, bad = out
+    return f, dt_stable, damping_power, hourglass_power, bad
 
 
 @pytest.mark.parametrize("kinematics, cell", [("axisymmetric", mesh.CellType.quadrilateral),

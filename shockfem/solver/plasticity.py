@@ -1,0 +1,171 @@
+"""J2 (von Mises) plasticity with radial return, mixed hardening and Cowper-Symonds rate effects.
+
+One material point, called by every element kernel after the objective rotation and the
+elastic trial step (so the kernels stay the single place of the stress-rate update):
+
+    sigma_trial = Q sigma_n Q^T + dt C : d          (kernels.py, one_point.py)
+    xi_trial    = dev(sigma_trial) - alpha_n        alpha: back stress (kinematic hardening)
+    q_trial     = sqrt(3/2 xi_trial : xi_trial)
+
+If q_trial exceeds the current yield stress the point flows along n = xi_trial / q_trial by
+an equivalent plastic strain increment de solving the scalar consistency condition
+
+    q_trial - (3 mu + H_k) de = R(rate) sigma_iso(eps_p + de)
+
+(Simo & Hughes, *Computational Inelasticity*, Box 3.2, with the rate factor added), then
+
+    sigma = sigma_trial - 3 mu de n,    alpha += H_k de n,    eps_p += de.
+
+Hardening, as LS-DYNA's MAT_003 and MAT_024 define it:
+
+* ``sigma_iso`` is a piecewise-linear curve of the plastic strain (MAT_024's table; extended
+  with its last slope).  A bilinear material (yield sigma_0, tangent modulus E_t, MAT_003) is the
+  two-point curve sigma_0 + beta H eps_p with the plastic modulus H = E E_t / (E - E_t);
+* the kinematic modulus ``H_k = (1 - beta) H`` (MAT_003's beta: 1 isotropic, 0 kinematic).
+
+Rate factor ``R = 1 + (rate / D)^(1/q)`` (Cowper-Symonds), in one of LS-DYNA's two forms:
+
+* viscoplastic (VP = 1, the default): rate = de / dt, the plastic strain rate, so R is part of
+  the consistency condition.  It is solved for z = (de / (dt D))^(1/q), in which the
+  condition is smooth and concave (de = dt D z^q; the rate factor's infinite slope at zero
+  plastic rate disappears), by Newton's method kept inside a bracket;
+* yield scaling (VP = 0): rate = the total effective strain rate sqrt(2/3 d':d') of the step,
+  so R is known before the return.
+
+The state of a point is ``STATE_SIZE`` numbers: equivalent plastic strain, plastic strain rate,
+and the back stress (6 components, order 11 22 33 23 13 12 like the stress).
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from .columns import P_CURVE_POINTS, P_KINEMATIC, P_MU, P_RATE_D, P_RATE_FORM, P_RATE_Q
+
+VISCOPLASTIC, YIELD_SCALING = 0, 1
+S_EPS, S_RATE = 0, 1   # state columns; the back stress is columns 2..7
+STATE_SIZE = 8
+
+_NEWTON_ITERATIONS = 60
+_TOLERANCE = 1e-12     # of the consistency residual, relative to q_trial
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def hardening(curve, npts, eps):
+    """sigma_iso(eps) and its slope on a piecewise-linear curve (eps_k, sigma_k), k < npts,
+    extended beyond the last point with the last slope (flat for a single point)."""
+    if npts == 1:
+        return curve[0, 1], 0.0
+    k = 0
+    while k < npts - 2 and eps > curve[k + 1, 0]:
+        k += 1
+    slope = (curve[k + 1, 1] - curve[k, 1]) / (curve[k + 1, 0] - curve[k, 0])
+    return curve[k, 1] + slope * (eps - curve[k, 0]), slope
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def rate_factor(rate, D, q):
+    """Cowper-Symonds 1 + (rate / D)^(1/q); 1 when D = 0 (rate independent)."""
+    if D <= 0.0 or rate <= 0.0:
+        return 1.0
+    return 1.0 + (rate / D) ** (1.0 / q)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _flow_increment(q_trial, eps, stiffness, curve, npts, dt, D, q, viscoplastic, scale):
+    """The equivalent plastic strain increment de > 0 of a point that yields (see module docstring).
+
+    stiffness = 3 mu + H_k; scale = the known rate factor of the yield-scaling form (1 otherwise).
+    Newton's method on g(y) = q_trial - stiffness de(y) - R(y) sigma_iso(eps + de(y)) with y = de
+    (rate independent, yield scaling) or y = z (viscoplastic), safeguarded by bisection on the
+    bracket [0, y_max] where g(0) > 0 >= g(y_max).
+    """
+    if viscoplastic:
+        dtD = dt * D
+        hi = (q_trial / (stiffness * dtD)) ** (1.0 / q)
+    else:
+        dtD = 1.0
+        hi = q_trial / stiffness
+    lo = 0.0
+    y = 0.0
+    for _ in range(_NEWTON_ITERATIONS):
+        if viscoplastic:
+            yq1 = y ** (q - 1.0) if y > 0.0 else 0.0
+            de = dtD * yq1 * y
+            dde = dtD * q * yq1
+            factor = 1.0 + y
+        else:
+            de = y
+            dde = 1.0
+            factor = scale
+        s, h = hardening(curve, npts, eps + de)
+        g = q_trial - stiffness * de - factor * s
+        if abs(g) <= _TOLERANCE * q_trial:
+            break
+        if g > 0.0:
+            lo = y
+        else:
+            hi = y
+        dg = -(stiffness + factor * h) * dde - (s if viscoplastic else 0.0)
+        step = y - g / dg if dg < 0.0 else 0.5 * (lo + hi)
+        y = step if lo < step < hi else 0.5 * (lo + hi)
+    if viscoplastic:
+        return dtD * y ** q
+    return y
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def radial_return(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, d2, d3, d4, d5, dt):
+    """Return the trial stress (s0..s5) to the yield surface of material ``m`` at point (c, p).
+
+    d0..d5 is the step's strain rate (for the yield-scaling rate form).  Updates ``state[c, p]``
+    and returns the stress and the plastic work density of the step sigma : d eps_p [J/m^3].
+    """
+    mu = params[m, P_MU]
+    hk = params[m, P_KINEMATIC]
+    D = params[m, P_RATE_D]
+    qexp = params[m, P_RATE_Q]
+    npts = int(params[m, P_CURVE_POINTS])
+    curve = curves[m]
+    eps = state[c, p, S_EPS]
+    mean = (s0 + s1 + s2) / 3.0
+    x0 = s0 - mean - state[c, p, 2]
+    x1 = s1 - mean - state[c, p, 3]
+    x2 = s2 - mean - state[c, p, 4]
+    x3 = s3 - state[c, p, 5]
+    x4 = s4 - state[c, p, 6]
+    x5 = s5 - state[c, p, 7]
+    q_trial = math.sqrt(1.5 * (x0 * x0 + x1 * x1 + x2 * x2 + 2.0 * (x3 * x3 + x4 * x4 + x5 * x5)))
+    viscoplastic = D > 0.0 and params[m, P_RATE_FORM] == VISCOPLASTIC
+    scale = 1.0
+    if D > 0.0 and not viscoplastic:
+        dm = (d0 + d1 + d2) / 3.0
+        e0, e1, e2 = d0 - dm, d1 - dm, d2 - dm
+        rate = math.sqrt(2.0 / 3.0 * (e0 * e0 + e1 * e1 + e2 * e2 + 2.0 * (d3 * d3 + d4 * d4 + d5 * d5)))
+        scale = rate_factor(rate, D, qexp)
+    sy, _ = hardening(curve, npts, eps)
+    if q_trial <= scale * sy:
+        state[c, p, S_RATE] = 0.0
+        return s0, s1, s2, s3, s4, s5, 0.0
+    de = _flow_increment(q_trial, eps, 3.0 * mu + hk, curve, npts, dt, D, qexp, viscoplastic, scale)
+    k = 1.5 * de / q_trial                       # d eps_p = k xi_trial (tensor), |.|_eq = de
+    r = 2.0 * mu * k
+    s0 -= r * x0
+    s1 -= r * x1
+    s2 -= r * x2
+    s3 -= r * x3
+    s4 -= r * x4
+    s5 -= r * x5
+    if hk > 0.0:
+        a = 2.0 / 3.0 * hk * k
+        state[c, p, 2] += a * x0
+        state[c, p, 3] += a * x1
+        state[c, p, 4] += a * x2
+        state[c, p, 5] += a * x3
+        state[c, p, 6] += a * x4
+        state[c, p, 7] += a * x5
+    state[c, p, S_EPS] = eps + de
+    state[c, p, S_RATE] = de / dt
+    work = k * (s0 * x0 + s1 * x1 + s2 * x2 + 2.0 * (s3 * x3 + s4 * x4 + s5 * x5))
+    return s0, s1, s2, s3, s4, s5, work
