@@ -221,7 +221,7 @@ def parallel_agreement(raw: dict, name: str, workdir: str, columns: list[str]):
 
 
 from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_rod_3d,  # noqa: E402
-                            rod_on_wall, sliding_block, unequal_rods)  # (they use check and SIZES above)
+                            rod_on_wall, sliding_block, tunnel_slide, unequal_rods)  # (they use check and SIZES above)
 from .spring_cases import spring_oscillator  # noqa: E402
 from .material_point import material_point  # noqa: E402
 from .plasticity_cases import plastic_wave, taylor_bar  # noqa: E402
@@ -241,6 +241,7 @@ CASES = {
     "contact_parallel": contact_parallel,
     "spring_oscillator": spring_oscillator,
     "sliding_block": sliding_block,
+    "tunnel_slide": tunnel_slide,
     "material_point": material_point,
     "plastic_wave": plastic_wave,
     "taylor_bar": taylor_bar,

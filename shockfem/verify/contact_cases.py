@@ -233,3 +233,43 @@ def hertz_spheres(size, workdir):
         check("hertz.restitution [-]", 1.0, pair.restitution() or 0.0, 0.02, wall, n),
         check("hertz.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n, absolute=True),
     ]
+
+
+def _tunnel_slide_scene(size):
+    mu, g, v0 = SLIDE
+    t_stop = v0 / (mu * g)
+    r, R = 0.01, 0.0105
+    h = 0.005 * SIZES[size]
+    return {"scene": {"name": "tunnel_slide", "kinematics": "3d", "end_time": 1.25 * t_stop, "gravity": [0.0, -g, 0.0]},
+            "materials": {"soft": {"density": 1000.0, "youngs_modulus": 2.5e6, "poisson_ratio": 0.3}},
+            "bodies": [{"name": "plug", "material": "soft", "shape": "cylinder", "radius": r, "length": 0.04,
+                        "element_size": h, "position": [0.0, -(R - r), 0.0], "velocity": [0.0, 0.0, v0]}],
+            "contact": [{"name": "tunnel", "a": "plug.side", "friction": mu,
+                         "cylinder": {"point": [0.0, 0.0, 0.0], "axis": [0.0, 0.0, 1.0], "radius": R,
+                                      "side": "inside"}}],
+            "outputs": {"field_interval": 1.25 * t_stop, "history_interval": t_stop / 100}}
+
+
+def tunnel_slide(size, workdir):
+    """A soft cylindrical plug launched along a horizontal rigid tunnel (a rigid cylinder, inside)
+    under gravity with friction mu: it rests on the tunnel floor, decelerates at mu g and stops
+    after v0^2 / (2 mu g) (the plug's radius is 95% of the tunnel's, so it bears on a narrow strip
+    whose normals are within a few degrees of vertical: the friction exceeds mu m g by 1/cos of
+    their spread, well under 1%)."""
+    mu, g, v0 = SLIDE
+    t_stop = v0 / (mu * g)
+    samples = []
+    solver, wall = solve(_tunnel_slide_scene(size), cache_dir=workdir,
+                         probe=lambda s: samples.append((s.t, s.body_means()[0][0, 2], s.u[s.owned, 2].mean(),
+                                                         np.linalg.norm(s.contacts[0].force_a))))
+    t, vz, uz, normal = np.array(samples).T
+    sel = (t > 0.2 * t_stop) & (t < 0.8 * t_stop)
+    decel = -np.polyfit(t[sel], vz[sel], 1)[0]
+    n = _elements(solver)
+    weight = solver.model.body_mass[0] * g
+    return [
+        check("tunnel_slide.normal_force [N]", weight, normal[sel].mean(), 0.02, wall, n),
+        check("tunnel_slide.deceleration [m/s^2]", mu * g, decel, 0.02, wall, n),
+        check("tunnel_slide.stopping_distance [m]", v0 ** 2 / (2 * mu * g), uz[-1], 0.02, wall, n),
+        check("tunnel_slide.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n, absolute=True),
+    ]

@@ -1,7 +1,6 @@
 """A plastic run through ``run_scene``: the run directory carries what issue #4 promises (plastic
 strain in summary.json and the fields, final deformed shape, plastic and bulk-viscosity energy in
 the history) and the per-pair contact force histories."""
-import json
 import os
 
 import numpy as np
