@@ -114,7 +114,7 @@ def taylor_bar_bench(sizes, echo=print) -> list[dict]:
         solver, wall = solve(taylor_scene(h))
         r = taylor_measures(solver)
         n = solver.model.num_cells_global
-        row = {"case": "taylor_bar", "element_size_m": h, "elements": n, "steps": solver.step, "wall_time_s": wall,
+        row = {"case": "taylor_bar", "kinematics": "axisymmetric", "element_size_m": h, "elements": n, "steps": solver.step, "wall_time_s": wall,
                "element_cycles_per_s": n * solver.step / wall,
                "length_error": r["length"] / TAYLOR["final_length"] - 1,
                "radius_error": r["radius"] / TAYLOR["final_radius"] - 1,
