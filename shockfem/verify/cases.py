@@ -221,7 +221,7 @@ def parallel_agreement(raw: dict, name: str, workdir: str, columns: list[str]):
 
 
 from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_rod_3d,  # noqa: E402
-                            rod_on_wall, sliding_block, tunnel_slide, unequal_rods)  # (they use check and SIZES above)
+                            rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)  # (they use check and SIZES above)
 from .spring_cases import spring_oscillator  # noqa: E402
 from .material_point import material_point  # noqa: E402
 from .plasticity_cases import plastic_wave, taylor_bar  # noqa: E402
@@ -236,6 +236,7 @@ CASES = {
     "rod_on_rod": rod_on_rod,
     "rod_on_wall": rod_on_wall,
     "unequal_rods": unequal_rods,
+    "thick_rods": thick_rods,
     "hertz_spheres": hertz_spheres,
     "rod_on_rod_3d": rod_on_rod_3d,
     "contact_parallel": contact_parallel,
