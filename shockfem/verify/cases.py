@@ -224,7 +224,7 @@ from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_
                             rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)  # (they use check and SIZES above)
 from .spring_cases import spring_oscillator  # noqa: E402
 from .material_point import material_point  # noqa: E402
-from .plasticity_cases import plastic_wave, taylor_bar  # noqa: E402
+from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d  # noqa: E402
 
 CASES = {
     "free_flight": free_flight,
@@ -246,5 +246,6 @@ CASES = {
     "material_point": material_point,
     "plastic_wave": plastic_wave,
     "taylor_bar": taylor_bar,
+    "taylor_bar_3d": taylor_bar_3d,
 }
 

@@ -1,11 +1,13 @@
 """A plastic run through ``run_scene``: the run directory carries what issue #4 promises (plastic
 strain in summary.json and the fields, final deformed shape, plastic and bulk-viscosity energy in
 the history) and the per-pair contact force histories."""
+import json
 import os
 
 import numpy as np
 import pytest
 
+from shockfem.errors import UnstableRun
 from shockfem.output.history import read_history_csv
 from shockfem.run import run_scene
 from shockfem.scene import resolve
@@ -38,3 +40,21 @@ def test_taylor_bar_run_directory(tmp_path):
     impulse = s["contacts"]["wall"]["impulse_on_a"][1]
     assert impulse == pytest.approx(momentum_lost, rel=1e-3)
     assert np.trapz(force, h["time"]) == pytest.approx(impulse, rel=0.03)
+
+
+def test_crushed_element_stops_the_run_and_keeps_its_outputs(tmp_path):
+    """At 3 km/s the copper bar's impact corner crushes: the stable step collapses (below 1e-3 of
+    its first value, at about 13 us) and the run stops with the body, element and time named,
+    status "unstable" and everything written so far kept."""
+    raw = taylor_scene(0.0008)
+    raw["bodies"][0]["velocity"] = [0.0, -3000.0]
+    raw["scene"]["end_time"] = 20e-6
+    with pytest.raises(UnstableRun) as info:
+        run_scene(resolve(raw), str(tmp_path), progress=False, quiet=True)
+    message = str(info.value)
+    assert "time step collapsed" in message and "body 'bar'" in message and "element" in message
+    s = json.loads((tmp_path / "summary.json").read_text())
+    assert s["status"] == "unstable" and "bar" in s["diagnosis"]
+    assert 0.0 < s["end_time"] < 20e-6
+    for name in ("fields.xdmf", "history.csv", "final_shape.xdmf"):
+        assert (tmp_path / name).exists(), name
