@@ -29,9 +29,12 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("scene")
     c.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
 
-    m = sub.add_parser("mesh", help="mesh a scene's bodies (cached in meshes/) and report sizes")
+    m = sub.add_parser("mesh", help="mesh a scene's bodies (cached in meshes/), report their quality and write "
+                                    "the mesh as XDMF")
     m.add_argument("scene")
     m.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    m.add_argument("--out", help="XDMF file to write (default: results/<scene>/mesh.xdmf)")
+    m.add_argument("--png", help="also render the mesh to this PNG (3D cut open by a quarter)")
 
     v = sub.add_parser("verify", help="verification against exact and published solutions")
     v.add_argument("names", nargs="*", help="cases to run (default: all)")
@@ -84,11 +87,21 @@ def _dispatch(args) -> int:
         return EXIT_OK
     if args.command == "mesh":
         from .geometry import build_mesh
+        from .geometry.quality import check_mesh
+        from .output.fields import write_mesh
         scene = _scene(args)
         meshed = build_mesh(scene)
         tdim = meshed.mesh.topology.dim
         print(f"{meshed.source}: {meshed.mesh.topology.index_map(tdim).size_global} cells, "
               f"regions: {', '.join(meshed.region_ids)}")
+        check_mesh(scene, meshed)
+        out = args.out or os.path.join("results", scene.name, "mesh.xdmf")
+        write_mesh(meshed, out)
+        print(f"wrote {out} (cell tags: body number; facet tags: region number, see the log above)")
+        if args.png:
+            from .output.render import render_mesh
+            render_mesh(meshed, args.png, scene.name)
+            print(f"wrote {args.png}")
         return EXIT_OK
     if args.command == "verify":
         from .verify import run_cases, CASES

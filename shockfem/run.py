@@ -14,6 +14,7 @@ from mpi4py import MPI
 
 from .errors import UnstableRun
 from .geometry import build_mesh
+from .geometry.quality import check_mesh
 from .model import build_model, describe
 from .output.fields import FieldWriter, von_mises, write_final_shape
 from .output.history import HistoryRecorder
@@ -55,6 +56,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     rd.write_scene_and_provenance(scene)
     say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
     meshed = build_mesh(scene, comm, log=say)
+    check_mesh(scene, meshed, log=say)
     model = build_model(scene, meshed)
     say("models that run:\n" + describe(model))
     solver = ExplicitSolver(model)

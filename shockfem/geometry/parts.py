@@ -1,4 +1,5 @@
-"""Parametric parts drawn with gmsh's built-in kernel, one function per shape.
+"""Structured meshes of the plain shapes, drawn with gmsh's built-in kernel, one function per shape
+(every other part, and these with local refinement, comes from its outline in ``catalog``).
 
 Each function adds one body to the current gmsh model and returns
 ``(entities, regions)``: the tags of its top-dimensional entities and, for every named
@@ -131,3 +132,22 @@ def sphere_2d(dims, position, size, quads):
 
 BUILDERS = {("cylinder", 2): cylinder_2d, ("box", 2): box_2d, ("sphere", 2): sphere_2d,
             ("cylinder", 3): cylinder_3d, ("box", 3): box_3d}
+SHAPED_ENDS = ("bottom_chamfer", "top_chamfer", "bottom_crown", "top_crown")
+
+
+def structured_builder(body, gdim: int):
+    """(builder, dims) of the structured mesh for a plain shape (flat-ended cylinder, plate, box,
+    axisymmetric sphere) with no local refinement, or None: the part is then drawn from its
+    outline (``catalog``), unstructured."""
+    d = body.dims
+    if body.shape == "box":
+        return BUILDERS[("box", gdim)], d
+    if body.refine:
+        return None
+    if body.shape == "cylinder" and not any(d.get(k) for k in SHAPED_ENDS):
+        return BUILDERS[("cylinder", gdim)], d
+    if body.shape == "plate":
+        return BUILDERS[("cylinder", gdim)], {"radius": d["radius"], "length": d["thickness"]}
+    if body.shape == "sphere" and gdim == 2:
+        return BUILDERS[("sphere", 2)], d
+    return None

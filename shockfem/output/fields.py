@@ -11,6 +11,8 @@ for measuring a deformed part directly (a Taylor bar's length and footprint).
 """
 from __future__ import annotations
 
+import os
+
 import numpy as np
 from dolfinx import fem, io
 
@@ -108,3 +110,18 @@ def write_final_shape(path: str, solver: ExplicitSolver):
             _CellFields(solver, CELL_FIELDS).write(f, solver.t)
     finally:
         x[:] = reference
+
+
+def write_mesh(meshed, path: str):
+    """The scene's mesh with its body (cell) and region (facet) tags, to ``path`` (XDMF)."""
+    mesh = meshed.mesh
+    if mesh.comm.rank == 0:
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    mesh.comm.barrier()
+    mesh.topology.create_connectivity(mesh.topology.dim - 1, mesh.topology.dim)
+    meshed.cell_tags.name = "body"
+    meshed.facet_tags.name = "region"
+    with io.XDMFFile(mesh.comm, path, "w") as f:
+        f.write_mesh(mesh)
+        f.write_meshtags(meshed.cell_tags)
+        f.write_meshtags(meshed.facet_tags)

@@ -11,19 +11,14 @@ import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..geometry.catalog import PARTS
 from ..units import UnitError, to_si
 
 KINEMATICS = ("axisymmetric", "plane-strain", "3d")
 ELEMENTS = {"axisymmetric": ("quad", "tri"), "plane-strain": ("quad", "tri"), "3d": ("hex", "tet")}
-SHAPES = ("cylinder", "box", "sphere", "mesh")
-# Named regions each shape provides, by kinematics family (2D or 3D).
-SHAPE_REGIONS = {
-    ("cylinder", 2): ("bottom", "top", "side", "axis"),
-    ("cylinder", 3): ("bottom", "top", "side"),
-    ("sphere", 2): ("bottom", "top", "axis"),      # bottom/top: the lower/upper hemisphere
-    ("box", 2): ("left", "right", "bottom", "top"),
-    ("box", 3): ("left", "right", "front", "back", "bottom", "top"),
-}
+SHAPES = tuple(PARTS) + ("box", "mesh")
+# Named regions of the shapes outside the catalog of parts (which names its own).
+BOX_REGIONS = {2: ("left", "right", "bottom", "top"), 3: ("left", "right", "front", "back", "bottom", "top")}
 BC_TYPES = ("fixed", "symmetry", "velocity", "force")
 DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
 FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
@@ -122,6 +117,7 @@ class Body:
     rigid: bool
     mesh_file: str | None = None
     regions: dict[str, int] = field(default_factory=dict)   # mesh bodies: name -> gmsh physical tag
+    refine: tuple[tuple[str, float, float], ...] = ()       # (region, element size, distance) near faces
 
 
 @dataclass(frozen=True)
@@ -221,6 +217,115 @@ class Scene:
 
     def material_of(self, body: Body) -> Material:
         return self.materials[body.material]
+
+
+def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[str], bool]:
+    """Read a catalogued part's dimensions into ``dims`` and check them together; returns the
+    fields the part accepts and whether the dimensions are sound (so its regions can be drawn)."""
+    for p in part.params:
+        if p.kind == "lengths":
+            raw = b.get(p.name)
+            if not isinstance(raw, list) or not raw:
+                ck.fail(f"{path}.{p.name}", f"missing (a list of lengths: {p.doc})")
+                dims[p.name] = [1.0]
+                continue
+            values = []
+            for j, item in enumerate(raw):
+                values.append(ck.quantity({"v": item}, "v", "", "length", positive=True))
+                if ck.problems and ck.problems[-1].startswith(".v:"):
+                    ck.problems[-1] = f"{path}.{p.name}[{j}]" + ck.problems[-1][2:]
+            dims[p.name] = values
+        else:
+            dims[p.name] = ck.quantity(b, p.name, path, "length" if p.kind == "length" else "dimensionless",
+                                       default=p.default, positive=p.minimum == "positive",
+                                       nonnegative=p.minimum == "nonnegative")
+            if p.kind == "count":
+                if p.name == "segments" and (dims[p.name] != int(dims[p.name]) or dims[p.name] < 1):
+                    ck.fail(f"{path}.{p.name}", f"must be a whole number >= 1, got {b.get(p.name)!r}")
+    shaped = any(dims.get(k) for k in ("bottom_chamfer", "top_chamfer", "bottom_crown", "top_crown"))
+    if kin == "plane-strain" and (part.name != "cylinder" or shaped):
+        ck.fail(f"{path}.shape", f"a {part.name} is a part of revolution: use kinematics 'axisymmetric' or '3d' "
+                                 "(or shape = 'box' / 'mesh' in plane strain)")
+    before = len(ck.problems)
+    if part.name != "clamp_ring":         # a clamp ring is checked against the body it fits
+        for fieldname, message in part.check(dims):
+            ck.fail(f"{path}.{fieldname}", message)
+    accepted = {p.name for p in part.params}
+    if part.name == "sphere":
+        dims["pole_element_size"] = ck.quantity(b, "pole_element_size", path, "length", default=0.0,
+                                                nonnegative=True)
+        accepted.add("pole_element_size")
+    if part.name == "clamp_ring":
+        accepted.add("fits")
+    return accepted, len(ck.problems) == before
+
+
+def _refinements(ck, b: dict, path: str, h: float) -> tuple:
+    """``refine = [{region, size, distance}]``: a finer element size near named faces, growing
+    linearly to the body's element size over ``distance`` (default 5 element sizes)."""
+    out = []
+    raw = b.get("refine", [])
+    if not isinstance(raw, list):
+        ck.fail(f"{path}.refine", "must be a list of {region, size, distance} tables")
+        return ()
+    for j, r in enumerate(raw):
+        rp = f"{path}.refine[{j}]"
+        if not isinstance(r, dict):
+            ck.fail(rp, "must be a table {region = ..., size = ..., distance = ...}")
+            continue
+        ck.unknown(r, ("region", "size", "distance"), rp)
+        region = r.get("region")
+        if not isinstance(region, str):
+            ck.fail(f"{rp}.region", "missing (the name of one of the body's regions)")
+        size = ck.quantity(r, "size", rp, "length", positive=True)
+        if h and size >= h:
+            ck.fail(f"{rp}.size", f"must be smaller than the body's element_size {h:g} m to refine, got {size:g} m")
+        distance = ck.quantity(r, "distance", rp, "length", default=5 * size, positive=True)
+        out.append((region if isinstance(region, str) else "", size, distance))
+    return tuple(out)
+
+
+def _fit_clamp_rings(ck, raw: dict, bodies: list, gdim: int) -> list:
+    """Give each clamp ring its bore from the body it fits: that body's outer radius less the
+    interference; the ring must be thicker than the interference and lie along that body."""
+    out = []
+    by_name = {b.name: b for b in bodies}
+    for i, b in enumerate(bodies):
+        if b.shape != "clamp_ring":
+            out.append(b)
+            continue
+        path = f"bodies[{i}]"
+        fits = raw["bodies"][i].get("fits")
+        target = by_name.get(fits) if isinstance(fits, str) else None
+        outer = None if target is None else target.dims.get("outer_radius", target.dims.get("radius"))
+        dims = dict(b.dims)
+        if target is None or outer is None or target.shape not in PARTS:
+            ck.fail(f"{path}.fits", f"must name the body the ring is shrunk onto (a part of revolution), got {fits!r}")
+            dims["inner_radius"] = 1.0
+        else:
+            dims["inner_radius"] = outer - dims["interference"]
+            if dims["interference"] >= dims["thickness"]:
+                ck.fail(f"{path}.interference", f"the interference ({dims['interference']:g} m) must be smaller "
+                                                 f"than the ring's thickness ({dims['thickness']:g} m)")
+            if dims["interference"] >= outer:
+                ck.fail(f"{path}.interference", f"the ring does not fit: an interference of "
+                                                 f"{dims['interference']:g} m on a radius of {outer:g} m")
+            z0, z1 = b.position[-1], b.position[-1] + dims["length"]
+            t0 = target.position[-1]
+            t1 = t0 + target.dims.get("length", 0.0)
+            if z0 < t0 - 1e-12 or z1 > t1 + 1e-12:
+                ck.fail(f"{path}.position", f"the ring (z from {z0:g} to {z1:g} m) does not fit along {fits} "
+                                            f"(z from {t0:g} to {t1:g} m)")
+        out.append(dataclasses.replace(b, dims=dims))
+    return out
+
+
+def _regions_of(body, gdim: int) -> tuple[str, ...]:
+    if body.shape == "mesh":
+        return tuple(body.regions)
+    if body.shape == "box":
+        return BOX_REGIONS[gdim]
+    return PARTS[body.shape].regions(body.dims, gdim)
 
 
 class _Checker:
@@ -395,6 +500,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         ck.fail("bodies", "needs at least one [[bodies]] entry")
         raw_bodies = []
     names = set()
+    sound: dict[str, bool] = {}     # parts whose dimensions passed their checks
     for i, b in enumerate(raw_bodies):
         path = f"bodies[{i}]"
         if not isinstance(b, dict):
@@ -408,23 +514,14 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             ck.fail(f"{path}.name", f"duplicate body name {bname!r}")
         names.add(bname)
         shape = ck.choice(b, "shape", path, SHAPES)
-        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "rigid"}
+        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "rigid", "refine"}
         dims: dict[str, float] = {}
         mesh_file = None
         regions: dict[str, int] = {}
-        if shape == "cylinder":
-            allowed |= {"radius", "length"}
-            dims["radius"] = ck.quantity(b, "radius", path, "length", positive=True)
-            dims["length"] = ck.quantity(b, "length", path, "length", positive=True)
-        elif shape == "sphere":
-            allowed |= {"radius", "pole_element_size"}
-            dims["radius"] = ck.quantity(b, "radius", path, "length", positive=True)
-            dims["pole_element_size"] = ck.quantity(b, "pole_element_size", path, "length", default=0.0,
-                                                    nonnegative=True)
-            if kin != "axisymmetric":
-                ck.fail(f"{path}.shape", "spheres are axisymmetric in this version (kinematics = 'axisymmetric'); "
-                                         "otherwise mesh the sphere in gmsh and use shape = 'mesh'")
-        elif shape == "box":
+        if shape in PARTS:
+            accepted, sound[bname] = _part_dims(ck, PARTS[shape], b, path, kin, dims)
+            allowed |= accepted
+        if shape == "box":
             allowed |= {"size"}
             size = ck.vector(b, "size", path, "length", gdim, [1.0] * gdim)
             if "size" not in b:
@@ -456,6 +553,9 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                         default=None if shape != "mesh" else 0.0)
         if shape == "cylinder" and h > 0 and h > dims.get("radius", h):
             ck.fail(f"{path}.element_size", "must not exceed the radius (at least one element across)")
+        refine = _refinements(ck, b, path, h)
+        if refine and shape in ("box", "mesh"):
+            ck.fail(f"{path}.refine", f"local refinement is drawn on the catalogued parts, not on a {shape}")
         pos = ck.vector(b, "position", path, "length", gdim, [0.0] * gdim)
         vel = ck.vector(b, "velocity", path, "velocity", gdim, [0.0] * gdim)
         spin = ck.quantity(b, "spin", path, "angular_velocity", default=0.0)
@@ -471,10 +571,15 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             ck.fail(f"{path}.rigid", f"must be true or false, got {rigid!r}")
             rigid = False
         bodies.append(Body(bname, mat if mat in materials else "", shape, dims, h, pos, vel, spin,
-                           rigid, mesh_file, regions))
+                           rigid, mesh_file, regions, refine))
 
-    body_regions = {b.name: (tuple(b.regions) if b.shape == "mesh" else SHAPE_REGIONS.get((b.shape, gdim), ()))
-                    for b in bodies}
+    bodies = _fit_clamp_rings(ck, raw, bodies, gdim)
+    body_regions = {b.name: _regions_of(b, gdim) if sound.get(b.name, True) else () for b in bodies}
+    for i, b in enumerate(bodies):
+        for j, (region, _, _) in enumerate(b.refine):
+            if region not in body_regions[b.name]:
+                ck.fail(f"bodies[{i}].refine[{j}].region", f"{b.name} has no region {region!r} "
+                                                          f"(it has: {', '.join(body_regions[b.name])})")
     boundaries: list[Boundary] = []
     axes = "xyz"[:gdim] if kin != "axisymmetric" else "rz"
     for path, bc in ck.entries(raw, "boundary"):

@@ -21,7 +21,8 @@ def _problems(raw):
 def test_resolves_units_to_si():
     s = resolve(base())
     b = s.bodies[0]
-    assert b.dims == {"radius": 0.005, "length": 0.1}
+    assert b.dims["radius"] == 0.005 and b.dims["length"] == 0.1
+    assert b.dims["bottom_crown"] == 0.0 and b.dims["top_chamfer"] == 0.0     # catalogue defaults: flat ends
     assert b.velocity == (0.0, -5.0)
     assert s.end_time == pytest.approx(1e-5)
     assert s.safety_factor == 0.9          # LS-DYNA's default TSSFAC
