@@ -12,7 +12,7 @@ Conventions: z = 0 is the part's bottom, the axis is r = 0 (z in 3D), lengths ar
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -25,7 +25,7 @@ class Param:
     name: str
     doc: str
     default: float | None = None      # None: required
-    kind: str = "length"              # length | count | lengths (a list of lengths)
+    kind: str = "length"              # length | number | count (a whole number >= 1) | lengths (a list)
     minimum: str = "positive"         # positive | nonnegative
 
 
@@ -40,7 +40,6 @@ class Part:
     cut_3d: Callable[[dict, list[int], tuple], list[int]] | None = None     # (dims, volumes, origin)
     cut_region: str = "cut"
     regions_3d_only: tuple[str, ...] = ()
-    notes: tuple[str, ...] = field(default=())
 
     def regions(self, dims: dict, gdim: int) -> tuple[str, ...]:
         names = [r for r in self.profile(dims).regions() if not (gdim == 3 and r == "axis")]
@@ -190,8 +189,10 @@ def _split_cone_volume(d, gdim):
     v = math.pi * Ro * Ro * L - math.pi * L * (r1 * r1 + r1 * r2 + r2 * r2) / 3
     n, w = int(d["segments"]), d["slot_width"]
     if gdim == 3 and n > 1:
-        bore = lambda z: r1 + (r2 - r1) * z / L                                   # noqa: E731
-        v -= n * _gauss(lambda z: np.array([_slot_area(Ro, w) - _slot_area(b, w) for b in bore(z)]), 0.0, L)
+        def slot_section(z):
+            bore = r1 + (r2 - r1) * z / L
+            return np.array([_slot_area(Ro, w) - _slot_area(b, w) for b in bore])
+        v -= n * _gauss(slot_section, 0.0, L)
     return v
 
 
@@ -412,15 +413,17 @@ PARTS: dict[str, Part] = {p.name: p for p in [
     Part("plate", "thick circular plate (a rectangular plate is shape = 'box' in 3D)",
          (P("radius", "radius"), P("thickness", "thickness")),
          _plate_profile, lambda d, g: math.pi * d["radius"] ** 2 * d["thickness"]),
-    Part("sphere", "sphere, bottom pole at z = 0", (P("radius", "radius"),),
+    Part("sphere", "sphere, bottom pole at z = 0",
+         (P("radius", "radius"),
+          P("pole_element_size", "element size at the poles, axisymmetric (0: element_size)", 0.0,
+            minimum="nonnegative")),
          _sphere_profile, lambda d, g: 4.0 / 3.0 * math.pi * d["radius"] ** 3),
     Part("split_cone", "pulse-shaping fixture: a cylinder whose bore narrows from entry (top) to exit (bottom), "
                        "cut by axial slots into segments in 3D",
          (P("outer_radius", "outer radius"), P("length", "length"), P("entry_radius", "bore radius at the top"),
           P("exit_radius", "bore radius at the bottom"), P("segments", "number of segments (3D)", 4, "count"),
           P("slot_width", "width of the axial slots (3D)", 0.001)),
-         _split_cone_profile, _split_cone_volume, _split_cone_check, _split_cone_slots, "slots", ("slots",),
-         ("axisymmetric form: no slots; the segments' freedom to open shows only in 3D",)),
+         _split_cone_profile, _split_cone_volume, _split_cone_check, _split_cone_slots, "slots", ("slots",)),
     Part("clamp_ring", "ring shrunk onto a body (fits = its name) with a radial interference that sets the preload",
          (P("thickness", "radial wall thickness"), P("length", "length"),
           P("interference", "radial interference with the body it fits", 0.0, minimum="nonnegative")),
@@ -434,13 +437,12 @@ PARTS: dict[str, Part] = {p.name: p for p in [
           P("cavity_centre_radius", "radius at which the cavity's section is centred"),
           P("cavity_height", "height of the cavity's centre (0: mid-length)", 0.0, minimum="nonnegative"),
           P("orifice_radius", "radius of the orifice (3D; 0: none)", 0.0, minimum="nonnegative")),
-         _dashpot_profile, _dashpot_volume, _dashpot_check, _dashpot_orifice, "orifice", ("orifice",),
-         ("axisymmetric form: no orifice (a round hole off the axis is not axisymmetric)",)),
+         _dashpot_profile, _dashpot_volume, _dashpot_check, _dashpot_orifice, "orifice", ("orifice",)),
     Part("projectile", "penetrator: tangent-ogive nose of crh calibre-radius-head, blunted by a small flat "
                        "(meplat) at z = 0, shank, flat base, "
                        "optional internal cavity below the base",
          (P("radius", "shank radius (half the calibre)"), P("length", "overall length"),
-          P("crh", "ogive radius over calibre", 3.0, "count"),
+          P("crh", "ogive radius over calibre", 3.0, "number"),
           P("meplat_radius", "radius of the flat tip (0: radius / 20)", 0.0, minimum="nonnegative"),
           P("cavity_radius", "radius of the internal cavity (0: solid)", 0.0, minimum="nonnegative"),
           P("cavity_length", "length of the cavity", 0.0, minimum="nonnegative"),

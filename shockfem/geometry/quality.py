@@ -61,14 +61,11 @@ def aspect_ratio(xc: np.ndarray, cell: str) -> np.ndarray:
 
 
 def characteristic_lengths(xc: np.ndarray, cell: str) -> np.ndarray:
-    from ..solver.kernels import characteristic_length
+    from ..solver.kernels import characteristic_lengths as lengths
     kind = {"triangle": 0, "quadrilateral": 1, "tetrahedron": 2, "hexahedron": 3}[cell]
-    pad = np.zeros((xc.shape[1], 3))
-    out = np.empty(len(xc))
-    for i, x in enumerate(xc):        # one call per cell: this runs once per mesh, not per step
-        pad[:, :x.shape[1]] = x
-        out[i] = characteristic_length(pad, kind, xc.shape[1])
-    return out
+    padded = np.zeros(xc.shape[:2] + (3,))
+    padded[:, :, :xc.shape[2]] = xc
+    return lengths(padded, kind)
 
 
 @dataclass

@@ -239,9 +239,8 @@ def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[
             dims[p.name] = ck.quantity(b, p.name, path, "length" if p.kind == "length" else "dimensionless",
                                        default=p.default, positive=p.minimum == "positive",
                                        nonnegative=p.minimum == "nonnegative")
-            if p.kind == "count":
-                if p.name == "segments" and (dims[p.name] != int(dims[p.name]) or dims[p.name] < 1):
-                    ck.fail(f"{path}.{p.name}", f"must be a whole number >= 1, got {b.get(p.name)!r}")
+            if p.kind == "count" and (dims[p.name] != int(dims[p.name]) or dims[p.name] < 1):
+                ck.fail(f"{path}.{p.name}", f"must be a whole number >= 1, got {b.get(p.name)!r}")
     shaped = any(dims.get(k) for k in ("bottom_chamfer", "top_chamfer", "bottom_crown", "top_crown"))
     if kin == "plane-strain" and (part.name != "cylinder" or shaped):
         ck.fail(f"{path}.shape", f"a {part.name} is a part of revolution: use kinematics 'axisymmetric' or '3d' "
@@ -251,10 +250,6 @@ def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[
         for fieldname, message in part.check(dims):
             ck.fail(f"{path}.{fieldname}", message)
     accepted = {p.name for p in part.params}
-    if part.name == "sphere":
-        dims["pole_element_size"] = ck.quantity(b, "pole_element_size", path, "length", default=0.0,
-                                                nonnegative=True)
-        accepted.add("pole_element_size")
     if part.name == "clamp_ring":
         accepted.add("fits")
     return accepted, len(ck.problems) == before

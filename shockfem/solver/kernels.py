@@ -307,6 +307,15 @@ def characteristic_length(xe, cell_kind, nn):
 
 
 @njit(cache=True)
+def characteristic_lengths(xc, cell_kind):
+    """``characteristic_length`` of every cell; xc (cells, vertices, 3) vertex coordinates."""
+    out = np.empty(xc.shape[0])
+    for c in range(xc.shape[0]):
+        out[c] = characteristic_length(xc[c], cell_kind, xc.shape[1])
+    return out
+
+
+@njit(cache=True)
 def cell_orientation(dofmap, x, dN):
     """+1 or -1 per cell: the sign of det(J) at the first point in the reference configuration.
 

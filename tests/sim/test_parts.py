@@ -26,7 +26,8 @@ def _load(path, kinematics="axisymmetric", element=None, coarsen=1.0):
                 b["position"] = [0, 0, b["position"][1]]
     for b in raw["bodies"]:
         b["element_size"] = f"{coarsen} * {b['element_size']}"
-        b.pop("refine", None) if coarsen != 1.0 else None
+        if coarsen != 1.0:
+            b.pop("refine", None)
     return resolve(raw, os.path.dirname(path))
 
 
