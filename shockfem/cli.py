@@ -36,6 +36,22 @@ def _parser() -> argparse.ArgumentParser:
     m.add_argument("--out", help="XDMF file to write (default: results/<scene>/mesh.xdmf)")
     m.add_argument("--png", help="also render the mesh to this PNG (3D cut open by a quarter)")
 
+    s = sub.add_parser("metrics", help="(re)compute the shock metrics of a run directory: pulses, spectra, "
+                                       "stage table (into its summary.json, with plots)")
+    s.add_argument("run_dir")
+    s.add_argument("--cfc", help="filter class instead of the scene's: 60, 180, 600, 1000 or none")
+
+    o = sub.add_parser("modes", help="natural frequencies and mode shapes of a body (SLEPc)")
+    o.add_argument("scene")
+    o.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    o.add_argument("--body", help="the body (default: the scene's only deformable body)")
+    o.add_argument("--count", type=int, default=10, help="elastic modes to find (default 10)")
+    o.add_argument("--degree", type=int, choices=(1, 2), default=1,
+                   help="element degree: 2 for thin plates and shells, which lock with linear solids")
+    o.add_argument("--free", action="store_true", help="ignore the scene's boundary conditions (free-free)")
+    o.add_argument("--mass", choices=("consistent", "lumped"), default="consistent")
+    o.add_argument("--out", help="directory for modes.json and modes.xdmf (default: results/<scene>/modes)")
+
     v = sub.add_parser("verify", help="verification against exact and published solutions")
     v.add_argument("names", nargs="*", help="cases to run (default: all)")
     v.add_argument("--list", action="store_true", help="list the cases")
@@ -103,6 +119,10 @@ def _dispatch(args) -> int:
             render_mesh(meshed, args.png, scene.name)
             print(f"wrote {args.png}")
         return EXIT_OK
+    if args.command == "metrics":
+        return _metrics(args)
+    if args.command == "modes":
+        return _modes(args)
     if args.command == "verify":
         from .verify import run_cases, CASES
         if args.list:
@@ -122,6 +142,54 @@ def _dispatch(args) -> int:
                 json.dump(results, fh, indent=2, default=float)
         return EXIT_OK
     raise AssertionError(args.command)
+
+
+def _modes(args) -> int:
+    from .geometry import build_mesh
+    from .modal.eigen import body_modes
+    from .modal.labels import label_modes
+    from .modal.output import write_modes
+    scene = _scene(args)
+    deformable = [b.name for b in scene.bodies if not b.rigid]
+    body = args.body or (deformable[0] if len(deformable) == 1 else None)
+    if body is None:
+        raise ModelError(f"--body: the scene has {len(deformable)} deformable bodies ({', '.join(deformable)}); "
+                         f"name one")
+    if args.count < 1:
+        raise ModelError(f"--count: must be >= 1, got {args.count}")
+    meshed = build_mesh(scene)
+    modes = body_modes(scene, meshed, body, args.count, args.degree, not args.free, args.mass)
+    labels = label_modes(modes, meshed.cell_tags.find([b.name for b in scene.bodies].index(body) + 1))
+    out = args.out or os.path.join("results", scene.name, "modes")
+    data = write_modes(out, modes, labels)
+    print(f"{body}: {data['boundary']} ({'; '.join(modes.conditions) or 'no conditions'}), {scene.kinematics}, "
+          f"degree-{args.degree} elements, {args.mass} mass, {modes.dofs} dofs, {modes.rigid} rigid-body modes, "
+          f"{modes.wall_time_s:.2f} s")
+    for m in data["modes"]:
+        print(f"  mode {m['mode']:3d} {m['frequency_hz']:14.6g} Hz  {m['label']}")
+    print(f"wrote {os.path.join(out, 'modes.json')} and modes.xdmf")
+    return EXIT_OK
+
+
+def _metrics(args) -> int:
+    from .metrics.filters import CFC_CLASSES
+    from .metrics.report import shock_report
+    from .scene import SceneError
+    problems = []
+    for name in ("resolved_scene.json", "summary.json", "history.csv"):
+        if not os.path.exists(os.path.join(args.run_dir, name)):
+            problems.append(f"{args.run_dir}: no {name} (give the directory of a shockfem run)")
+    cfc = None
+    if args.cfc is not None:
+        cfc = 0 if args.cfc == "none" else int(args.cfc) if args.cfc.isdigit() else -1
+        if cfc not in CFC_CLASSES + (0,):
+            problems.append(f"--cfc: must be one of {', '.join(map(str, CFC_CLASSES))} or none, got {args.cfc!r}")
+    if problems:
+        raise SceneError(problems)
+    _, lines = shock_report(args.run_dir, cfc)
+    print("\n".join(lines) if lines else "no test articles, accelerometers or contact events in this run")
+    print(f"metrics in {os.path.join(args.run_dir, 'summary.json')} (key 'shock')")
+    return EXIT_OK
 
 
 if __name__ == "__main__":

@@ -66,6 +66,8 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
         f"(safety factor {scene.safety_factor})")
     history = HistoryRecorder(solver)
+    for note in history.notes:
+        say(note)
     fields = FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields) if write_fields else None
     history.record()
     if fields:
@@ -124,12 +126,26 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
         rd.write_json("summary.json", summary)
         if comm.rank == 0 and len(history.rows) > 1:
             plot_histories(out_dir, [b.name for b in scene.bodies])
+            summary["shock"] = _shock_metrics(out_dir, say)
         say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
             f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
             f"{solver.energy.balance_error:.2e}")
         say(f"results in {out_dir}")
         rd.close()
     return RunResult(summary, solver, history, out_dir)
+
+
+def _shock_metrics(out_dir: str, say) -> dict | None:
+    """Pulse metrics, spectra and the stage table (``metrics/report.py``), added to summary.json."""
+    from .metrics.report import shock_report
+    try:
+        result, lines = shock_report(out_dir)
+    except ValueError as e:        # a record too short or too coarse to measure: say so, keep the run
+        say(f"shock metrics not computed: {e}")
+        return None
+    for line in lines:
+        say(line)
+    return result
 
 
 def _body_maxima(solver: ExplicitSolver, per_cell: np.ndarray) -> np.ndarray:

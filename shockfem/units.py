@@ -50,6 +50,12 @@ def registry() -> pint.UnitRegistry:
     return ureg
 
 
+def _a(dimension: str) -> str:
+    """'a velocity', 'an acceleration'."""
+    words = dimension.replace("_", " ")
+    return f"{'an' if words[0] in 'aeiou' else 'a'} {words}"
+
+
 def to_si(value, dimension: str) -> float:
     """Convert a scene value (number or string with unit) to an SI float.
 
@@ -67,7 +73,7 @@ def to_si(value, dimension: str) -> float:
         (like '12 m/s' or '1600 ft/s'), got '3 kg'".
     """
     if isinstance(value, bool):
-        raise UnitError(f"expected a {dimension.replace('_', ' ')}, got {value!r}")
+        raise UnitError(f"expected {_a(dimension)}, got {value!r}")
     if isinstance(value, (int, float)):
         return float(value)
     if not isinstance(value, str):
@@ -81,7 +87,7 @@ def to_si(value, dimension: str) -> float:
         return float(q)
     want = ureg.Quantity(1, SI_UNITS[dimension] or "dimensionless")
     if q.dimensionality != want.dimensionality:
-        raise UnitError(f"expected a {dimension.replace('_', ' ')} (like '{_example(dimension)}'), "
+        raise UnitError(f"expected {_a(dimension)} (like '{_example(dimension)}'), "
                         f"got {value!r}")
     return float(q.to(want.units).magnitude)
 

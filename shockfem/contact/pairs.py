@@ -239,7 +239,14 @@ class ContactPair:
         if closed and (not self.intervals or self.intervals[-1][1] is not None):
             self.intervals.append([t, None])
             if self.v_before is None:
-                self.v_before = body_velocities()
+                # the mean velocities at t_{n+1} already hold half of this step's impulse (and all
+                # of any earlier one): take back what this pair has transferred
+                transferred = self.impulse - 0.5 * dt * (self.force_a + self.friction_a)
+                self.v_before = body_velocities().copy()
+                masses = self.model.body_mass
+                self.v_before[self.a.body] -= transferred / masses[self.a.body]
+                if self.b is not None:
+                    self.v_before[self.b.body] += transferred / masses[self.b.body]
         elif not closed and self.intervals and self.intervals[-1][1] is None:
             self.intervals[-1][1] = t
             self.v_after = body_velocities()

@@ -78,3 +78,28 @@ def internal_force_form(sigma6, w, kinematics: str, thickness: float = 1.0):
     if kinematics == "axisymmetric":
         integrand += sigma6[2] * w[0] / ufl.SpatialCoordinate(mesh)[0]
     return integrand * measure_weight(mesh, kinematics, thickness)
+
+
+def strain_components(u, kinematics: str):
+    """(in-plane or 3D small strain tensor, hoop strain or 0) of a displacement ``u``."""
+    eps = ufl.sym(ufl.grad(u))
+    if kinematics == "axisymmetric":
+        return eps, u[0] / ufl.SpatialCoordinate(u.ufl_function_space().mesh)[0]
+    return eps, 0
+
+
+def elastic_energy_form(u, w, lam, mu, kinematics: str, thickness: float = 1.0):
+    """k(u, w) = int lam tr eps(u) tr eps(w) + 2 mu eps(u) : eps(w) dV, the hoop strain u_r / r
+    counted in axisymmetry (the stiffness of modal analysis; the explicit solver's is the compiled
+    kernel)."""
+    mesh = u.ufl_function_space().mesh
+    eu, hu = strain_components(u, kinematics)
+    ew, hw = strain_components(w, kinematics)
+    integrand = lam * (ufl.tr(eu) + hu) * (ufl.tr(ew) + hw) + 2 * mu * (ufl.inner(eu, ew) + hu * hw)
+    return integrand * measure_weight(mesh, kinematics, thickness)
+
+
+def inertia_form(u, w, rho, kinematics: str, thickness: float = 1.0):
+    """m(u, w) = int rho u . w dV (the consistent mass)."""
+    mesh = u.ufl_function_space().mesh
+    return rho * ufl.dot(u, w) * measure_weight(mesh, kinematics, thickness)

@@ -1,6 +1,10 @@
-"""Time histories: per-body mean velocity and acceleration, contact forces, energies; HDF5 and CSV.
+"""Time histories: per-body mean velocity and acceleration, accelerometer velocities, contact
+forces, energies; HDF5 and CSV.
 
 Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes.
+Accelerometers record the *velocity* of their node: the shock metrics take acceleration as
+its interval mean between samples, which cannot alias the stress waves above the sampling
+rate (``metrics/signals.py``).
 """
 from __future__ import annotations
 
@@ -8,6 +12,8 @@ import csv
 
 import h5py
 import numpy as np
+
+from mpi4py import MPI
 
 from ..solver.explicit import ExplicitSolver
 
@@ -25,6 +31,10 @@ class HistoryRecorder:
         for b in m.scene.bodies:
             self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
             self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
+        self.meters = [_place_accelerometer(solver, am) for am in m.scene.shock.accelerometers]
+        self.notes = [note for _, _, note in self.meters]
+        for am in m.scene.shock.accelerometers:
+            self.columns += [(f"accelerometer.{am.name}.v_{a}", "m/s") for a in axes]
         for c in m.scene.contacts:
             # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
             self.columns += [(f"contact.{c.name}.normal_{a}", "N") for a in axes]
@@ -40,6 +50,9 @@ class HistoryRecorder:
         row = [s.t]
         for vb, ab in zip(v, a):
             row += list(vb) + list(ab)
+        for node, owner, _ in self.meters:
+            vn = s.v[node] + 0.5 * s.dt * s.a[node] if s.comm.rank == owner else np.zeros(s.model.gdim)
+            row += list(s.comm.allreduce(vn, op=MPI.SUM) if s.parallel else vn)
         for pair in s.contacts:
             row += list(pair.force_a) + list(pair.friction_a)
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
@@ -64,6 +77,26 @@ class HistoryRecorder:
             w = csv.writer(fh)
             w.writerow([f"{n} [{u}]" for n, u in self.columns])
             w.writerows(data.tolist())
+
+
+def _place_accelerometer(solver: ExplicitSolver, meter) -> tuple[int, int, str]:
+    """(local node, owning rank, note): the owned node of the accelerometer's body nearest to its point."""
+    m = solver.model
+    body = [b.name for b in m.scene.bodies].index(meter.body)
+    candidates = np.flatnonzero(solver.owned & (m.node_body == body))
+    point = np.asarray(meter.point)
+    if len(candidates):
+        d = np.linalg.norm(m.X0[candidates] - point, axis=1)
+        best = int(candidates[np.argmin(d)])
+        local = (float(d.min()), solver.comm.rank)
+    else:
+        best, local = -1, (np.inf, solver.comm.rank)
+    distance, owner = solver.comm.allreduce(local, op=MPI.MINLOC) if solver.parallel else local
+    where = m.X0[best] if solver.comm.rank == owner else np.zeros(m.gdim)
+    where = solver.comm.allreduce(where, op=MPI.SUM) if solver.parallel else where
+    note = (f"accelerometer {meter.name}: node of {meter.body} at {np.array2string(where, precision=5)} m, "
+            f"{distance:.3g} m from the requested point")
+    return best, owner, note
 
 
 def read_history_csv(path: str) -> dict[str, np.ndarray]:

@@ -46,3 +46,60 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
     fig.suptitle("Rigid-body motion of each body (mass-weighted means)")
     written.append(_save(fig, os.path.join(run_dir, "bodies.png")))
     return written
+
+
+G0 = 9.80665
+
+
+def plot_pulse(path: str, name: str, arrays: dict, metrics: dict) -> str:
+    """Acceleration pulse of a channel in g: unfiltered, filtered, the ideal pulse and its tolerance band."""
+    t = arrays["t"] * 1e3
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.plot(t, arrays["a_raw"] / G0, color="0.7", lw=0.7, label="unfiltered")
+    ax.plot(t, arrays["a"] / G0, color="C0", lw=1.4, label=metrics["filter"])
+    if "ideal" in arrays:
+        on = arrays["monitored"]
+        ax.plot(t, arrays["ideal"] / G0, "k--", lw=1, label=metrics["tolerance"]["against"])
+        ax.fill_between(t[on], arrays["lower"][on] / G0, arrays["upper"][on] / G0, color="C2", alpha=0.15,
+                        label="tolerance band " + ("PASS" if metrics["tolerance"]["passed"] else "FAIL"))
+    p = metrics["pulse"]
+    ax.axvspan(p["start"] * 1e3, p["end"] * 1e3, color="C1", alpha=0.07, label="duration above 10% of peak")
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("acceleration [g]")
+    ax.set_title(f"{name}: peak {p['peak_g']:.4g} g, {p['duration'] * 1e3:.3g} ms, "
+                 f"dV {abs(p['velocity_change']):.4g} m/s, {metrics['shape']['classified']}")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return _save(fig, path)
+
+
+def plot_srs(path: str, name: str, spectrum) -> str:
+    """Maximax shock response spectrum in g against natural frequency (log-log)."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    f = spectrum.frequency
+    ax.loglog(f, spectrum.maximax / G0, color="C0", lw=1.6, label="maximax")
+    ax.loglog(f, spectrum.positive / G0, color="C1", lw=0.8, ls="--", label="positive")
+    ax.loglog(f, spectrum.negative / G0, color="C2", lw=0.8, ls=":", label="negative")
+    ax.set_xlabel("natural frequency [Hz]")
+    ax.set_ylabel("peak absolute acceleration [g]")
+    ax.set_title(f"{name}: shock response spectrum, Q = {spectrum.q:g}")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    return _save(fig, path)
+
+
+def plot_stages(path: str, stages: list[dict]) -> str:
+    """Velocity ratio (struck body's speed over the launch speed) after each contact event."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    labels = [f"{s['striker']} -> {s['struck']}" for s in stages]
+    ratios = [s["velocity_ratio"] for s in stages]
+    bars = ax.bar(range(len(stages)), ratios, color="C0")
+    for bar, s in zip(bars, stages):
+        ax.annotate(f"e = {s['restitution']:.3f}", (bar.get_x() + bar.get_width() / 2, bar.get_height()),
+                    ha="center", va="bottom", fontsize=8)
+    ax.set_xticks(range(len(stages)))
+    ax.set_xticklabels(labels, rotation=20, fontsize=8)
+    ax.set_ylabel("speed after / launch speed")
+    ax.set_title("Velocity gain by stage (restitution above each bar)")
+    ax.grid(alpha=0.3, axis="y")
+    return _save(fig, path)

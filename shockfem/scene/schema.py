@@ -185,6 +185,41 @@ class Outputs:
     history_interval: float
 
 
+CFC_CLASSES = (60, 180, 600, 1000)       # SAE J211-1 channel frequency classes [Hz]
+PULSE_SHAPES = ("half-sine", "terminal-peak sawtooth", "trapezoid")
+
+
+@dataclass(frozen=True)
+class Accelerometer:
+    """Acceleration at a point: the node of ``body`` nearest to ``point`` (scene coordinates at t = 0)."""
+    name: str
+    body: str
+    point: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class PulseSpec:
+    """The test pulse a test article must see (MIL-STD-810 Method 516 classical pulse)."""
+    shape: str
+    peak: float           # [m/s^2]
+    duration: float       # [s], foot to foot
+
+
+@dataclass(frozen=True)
+class Shock:
+    """What a shock-test engineer reads off the run (``metrics/``): pulses of the test articles
+    and accelerometers along ``axis``, filtered by CFC class ``cfc`` (0: unfiltered), checked
+    against ``spec``; the shock response spectrum at quality factor ``srs_q``."""
+    test_articles: tuple[str, ...] = ()
+    axis: str = ""                            # "" : the last axis (z)
+    cfc: int = 1000
+    srs_q: float = 10.0
+    srs_frequencies: tuple[float, float] = (10.0, 10000.0)   # [Hz]
+    srs_points_per_octave: int = 12
+    accelerometers: tuple[Accelerometer, ...] = ()
+    spec: PulseSpec | None = None
+
+
 @dataclass(frozen=True)
 class Scene:
     name: str
@@ -206,6 +241,7 @@ class Scene:
     springs: tuple[Spring, ...] = ()
     gravity: tuple[float, ...] = ()              # [m/s^2]; empty or zero: none
     bulk_viscosity: tuple[float, float] = (1.5, 0.06)   # (Q1 quadratic, Q2 linear), LS-DYNA's defaults
+    shock: Shock = Shock()
     raw: dict = field(repr=False, default_factory=dict)
 
     @property
@@ -453,7 +489,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     import os
 
     ck = _Checker()
-    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "damping", "outputs"), "")
+    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "damping", "outputs",
+                     "shock"), "")
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity",
@@ -623,13 +660,95 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     fi = ck.quantity(o, "field_interval", "outputs", "time", default=end_time / 10, positive=True)
     hi = ck.quantity(o, "history_interval", "outputs", "time", default=0.0, nonnegative=True)
     outputs = Outputs(tuple(fields), fi, hi)
+    shock = _shock(ck, raw, body_regions, kin, end_time)
 
     if ck.problems:
         raise SceneError(ck.problems)
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
-                 gravity if any(gravity) else (), bulk_viscosity, raw=raw)
+                 gravity if any(gravity) else (), bulk_viscosity, shock, raw=raw)
+
+
+def _shock(ck: _Checker, raw: dict, body_regions: dict, kin: str, end_time: float) -> Shock:
+    """``[shock]``: test articles, axis, CFC class, SRS settings, accelerometers, pulse spec."""
+    if "shock" not in raw:
+        return Shock()
+    d = ck.table(raw, "shock", "shock")
+    ck.unknown(d, ("test_articles", "axis", "cfc", "srs_q", "srs_frequencies", "srs_points_per_octave",
+                   "accelerometers", "spec"), "shock")
+    gdim = 3 if kin == "3d" else 2
+    axes = "rz" if kin == "axisymmetric" else "xyz"[:gdim]
+    articles = d.get("test_articles", [])
+    if not isinstance(articles, list) or not all(isinstance(a, str) for a in articles):
+        ck.fail("shock.test_articles", f"must be a list of body names, got {articles!r}")
+        articles = []
+    for j, a in enumerate(articles):
+        if a not in body_regions:
+            ck.fail(f"shock.test_articles[{j}]", f"unknown body {a!r} (bodies: {', '.join(body_regions)})")
+    axis = d.get("axis", axes[-1])
+    if axis not in axes or (kin == "axisymmetric" and axis != "z"):
+        allowed = "z (the axis of symmetry)" if kin == "axisymmetric" else ", ".join(axes)
+        ck.fail("shock.axis", f"must be one of {allowed}; got {axis!r}")
+        axis = axes[-1]
+    cfc = d.get("cfc", 1000)
+    if cfc == "none":
+        cfc = 0
+    if cfc not in CFC_CLASSES and cfc != 0:
+        ck.fail("shock.cfc", f"must be a channel frequency class {', '.join(map(str, CFC_CLASSES))} "
+                             f"(SAE J211) or 'none'; got {cfc!r}")
+        cfc = 1000
+    q = ck.quantity(d, "srs_q", "shock", "dimensionless", default=10.0, positive=True)
+    band = (10.0, 10000.0)
+    if "srs_frequencies" in d:
+        pair = d["srs_frequencies"]
+        if not isinstance(pair, list) or len(pair) != 2:
+            ck.fail("shock.srs_frequencies", f"must be [lowest, highest], e.g. ['10 Hz', '10 kHz']; got {pair!r}")
+        else:
+            lo = ck.quantity({"srs_frequencies[0]": pair[0]}, "srs_frequencies[0]", "shock", "frequency",
+                             positive=True)
+            hi = ck.quantity({"srs_frequencies[1]": pair[1]}, "srs_frequencies[1]", "shock", "frequency",
+                             positive=True)
+            if not lo < hi:
+                ck.fail("shock.srs_frequencies", f"the lowest frequency must be below the highest; got {pair!r}")
+            band = (lo, hi)
+    ppo = d.get("srs_points_per_octave", 12)
+    if not isinstance(ppo, int) or isinstance(ppo, bool) or ppo < 1:
+        ck.fail("shock.srs_points_per_octave", f"must be a whole number >= 1, got {ppo!r}")
+        ppo = 12
+    meters = []
+    names = set()
+    for j, m in enumerate(d.get("accelerometers", []) if isinstance(d.get("accelerometers", []), list) else []):
+        path = f"shock.accelerometers[{j}]"
+        if not isinstance(m, dict):
+            ck.fail(path, "must be a table {name = ..., body = ..., at = [...]}")
+            continue
+        ck.unknown(m, ("name", "body", "at"), path)
+        name = m.get("name")
+        if not isinstance(name, str) or not name.isidentifier() or name in names:
+            ck.fail(f"{path}.name", f"needs a unique name made of letters, digits and _, got {name!r}")
+            name = f"accelerometer{j}"
+        names.add(name)
+        body = m.get("body")
+        if body not in body_regions:
+            ck.fail(f"{path}.body", f"unknown body {body!r} (bodies: {', '.join(body_regions)})")
+        if "at" not in m:
+            ck.fail(f"{path}.at", f"missing (the point, {gdim} coordinates with units)")
+        at = ck.vector(m, "at", path, "length", gdim, [0.0] * gdim)
+        meters.append(Accelerometer(name, str(body), at))
+    if not isinstance(d.get("accelerometers", []), list):
+        ck.fail("shock.accelerometers", "must be a list of {name, body, at} tables")
+    spec = None
+    if "spec" in d:
+        sp = ck.table(d, "spec", "shock.spec")
+        ck.unknown(sp, ("shape", "peak", "duration"), "shock.spec")
+        shape = ck.choice(sp, "shape", "shock.spec", PULSE_SHAPES)
+        peak = ck.quantity(sp, "peak", "shock.spec", "acceleration", positive=True)
+        duration = ck.quantity(sp, "duration", "shock.spec", "time", positive=True)
+        spec = PulseSpec(shape, peak, duration)
+        if not articles and not meters:
+            ck.fail("shock.spec", "a pulse spec needs a test article or an accelerometer to check")
+    return Shock(tuple(articles), axis, int(cfc), q, tuple(band), ppo, tuple(meters), spec)
 
 
 PENALTIES = ("segment", "soft")

@@ -225,6 +225,8 @@ from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_
 from .spring_cases import spring_oscillator  # noqa: E402
 from .material_point import material_point  # noqa: E402
 from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d  # noqa: E402
+from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine  # noqa: E402
+from .modal_cases import circular_plate, modal_rod, nafems_fv12  # noqa: E402
 
 CASES = {
     "free_flight": free_flight,
@@ -247,5 +249,12 @@ CASES = {
     "plastic_wave": plastic_wave,
     "taylor_bar": taylor_bar,
     "taylor_bar_3d": taylor_bar_3d,
+    "cfc_filter": cfc_filter,
+    "srs_half_sine": srs_half_sine,
+    "pulse_shapes": pulse_shapes,
+    "rod_impact_metrics": rod_impact_metrics,
+    "modal_rod": modal_rod,
+    "nafems_fv12": nafems_fv12,
+    "circular_plate": circular_plate,
 }
 

@@ -169,3 +169,35 @@ def test_bad_plastic_fields_are_named():
     assert any(p.startswith("materials.steel.yield_stress: give either") for p in problems)
     assert any("unknown library material" in p
                for p in _problems({**base(), "materials": {"steel": {"library": "unobtainium"}}}))
+
+
+def test_shock_section_resolves_units_and_defaults():
+    raw = base()
+    raw["shock"] = {"test_articles": ["bar"], "spec": {"shape": "half-sine", "peak": "10000 gee",
+                                                        "duration": "5 ms"},
+                    "accelerometers": [{"name": "top", "body": "bar", "at": ["0 mm", "100 mm"]}],
+                    "srs_frequencies": ["10 Hz", "20 kHz"]}
+    s = resolve(raw).shock
+    assert s.test_articles == ("bar",) and s.axis == "z" and s.cfc == 1000 and s.srs_q == 10
+    assert s.spec.peak == pytest.approx(98066.5) and s.spec.duration == pytest.approx(5e-3)
+    assert s.accelerometers[0].point == (0.0, 0.1)
+    assert s.srs_frequencies == (10.0, 20000.0)
+    assert resolve(base()).shock.test_articles == ()          # no [shock]: no test article
+
+
+def test_shock_section_problems_are_all_listed():
+    raw = base()
+    raw["shock"] = {"test_articles": ["payload"], "axis": "r", "cfc": 700,
+                    "srs_frequencies": ["1 kHz", "10 Hz"], "accelerometers": [{"name": "a", "body": "nobody"}],
+                    "spec": {"shape": "square", "peak": "1 kg"}}
+    text = "\n".join(_problems(raw))
+    for expected in ("shock.test_articles[0]: unknown body 'payload'",
+                     "shock.axis: must be one of z (the axis of symmetry)",
+                     "shock.cfc: must be a channel frequency class 60, 180, 600, 1000",
+                     "shock.srs_frequencies: the lowest frequency must be below the highest",
+                     "shock.accelerometers[0].body: unknown body 'nobody'",
+                     "shock.accelerometers[0].at: missing",
+                     "shock.spec.shape: must be one of half-sine, terminal-peak sawtooth, trapezoid",
+                     "shock.spec.peak: expected an acceleration",
+                     "shock.spec.duration: missing"):
+        assert expected in text

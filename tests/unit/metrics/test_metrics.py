@@ -1,0 +1,157 @@
+"""Shock metrics on signals whose answers are known in closed form."""
+import math
+
+import numpy as np
+import pytest
+
+from shockfem.metrics import filters, shapes
+from shockfem.metrics.pulse import pulse_metrics
+from shockfem.metrics.signals import acceleration_from_velocity
+from shockfem.metrics.srs import shock_response_spectrum
+from shockfem.metrics.stages import contact_events, stage_table
+
+
+@pytest.mark.parametrize("cfc", filters.CFC_CLASSES)
+def test_cfc_filter_gain_follows_sae_j211(cfc):
+    dt = 1e-5
+    # J211-1: -3 dB at 1.65 CFC; this implementation measures -2.91 dB there, -0.45 dB at CFC
+    assert filters.gain_db(cfc, dt, 1.65 * cfc) == pytest.approx(-3.0, abs=0.5)
+    assert filters.gain_db(cfc, dt, cfc) == pytest.approx(-0.45, abs=0.05)
+    assert abs(filters.gain_db(cfc, dt, 0.1 * cfc)) < 0.01
+    assert filters.gain_db(cfc, dt, 5 * cfc) < -25
+
+
+def test_cfc_filter_has_no_phase_shift_and_keeps_the_area():
+    dt = 1e-5
+    t = np.arange(0, 0.1, dt)
+    pulse = np.where((t > 0.02) & (t < 0.04), np.sin(np.pi * (t - 0.02) / 0.02), 0.0)
+    y = filters.cfc_filter(pulse, dt, 600)
+    assert t[np.argmax(y)] == pytest.approx(0.03, abs=2 * dt)      # forward + backward: centred
+    assert y.sum() == pytest.approx(pulse.sum(), rel=1e-6)           # unit gain at zero frequency
+
+
+def test_cfc_sampling_warning():
+    assert filters.check_sampling(1000, 1e-5) is None
+    assert "history_interval" in filters.check_sampling(1000, 2e-4)
+    assert "Nyquist" in filters.check_sampling(1000, 5e-4)
+
+
+def test_undamped_half_sine_spectrum_peak_is_exact():
+    D = 1e-3
+    dt = D / 200
+    t = np.arange(241) * dt
+    a = np.where(t <= D, np.sin(np.pi * np.minimum(t, D) / D), 0.0)
+    ratios = np.linspace(0.79, 0.83, 81)
+    s = shock_response_spectrum(a, dt, ratios / D, q=math.inf)
+    # 1.7685 at D/T = 0.8098 (exact, shared/references)
+    assert s.maximax.max() == pytest.approx(1.7685, rel=1e-3)
+    assert ratios[np.argmax(s.maximax)] == pytest.approx(0.8098, abs=0.002)
+
+
+def test_spectrum_limits_static_and_impulsive():
+    """Far above the pulse's frequencies the oscillator follows the base (SRS -> peak); far
+    below it sees an impulse (undamped SRS -> 2 pi f dV)."""
+    D, dt = 1e-3, 1e-6
+    t = np.arange(0, 3e-3, dt)
+    a = np.where(t <= D, np.sin(np.pi * np.minimum(t, D) / D), 0.0)
+    s = shock_response_spectrum(a, dt, [20000.0], q=10.0)
+    assert s.maximax[0] == pytest.approx(1.0, abs=0.03)
+    s = shock_response_spectrum(a, dt, [20.0], q=math.inf)
+    assert s.maximax[0] == pytest.approx(2 * np.pi * 20.0 * 2 * D / np.pi, rel=1e-3)
+
+
+@pytest.mark.parametrize("shape", shapes.SHAPES)
+def test_pulse_metrics_and_shape_of_ideal_pulses(shape):
+    P, D = 1e5, 5e-3
+    dt = D / 1000
+    t = np.arange(-2e-3, 16e-3, dt)
+    ideal = shapes.specified(shape, P, D, 1e-3)
+    a = -ideal(t)
+    p = pulse_metrics(t, a)
+    assert p.sign == -1
+    assert p.peak == pytest.approx(P, rel=1e-5)
+    assert p.velocity_change == pytest.approx(-ideal.velocity_change, rel=2 * dt / D)
+    c = shapes.classify(t, a, p)
+    assert c.shape == shape
+    assert c.ideal.peak == pytest.approx(P, rel=0.01)
+    assert c.ideal.duration == pytest.approx(D, rel=0.01)
+    assert shapes.band_check(t, -a, ideal).passed
+    # a pulse 30% too high fails its band; a 25% shorter one fails on velocity change too
+    assert not shapes.band_check(t, -1.3 * a, ideal).passed
+    short = shapes.specified(shape, P, 0.75 * D, 1e-3)
+    check = shapes.band_check(t, short(t), shapes.place(ideal, t, short(t), pulse_metrics(t, short(t))))
+    assert not check.passed and check.velocity_change_error < -0.1
+
+
+def test_half_sine_durations_and_rise_time():
+    D, dt = 1e-3, 1e-7
+    t = np.arange(0, 2e-3, dt)
+    p = pulse_metrics(t, np.where(t <= D, np.sin(np.pi * t / D), 0.0))
+    lo, hi = math.asin(0.1) / math.pi, math.asin(0.9) / math.pi
+    assert p.duration == pytest.approx(D * (1 - 2 * lo), abs=2 * dt)
+    assert p.rise_time == pytest.approx(D * (hi - lo), abs=2 * dt)
+    assert p.mean_acceleration == pytest.approx(2 * math.cos(math.pi * lo) / (math.pi * (1 - 2 * lo)), rel=1e-3)
+
+
+def test_interval_mean_acceleration_integrates_to_the_velocity_change():
+    rng = np.random.default_rng(1)
+    t = np.cumsum(rng.uniform(0.8e-6, 1.2e-6, 2000))       # a slightly uneven record
+    v = np.sin(2e3 * t) + 0.01 * rng.standard_normal(len(t))
+    tm, a = acceleration_from_velocity(t, v)
+    step = tm[1] - tm[0]
+    grid_end = t[0] + step * len(a)
+    assert a.sum() * step == pytest.approx(np.interp(grid_end, t, v) - v[0], abs=1e-12)
+
+
+def _chain_history(v_launch=10.0, e=0.8, m=(4.0, 2.0, 1.0)):
+    """Rigid masses struck in turn, each collision a 1 ms half-sine force with restitution e."""
+    dt = 1e-5
+    t = np.arange(0, 0.02, dt)
+    v = np.zeros((3, len(t)))
+    v[0] = v_launch
+    forces = {}
+    for k, t0 in enumerate((0.002, 0.008)):
+        va, vb = v[k][np.searchsorted(t, t0)], v[k + 1][np.searchsorted(t, t0)]
+        ma, mb = m[k], m[k + 1]
+        J = (1 + e) * ma * mb / (ma + mb) * (va - vb)      # impulse of a collision with restitution e
+        shape = np.where((t >= t0) & (t <= t0 + 1e-3), np.sin(np.pi * (t - t0) / 1e-3), 0.0)
+        F = J * shape / (shape.sum() * dt)
+        impulse = np.cumsum(F) * dt
+        v[k] -= impulse / ma
+        v[k + 1] += impulse / mb
+        forces[f"c{k}"] = F
+    names = ("m0", "m1", "m2")
+    h = {"time": t, "energy.kinetic": sum(0.5 * mi * vi ** 2 for mi, vi in zip(m, v)),
+         "energy.internal": np.zeros(len(t))}
+    for n, vi in zip(names, v):
+        h[f"{n}.v_z"] = vi
+    for k in range(2):
+        h[f"contact.c{k}.normal_z"] = -forces[f"c{k}"]
+    contacts = [{"name": f"c{k}", "a": f"{names[k]}.bottom", "b": f"{names[k + 1]}.top"} for k in range(2)]
+    return h, dict(zip(names, m)), contacts
+
+
+def test_stage_table_of_a_rigid_chain():
+    h, masses, contacts = _chain_history()
+    stages = stage_table(h, masses, contacts, "z", ("z",))
+    assert [s.pair for s in stages] == ["c0", "c1"]
+    for s in stages:
+        assert s.restitution == pytest.approx(0.8, rel=1e-9)
+        assert s.vibration_energy == pytest.approx(0.0, abs=1e-9)      # rigid: nothing rings
+    # closed form: v' = (1 + e) m_a / (m_a + m_b) v for a mass at rest
+    v1 = 1.8 * 4 / 6 * 10.0
+    v2 = 1.8 * 2 / 3 * v1
+    assert stages[0].struck_after == pytest.approx(v1, rel=1e-9)
+    assert stages[1].struck_after == pytest.approx(v2, rel=1e-9)
+    assert stages[1].velocity_ratio == pytest.approx(v2 / 10.0, rel=1e-9)
+    assert stages[0].momentum_transferred == pytest.approx(2.0 * v1, rel=1e-9)
+
+
+def test_chattering_faces_are_one_event():
+    t = np.linspace(0, 1e-3, 1001)
+    f = np.where((t > 1e-4) & (t < 5e-4), 1.0, 0.0)
+    f[(t > 4.5e-4) & (t < 4.6e-4)] = 0.0          # a 10 us opening late in a 400 us contact
+    f[(t > 8e-4) & (t < 9e-4)] = 1.0              # a second, separate collision
+    ev = contact_events("p", t, f)
+    assert len(ev) == 2
+    assert ev[0].start == pytest.approx(1e-4, abs=2e-6) and ev[0].end == pytest.approx(5e-4, abs=2e-6)
