@@ -52,6 +52,17 @@ def _parser() -> argparse.ArgumentParser:
     o.add_argument("--mass", choices=("consistent", "lumped"), default="consistent")
     o.add_argument("--out", help="directory for modes.json and modes.xdmf (default: results/<scene>/modes)")
 
+    a = sub.add_parser("amplifier", help="size a velocity amplifier's masses (rigid-body design tool)")
+    a.add_argument("--architecture", choices=("launched-chain", "stack-on-anvil"), default="launched-chain")
+    a.add_argument("--article", required=True, help="test article mass, e.g. '12 lb'")
+    a.add_argument("--target", required=True, help="test article speed to reach, e.g. '1600 ft/s'")
+    a.add_argument("--launch", required=True, help="first-mass (or stack) speed, e.g. '325 ft/s'")
+    a.add_argument("--restitution", type=float, default=0.9)
+    a.add_argument("--masses", type=int, default=5, help="number of masses, test article included")
+    a.add_argument("--material", default="high_strength_steel", help="library material for the sizes")
+    a.add_argument("--aspect", type=float, default=1.0, help="length / diameter of the cylinders")
+    a.add_argument("--json", help="write the design to this JSON file")
+
     v = sub.add_parser("verify", help="verification against exact and published solutions")
     v.add_argument("names", nargs="*", help="cases to run (default: all)")
     v.add_argument("--list", action="store_true", help="list the cases")
@@ -77,7 +88,8 @@ def main(argv=None) -> int:
     try:
         return _dispatch(args)
     except SceneError as e:
-        print("The scene has problems:", file=sys.stderr)
+        what = "scene" if args.command in ("run", "check", "mesh", "modes") else "input"
+        print(f"The {what} has problems:", file=sys.stderr)
         for problem in e.problems:
             print(f"  {problem}", file=sys.stderr)
         return EXIT_BAD_INPUT
@@ -123,6 +135,8 @@ def _dispatch(args) -> int:
         return _metrics(args)
     if args.command == "modes":
         return _modes(args)
+    if args.command == "amplifier":
+        return _amplifier(args)
     if args.command == "verify":
         from .verify import run_cases, CASES
         if args.list:
@@ -142,6 +156,58 @@ def _dispatch(args) -> int:
                 json.dump(results, fh, indent=2, default=float)
         return EXIT_OK
     raise AssertionError(args.command)
+
+
+def _amplifier(args) -> int:
+    from .amplifier import rigid
+    from .amplifier.gain import cylinder_size, design
+    from .scene import SceneError
+    from .scene.library import LIBRARY
+    from .units import UnitError, to_si
+    problems, values = [], {}
+    for name, dim in (("article", "mass"), ("target", "velocity"), ("launch", "velocity")):
+        try:
+            values[name] = to_si(getattr(args, name), dim)
+            if values[name] <= 0:
+                problems.append(f"--{name}: must be > 0, got {getattr(args, name)}")
+        except UnitError as e:
+            problems.append(f"--{name}: {e}")
+    if not 0 < args.restitution <= 1:
+        problems.append(f"--restitution: must be in (0, 1], got {args.restitution}")
+    if args.masses < 2:
+        problems.append(f"--masses: a chain needs at least 2 masses, got {args.masses}")
+    if args.material not in LIBRARY:
+        problems.append(f"--material: unknown {args.material!r} (library: {', '.join(LIBRARY)})")
+    if args.aspect <= 0:
+        problems.append(f"--aspect: must be > 0, got {args.aspect}")
+    if problems:
+        raise SceneError(problems)
+    d = design(args.architecture, values["article"], values["target"], values["launch"], args.restitution,
+               args.masses)
+    print(f"{args.architecture}, {args.masses} masses, e = {args.restitution:g}: speed gain "
+          f"{d.gain:.4g} ({values['launch']:.4g} -> {values['target']:.4g} m/s)")
+    if not d.feasible:
+        print(f"not possible: {d.reason}")
+        return EXIT_BAD_INPUT
+    rho = to_si(LIBRARY[args.material]["density"], "density")
+    d.sizes = [cylinder_size(m, rho, args.aspect) for m in d.masses]
+    run = (rigid.launched_chain(d.masses, values["launch"], args.restitution) if args.architecture == "launched-chain"
+           else rigid.stack_on_anvil(d.masses, values["launch"], args.restitution))
+    lb = 0.45359237
+    print(f"{'mass':>5s} {'kg':>11s} {'lb':>10s} {'diameter mm':>12s} {'length mm':>10s} {'first pass m/s':>15s} "
+          f"{'final m/s':>10s}")
+    for k, (m, size) in enumerate(zip(d.masses, d.sizes), start=1):
+        fp = run.first_pass[k - 1]
+        print(f"{k:5d} {m:11.4g} {m / lb:10.4g} {size['diameter'] * 1e3:12.4g} {size['length'] * 1e3:10.4g} "
+              f"{'-' if fp != fp else format(fp, '.5g'):>15s} {run.final[k - 1]:10.5g}")
+    print(f"mass ratio m(k+1)/m(k) = {d.stage_ratio:.4g}; intermediate masses {d.intermediate_mass:.4g} kg "
+          f"({d.intermediate_mass / lb:.4g} lb); energy efficiency {d.efficiency:.1%} "
+          f"({args.material} cylinders, L/D = {args.aspect:g}; rigid-body model: {len(run.collisions)} collisions)")
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump({**d.as_dict(), "first_pass": run.first_pass.tolist(), "final": run.final.tolist(),
+                       "collisions": len(run.collisions)}, fh, indent=2, default=float)
+    return EXIT_OK
 
 
 def _modes(args) -> int:
