@@ -97,3 +97,17 @@ def test_force_boundary_accelerates_a_free_bar(tmp_path):
     # momentum theorem: m * mean velocity = F * t exactly for a constant force (to round-off)
     assert s["bodies"]["bar"]["velocity_final"][1] == pytest.approx(10e3 * 30e-6 / m, rel=1e-6)
     assert s["energy"]["balance_error"] < 0.01
+
+
+def test_amplifier_design_tool():
+    p = shockfem("amplifier", "--article", "12 lb", "--target", "1600 ft/s", "--launch", "325 ft/s",
+                 "--restitution", "0.9", "--masses", "5")
+    assert p.returncode == 0, p.stderr
+    assert "intermediate masses 351.6 kg (775.2 lb)" in p.stdout
+    p = shockfem("amplifier", "--article", "12 m", "--target", "1600 ft/s", "--launch", "325 ft/s",
+                 "--restitution", "2")
+    assert p.returncode == 2
+    assert "--article: expected a mass" in p.stderr and "--restitution: must be in (0, 1]" in p.stderr
+    assert "Traceback" not in p.stderr
+    p = shockfem("amplifier", "--article", "1 kg", "--target", "16 m/s", "--launch", "1 m/s", "--masses", "3")
+    assert p.returncode == 2 and "more than 3 masses" in p.stdout
