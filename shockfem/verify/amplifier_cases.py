@@ -74,3 +74,113 @@ def _geometric_is_optimal():
                   absolute=True),
             check("amplifier_rigid.optimum_ratios_vs_geometric [-, max rel]", 0.0, worst_ratio, 1e-4, wall, 3,
                   absolute=True)]
+
+
+def _bar_stage(bars, end_time):
+    """Run two bars through a kinematic contact; the stage of their collision and the run."""
+    from ..amplifier.bars import Interface, run_bars
+    from ..metrics.stages import stage_table
+    r = run_bars(bars, [Interface("impact")], end_time)
+    stages = stage_table(r.history, r.masses, [{"name": "impact", "a": bars[0].name, "b": bars[1].name}], "z",
+                         ("z",))
+    return r, stages
+
+
+def _plateau(h, stage):
+    """Mean contact force over the middle half of a stage [N] (its peak rides on the ringing of
+    the discrete front, 7% above the plateau at 400 elements)."""
+    t = h["time"]
+    span = stage.end - stage.start
+    on = (t > stage.start + 0.25 * span) & (t < stage.end - 0.25 * span)
+    return float(h[f"contact.{stage.pair}.normal_z"][on].mean())
+
+
+def _fitted_duration(h, body):
+    """Foot-to-foot duration of the classical shape fitted to a body's rigid-body pulse [s]."""
+    from ..metrics import shapes
+    from ..metrics.pulse import pulse_metrics
+    from ..metrics.signals import acceleration_from_velocity
+    t, a = acceleration_from_velocity(h["time"], h[f"{body}.v_z"])
+    p = pulse_metrics(t, a)
+    return shapes.classify(t, a, p).ideal.duration
+
+
+def amplifier_1d(size, workdir):
+    """1D bars against St Venant (contact time 2L1/c0, restitution L1/L2, force rho c0 v A/2); axisymmetric vs 1D."""
+    import math
+    from ..amplifier.bars import Bar
+    from .contact_cases import RADIUS, SPEED
+    from .scenes import STEEL, steel_c0
+    c0, rho, E = steel_c0(), STEEL["density"], STEEL["youngs_modulus"]
+    A = math.pi * RADIUS ** 2
+    L2 = 0.1
+    out = []
+    for ratio in (1.0, 0.5, 0.3):
+        L1 = ratio * L2
+        r, stages = _bar_stage([Bar("striker", L1, A, rho, E, SPEED), Bar("target", L2, A, rho, E)], 2.5 * L2 / c0)
+        s = stages[0]
+        n = sum(int(round(L / (L1 / 400))) for L in (L1, L2))
+        # 1D theory is exact for these bars; 1% is the issue's tolerance (measured: within 0.6%)
+        out += [check(f"amplifier_1d.L1/L2={ratio:g}.stages [count]", 1, len(stages), 0.0, r.wall_time_s, n,
+                      absolute=True),
+                check(f"amplifier_1d.L1/L2={ratio:g}.contact_time [s]", 2 * L1 / c0, s.end - s.start, 0.01,
+                      r.wall_time_s, n),
+                check(f"amplifier_1d.L1/L2={ratio:g}.restitution [-]", ratio, s.restitution, 0.01, r.wall_time_s, n),
+                check(f"amplifier_1d.L1/L2={ratio:g}.plateau_force [N]", rho * c0 * SPEED * A / 2,
+                      _plateau(r.history, s), 0.01, r.wall_time_s, n),
+                check(f"amplifier_1d.L1/L2={ratio:g}.energy_balance [-, abs]", 0.0, r.energy_balance_error, 1e-3,
+                      r.wall_time_s, n, absolute=True)]
+    out += _axisymmetric_vs_1d(size, workdir)
+    return out
+
+
+def _axisymmetric_vs_1d(size, workdir):
+    """The slender unequal rods of the contact verification (L1 = 0.1 m, L2 = 0.2 m, R = 2.5 mm)
+    through the axisymmetric solver and the 1D model, measured by the same stage table and pulse fit."""
+    import math
+    from ..amplifier.bars import Bar
+    from ..metrics.stages import stage_table
+    from ..run import run_scene
+    from ..scene import resolve
+    from .cases import SIZES
+    from .contact_cases import RADIUS, SPEED
+    from .scenes import STEEL, steel_c0
+    c0 = steel_c0()
+    L1, L2, gap = 0.1, 0.2, 1e-5
+    end = gap / SPEED + 2.5 * 2 * L1 / c0
+    h = 0.00025 * SIZES[size]
+    rod = {"material": "steel", "shape": "cylinder", "radius": RADIUS, "element_size": h}
+    raw = {"scene": {"name": "axisymmetric_vs_1d", "kinematics": "axisymmetric", "end_time": end},
+           "materials": {"steel": dict(STEEL)},
+           "bodies": [{"name": "striker", **rod, "length": L1, "position": [0.0, L2 + gap], "velocity": [0.0, -SPEED]},
+                      {"name": "target", **rod, "length": L2, "position": [0.0, 0.0]}],
+           "contact": [{"name": "impact", "a": "striker.bottom", "b": "target.top", "penalty_scale": 1.0}],
+           "outputs": {"field_interval": end, "history_interval": 2 * L1 / c0 / 400}}
+    fe = run_scene(resolve(raw), workdir, progress=False, write_fields=False, quiet=True)
+    fe_stage = fe.summary["shock"]["stages"][0]
+    from ..output.history import read_history_csv
+    h_fe = read_history_csv(f"{workdir}/history.csv")
+    A = math.pi * RADIUS ** 2
+    rho, E = STEEL["density"], STEEL["youngs_modulus"]
+    # the 1D striker moves along +x: mirror the axis (speeds compare by magnitude)
+    r, stages = _bar_stage([Bar("striker", L1, A, rho, E, SPEED), Bar("target", L2, A, rho, E)], end - gap / SPEED)
+    s = stages[0]
+    wall, n = fe.summary["wall_time_s"], fe.summary["elements"]
+
+    class FeStage:          # the stage's interval and pair, for _plateau on the FE history
+        start, end, pair = fe_stage["start"], fe_stage["end"], fe_stage["pair"]
+    fe_plateau = abs(_plateau(h_fe, FeStage))
+    d_1d, d_fe = _fitted_duration(r.history, "target"), _fitted_duration(h_fe, "target")
+    # the rods are 20 D long: lateral inertia and the interface stay within the issue's 3%
+    out = [
+        check("amplifier_1d.axisymmetric_vs_1d.restitution [-]", s.restitution, fe_stage["restitution"], 0.03,
+              wall, n),
+        check("amplifier_1d.axisymmetric_vs_1d.target_speed [m/s]", abs(s.struck_after),
+              abs(fe_stage["struck_after"]), 0.03, wall, n),
+        check("amplifier_1d.axisymmetric_vs_1d.plateau_force [N]", _plateau(r.history, s), fe_plateau, 0.03,
+              wall, n),
+    ]
+    out[-1]["note"] = (f"the fitted pulse lasts {d_fe * 1e6:.4g} us in the axisymmetric run against "
+                       f"{d_1d * 1e6:.4g} us in 1D ({d_fe / d_1d - 1:+.1%}): lateral inertia rounds the "
+                       f"edges, which 1D theory does not have (reported, not checked)")
+    return out

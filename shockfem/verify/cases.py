@@ -227,7 +227,7 @@ from .material_point import material_point  # noqa: E402
 from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d  # noqa: E402
 from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine  # noqa: E402
 from .modal_cases import circular_plate, modal_rod, nafems_fv12  # noqa: E402
-from .amplifier_cases import amplifier_rigid  # noqa: E402
+from .amplifier_cases import amplifier_1d, amplifier_rigid  # noqa: E402
 
 CASES = {
     "free_flight": free_flight,
@@ -258,5 +258,6 @@ CASES = {
     "nafems_fv12": nafems_fv12,
     "circular_plate": circular_plate,
     "amplifier_rigid": amplifier_rigid,
+    "amplifier_1d": amplifier_1d,
 }
 

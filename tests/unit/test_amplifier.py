@@ -44,3 +44,52 @@ def test_design_meets_its_target_and_refuses_the_impossible():
     assert rs.first_pass[-1] == pytest.approx(1600 * fts, rel=1e-12)
     bad = gain.design("launched-chain", 1.0, 16.0, 1.0, 0.9, 3)
     assert not bad.feasible and "more than 3 masses" in bad.reason
+
+
+E, RHO = 210e9, 7850.0
+AREA = math.pi * 0.0025 ** 2
+C0 = math.sqrt(E / RHO)
+
+
+def _two_bars(L1, L2, interface, end_time, **bar_kw):
+    from shockfem.amplifier.bars import Bar, run_bars
+    from shockfem.metrics.stages import stage_table
+    bars = [Bar("a", L1, AREA, RHO, E, 1.0, **bar_kw), Bar("b", L2, AREA, RHO, E, 0.0, **bar_kw)]
+    r = run_bars(bars, [interface], end_time)
+    return r, stage_table(r.history, r.masses, [{"name": interface.name, "a": "a", "b": "b"}], "z", ("z",))
+
+
+@pytest.mark.parametrize("ratio", [1.0, 0.5])
+def test_bars_reproduce_st_venant(ratio):
+    from shockfem.amplifier.bars import Interface
+    r, (s,) = _two_bars(ratio * 0.1, 0.1, Interface("i"), 2.5 * 0.1 / C0)
+    # St Venant: e = L1/L2, contact 2 L1 / c0; 400 elements in the shorter bar: within 0.6%
+    assert s.restitution == pytest.approx(ratio, rel=0.01)
+    assert s.end - s.start == pytest.approx(2 * ratio * 0.1 / C0, rel=0.01)
+    assert r.energy_balance_error < 1e-3
+
+
+def test_soft_pad_between_bars_is_a_spring_on_two_masses():
+    """A pad far softer than the bars: the bars move as rigid masses on a spring, contact lasts
+    pi sqrt(m*/k) and an undamped pad gives e = 1."""
+    from shockfem.amplifier.bars import Interface
+    m = RHO * AREA * 0.05
+    k = 1e6                                  # bar stiffness EA/L = 8e7 N/m: 80x stiffer
+    t_c = math.pi * math.sqrt(0.5 * m / k)
+    r, (s,) = _two_bars(0.05, 0.05, Interface("pad", stiffness=k), 1.5 * t_c, elements=50)
+    assert s.end - s.start == pytest.approx(t_c, rel=0.02)
+    assert s.restitution == pytest.approx(1.0, abs=0.02)
+    r, (s,) = _two_bars(0.05, 0.05, Interface("pad", stiffness=k, damping_ratio=0.1), 1.5 * t_c, elements=50)
+    # a damped oscillator's half cycle: e = exp(-zeta pi / sqrt(1 - zeta^2)) = 0.730 at zeta = 0.1
+    assert s.restitution == pytest.approx(math.exp(-0.1 * math.pi / math.sqrt(1 - 0.01)), abs=0.02)
+    assert r.energy_balance_error < 1e-3
+
+
+def test_yielding_bars_dissipate_and_balance():
+    from shockfem.amplifier.bars import Bar, Interface, run_bars
+    bars = [Bar("a", 0.1, AREA, RHO, E, 20.0, yield_stress=200e6, hardening=1e9),
+            Bar("b", 0.1, AREA, RHO, E, 0.0, yield_stress=200e6, hardening=1e9)]
+    # rho c0 v / 2 = 406 MPa > 200 MPa: the contact face yields
+    r = run_bars(bars, [Interface("i")], 2.5 * 0.1 / C0)
+    assert r.history["energy.plastic"][-1] > 0.01 * r.history["energy.kinetic"][0]
+    assert r.energy_balance_error < 2e-3
