@@ -9,12 +9,23 @@
 """
 from __future__ import annotations
 
+import math
 import time
 
 import numpy as np
 
 from ..amplifier import gain, rigid
-from .cases import check
+from ..amplifier.bars import Bar, Interface, run_bars
+from ..metrics import shapes
+from ..metrics.pulse import pulse_metrics
+from ..metrics.signals import acceleration_from_velocity
+from ..metrics.stages import stage_table
+from ..output.history import read_history_csv
+from ..run import run_scene
+from ..scene import resolve
+from .cases import SIZES, check
+from .contact_cases import RADIUS, SPEED
+from .scenes import STEEL, steel_c0
 
 NS, ES, RS = (2, 3, 4, 5, 6), (1.0, 0.9, 0.75, 0.5), (0.5, 0.1, 0.01)
 
@@ -78,8 +89,6 @@ def _geometric_is_optimal():
 
 def _bar_stage(bars, end_time):
     """Run two bars through a kinematic contact; the stage of their collision and the run."""
-    from ..amplifier.bars import Interface, run_bars
-    from ..metrics.stages import stage_table
     r = run_bars(bars, [Interface("impact")], end_time)
     stages = stage_table(r.history, r.masses, [{"name": "impact", "a": bars[0].name, "b": bars[1].name}], "z",
                          ("z",))
@@ -97,9 +106,6 @@ def _plateau(h, stage):
 
 def _fitted_duration(h, body):
     """Foot-to-foot duration of the classical shape fitted to a body's rigid-body pulse [s]."""
-    from ..metrics import shapes
-    from ..metrics.pulse import pulse_metrics
-    from ..metrics.signals import acceleration_from_velocity
     t, a = acceleration_from_velocity(h["time"], h[f"{body}.v_z"])
     p = pulse_metrics(t, a)
     return shapes.classify(t, a, p).ideal.duration
@@ -107,10 +113,6 @@ def _fitted_duration(h, body):
 
 def amplifier_1d(size, workdir):
     """1D bars against St Venant (contact time 2L1/c0, restitution L1/L2, force rho c0 v A/2); axisymmetric vs 1D."""
-    import math
-    from ..amplifier.bars import Bar
-    from .contact_cases import RADIUS, SPEED
-    from .scenes import STEEL, steel_c0
     c0, rho, E = steel_c0(), STEEL["density"], STEEL["youngs_modulus"]
     A = math.pi * RADIUS ** 2
     L2 = 0.1
@@ -137,14 +139,6 @@ def amplifier_1d(size, workdir):
 def _axisymmetric_vs_1d(size, workdir):
     """The slender unequal rods of the contact verification (L1 = 0.1 m, L2 = 0.2 m, R = 2.5 mm)
     through the axisymmetric solver and the 1D model, measured by the same stage table and pulse fit."""
-    import math
-    from ..amplifier.bars import Bar
-    from ..metrics.stages import stage_table
-    from ..run import run_scene
-    from ..scene import resolve
-    from .cases import SIZES
-    from .contact_cases import RADIUS, SPEED
-    from .scenes import STEEL, steel_c0
     c0 = steel_c0()
     L1, L2, gap = 0.1, 0.2, 1e-5
     end = gap / SPEED + 2.5 * 2 * L1 / c0
@@ -158,7 +152,6 @@ def _axisymmetric_vs_1d(size, workdir):
            "outputs": {"field_interval": end, "history_interval": 2 * L1 / c0 / 400}}
     fe = run_scene(resolve(raw), workdir, progress=False, write_fields=False, quiet=True)
     fe_stage = fe.summary["shock"]["stages"][0]
-    from ..output.history import read_history_csv
     h_fe = read_history_csv(f"{workdir}/history.csv")
     A = math.pi * RADIUS ** 2
     rho, E = STEEL["density"], STEEL["youngs_modulus"]
