@@ -24,6 +24,8 @@ def _parser() -> argparse.ArgumentParser:
                    help="override a scene field, e.g. bodies.striker.velocity='12 m/s'")
     r.add_argument("--no-progress", action="store_true")
     r.add_argument("--no-fields", action="store_true", help="skip the XDMF field output")
+    r.add_argument("--fidelity", choices=("rigid", "1d", "axisymmetric", "3d"),
+                   help="chain scenes: the model to run (default: the scene's chain.fidelity)")
 
     c = sub.add_parser("check", help="validate a scene without running it")
     c.add_argument("scene")
@@ -82,6 +84,18 @@ def _scene(args):
     return load_scene(args.scene, args.set)
 
 
+def _chain_raw(args):
+    """The raw chain scene of ``args.scene`` with its overrides, or None for an ordinary scene."""
+    from .amplifier.chain import is_chain
+    from .scene import apply_override, read_toml
+    raw = read_toml(args.scene)
+    if not is_chain(raw):
+        return None
+    for assignment in args.set:
+        raw = apply_override(raw, assignment)
+    return raw
+
+
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     from .scene import SceneError
@@ -103,11 +117,27 @@ def main(argv=None) -> int:
 
 def _dispatch(args) -> int:
     if args.command == "check":
+        chain = _chain_raw(args)
+        if chain is not None:
+            from .amplifier.chain import resolve_chain
+            spec, scene, _ = resolve_chain(chain)
+            print(f"{args.scene}: ok (chain of {len(scene.bodies)} bodies, {spec.architecture}, "
+                  f"fidelity {spec.fidelity})")
+            return EXIT_OK
         scene = _scene(args)
         print(f"{args.scene}: ok ({scene.kinematics}, {len(scene.bodies)} bodies, "
               f"end time {scene.end_time:.6g} s)")
         return EXIT_OK
     if args.command == "run":
+        chain = _chain_raw(args)
+        if chain is not None:
+            from .amplifier.chain import resolve_chain, run_chain_scene
+            spec, _, _ = resolve_chain(chain, args.fidelity)
+            run_chain_scene(chain, args.out or os.path.join("results", spec.name, spec.fidelity), args.fidelity,
+                            progress=not args.no_progress)
+            return EXIT_OK
+        if args.fidelity:
+            raise ModelError("--fidelity: only a chain scene (a [chain] table) runs at a chosen fidelity")
         from .run import run_scene
         scene = _scene(args)
         out = args.out or os.path.join("results", scene.name)

@@ -40,6 +40,9 @@ from numba import njit
 # (ringing behind a steep front) shifts the St Venant restitution by about 0.8% at 400
 # (2% at 100); the element size is then the same in every bar.
 ELEMENTS_IN_SHORTEST = 400
+# Time constant of the low pass on the interface force, in element transit times h / c0 (the
+# ringing behind a front has a period of a few transits; the plateau lasts hundreds).
+SMOOTHING_TRANSITS = 4.0
 
 
 @dataclass(frozen=True)
@@ -81,11 +84,13 @@ class BarsResult:
     element_cycles_per_s: float
     energy_balance_error: float
     notes: list = field(default_factory=list)
+    peak_stress: dict = field(default_factory=dict)   # bar name -> largest |axial stress| [Pa], ringing included
+    interface_stress: dict = field(default_factory=dict)   # interface -> peak low-passed force / smaller area [Pa]
 
 
 @njit(cache=True)
-def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic, dt, steps, every, out_v,
-           out_f, out_e, owner, n_bars):
+def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic, anvil, dt, steps, every,
+           out_v, out_f, out_e, owner, n_bars, max_stress, smoothing, peak_force):
     """Central-difference steps; writes samples into out_v (bar mean velocities), out_f
     (interface forces) and out_e (kinetic, strain, plastic, structural damping, time, energy taken by
     the interfaces) every ``every`` steps."""
@@ -97,9 +102,11 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
     sigma = np.zeros(ne)
     f = np.zeros(nn)
     fcs = np.zeros(ni)
+    fc_smooth = np.zeros(ni)
     plastic = 0.0
     damped = 0.0
     contact_work = 0.0
+    fa_prev = 0.0
     bar_mass = np.zeros(n_bars)
     for i in range(nn):
         bar_mass[owner[i]] += m[i]
@@ -123,6 +130,8 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
                 trial -= sgn * E[e] * dg
                 plastic += (abs(trial) + 0.5 * H[e] * dg) * dg * area[e] * h0[e]
             sigma[e] = trial
+            if abs(trial) > max_stress[e]:
+                max_stress[e] = abs(trial)
             strain_energy += 0.5 * trial * trial / E[e] * area[e] * h0[e]
             rate = (v[b] - v[a]) / h0[e]
             s_damp = beta[e] * E[e] * rate
@@ -147,10 +156,23 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
             if step > 0:
                 contact_work += 0.5 * (fcs[j] + fc) * dt * (v[l] - v[r])
             fcs[j] = fc
+            # the interface force low-passed over a few element transits: the peak of the
+            # plateau, not of the ringing that linear elements add behind a steep front
+            fc_smooth[j] += smoothing * (fc - fc_smooth[j])
+            if fc_smooth[j] > peak_force[j]:
+                peak_force[j] = fc_smooth[j]
             f[r] -= fc
             f[l] += fc
             if step % every == 0:
                 out_f[rec, j] = fc
+        if anvil:
+            # a rigid anvil at x = 0 before the first bar: the same kinematic contact
+            ahead = x[0] + dt * (v[0] + dt * f[0] / m[0])
+            fa = -ahead * m[0] / (dt * dt) if ahead < 0.0 else 0.0
+            if step > 0:
+                contact_work += 0.5 * (fa_prev + fa) * dt * v[0]
+            fa_prev = fa
+            f[0] += fa
         if step % every == 0:
             # velocities at t_n: half a step of the forces at t_n on v_{n-1/2}
             kinetic = 0.0
@@ -179,16 +201,17 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
 
 def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safety_factor: float = 0.9,
              damping_ratio: float = 0.0, damping_frequency: float | None = None,
-             samples: int = 2000) -> BarsResult:
+             samples: int = 2000, anvil_gap: float | None = None) -> BarsResult:
     """Run a chain of bars (``interfaces[k]`` joins bars k and k + 1) to ``end_time``.
 
+    ``anvil_gap``: a rigid anvil at that distance before the first bar (None: no anvil).
     ``damping_ratio`` is the structural damping of every bar at ``damping_frequency`` (default:
     the first free-free frequency c0 / 2L of the first bar)."""
     if len(interfaces) != len(bars) - 1:
         raise ValueError(f"{len(bars)} bars need {len(bars) - 1} interfaces, got {len(interfaces)}")
     xs, ms, owner, elems, h0s, areas, Es, sys_, Hs, betas = [], [], [], [], [], [], [], [], [], []
     left, right = [], []
-    offset = 0.0
+    offset = anvil_gap or 0.0
     node = 0
     f_ref = damping_frequency or bars[0].c0 / (2 * bars[0].length)
     beta_of = 2 * damping_ratio / (2 * math.pi * f_ref)
@@ -223,6 +246,11 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     k_if, c_if = np.zeros(len(interfaces)), np.zeros(len(interfaces))
     kinematic = np.array([itf.stiffness is None for itf in interfaces], dtype=np.bool_)
     dt = min(b.length / n / b.c0 for n, b in zip(counts, bars))
+    if beta_of > 0:
+        # stiffness damping shortens the step as in the finite-element solver (kernels._damped_step):
+        # dt <= (2 / w)(sqrt(1 + xi^2) - xi), w = 2 / dtc, xi = beta / dtc
+        xi = beta_of / dt
+        dt = dt * (math.sqrt(1 + xi * xi) - xi)
     for k, itf in enumerate(interfaces):
         if itf.stiffness is None:
             continue
@@ -244,8 +272,13 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     out_f = np.zeros((n_rec, len(interfaces)))
     out_e = np.zeros((n_rec, 6))
     t0 = time.perf_counter()
-    rec = _march(x, v, m, elem, h0, area, E, sy, np.array(Hs), np.array(betas), iface, k_if, c_if, kinematic, dt,
-                 steps, every, out_v, out_f, out_e, np.array(owner, dtype=np.int64), len(bars))
+    max_stress = np.zeros(len(elem))
+    peak_force = np.zeros(len(interfaces))
+    transit = min(b.length / n / b.c0 for n, b in zip(counts, bars))
+    smoothing = min(1.0, dt / (SMOOTHING_TRANSITS * transit))
+    rec = _march(x, v, m, elem, h0, area, E, sy, np.array(Hs), np.array(betas), iface, k_if, c_if, kinematic,
+                 anvil_gap is not None, dt, steps, every, out_v, out_f, out_e, np.array(owner, dtype=np.int64),
+                 len(bars), max_stress, smoothing, peak_force)
     wall = time.perf_counter() - t0
     h = {"time": out_e[:rec, 4]}
     for b_index, bar in enumerate(bars):
@@ -258,5 +291,10 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     total = (h["energy.kinetic"] + h["energy.internal"] + h["energy.plastic"] + h["energy.damping"]
              + h["energy.contact"])
     balance = float(np.abs(total - total[0]).max() / total[0]) if total[0] else 0.0
+    first = np.cumsum([0] + counts)
+    peaks = {b.name: float(max_stress[first[i]:first[i + 1]].max()) for i, b in enumerate(bars)}
+    interface_stress = {itf.name: float(peak_force[k] / min(bars[k].area, bars[k + 1].area))
+                        for k, itf in enumerate(interfaces)}
     return BarsResult(h, {b.name: b.mass for b in bars}, steps, dt, wall,
-                      len(elem) * steps / wall if wall > 0 else 0.0, balance)
+                      len(elem) * steps / wall if wall > 0 else 0.0, balance, peak_stress=peaks,
+                      interface_stress=interface_stress)

@@ -1,0 +1,364 @@
+"""A mass-chain scene, run at the fidelity its question needs.
+
+A chain scene is a scene file with a ``[chain]`` table instead of ``[scene]``: the bodies are
+listed in chain order (the first is launched, or sits on the anvil; the last is the test
+article), without positions or velocities, which the chain sets:
+
+    [chain]
+    name = "three_mass"
+    architecture = "launched-chain"   # or "stack-on-anvil"
+    launch_speed = "10 m/s"           # of the first body, or of the whole stack
+    fidelity = "1d"                   # rigid | 1d | axisymmetric | 3d (default rigid)
+    gap = "1 mm"                      # launched chain: between neighbours; stack: to the anvil
+    restitution = 0.9                 # the rigid model's, every interface (or a list)
+    damping = 0.02                    # structural damping ratio (1d and finite elements)
+    end_time = "2 ms"                 # default: the rigid model's last first-pass collision
+                                      #   plus three transits of the longest body
+
+Every fidelity writes the same ``summary.json`` (key ``chain``): which model ran, its wall
+time, the stage table (``metrics/stages.py``), the gain, the pulse on the test article where
+the fidelity has one, and the peak interface stress against each material's yield stress.
+
+* ``rigid``: ``rigid.py``, restitution as given; interface stress from the 1D impedance
+  estimate F = dv Z_a Z_b / (Z_a + Z_b), Z = rho c0 A, over the smaller face.
+* ``1d``: ``bars.py``, each body a uniform bar of its length and its volume / length section;
+  restitution emerges from the waves; interface stress from the low-passed contact force.
+* ``axisymmetric`` / ``3d``: the finite-element solver (``run.py``) on the bodies stacked along
+  z, contact between neighbours, the same damping; von Mises peaks against yield.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry.catalog import PARTS
+from ..metrics.stages import stage_table
+from ..scene import SceneError, resolve
+from ..units import UnitError, to_si
+from . import rigid
+from .bars import Bar, Interface, run_bars
+from .gain import ARCHITECTURES
+
+FIDELITIES = ("rigid", "1d", "axisymmetric", "3d")
+CHAIN_FIELDS = ("name", "architecture", "launch_speed", "fidelity", "gap", "restitution", "damping", "end_time")
+# FE gaps in a stack shrink up the stack (the closed form's strike order) but stay resolvable.
+STACK_SHRINK = 0.1
+
+
+@dataclass
+class ChainSpec:
+    name: str
+    architecture: str
+    launch_speed: float
+    fidelity: str
+    gap: float
+    restitution: tuple[float, ...]
+    damping: float
+    end_time: float | None
+
+
+def is_chain(raw: dict) -> bool:
+    return "chain" in raw
+
+
+def _spec(raw: dict, n: int, problems: list[str]) -> ChainSpec:
+    c = raw.get("chain")
+    if not isinstance(c, dict):
+        problems.append("chain: must be a table")
+        c = {}
+    for k in c:
+        if k not in CHAIN_FIELDS:
+            problems.append(f"chain.{k}: unknown field (allowed: {', '.join(CHAIN_FIELDS)})")
+
+    def quantity(key, dim, default=None, positive=True):
+        if key not in c:
+            if default is None:
+                problems.append(f"chain.{key}: missing (a {dim})")
+                return 1.0
+            return default
+        try:
+            v = to_si(c[key], dim)
+        except UnitError as e:
+            problems.append(f"chain.{key}: {e}")
+            return 1.0
+        if positive and not v > 0:
+            problems.append(f"chain.{key}: must be > 0, got {c[key]}")
+        return v
+
+    arch = c.get("architecture", "launched-chain")
+    if arch not in ARCHITECTURES:
+        problems.append(f"chain.architecture: must be one of {', '.join(ARCHITECTURES)}; got {arch!r}")
+    fidelity = c.get("fidelity", "rigid")
+    if fidelity not in FIDELITIES:
+        problems.append(f"chain.fidelity: must be one of {', '.join(FIDELITIES)}; got {fidelity!r}")
+    e = c.get("restitution", 0.9)
+    e = list(e) if isinstance(e, list) else [e] * max(n - 1, 0)
+    if len(e) != max(n - 1, 0) or not all(isinstance(x, (int, float)) and 0 < x <= 1 for x in e):
+        problems.append(f"chain.restitution: one number in (0, 1] or a list of {n - 1} (one per interface); "
+                        f"got {c.get('restitution')!r}")
+        e = [0.9] * max(n - 1, 0)
+    damping = c.get("damping", 0.02)
+    if not isinstance(damping, (int, float)) or not 0 <= damping < 1:
+        problems.append(f"chain.damping: a damping ratio in [0, 1), got {damping!r}")
+        damping = 0.0
+    return ChainSpec(str(c.get("name", "chain")), arch, quantity("launch_speed", "velocity"), fidelity,
+                     quantity("gap", "length", 1e-3), tuple(float(x) for x in e), float(damping),
+                     quantity("end_time", "time", 0.0) or None)
+
+
+def _height(body) -> float:
+    """Extent of a catalogued part along its axis [m]."""
+    zs = [p[1] for seg in PARTS[body.shape].profile(body.dims).segments() for p in (seg.start, seg.end)]
+    return max(zs) - min(zs)
+
+
+def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] | None = None,
+             end_time: float = 1.0) -> dict:
+    """The chain as an ordinary raw scene: bodies stacked along z, contact between neighbours.
+
+    Launched chain: the test article stands on z = 0, each heavier body above the next with the
+    gap, the first moving down at the launch speed.  Stack on anvil: the first body above a rigid
+    plane at z = 0 by the gap, the others above it with gaps shrinking up the stack, all falling."""
+    bodies = [dict(b) for b in raw["bodies"]]
+    n = len(bodies)
+    gdim = 3 if kinematics == "3d" else 2
+    heights = heights or [0.0] * n
+    z = [0.0] * n
+    if spec.architecture == "launched-chain":
+        for k in range(n - 2, -1, -1):
+            z[k] = z[k + 1] + heights[k + 1] + spec.gap
+        speeds = [-spec.launch_speed] + [0.0] * (n - 1)
+    else:
+        z[0] = spec.gap
+        for k in range(1, n):
+            z[k] = z[k - 1] + heights[k - 1] + spec.gap * STACK_SHRINK ** k
+        speeds = [-spec.launch_speed] * n
+    for b, zk, vk in zip(bodies, z, speeds):
+        b["position"] = [0.0] * (gdim - 1) + [zk]
+        b["velocity"] = [0.0] * (gdim - 1) + [vk]
+    contacts = [{"name": f"{bodies[k]['name']}_{bodies[k + 1]['name']}", "a": f"{bodies[k]['name']}.bottom",
+                 "b": f"{bodies[k + 1]['name']}.top"} for k in range(n - 1)]
+    if spec.architecture == "stack-on-anvil":
+        contacts = [{"name": f"anvil_{bodies[0]['name']}", "a": f"{bodies[0]['name']}.bottom",
+                     "wall": {"point": [0.0] * gdim, "normal": [0.0] * (gdim - 1) + [1.0]}}] + \
+                   [{"name": f"{bodies[k]['name']}_{bodies[k + 1]['name']}", "a": f"{bodies[k + 1]['name']}.bottom",
+                     "b": f"{bodies[k]['name']}.top"} for k in range(n - 1)]
+    out = {"scene": {"name": spec.name, "kinematics": kinematics, "end_time": end_time,
+                     "element": "hex" if gdim == 3 else "quad"},
+           "materials": raw.get("materials", {}), "bodies": bodies, "contact": contacts,
+           "shock": {"test_articles": [bodies[-1]["name"]], "cfc": "none", **raw.get("shock", {})}}
+    if spec.damping:
+        out["damping"] = {"ratio": spec.damping, "frequency": 1.0, "type": "stiffness"}   # set by resolve_chain
+    return out
+
+
+def resolve_chain(raw: dict, fidelity: str | None = None):
+    """Check a chain scene; returns (spec, scene) with the scene resolved for the fidelity's
+    kinematics (axisymmetric for rigid and 1d, whose bodies are parts of revolution)."""
+    problems: list[str] = []
+    bodies = raw.get("bodies")
+    if not isinstance(bodies, list) or len(bodies) < 2:
+        raise SceneError(["bodies: a chain needs at least two [[bodies]] in chain order"])
+    for k in raw:
+        if k not in ("chain", "materials", "bodies", "shock"):
+            problems.append(f"{k}: not part of a chain scene (allowed: chain, materials, bodies, shock)")
+    for i, b in enumerate(bodies):
+        for k in ("position", "velocity"):
+            if isinstance(b, dict) and k in b:
+                problems.append(f"bodies[{i}].{k}: the chain sets it (launch_speed, gap); remove it")
+        if isinstance(b, dict) and b.get("shape") not in PARTS:
+            problems.append(f"bodies[{i}].shape: a chain body is a part of revolution "
+                            f"({', '.join(p for p in PARTS)}), got {b.get('shape')!r}")
+    spec = _spec(raw, len(bodies), problems)
+    if fidelity is not None:
+        if fidelity not in FIDELITIES:
+            problems.append(f"--fidelity: must be one of {', '.join(FIDELITIES)}; got {fidelity!r}")
+        else:
+            spec.fidelity = fidelity
+    if problems:
+        raise SceneError(problems)
+    kinematics = spec.fidelity if spec.fidelity in ("axisymmetric", "3d") else "axisymmetric"
+    try:
+        scene = resolve(fe_scene(raw, spec, kinematics))
+    except SceneError as e:        # positions/velocities/contacts are generated: the rest is the user's
+        raise SceneError(e.problems) from None
+    heights = [_height(b) for b in scene.bodies]
+    first = scene.material_of(scene.bodies[0])
+    f1 = first.c_bar / (2 * heights[0])                  # first body's first longitudinal mode
+    scene_raw = fe_scene(raw, spec, kinematics, heights, end_time=spec.end_time or 1.0)
+    if spec.damping:
+        scene_raw["damping"]["frequency"] = f1
+    return spec, resolve(scene_raw), heights
+
+
+def _masses(scene) -> list[float]:
+    return [scene.material_of(b).rho * PARTS[b.shape].volume(b.dims, 3) for b in scene.bodies]
+
+
+def _impedance_stress(scene, heights, stages) -> dict:
+    """Rigid fidelity: the elastic interface stress of each collision from 1D impedances."""
+    out = {}
+    names = [b.name for b in scene.bodies]
+    for s in stages:
+        if s.struck == "wall":          # a rigid anvil: Z_b infinite, the stress is rho c0 dv
+            mat = scene.material_of(scene.body(s.striker))
+            out[s.pair] = abs(s.striker_before - s.struck_before) * mat.rho * mat.c_bar
+            continue
+        a, b = scene.body(s.striker), scene.body(s.struck)
+        za, zb = [scene.material_of(x).rho * scene.material_of(x).c_bar * PARTS[x.shape].volume(x.dims, 3) / h
+                  for x, h in ((a, heights[names.index(a.name)]), (b, heights[names.index(b.name)]))]
+        area = min(PARTS[x.shape].volume(x.dims, 3) / heights[names.index(x.name)] for x in (a, b))
+        out[s.pair] = abs(s.striker_before - s.struck_before) * za * zb / (za + zb) / area
+    return out
+
+
+def _default_end(spec, masses, heights, scene) -> float:
+    """The rigid model's last first-pass collision, plus three transits of the longest body."""
+    transit = max(h / scene.material_of(b).c_bar for h, b in zip(heights, scene.bodies))
+    r = _run_rigid_model(spec, masses, heights)
+    last = max((c.time for c in r.collisions), default=0.0)
+    return last + 3 * transit + spec.gap / spec.launch_speed
+
+
+def _run_rigid_model(spec, masses, heights):
+    if spec.architecture == "launched-chain":
+        v = [spec.launch_speed] + [0.0] * (len(masses) - 1)
+        return rigid.run_chain(masses, v, heights, [spec.gap] * (len(masses) - 1), spec.restitution)
+    return rigid.run_chain(masses, [-spec.launch_speed] * len(masses), heights,
+                           [spec.gap * STACK_SHRINK ** (k + 1) for k in range(len(masses) - 1)], spec.restitution,
+                           anvil=spec.restitution[0], anvil_gap=spec.gap)
+
+
+def _rigid_history(result, names, interface_names) -> dict:
+    """A history of the rigid model: velocities stepping at each collision, impulses as forces
+    over one sample, in a run's column names (so the same stage table reads it)."""
+    times = sorted({0.0} | {c.time for c in result.collisions})
+    t = []
+    for tc in times:
+        t += [tc - 1e-12, tc + 1e-12] if tc > 0 else [0.0]
+    t.append((times[-1] if times else 0.0) * 1.1 + 1e-9)
+    t = np.array(t)
+    v = np.tile(result.initial, (len(t), 1))
+    f = np.zeros((len(t), len(interface_names)))
+    for c in result.collisions:
+        after = t > c.time
+        if c.left >= 0:
+            v[after, c.left] = c.after[0]
+        v[after, c.right] = c.after[1]
+        j = 0 if c.left < 0 else c.left + (1 if len(interface_names) == len(names) else 0)
+        i = int(np.searchsorted(t, c.time))
+        f[i, j] = 1.0
+    h = {"time": t, "energy.kinetic": 0.5 * (v ** 2) @ result.masses, "energy.internal": np.zeros(len(t))}
+    for k, n in enumerate(names):
+        h[f"{n}.v_z"] = v[:, k]
+    for j, n in enumerate(interface_names):
+        h[f"contact.{n}.normal_z"] = f[:, j]
+    return h
+
+
+def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progress: bool = True,
+                    echo=print) -> dict:
+    """Run a chain scene at its fidelity (or ``fidelity``); writes ``out_dir/summary.json``."""
+    spec, scene, heights = resolve_chain(raw, fidelity)
+    masses = _masses(scene)
+    names = [b.name for b in scene.bodies]
+    os.makedirs(out_dir, exist_ok=True)
+    end_time = spec.end_time or _default_end(spec, masses, heights, scene)
+    launch = spec.launch_speed
+    stack = spec.architecture == "stack-on-anvil"
+    if stack:
+        contacts = [{"name": f"anvil_{names[0]}", "a": names[0], "b": None, "wall_velocity": 0.0}]
+        contacts += [{"name": f"{names[k]}_{names[k + 1]}", "a": names[k + 1], "b": names[k]}
+                     for k in range(len(names) - 1)]
+    else:
+        contacts = [{"name": f"{names[k]}_{names[k + 1]}", "a": names[k], "b": names[k + 1]}
+                    for k in range(len(names) - 1)]
+    iface_names = [c["name"] for c in contacts]
+    t0 = time.perf_counter()
+    pulse = None
+    if spec.fidelity == "rigid":
+        result = _run_rigid_model(spec, masses, heights)
+        wall = time.perf_counter() - t0
+        h = _rigid_history(result, names, iface_names)
+        model = (f"rigid: event-driven rigid-body collisions, restitution {list(spec.restitution)}; "
+                 f"{len(result.collisions)} collisions ({result.stopped})")
+        stages = stage_table(h, dict(zip(names, masses)), contacts, "z", ("z",))
+        stress = _impedance_stress(scene, heights, stages)
+        stress_kind = "elastic 1D impedance estimate dv Z_a Z_b / (Z_a + Z_b) over the smaller face"
+    elif spec.fidelity == "1d":
+        bars = []
+        for b, hgt in zip(scene.bodies, heights):
+            mat = scene.material_of(b)
+            pl = mat.plasticity
+            sy = pl.yield_stress if pl else math.inf
+            H = (pl.curve[-1][1] - pl.curve[0][1]) / (pl.curve[-1][0] - pl.curve[0][0]) if pl else 0.0
+            v0 = (-launch if stack else (launch if b is scene.bodies[0] else 0.0))
+            bars.append(Bar(b.name, hgt, PARTS[b.shape].volume(b.dims, 3) / hgt, mat.rho, mat.E, v0,
+                            yield_stress=sy, hardening=H))
+        gaps = ([Interface(iface_names[k + 1], spec.gap * STACK_SHRINK ** (k + 1)) for k in range(len(bars) - 1)]
+                if stack else [Interface(iface_names[k], spec.gap) for k in range(len(bars) - 1)])
+        r = run_bars(bars, gaps, end_time, damping_ratio=spec.damping,
+                     damping_frequency=scene.damping.frequency if scene.damping else None,
+                     anvil_gap=spec.gap if stack else None)
+        wall = r.wall_time_s
+        h = r.history
+        if stack:           # the anvil's force is not recorded; its impulse shows in body 1's velocity
+            h[f"contact.{iface_names[0]}.normal_z"] = np.zeros(len(h["time"]))
+        model = (f"1d: {sum(1 for _ in bars)} elastic{'-plastic' if any(b.yield_stress < math.inf for b in bars) else ''}"
+                 f" bars, kinematic contact, structural damping {spec.damping:g}; {r.steps} steps, "
+                 f"{r.element_cycles_per_s:.3g} element-cycles/s, energy balance {r.energy_balance_error:.1e}")
+        stages = stage_table(h, r.masses, contacts, "z", ("z",))
+        stress = dict(r.interface_stress)
+        stress_kind = "peak contact force (low-passed over 4 element transits) over the smaller face"
+    else:
+        from ..run import run_scene
+        scene = resolve({**fe_scene(raw, spec, spec.fidelity, heights, end_time),
+                         **({"damping": {"ratio": spec.damping, "frequency": scene.damping.frequency,
+                                         "type": "stiffness"}} if spec.damping else {})})
+        res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress)
+        wall = res.summary["wall_time_s"]
+        from ..output.history import read_history_csv
+        h = read_history_csv(os.path.join(out_dir, "history.csv"))
+        model = "finite elements (" + spec.fidelity + "): " + "; ".join(m.strip() for m in res.summary["models"])
+        fe_contacts = [{"name": c.name, "a": c.a, "b": c.b,
+                        "wall_velocity": c.rigid.velocity[-1] if c.rigid else 0.0} for c in scene.contacts]
+        stages = stage_table(h, {b: res.summary["bodies"][b]["mass"] for b in names}, fe_contacts, "z", ("z",))
+        stress = {b: res.summary["bodies"][b]["max_von_mises"] for b in names}
+        stress_kind = "largest von Mises stress in each body"
+        pulse = (res.summary.get("shock") or {}).get("channels", {}).get(names[-1])
+    last = names[-1]
+    first_strike = next((s for s in stages if s.struck == last), None)
+    summary_path = os.path.join(out_dir, "summary.json")
+    base = json.load(open(summary_path)) if os.path.exists(summary_path) else {}
+    yields = {b.name: (scene.material_of(b).plasticity.yield_stress if scene.material_of(b).plasticity else None)
+              for b in scene.bodies}
+    chain = {
+        "fidelity": spec.fidelity, "model": model, "architecture": spec.architecture,
+        "launch_speed": launch, "wall_time_s": wall, "end_time": end_time,
+        "masses": dict(zip(names, masses)), "lengths": dict(zip(names, heights)),
+        "stages": [s.as_dict() for s in stages],
+        "test_article_speed": abs(first_strike.struck_after) if first_strike else None,
+        "gain": abs(first_strike.struck_after) / launch if first_strike else None,
+        "peak_stress": stress, "peak_stress_kind": stress_kind, "yield_stress": yields,
+        "test_article_pulse": pulse,
+    }
+    with open(summary_path, "w") as fh:
+        json.dump({**base, "chain": chain}, fh, indent=2, default=float)
+    echo(f"chain '{spec.name}', {spec.architecture}, fidelity {spec.fidelity}:\n    " + model.replace("; ", "\n    "))
+    for s in stages:
+        echo(f"  {s.pair:24s} {s.striker} {s.striker_before:+.4g} -> {s.striker_after:+.4g} m/s, {s.struck} "
+             f"{s.struck_before:+.4g} -> {s.struck_after:+.4g} m/s, e = {s.restitution:.4f}")
+    if chain["gain"] is not None:
+        echo(f"  test article {last}: {chain['test_article_speed']:.5g} m/s, gain {chain['gain']:.4f}; "
+             f"wall time {wall:.3g} s")
+    for k, v in stress.items():
+        ys = [y for b, y in yields.items() if y and (b == k or b in k.split("_"))]
+        against = f", {v / min(ys):.0%} of yield {min(ys) / 1e6:.4g} MPa" if ys else ", elastic material (no yield given)"
+        echo(f"  peak stress {k}: {v / 1e6:.4g} MPa{against} ({stress_kind})")
+    echo(f"results in {out_dir}")
+    return chain

@@ -1,0 +1,64 @@
+"""A chain scene run at each fidelity gives the same kind of answer (stage table, gain)."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCENE = os.path.join(REPO, "studies", "amplifier", "three_rods.toml")
+
+
+def shockfem(*args):
+    return subprocess.run([sys.executable, "-m", "shockfem", *args], capture_output=True, text=True, timeout=900)
+
+
+def _run(tmp_path, fidelity, *sets):
+    out = tmp_path / fidelity
+    p = shockfem("run", SCENE, "--fidelity", fidelity, "--out", str(out), "--no-progress", *sets)
+    assert p.returncode == 0, p.stderr
+    return json.load(open(out / "summary.json"))["chain"], p.stdout
+
+
+def test_rigid_chain_is_the_product_of_its_collisions(tmp_path):
+    chain, out = _run(tmp_path, "rigid")
+    m = list(chain["masses"].values())
+    e = 0.9
+    v2 = (1 + e) * m[0] / (m[0] + m[1]) * 10.0
+    v3 = (1 + e) * m[1] / (m[1] + m[2]) * v2
+    assert [s["restitution"] for s in chain["stages"]] == pytest.approx([e, e], rel=1e-9)
+    assert abs(chain["stages"][0]["struck_after"]) == pytest.approx(v2, rel=1e-9)
+    assert chain["test_article_speed"] == pytest.approx(v3, rel=1e-9)
+    assert chain["fidelity"] == "rigid" and "event-driven" in chain["model"]
+    assert "of yield 690 MPa" in out
+
+
+def test_1d_chain_loses_energy_to_waves(tmp_path):
+    chain, _ = _run(tmp_path, "1d", "--set", "chain.damping=0")
+    assert len(chain["stages"]) == 2
+    # elastic bars, no damping: restitution below 1 only by the waves left in the bodies
+    for s in chain["stages"]:
+        assert 0.5 < s["restitution"] < 0.95
+        assert s["vibration_share"] > 0.01
+    assert "energy balance" in chain["model"]
+    assert set(chain["peak_stress"]) == {"m1_m2", "m2_m3"}
+
+
+def test_axisymmetric_chain_reports_the_same_table(tmp_path):
+    sets = [f'--set=bodies.{b}.element_size="4 mm"' for b in ("m1", "m2", "m3")]
+    chain, _ = _run(tmp_path, "axisymmetric", *sets)
+    assert [s["pair"] for s in chain["stages"]] == ["m1_m2", "m2_m3"]
+    assert chain["stages"][1]["struck"] == "m3" and chain["gain"] > 1.0
+    assert chain["test_article_pulse"]["pulse"]["peak_g"] > 0
+    assert (tmp_path / "axisymmetric" / "fields.xdmf").exists()
+
+
+def test_bad_chain_lists_its_problems():
+    p = shockfem("check", SCENE, "--set", 'chain.launch_speed="-3 kg"', "--set", "chain.restitution=2",
+                 "--set", "chain.fidelity=2d")
+    assert p.returncode == 2
+    for expected in ("chain.launch_speed: expected a velocity", "chain.restitution: one number in (0, 1]",
+                     "chain.fidelity: must be one of rigid, 1d, axisymmetric, 3d"):
+        assert expected in p.stderr
+    assert "Traceback" not in p.stderr
