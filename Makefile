@@ -1,4 +1,5 @@
-# make run   - install what is missing, then run the main job (the default scene) and say where results are
+# make run   - install what is missing, then run the main job (the velocity-amplifier study) and say where
+#              its report is
 # make test  - install what is missing, then run the test suite
 VENV := .venv
 BIN := $(VENV)/bin
@@ -11,7 +12,7 @@ install:
 	@bash scripts/install.sh
 
 run: install
-	$(BIN)/shockfem run studies/foundation/bar_impact.toml --out results/bar_impact
+	$(BIN)/shockfem study amplifier --out results/amplifier
 
 test: install
 	$(BIN)/python -m pytest -q tests

@@ -65,6 +65,11 @@ def _parser() -> argparse.ArgumentParser:
     a.add_argument("--aspect", type=float, default=1.0, help="length / diameter of the cylinders")
     a.add_argument("--json", help="write the design to this JSON file")
 
+    st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
+    st.add_argument("name", choices=("amplifier",))
+    st.add_argument("--size", choices=("smoke", "default"), default="default")
+    st.add_argument("--out", help="results directory (default: results/<name>)")
+
     v = sub.add_parser("verify", help="verification against exact and published solutions")
     v.add_argument("names", nargs="*", help="cases to run (default: all)")
     v.add_argument("--list", action="store_true", help="list the cases")
@@ -167,6 +172,10 @@ def _dispatch(args) -> int:
         return _modes(args)
     if args.command == "amplifier":
         return _amplifier(args)
+    if args.command == "study":
+        from .study.amplifier import run_study
+        run_study(args.size, args.out or os.path.join("results", args.name))
+        return EXIT_OK
     if args.command == "verify":
         from .verify import run_cases, CASES
         if args.list:

@@ -38,7 +38,8 @@ from numba import njit
 
 # Elements in the shortest bar when a bar does not say: the dispersion of linear elements
 # (ringing behind a steep front) shifts the St Venant restitution by about 0.8% at 400
-# (2% at 100); the element size is then the same in every bar.
+# (2% at 100); the element size is then the same in every bar (no finer than structural
+# damping makes useful, see run_bars).
 ELEMENTS_IN_SHORTEST = 400
 # Time constant of the low pass on the interface force, in element transit times h / c0 (the
 # ringing behind a front has a period of a few transits; the plateau lasts hundreds).
@@ -210,12 +211,14 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     if len(interfaces) != len(bars) - 1:
         raise ValueError(f"{len(bars)} bars need {len(bars) - 1} interfaces, got {len(interfaces)}")
     xs, ms, owner, elems, h0s, areas, Es, sys_, Hs, betas = [], [], [], [], [], [], [], [], [], []
+    f_ref = damping_frequency or bars[0].c0 / (2 * bars[0].length)
+    beta_of = 2 * damping_ratio / (2 * math.pi * f_ref)
     left, right = [], []
     offset = anvil_gap or 0.0
     node = 0
-    f_ref = damping_frequency or bars[0].c0 / (2 * bars[0].length)
-    beta_of = 2 * damping_ratio / (2 * math.pi * f_ref)
-    h_default = min(b.length for b in bars) / ELEMENTS_IN_SHORTEST
+    # stiffness damping removes what is shorter than about beta c0 (it is overdamped there), and
+    # elements finer than that only shorten the step (xi = beta / dtc grows as h falls)
+    h_default = max(min(b.length for b in bars) / ELEMENTS_IN_SHORTEST, beta_of * max(b.c0 for b in bars))
     counts = [b.elements or max(1, int(round(b.length / h_default))) for b in bars]
     for b_index, bar in enumerate(bars):
         n = counts[b_index]
