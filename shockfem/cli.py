@@ -65,6 +65,11 @@ def _parser() -> argparse.ArgumentParser:
     a.add_argument("--aspect", type=float, default=1.0, help="length / diameter of the cylinders")
     a.add_argument("--json", help="write the design to this JSON file")
 
+    ln = sub.add_parser("launcher", help="fire a gas gun described by a [launcher] scene; ASME sizing")
+    ln.add_argument("scene")
+    ln.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    ln.add_argument("--out", help="results directory (default: results/<name>)")
+
     st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
     st.add_argument("name", choices=("amplifier",))
     st.add_argument("--size", choices=("smoke", "default"), default="default")
@@ -172,6 +177,8 @@ def _dispatch(args) -> int:
         return _modes(args)
     if args.command == "amplifier":
         return _amplifier(args)
+    if args.command == "launcher":
+        return _launcher(args)
     if args.command == "study":
         from .study.amplifier import run_study
         run_study(args.size, args.out or os.path.join("results", args.name))
@@ -195,6 +202,37 @@ def _dispatch(args) -> int:
                 json.dump(results, fh, indent=2, default=float)
         return EXIT_OK
     raise AssertionError(args.command)
+
+
+def _launcher(args) -> int:
+    from .launcher.gun import fire
+    from .launcher.output import sizing, write_shot
+    from .launcher.scene import resolve_launcher
+    from .scene import apply_override, read_toml
+    raw = read_toml(args.scene)
+    for assignment in args.set:
+        raw = apply_override(raw, assignment)
+    name, gun, options = resolve_launcher(raw)
+    shot = fire(gun)
+    try:
+        size = sizing(gun, options)
+    except ValueError as e:
+        raise ModelError(f"ASME sizing: {e}") from None
+    out = args.out or os.path.join("results", name)
+    write_shot(out, shot, size)
+    ft = 0.3048
+    print(f"{name}: {shot.model}")
+    print(f"  muzzle velocity {shot.muzzle_velocity:.5g} m/s ({shot.muzzle_velocity / ft:.5g} ft/s)"
+          f"{'' if shot.left_barrel else ' -- ' + shot.note}; {shot.time_in_barrel * 1e3:.4g} ms in the barrel")
+    print(f"  peak acceleration {shot.peak_acceleration / 9.80665:.4g} g, peak base pressure "
+          f"{shot.peak_base_pressure / 1e6:.4g} MPa, efficiency {shot.efficiency:.1%} of the gas energy, "
+          f"energy balance {shot.energy_balance_error:.1e}")
+    b, t = size["barrel"], size["tank"]
+    print(f"  barrel {b['material']}: wall {b['thickness'] * 1e3:.3g} mm ({b['rule']}), {b['weight']:.4g} kg; "
+          f"tank {t['material']}: shell {t['shell_thickness'] * 1e3:.3g} mm, heads {t['head_thickness'] * 1e3:.3g} mm, "
+          f"{t['weight']:.4g} kg; hoop margin {min(b['margin'], t['margin']):+.1%} at {gun.reservoir_pressure / 1e6:.4g} MPa")
+    print(f"results in {out}")
+    return EXIT_OK
 
 
 def _amplifier(args) -> int:
