@@ -25,6 +25,8 @@ DIMENSIONS = {
     "stiffness": "[mass] / [time] ** 2",
     "damping": "[mass] / [time]",
     "slowness": "[time] / [length]",
+    "volume": "[length] ** 3",
+    "temperature": "[temperature]",
     "dimensionless": "",
 }
 
@@ -33,6 +35,7 @@ SI_UNITS = {
     "length": "m", "mass": "kg", "time": "s", "velocity": "m/s", "angular_velocity": "rad/s",
     "acceleration": "m/s**2", "force": "N", "pressure": "Pa", "density": "kg/m**3",
     "frequency": "Hz", "strain_rate": "1/s", "energy": "J", "stiffness": "N/m", "damping": "N*s/m", "slowness": "s/m",
+    "volume": "m**3", "temperature": "K",
     "dimensionless": "",
 }
 
@@ -97,6 +100,7 @@ def _example(dimension: str) -> str:
             "pressure": "2000 psi", "density": "7850 kg/m^3", "frequency": "5 kHz",
             "force": "10 kN", "acceleration": "10000 gee", "energy": "1 kJ",
             "angular_velocity": "100 rad/s", "stiffness": "1e6 N/m", "damping": "100 N*s/m",
+            "volume": "20 ft**3", "temperature": "293 K",
             "dimensionless": "0.3"}.get(dimension, "1")
 
 

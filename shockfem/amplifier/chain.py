@@ -219,6 +219,19 @@ def _impedance_stress(scene, heights, stages) -> dict:
     return out
 
 
+def _yield_of(key: str, yields: dict) -> float | None:
+    """The lower yield stress of the bodies a peak-stress key names: a body, or an interface
+    ``a_b`` (``anvil_b``); None when none of them yields (elastic materials)."""
+    ys = [y for b, y in yields.items() if y and (b == key or b in key.split("_"))]
+    return min(ys) if ys else None
+
+
+def default_end_time(raw: dict) -> float:
+    """The end time a chain scene runs to when it does not give one (``_default_end``)."""
+    spec, scene, heights = resolve_chain(raw)
+    return _default_end(spec, _masses(scene), heights, scene)
+
+
 def _default_end(spec, masses, heights, scene) -> float:
     """The last first-pass collision of a rigid chain with restitution 0.2 (real chains are
     slower than the assumed restitution makes them), plus three transits of the longest body."""
@@ -353,6 +366,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         "test_article_speed": final_speed, "gain": final_speed / launch,
         "contact_at_end": still_closed,
         "peak_stress": stress, "peak_stress_kind": stress_kind, "yield_stress": yields,
+        "stress_over_yield": {k: v / _yield_of(k, yields) for k, v in stress.items() if _yield_of(k, yields)},
         "test_article_pulse": pulse,
     }
     with open(summary_path, "w") as fh:
@@ -364,8 +378,8 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
     echo(f"  test article {last}: {final_speed:.5g} m/s at the end, gain {chain['gain']:.4f}; wall time {wall:.3g} s"
          + ("; NOTE: bodies still in contact when the run ended (set chain.end_time longer)" if still_closed else ""))
     for k, v in stress.items():
-        ys = [y for b, y in yields.items() if y and (b == k or b in k.split("_"))]
-        against = f", {v / min(ys):.0%} of yield {min(ys) / 1e6:.4g} MPa" if ys else ", elastic material (no yield given)"
+        y = _yield_of(k, yields)
+        against = f", {v / y:.0%} of yield {y / 1e6:.4g} MPa" if y else ", elastic material (no yield given)"
         echo(f"  peak stress {k}: {v / 1e6:.4g} MPa{against} ({stress_kind})")
     echo(f"results in {out_dir}")
     return chain

@@ -56,7 +56,7 @@ def channel_metrics(t: np.ndarray, v: np.ndarray, v_body: np.ndarray, shock: dic
         problem = filters.check_sampling(cfc, dt)
         if problem:
             notes.append(problem)
-        a = filters.cfc_filter(a_raw, dt, cfc) if "Nyquist" not in (problem or "") else a_raw
+        a = a_raw if filters.above_nyquist(cfc, dt) else filters.cfc_filter(a_raw, dt, cfc)
     else:
         a = a_raw
     out: dict = {"filter": f"CFC {cfc} (SAE J211)" if cfc else "none", "sample_interval": dt, "notes": notes}

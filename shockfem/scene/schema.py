@@ -295,16 +295,9 @@ def _refinements(ck, b: dict, path: str, h: float) -> tuple:
     """``refine = [{region, size, distance}]``: a finer element size near named faces, growing
     linearly to the body's element size over ``distance`` (default 5 element sizes)."""
     out = []
-    raw = b.get("refine", [])
-    if not isinstance(raw, list):
-        ck.fail(f"{path}.refine", "must be a list of {region, size, distance} tables")
-        return ()
-    for j, r in enumerate(raw):
-        rp = f"{path}.refine[{j}]"
-        if not isinstance(r, dict):
-            ck.fail(rp, "must be a table {region = ..., size = ..., distance = ...}")
-            continue
-        ck.unknown(r, ("region", "size", "distance"), rp)
+    fields = ("region", "size", "distance")
+    for rp, r in ck.entries(b, "refine", f"{path}.refine", fields):
+        ck.unknown(r, fields, rp)
         region = r.get("region")
         if not isinstance(region, str):
             ck.fail(f"{rp}.region", "missing (the name of one of the body's regions)")
@@ -417,18 +410,23 @@ class _Checker:
             return choices[0]
         return v
 
-    def entries(self, raw: dict, key: str):
-        """(path, table) of every ``[[key]]`` entry; a non-list or a non-table entry is a problem."""
+    def entries(self, raw: dict, key: str, path: str | None = None, fields: tuple[str, ...] = ()):
+        """(path, table) of every entry of the list ``raw[key]`` (``[[key]]`` at the top level);
+        a non-list or a non-table entry is a problem.  ``fields``: the table's fields, named in
+        the messages (``path`` is the list's own, default ``key``)."""
+        path = path or key
         items = raw.get(key, [])
         if not isinstance(items, list):
-            self.fail(key, f"must be a list of [[{key}]] entries")
+            self.fail(path, f"must be a list of {{{', '.join(fields)}}} tables" if fields else
+                      f"must be a list of [[{key}]] entries")
             return
         for i, item in enumerate(items):
-            path = f"{key}[{i}]"
+            item_path = f"{path}[{i}]"
             if not isinstance(item, dict):
-                self.fail(path, "must be a table")
+                self.fail(item_path, "must be a table {" + ", ".join(f"{f} = ..." for f in fields) + "}"
+                          if fields else "must be a table")
                 continue
-            yield path, item
+            yield item_path, item
 
     def pairs(self, d: dict, key: str, path: str, names: tuple[str, str], dimensions: tuple[str, str],
               minimum: int = 1) -> list[tuple[float, float]]:
@@ -718,16 +716,13 @@ def _shock(ck: _Checker, raw: dict, body_regions: dict, kin: str, end_time: floa
         ppo = 12
     meters = []
     names = set()
-    for j, m in enumerate(d.get("accelerometers", []) if isinstance(d.get("accelerometers", []), list) else []):
-        path = f"shock.accelerometers[{j}]"
-        if not isinstance(m, dict):
-            ck.fail(path, "must be a table {name = ..., body = ..., at = [...]}")
-            continue
-        ck.unknown(m, ("name", "body", "at"), path)
+    fields = ("name", "body", "at")
+    for path, m in ck.entries(d, "accelerometers", "shock.accelerometers", fields):
+        ck.unknown(m, fields, path)
         name = m.get("name")
         if not isinstance(name, str) or not name.isidentifier() or name in names:
             ck.fail(f"{path}.name", f"needs a unique name made of letters, digits and _, got {name!r}")
-            name = f"accelerometer{j}"
+            name = f"accelerometer{len(meters)}"
         names.add(name)
         body = m.get("body")
         if body not in body_regions:
@@ -736,8 +731,6 @@ def _shock(ck: _Checker, raw: dict, body_regions: dict, kin: str, end_time: floa
             ck.fail(f"{path}.at", f"missing (the point, {gdim} coordinates with units)")
         at = ck.vector(m, "at", path, "length", gdim, [0.0] * gdim)
         meters.append(Accelerometer(name, str(body), at))
-    if not isinstance(d.get("accelerometers", []), list):
-        ck.fail("shock.accelerometers", "must be a list of {name, body, at} tables")
     spec = None
     if "spec" in d:
         sp = ck.table(d, "spec", "shock.spec")

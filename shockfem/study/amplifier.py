@@ -24,7 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ..amplifier.chain import run_chain_scene  # noqa: E402
+from ..amplifier.chain import default_end_time, run_chain_scene  # noqa: E402
 from ..amplifier.gain import chain_gain, cylinder_size, design, stack_gain  # noqa: E402
 from ..errors import UnstableRun  # noqa: E402
 from ..scene.library import LIBRARY  # noqa: E402
@@ -171,10 +171,8 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
                for k, (m, s) in enumerate(zip(d.masses, sizes))], ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.4g}"])
     bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], 0.0) for k, s in enumerate(sizes)]
     # long enough for a lossy chain to part: the rigid timing at e = 0.2 (the chain's default), tripled
-    from ..amplifier.chain import resolve_chain, _default_end, _masses
-    spec, scene, heights = resolve_chain(_chain_raw("five_mass", [dict(b, element_size=0.02) for b in bodies],
-                                                    d.launch_speed, "rigid"))
-    end = 3 * _default_end(spec, _masses(scene), heights, scene)
+    end = 3 * default_end_time(_chain_raw("five_mass", [dict(b, element_size=0.02) for b in bodies],
+                                          d.launch_speed, "rigid"))
     runs = []
     for fidelity, h in cfg["design"]:
         for b in bodies:
@@ -196,8 +194,7 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
         es = ", ".join(f"{s['restitution']:.3f}" for s in chain["stages"] if s["struck"].startswith("m"))
         if chain["contact_at_end"]:
             es += " (still in contact at the end)"
-        ratio = max(v / y for v, y in zip(chain["peak_stress"].values(),
-                                          [690e6] * len(chain["peak_stress"])))
+        ratio = max(chain["stress_over_yield"].values(), default=float("nan"))
         gain = chain["gain"] if chain["gain"] is not None else float("nan")
         diff = (gain / finest["gain"] - 1) if finest and finest["gain"] else float("nan")
         rows.append([label, es, gain, diff, ratio, chain["wall_time_s"]])
@@ -210,7 +207,7 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
               rows, ["{}", "{}", "{:.3f}", "{:+.1%}", "{:.2f}", "{:.3g}"])
     if finest:
         es = [s["restitution"] for s in finest["stages"] if s["struck"].startswith("m")]
-        worst = max(finest["peak_stress"].values()) / 690e6
+        worst = max(finest["stress_over_yield"].values(), default=float("nan"))
         rep.text(f"Reading: with flat steel faces this design does not amplify as the rigid model assumes. The "
                  f"finest model finds restitutions {min(es):.2f} to {max(es):.2f} per stage (0.9 assumed) and a gain "
                  f"of {finest['gain']:.2f} instead of {d.gain:.2f}: every stage yields (von Mises up to {worst:.1f} "
