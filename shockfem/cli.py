@@ -69,9 +69,13 @@ def _parser() -> argparse.ArgumentParser:
     ln.add_argument("scene")
     ln.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
     ln.add_argument("--out", help="results directory (default: results/<name>)")
+    ln.add_argument("--design", action="store_true",
+                    help="find the lightest launcher meeting the scene's [design] table, then fire it")
+    ln.add_argument("--trade", type=int, metavar="N", default=0,
+                    help="with the design, trade curves at N points: weight against pressure, length against bore")
 
     st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
-    st.add_argument("name", choices=("amplifier",))
+    st.add_argument("name", choices=("amplifier", "launcher"))
     st.add_argument("--size", choices=("smoke", "default"), default="default")
     st.add_argument("--out", help="results directory (default: results/<name>)")
 
@@ -180,7 +184,10 @@ def _dispatch(args) -> int:
     if args.command == "launcher":
         return _launcher(args)
     if args.command == "study":
-        from .study.amplifier import run_study
+        if args.name == "amplifier":
+            from .study.amplifier import run_study
+        else:
+            from .study.launcher import run_study
         run_study(args.size, args.out or os.path.join("results", args.name))
         return EXIT_OK
     if args.command == "verify":
@@ -206,31 +213,39 @@ def _dispatch(args) -> int:
 
 def _launcher(args) -> int:
     from .launcher.gun import fire
-    from .launcher.output import sizing, write_shot
-    from .launcher.scene import resolve_launcher
+    from .launcher.output import design_lines, shot_lines, sizing, write_design, write_shot
+    from .launcher.scene import resolve_design, resolve_launcher
     from .scene import apply_override, read_toml
     raw = read_toml(args.scene)
     for assignment in args.set:
         raw = apply_override(raw, assignment)
     name, gun, options = resolve_launcher(raw)
+    out = args.out or os.path.join("results", name)
+    if args.design or args.trade:
+        from .launcher.design import around, length_against_bore, lightest_launcher, trade
+        velocity, limits = resolve_design(raw)
+        design = lightest_launcher(gun, velocity, limits, options)
+        for line in design_lines(design):
+            print(line)
+        trades = {}
+        if args.trade and design.feasible:
+            g = design.gun
+            trades["weight_vs_pressure"] = trade(g, velocity, limits, options, "reservoir_pressure",
+                                                 around(g.reservoir_pressure, limits.min_pressure,
+                                                        limits.max_pressure, args.trade))
+            trades["length_vs_bore"] = length_against_bore(g, velocity, around(g.bore, limits.min_bore, 4 * g.bore,
+                                                                               args.trade), options)
+        for path in write_design(out, design, trades):
+            print(f"wrote {path}")
+        gun = design.gun
     shot = fire(gun)
     try:
         size = sizing(gun, options)
     except ValueError as e:
         raise ModelError(f"ASME sizing: {e}") from None
-    out = args.out or os.path.join("results", name)
     write_shot(out, shot, size)
-    ft = 0.3048
-    print(f"{name}: {shot.model}")
-    print(f"  muzzle velocity {shot.muzzle_velocity:.5g} m/s ({shot.muzzle_velocity / ft:.5g} ft/s)"
-          f"{'' if shot.left_barrel else ' -- ' + shot.note}; {shot.time_in_barrel * 1e3:.4g} ms in the barrel")
-    print(f"  peak acceleration {shot.peak_acceleration / 9.80665:.4g} g, peak base pressure "
-          f"{shot.peak_base_pressure / 1e6:.4g} MPa, efficiency {shot.efficiency:.1%} of the gas energy, "
-          f"energy balance {shot.energy_balance_error:.1e}")
-    b, t = size["barrel"], size["tank"]
-    print(f"  barrel {b['material']}: wall {b['thickness'] * 1e3:.3g} mm ({b['rule']}), {b['weight']:.4g} kg; "
-          f"tank {t['material']}: shell {t['shell_thickness'] * 1e3:.3g} mm, heads {t['head_thickness'] * 1e3:.3g} mm, "
-          f"{t['weight']:.4g} kg; hoop margin {min(b['margin'], t['margin']):+.1%} at {gun.reservoir_pressure / 1e6:.4g} MPa")
+    for line in shot_lines(name, shot, size):
+        print(line)
     print(f"results in {out}")
     return EXIT_OK
 

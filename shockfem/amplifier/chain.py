@@ -15,6 +15,13 @@ article), without positions or velocities, which the chain sets:
     end_time = "2 ms"                 # default: the last first-pass collision of a rigid chain
                                       #   at e = 0.2, plus three transits of the longest body
 
+    [launcher]                        # instead of launch_speed: the gas gun that fires the first
+    bore = "12 in"                    #   body (or the whole stack), as in a launcher scene
+    length = "6 ft"                   #   (shockfem/launcher/scene.py) without projectile_mass,
+    reservoir_pressure = "2000 psi"   #   which the chain gives it; its muzzle velocity is the
+    reservoir_volume = "20 ft**3"     #   launch speed, so the test article's speed follows from
+                                      #   the tank pressure in one run
+
 Every fidelity writes the same ``summary.json`` (key ``chain``): which model ran, its wall
 time, the stage table (``metrics/stages.py``), the gain, the pulse on the test article where
 the fidelity has one, and the peak interface stress against each material's yield stress.
@@ -62,6 +69,8 @@ class ChainSpec:
     restitution: tuple[float, ...]
     damping: float
     end_time: float | None
+    launcher: dict | None = None      # the shot's summary and sizing when a [launcher] fired the chain
+    shot: object = None               # and the shot itself (its histories)
 
 
 def is_chain(raw: dict) -> bool:
@@ -108,7 +117,10 @@ def _spec(raw: dict, n: int, problems: list[str]) -> ChainSpec:
     if not isinstance(damping, (int, float)) or not 0 <= damping < 1:
         problems.append(f"chain.damping: a damping ratio in [0, 1), got {damping!r}")
         damping = 0.0
-    return ChainSpec(str(c.get("name", "chain")), arch, quantity("launch_speed", "velocity"), fidelity,
+    if "launcher" in raw and "launch_speed" in c:
+        problems.append("chain.launch_speed: the [launcher] sets the launch speed; give one or the other")
+    speed = quantity("launch_speed", "velocity", 1.0 if "launcher" in raw else None)
+    return ChainSpec(str(c.get("name", "chain")), arch, speed, fidelity,
                      quantity("gap", "length", 1e-3), tuple(float(x) for x in e), float(damping),
                      quantity("end_time", "time", 0.0) or None)
 
@@ -167,8 +179,8 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
     if not isinstance(bodies, list) or len(bodies) < 2:
         raise SceneError(["bodies: a chain needs at least two [[bodies]] in chain order"])
     for k in raw:
-        if k not in ("chain", "materials", "bodies", "shock"):
-            problems.append(f"{k}: not part of a chain scene (allowed: chain, materials, bodies, shock)")
+        if k not in ("chain", "materials", "bodies", "shock", "launcher"):
+            problems.append(f"{k}: not part of a chain scene (allowed: chain, materials, bodies, shock, launcher)")
     for i, b in enumerate(bodies):
         for k in ("position", "velocity"):
             if isinstance(b, dict) and k in b:
@@ -190,12 +202,35 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
     except SceneError as e:        # positions/velocities/contacts are generated: the rest is the user's
         raise SceneError(e.problems) from None
     heights = [_height(b) for b in scene.bodies]
+    if "launcher" in raw:
+        _fire_launcher(raw, spec, _masses(scene))
     first = scene.material_of(scene.bodies[0])
     f1 = first.c_bar / (2 * heights[0])                  # first body's first longitudinal mode
     scene_raw = fe_scene(raw, spec, kinematics, heights, end_time=spec.end_time or 1.0)
     if spec.damping:
         scene_raw["damping"]["frequency"] = f1
     return spec, resolve(scene_raw), heights
+
+
+def _fire_launcher(raw: dict, spec: ChainSpec, masses: list[float]):
+    """Fire the scene's gas gun with the first body (launched chain) or the whole stack as its
+    projectile; its muzzle velocity becomes the chain's launch speed."""
+    from ..launcher.gun import fire
+    from ..launcher.output import sizing
+    from ..launcher.scene import resolve_launcher
+    launched = masses[0] if spec.architecture == "launched-chain" else sum(masses)
+    name, gun, options = resolve_launcher(raw, projectile_mass=launched)
+    shot = fire(gun)
+    if not shot.left_barrel or shot.muzzle_velocity <= 0:
+        raise SceneError([f"launcher: the gun does not fire the {launched:.5g} kg "
+                          f"{'first body' if spec.architecture == 'launched-chain' else 'stack'}: {shot.note}"])
+    try:
+        size = sizing(gun, options)
+    except ValueError as e:
+        raise SceneError([f"launcher: ASME sizing: {e}"]) from None
+    spec.launch_speed = shot.muzzle_velocity
+    spec.launcher = {"name": name, **shot.summary(), "sizing": size}
+    spec.shot = shot
 
 
 def _masses(scene) -> list[float]:
@@ -368,9 +403,18 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         "peak_stress": stress, "peak_stress_kind": stress_kind, "yield_stress": yields,
         "stress_over_yield": {k: v / _yield_of(k, yields) for k, v in stress.items() if _yield_of(k, yields)},
         "test_article_pulse": pulse,
+        "launcher": spec.launcher,
     }
     with open(summary_path, "w") as fh:
         json.dump({**base, "chain": chain}, fh, indent=2, default=float)
+    if spec.launcher:
+        from ..launcher.output import write_shot
+        write_shot(os.path.join(out_dir, "launcher"), spec.shot, spec.launcher["sizing"])
+        L = spec.launcher
+        echo(f"launcher '{L['name']}': {L['model']}\n  fires {L['gun']['projectile_mass']:.5g} kg at "
+             f"{launch:.5g} m/s from {L['gun']['reservoir_pressure'] / 1e6:.4g} MPa "
+             f"(peak {L['peak_acceleration'] / 9.80665:.4g} g, efficiency {L['efficiency']:.1%}); "
+             f"barrel and tank {L['sizing']['total_weight']:.4g} kg")
     echo(f"chain '{spec.name}', {spec.architecture}, fidelity {spec.fidelity}:\n    " + model.replace("; ", "\n    "))
     for s in stages:
         echo(f"  {s.pair:24s} {s.striker} {s.striker_before:+.4g} -> {s.striker_after:+.4g} m/s, {s.struck} "

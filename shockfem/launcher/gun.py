@@ -39,12 +39,19 @@ from scipy.integrate import solve_ivp
 from .gas import GASES, Gas, orifice_flow
 
 GAS_INERTIA = ("none", "lagrange", "simple-wave")
-# An explicit high-order method: the shot is not stiff once the orifice flow is regularised where
-# the pressures equalise, and an implicit method (Radau) mishandles the friction's stick at rest
-# (its stages probe states on both sides of it): with friction it settled 6e-5 away from DOP853,
-# which converges (the two agree to 1e-10 without friction).
-METHOD = "DOP853"
+# LSODA: explicit (Adams) while the shot is non-stiff, implicit (BDF) where it turns stiff, which
+# is when a small reservoir equalises with a large barrel through a big valve: the linearised
+# orifice flow there has a time constant of microseconds, and DOP853 took 9.4 s (LSODA 0.13 s)
+# on such a gun; on the white paper's gun the two agree to 2e-10.  Radau is not used: its stages
+# probe both sides of the friction's stick at rest, and with friction it settled 6e-5 away.
+METHOD = "LSODA"
 AIR_AHEAD = ("evacuated", "atmosphere")
+# a projectile that has moved is at rest once its speed is below this fraction of the speed the
+# whole gas energy would give it
+STOP = 1e-9
+# integration pieces: the valve's opening, then restarts of a projectile that stopped and was
+# pushed again by a barrel still filling
+MAX_PIECES = 20
 
 
 @dataclass(frozen=True)
@@ -92,6 +99,7 @@ class Shot:
     model: str = ""
     wall_time_s: float = 0.0
     note: str = ""
+    travel: float = 0.0              # distance moved in the barrel [m]
 
     def summary(self) -> dict:
         d = {k: v for k, v in asdict(self).items() if k not in ("history", "gun")}
@@ -119,7 +127,7 @@ class _joined:
         self.pieces = pieces
         self.t = np.concatenate([p.t for p in pieces])
         self.y = np.concatenate([p.y for p in pieces], axis=1)
-        self.t_events = [np.concatenate([p.t_events[k] for p in pieces]) for k in range(2)]
+        self.t_events = [np.concatenate([p.t_events[k] for p in pieces]) for k in range(3)]
 
     def sol(self, ts):
         out = np.empty((self.y.shape[0], len(ts)))
@@ -139,8 +147,10 @@ def air_ahead_pressure(gun: Gun, v: float) -> float:
     return gun.ambient_pressure * (1 + g * (g + 1) / 4 * M * M + g * M * math.sqrt(1 + ((g + 1) / 4) ** 2 * M * M))
 
 
-def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.0) -> Shot:
-    """Integrate the shot from the valve opening until the projectile leaves the barrel (or stops)."""
+def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.0,
+         stop_speed: float | None = None) -> Shot:
+    """Integrate the shot from the valve opening until the projectile leaves the barrel (or
+    stops, or reaches ``stop_speed``: then ``Shot.travel`` is the barrel length that speed needs)."""
     t0 = time.perf_counter()
     gas = gun.gas_model()
     A = gun.area
@@ -217,27 +227,40 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     muzzle.terminal, muzzle.direction = True, 1
 
     def stalled(t, y):
-        # after it has moved, a projectile whose speed falls to zero has stopped in the barrel
-        # (friction holds it); before it moves it may wait at rest for the pressure to build
-        return y[5] + 1e-9 * v_scale if y[4] > 1e-6 * gun.length else 1.0
+        # after it has moved, a projectile whose speed falls to (a hair above) zero has come to
+        # rest; before it moves it may wait at rest for the pressure to build.  The threshold is
+        # above zero because at rest the resisting force stops acting: the speed never goes
+        # below zero for an event there to see
+        return y[5] - STOP * v_scale if y[4] > 1e-6 * gun.length else 1.0
     stalled.terminal, stalled.direction = True, -1
 
-    y0 = [m_r0, U_r0, m_b0, U_b0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    def reached(t, y):
+        return y[5] - (stop_speed or math.inf)
+    reached.terminal, reached.direction = True, 1
+
+    y0 = np.array([m_r0, U_r0, m_b0, U_b0, 0.0, 0.0, 0.0, 0.0, 0.0])
     # absolute tolerances on the scale of each state: masses, energies, length, speed, works
     mass_scale = max(m_r0 + m_b0, 1e-9)
     v_scale = math.sqrt(2 * max(E0, 1.0) / gun.projectile_mass)
     atol = np.array([mass_scale, E0, mass_scale, E0, gun.length, v_scale, E0, E0, E0]) * rtol * 1e-3
-    # the valve's opening ends with a kink in the flow area: integrate up to it, then on
+    # the valve's opening ends with a kink in the flow area: integrate up to it, then on; a
+    # projectile that stops while the reservoir still feeds the barrel starts again from rest
     pieces = []
     t_start, y_start = 0.0, y0
-    breaks = [gun.opening_time] if (not no_valve and 0 < gun.opening_time < max_time) else []
-    for t_stop in breaks + [max_time]:
+    stops = ([gun.opening_time] if (not no_valve and 0 < gun.opening_time < max_time) else []) + [max_time]
+    for _ in range(MAX_PIECES):
+        t_stop = next(t for t in stops if t > t_start)
         piece = solve_ivp(rhs, (t_start, t_stop), y_start, method=METHOD, rtol=rtol, atol=atol,
-                          events=(muzzle, stalled), dense_output=True)
+                          events=(muzzle, stalled, reached), dense_output=True)
         pieces.append(piece)
-        if piece.status == 1 or not piece.success:
+        t_start, y_start = piece.t[-1], piece.y[:, -1].copy()
+        if not piece.success or len(piece.t_events[0]) or len(piece.t_events[2]) or t_start >= max_time:
             break
-        t_start, y_start = piece.t[-1], piece.y[:, -1]
+        if len(piece.t_events[1]):
+            s = state(y_start, t_start)
+            if not s["p_r"] > s["p_b"] * (1 + 1e-3):
+                break                 # nothing will push it again: it stays where it stopped
+            y_start[5] = 0.0
     sol = _joined(pieces)
     t_end = sol.t[-1]
     left = bool(len(sol.t_events[0]))
@@ -263,7 +286,17 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     else:
         balance = (U_r + U_b + gas_ke + kinetic + W_f + W_air - E0) / E0
         efficiency = kinetic / E0
-    note = "" if left else f"the projectile stopped in the barrel at x = {x:.4g} m"
+    reached_speed = bool(len(sol.t_events[2]))
+    note = "" if left or reached_speed else (f"the projectile is still in the barrel at x = {x:.4g} m after {t_end:.4g} s"
+                            if t_end >= max_time else f"the projectile stopped in the barrel at x = {x:.4g} m")
     return Shot(gun, float(v), left, float(t_end), float(np.max(np.abs(hist["acceleration"]))),
                 float(np.max(hist["p_base"])), float(efficiency), float(abs(balance)), hist, describe(gun),
-                time.perf_counter() - t0, note)
+                time.perf_counter() - t0, note, float(x))
+
+
+def barrel_length_for(gun: Gun, speed: float, longest: float = 1e4) -> float:
+    """The barrel length [m] at which ``gun`` brings its projectile to ``speed``; inf if no barrel
+    up to ``longest`` does (the gas is spent, or friction and the air ahead hold it)."""
+    import dataclasses
+    shot = fire(dataclasses.replace(gun, length=longest), samples=2, stop_speed=speed)
+    return shot.travel if shot.muzzle_velocity >= speed * (1 - 1e-9) else math.inf

@@ -17,8 +17,18 @@
     gas_inertia = "lagrange"         # none | lagrange | simple-wave
     barrel_material = "SA-106-B"     # ASME sizing of the barrel and the tank
     tank_material = "SA-516-70"
-    tank_diameter = "24 in"
+    tank_diameter = "24 in"          # or tank_aspect = 3 (overall length / diameter)
     joint_efficiency = 1.0
+
+    [design]                         # optional: shockfem launcher --design finds the lightest gun
+    muzzle_velocity = "325 ft/s"     # required of the projectile
+    max_length = "6 ft"              # limits of the design variables (max_* required)
+    max_bore = "12 in"
+    max_pressure = "2000 psi"
+    min_bore = "10 in"               # e.g. the payload's diameter (default 1 in)
+    max_acceleration = "2000 gee"    # of the payload (default: none)
+
+The scene's gun is the design's first start point; its valve keeps its diameter over bore.
 """
 from __future__ import annotations
 
@@ -26,19 +36,27 @@ import math
 
 from ..scene import SceneError
 from ..units import UnitError, to_si
+from .design import Limits, Sizing
 from .gas import GASES
 from .gun import AIR_AHEAD, GAS_INERTIA, Gun
-from .vessel import MATERIALS
+from .vessel import MATERIALS, max_pressure
 
 QUANTITIES = {   # field: (dimension, default or None for required, must be > 0)
     "projectile_mass": ("mass", None, True), "bore": ("length", None, True), "length": ("length", None, True),
-    "reservoir_pressure": ("pressure", None, True), "reservoir_volume": ("length**3", None, True),
+    "reservoir_pressure": ("pressure", None, True), "reservoir_volume": ("volume", None, True),
     "reservoir_temperature": ("temperature", 293.15, True), "valve_diameter": ("length", 0.0, False),
     "discharge_coefficient": ("dimensionless", 0.8, True), "opening_time": ("time", 0.0, False),
-    "dead_volume": ("length**3", -1.0, False), "ambient_pressure": ("pressure", 101325.0, True),
+    "dead_volume": ("volume", -1.0, False), "ambient_pressure": ("pressure", 101325.0, True),
     "ambient_temperature": ("temperature", 293.15, True), "bore_friction": ("force", 0.0, False),
     "seal_drag": ("dimensionless", 0.0, False), "tank_diameter": ("length", 0.0, False),
-    "joint_efficiency": ("dimensionless", 1.0, True),
+    "tank_aspect": ("dimensionless", 3.0, True), "joint_efficiency": ("dimensionless", 1.0, True),
+}
+DESIGN_QUANTITIES = {
+    "muzzle_velocity": ("velocity", None, True), "max_length": ("length", None, True),
+    "max_bore": ("length", None, True), "max_pressure": ("pressure", None, True),
+    "min_bore": ("length", Limits.min_bore, True), "min_length": ("length", Limits.min_length, True),
+    "min_pressure": ("pressure", Limits.min_pressure, True), "min_volume": ("volume", Limits.min_volume, True),
+    "max_volume": ("volume", Limits.max_volume, True), "max_acceleration": ("acceleration", 0.0, False),
 }
 CHOICES = {"gas": tuple(GASES), "air_ahead": AIR_AHEAD, "gas_inertia": GAS_INERTIA,
            "barrel_material": tuple(MATERIALS), "tank_material": tuple(MATERIALS)}
@@ -46,48 +64,48 @@ DEFAULTS = {"gas": "air", "air_ahead": "atmosphere", "gas_inertia": "lagrange", 
             "tank_material": "SA-516-70"}
 
 
-def _si(value, dimension: str) -> float:
-    from ..units import registry
-    if dimension in ("length**3", "temperature"):
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return float(value)
-        q = registry().Quantity(str(value))
-        unit = {"length**3": "m**3", "temperature": "K"}[dimension]
+def _quantities(d: dict, table: str, fields: dict, problems: list[str], optional=()) -> dict:
+    """Each field of ``fields`` read from ``d`` in SI (default where absent); problems listed."""
+    v = {}
+    for k, (dim, default, positive) in fields.items():
+        if k not in d:
+            if default is None and k not in optional:
+                problems.append(f"{table}.{k}: missing ({'an' if dim[0] in 'aeiou' else 'a'} {dim})")
+            v[k] = default if default is not None else 1.0
+            continue
         try:
-            return float(q.to(unit).magnitude)
-        except Exception:
-            raise UnitError(f"expected a {'volume' if dimension == 'length**3' else 'temperature'} "
-                            f"(like '{'20 ft**3' if dimension == 'length**3' else '293 K'}'), got {value!r}") from None
-    return to_si(value, dimension)
+            v[k] = to_si(d[k], dim)
+        except UnitError as e:
+            problems.append(f"{table}.{k}: {e}")
+            v[k] = 1.0
+            continue
+        if positive and not v[k] > 0:
+            problems.append(f"{table}.{k}: must be > 0, got {d[k]}")
+        if not positive and v[k] < 0:
+            problems.append(f"{table}.{k}: must be >= 0, got {d[k]}")
+    return v
 
 
-def resolve_launcher(raw: dict) -> tuple[str, Gun, dict]:
-    """(name, gun, sizing options) from a raw scene with a [launcher] table; every problem listed."""
+def _unknown(d: dict, table: str, allowed, problems: list[str]):
+    for k in d:
+        if k not in allowed:
+            problems.append(f"{table}.{k}: unknown field (allowed: {', '.join(sorted(allowed))})")
+
+
+def resolve_launcher(raw: dict, projectile_mass: float | None = None) -> tuple[str, Gun, Sizing]:
+    """(name, gun, sizing) from a raw scene with a [launcher] table; every problem listed.
+    ``projectile_mass`` [kg] is the mass a chain gives the gun: the table may then omit it."""
     problems = []
     d = raw.get("launcher")
     if not isinstance(d, dict):
         raise SceneError(["launcher: missing table [launcher]"])
-    allowed = set(QUANTITIES) | set(CHOICES) | {"name", "real_gas"}
-    for k in d:
-        if k not in allowed:
-            problems.append(f"launcher.{k}: unknown field (allowed: {', '.join(sorted(allowed))})")
-    v = {}
-    for k, (dim, default, positive) in QUANTITIES.items():
-        if k not in d:
-            if default is None:
-                problems.append(f"launcher.{k}: missing")
-            v[k] = default if default is not None else 1.0
-            continue
-        try:
-            v[k] = _si(d[k], dim)
-        except Exception as e:          # pint raises several kinds for an unreadable value
-            problems.append(f"launcher.{k}: {e}")
-            v[k] = 1.0
-            continue
-        if positive and not v[k] > 0:
-            problems.append(f"launcher.{k}: must be > 0, got {d[k]}")
-        if not positive and v[k] < 0:
-            problems.append(f"launcher.{k}: must be >= 0, got {d[k]}")
+    _unknown(d, "launcher", set(QUANTITIES) | set(CHOICES) | {"name", "real_gas"}, problems)
+    v = _quantities(d, "launcher", QUANTITIES, problems, optional=("projectile_mass",) if projectile_mass else ())
+    if projectile_mass:
+        if "projectile_mass" in d and abs(v["projectile_mass"] / projectile_mass - 1) > 1e-3:
+            problems.append(f"launcher.projectile_mass: {d['projectile_mass']} is not the {projectile_mass:.6g} kg "
+                            f"the chain launches; remove it (the chain sets it)")
+        v["projectile_mass"] = projectile_mass
     c = {}
     for k, choices in CHOICES.items():
         c[k] = d.get(k, DEFAULTS[k])
@@ -104,7 +122,30 @@ def resolve_launcher(raw: dict) -> tuple[str, Gun, dict]:
               v["discharge_coefficient"], v["opening_time"], None if v["dead_volume"] < 0 else v["dead_volume"],
               c["air_ahead"], v["ambient_pressure"], v["ambient_temperature"], v["bore_friction"], v["seal_drag"],
               c["gas_inertia"])
-    sizing = {"barrel_material": c["barrel_material"], "tank_material": c["tank_material"],
-              "tank_diameter": v["tank_diameter"] or (v["reservoir_volume"] * 4 / math.pi) ** (1 / 3) / 1.5,
-              "joint_efficiency": v["joint_efficiency"]}
+    sizing = Sizing(c["barrel_material"], c["tank_material"], v["joint_efficiency"], v["tank_aspect"],
+                    v["tank_diameter"] or None)
     return str(d.get("name", "launcher")), gun, sizing
+
+
+def resolve_design(raw: dict) -> tuple[float, Limits]:
+    """(required muzzle velocity, limits) from a launcher scene's [design] table."""
+    d = raw.get("design")
+    if not isinstance(d, dict):
+        raise SceneError(["design: missing table [design] (muzzle_velocity, max_length, max_bore, max_pressure)"])
+    problems = []
+    _unknown(d, "design", DESIGN_QUANTITIES, problems)
+    v = _quantities(d, "design", DESIGN_QUANTITIES, problems)
+    limits = Limits(v["max_length"], v["max_bore"], v["max_pressure"], v["min_bore"], v["min_length"],
+                    v["min_pressure"], v["min_volume"], v["max_volume"], v["max_acceleration"] or None)
+    problems += [f"design.{p}" for p in limits.check()]
+    _, _, sizing = resolve_launcher(raw)
+    for part in ("barrel", "tank"):
+        material = getattr(sizing, f"{part}_material")
+        ceiling = max_pressure(material, sizing.joint_efficiency)
+        if limits.max_pressure > ceiling:
+            problems.append(f"design.max_pressure: {d['max_pressure']} is above the {ceiling / 1e6:.4g} MPa an "
+                            f"{material} {part} can hold by ASME VIII-1 (S E, and 0.665 S E for its heads); "
+                            f"lower it or choose a stronger {part}_material")
+    if problems:
+        raise SceneError(problems)
+    return v["muzzle_velocity"], limits

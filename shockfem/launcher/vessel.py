@@ -4,7 +4,8 @@ UG-27(c)(1), circumferential stress (governs a cylinder): t = P R / (S E - 0.6 P
 P <= 0.385 S E; beyond it, Appendix 1-2(a)(1): t = R (sqrt(Z) - 1), Z = (S E + P) / (S E - P).
 UG-32(f), hemispherical head: t = P R / (2 S E - 0.2 P), valid for P <= 0.665 S E.
 R is the inside radius, S the allowable stress, E the joint efficiency (1 for seamless pipe and
-fully radiographed welds).  No corrosion allowance is added.
+fully radiographed welds).  No corrosion allowance is added; no wall is thinner than UG-16(b)'s
+1/16 in (1.6 mm).
 """
 from __future__ import annotations
 
@@ -18,6 +19,10 @@ MATERIALS = {
     "SA-106-B": {"allowable": 17.1e3 * 6894.757, "density": 7850.0, "doc": "seamless carbon steel pipe"},
     "SA-312-TP304": {"allowable": 20.0e3 * 6894.757, "density": 8000.0, "doc": "seamless stainless pipe"},
 }
+
+
+# UG-16(b): the minimum thickness of shells and heads after forming [m]
+MIN_THICKNESS = 0.0625 * 0.0254
 
 
 @dataclass
@@ -37,6 +42,8 @@ def cylinder_thickness(P: float, R: float, S: float, E: float = 1.0) -> Shell:
         t, rule = R * (math.sqrt(Z) - 1), "Appendix 1-2(a)(1)"
     else:
         raise ValueError(f"pressure {P:.4g} Pa is above S E = {S * E:.4g} Pa: no wall holds it at this allowable")
+    if t < MIN_THICKNESS:
+        t, rule = MIN_THICKNESS, "UG-16(b) minimum"
     Ro = R + t
     hoop = P * (Ro ** 2 + R ** 2) / (Ro ** 2 - R ** 2)
     return Shell(t, rule, hoop, S / hoop - 1)
@@ -46,7 +53,13 @@ def head_thickness(P: float, R: float, S: float, E: float = 1.0) -> float:
     """Hemispherical head of inside radius R (UG-32(f))."""
     if P > 0.665 * S * E:
         raise ValueError(f"pressure {P:.4g} Pa is above 0.665 S E for UG-32(f)")
-    return P * R / (2 * S * E - 0.2 * P)
+    return max(P * R / (2 * S * E - 0.2 * P), MIN_THICKNESS)
+
+
+def max_pressure(material: str, E: float = 1.0) -> float:
+    """The highest pressure these rules size a vessel of ``material`` for: a tank's hemispherical
+    heads (UG-32(f), 0.665 S E) bind before a cylinder (Appendix 1-2, below S E)."""
+    return 0.665 * MATERIALS[material]["allowable"] * E
 
 
 def barrel_weight(P: float, bore: float, length: float, material: str, E: float = 1.0) -> tuple[Shell, float]:
@@ -67,3 +80,10 @@ def tank_weight(P: float, volume: float, diameter: float, material: str, E: floa
     w = m["density"] * (math.pi * ((R + shell.thickness) ** 2 - R ** 2) * L_cyl
                         + 4 / 3 * math.pi * ((R + t_head) ** 3 - R ** 3))
     return shell, t_head, w
+
+
+def tank_diameter_for(volume: float, aspect: float = 3.0) -> float:
+    """Inside diameter of a tank with hemispherical heads holding ``volume`` whose overall
+    length is ``aspect`` diameters (aspect >= 1; 1 is a sphere)."""
+    # V = pi D^2 / 4 (aspect - 1) D + pi D^3 / 6
+    return (volume / (math.pi * (aspect - 1) / 4 + math.pi / 6)) ** (1 / 3)

@@ -9,6 +9,10 @@
   exceeds it.
 * Energy of the full lumped model (valve, Lagrange gas inertia, air ahead, friction, seal drag)
   to 1e-6; the muzzle speed converges as the ODE tolerance tightens.
+
+``launcher_design``: the optimiser against brute force.  Over a grid of bore x length x pressure
+inside the limits, the tank that just reaches the speed is found by root-finding at each point;
+the lightest grid gun must not beat the optimiser's, and the optimiser's gun meets the speed.
 """
 from __future__ import annotations
 
@@ -19,6 +23,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from ..launcher.gas import GASES
+from ..launcher.design import Limits, Sizing, _with, lightest_launcher, valve_ratio_of, weights
 from ..launcher.gun import Gun, fire
 from .cases import check
 
@@ -81,3 +86,42 @@ def launcher_model(size, workdir):
     out[-1]["note"] = "muzzle speed change against rtol 1e-11: " + ", ".join(
         f"rtol {r:g}: {e:.1e}" for r, e in zip((1e-5, 1e-7, 1e-9), errors))
     return out
+
+
+def launcher_design(size, workdir):
+    """Launcher design: SLSQP's lightest gun against a brute-force grid; the speed it must reach."""
+    n = {"coarse": 3, "default": 5, "fine": 7}[size]
+    template = Gun(0.02, 1000 * PSI, 4 * INCH, 2.0, 20.0, valve_area=math.pi * (3 * INCH) ** 2 / 4,
+                   opening_time=1e-3)
+    speed = 150.0
+    limits = Limits(max_length=3.0, max_bore=8 * INCH, max_pressure=3000 * PSI, min_bore=2 * INCH, min_length=0.5,
+                    min_pressure=300 * PSI)
+    sizing = Sizing()
+    t0 = time.perf_counter()
+    d = lightest_launcher(template, speed, limits, sizing, report_binding=False)
+    wall_opt = time.perf_counter() - t0
+    ratio = valve_ratio_of(template)
+    t0 = time.perf_counter()
+    best, shots = math.inf, 0
+    for bore in _geom(limits.min_bore, limits.max_bore, n):
+        for length in _geom(limits.min_length, limits.max_length, n):
+            for p in _geom(limits.min_pressure, limits.max_pressure, n):
+                def short(log_v):
+                    return fire(_with(template, ratio, (bore, length, p, math.exp(log_v))),
+                                samples=2).muzzle_velocity - speed
+                shots += 1
+                if short(math.log(limits.max_volume)) < 0:
+                    continue
+                log_v = brentq(short, math.log(limits.min_volume), math.log(limits.max_volume), xtol=1e-9)
+                best = min(best, sum(weights(_with(template, ratio, (bore, length, p, math.exp(log_v))), sizing)))
+    wall_grid = time.perf_counter() - t0
+    out = [check("launcher_design.no_grid_gun_lighter [kg]", best, max(d.weight, best), 1e-3, wall_opt + wall_grid, 0)]
+    out[-1]["note"] = (f"optimiser {d.weight:.2f} kg ({d.evaluations} shots, {wall_opt:.1f} s); best of a "
+                       f"{n}x{n}x{n} grid with the tank root-found {best:.2f} kg ({wall_grid:.1f} s), "
+                       f"{d.weight / best - 1:+.2%}")
+    out.append(check("launcher_design.meets_speed [m/s]", speed, d.muzzle_velocity, 2e-4, 0.0, 0))
+    return out
+
+
+def _geom(lo, hi, n):
+    return [lo * (hi / lo) ** (k / (n - 1)) for k in range(n)]
