@@ -42,6 +42,21 @@ def _progress(total: float, enabled: bool):
                 mininterval=0.5)
 
 
+def damping_step_note(scene: Scene, qualities, dt: float) -> str | None:
+    """A note when stiffness-proportional damping shortens the stable step more than twice: its
+    damping ratio grows with frequency, so the smallest elements' modes are overdamped and the step
+    shrinks as (2 / w)(sqrt(1 + xi^2) - xi) with xi far above 1."""
+    undamped = min((q.stable_step for q, b in zip(qualities, scene.bodies) if not b.rigid), default=np.inf)
+    if not np.isfinite(undamped) or dt > 0.5 * undamped:
+        return None
+    own = any(b.damping for b in scene.bodies)
+    return (f"stiffness-proportional damping shortens the stable step {undamped / dt:.3g} times (from "
+            f"{undamped:.3g} s without it): the smallest elements' frequencies are damped far above critical. "
+            "If the run is slow: " + ("" if own else "damp each body at its own first frequency "
+                                      "(bodies[i].damping), ")
+            + "damp at a higher frequency, use damping.type = 'mass', or coarsen the elements.")
+
+
 def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = True,
               write_fields: bool = True, quiet: bool = False) -> RunResult:
     """Run ``scene`` and write the run directory ``out_dir``.
@@ -56,7 +71,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     rd.write_scene_and_provenance(scene)
     say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
     meshed = build_mesh(scene, comm, log=say)
-    check_mesh(scene, meshed, log=say)
+    qualities = check_mesh(scene, meshed, log=say)
     model = build_model(scene, meshed)
     say("models that run:\n" + describe(model))
     solver = ExplicitSolver(model)
@@ -65,6 +80,9 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     said = len(solver.log_messages)
     say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
         f"(safety factor {scene.safety_factor})")
+    note = damping_step_note(scene, qualities, solver.stable_step())
+    if note:
+        say(note)
     history = HistoryRecorder(solver)
     for note in history.notes:
         say(note)

@@ -22,6 +22,10 @@ Neighbouring bars meet at their facing end nodes in one of two ways:
   (M* the two bars' reduced mass: zeta is the damping ratio of the bars bouncing on the pad),
   acting while the faces overlap.
 
+Any two bars may also be joined by a tether: a linear spring (tension and compression) between
+their middle nodes, at rest at their initial distance, such as the soft springs the white paper
+put between the first and the last body of its finite-element chain.
+
 Every ``record_every`` steps the bars' mean velocities, the interface forces and the energies
 are kept, in the column names of a run's history (``<bar>.v_z``, ``contact.<name>.normal_z``,
 ``energy.*``), so the metrics of ``shockfem/metrics`` (stage table, pulses) read them as they
@@ -75,6 +79,14 @@ class Interface:
     damping_ratio: float = 0.0            # fraction of critical of the pad on the two bars' masses
 
 
+@dataclass(frozen=True)
+class Tether:
+    name: str
+    a: int                                # bar indices
+    b: int
+    stiffness: float                      # [N/m]
+
+
 @dataclass
 class BarsResult:
     history: dict                         # columns like a run's history.csv
@@ -91,7 +103,7 @@ class BarsResult:
 
 @njit(cache=True)
 def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic, anvil, dt, steps, every,
-           out_v, out_f, out_e, owner, n_bars, max_stress, smoothing, peak_force):
+           out_v, out_f, out_e, owner, n_bars, max_stress, smoothing, peak_force, tether, k_t, rest_t):
     """Central-difference steps; writes samples into out_v (bar mean velocities), out_f
     (interface forces) and out_e (kinetic, strain, plastic, structural damping, time, energy taken by
     the interfaces) every ``every`` steps."""
@@ -140,6 +152,11 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
             force = (trial + s_damp) * area[e]
             f[a] += force
             f[b] -= force
+        for j in range(tether.shape[0]):
+            stretch = x[tether[j, 1]] - x[tether[j, 0]] - rest_t[j]
+            strain_energy += 0.5 * k_t[j] * stretch * stretch
+            f[tether[j, 0]] += k_t[j] * stretch
+            f[tether[j, 1]] -= k_t[j] * stretch
         for j in range(ni):
             r, l = iface[j, 0], iface[j, 1]
             overlap = x[r] - x[l]
@@ -201,25 +218,29 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
 
 
 def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safety_factor: float = 0.9,
-             damping_ratio: float = 0.0, damping_frequency: float | None = None,
-             samples: int = 2000, anvil_gap: float | None = None) -> BarsResult:
+             damping_ratio: float | list[float] = 0.0, damping_frequency: float | list[float] | None = None,
+             samples: int = 2000, anvil_gap: float | None = None, tethers: tuple = ()) -> BarsResult:
     """Run a chain of bars (``interfaces[k]`` joins bars k and k + 1) to ``end_time``.
 
+    ``tethers``: ``Tether`` springs between the middle nodes of two bars.
     ``anvil_gap``: a rigid anvil at that distance before the first bar (None: no anvil).
-    ``damping_ratio`` is the structural damping of every bar at ``damping_frequency`` (default:
-    the first free-free frequency c0 / 2L of the first bar)."""
+    ``damping_ratio`` is the structural damping of the bars at ``damping_frequency`` (default: the
+    first free-free frequency c0 / 2L of the first bar); either may be one value per bar."""
     if len(interfaces) != len(bars) - 1:
         raise ValueError(f"{len(bars)} bars need {len(bars) - 1} interfaces, got {len(interfaces)}")
     xs, ms, owner, elems, h0s, areas, Es, sys_, Hs, betas = [], [], [], [], [], [], [], [], [], []
-    f_ref = damping_frequency or bars[0].c0 / (2 * bars[0].length)
-    beta_of = 2 * damping_ratio / (2 * math.pi * f_ref)
+    ratios = damping_ratio if isinstance(damping_ratio, (list, tuple)) else [damping_ratio] * len(bars)
+    freqs = (damping_frequency if isinstance(damping_frequency, (list, tuple))
+             else [damping_frequency or bars[0].c0 / (2 * bars[0].length)] * len(bars))
+    beta_of = [2 * r / (2 * math.pi * f) if r > 0 and f > 0 else 0.0 for r, f in zip(ratios, freqs)]
     left, right = [], []
     offset = anvil_gap or 0.0
     node = 0
     # stiffness damping removes what is shorter than about beta c0 (it is overdamped there), and
     # elements finer than that only shorten the step (xi = beta / dtc grows as h falls)
-    h_default = max(min(b.length for b in bars) / ELEMENTS_IN_SHORTEST, beta_of * max(b.c0 for b in bars))
-    counts = [b.elements or max(1, int(round(b.length / h_default))) for b in bars]
+    h_shortest = min(b.length for b in bars) / ELEMENTS_IN_SHORTEST
+    counts = [b.elements or max(1, int(round(b.length / max(h_shortest, beta * b.c0))))
+              for b, beta in zip(bars, beta_of)]
     for b_index, bar in enumerate(bars):
         n = counts[b_index]
         h = bar.length / n
@@ -234,7 +255,7 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
         Es += [bar.E] * n
         sys_ += [bar.yield_stress] * n
         Hs += [bar.hardening] * n
-        betas += [beta_of] * n
+        betas += [beta_of[b_index]] * n
         left.append(node)
         right.append(node + n)
         node += n + 1
@@ -248,12 +269,10 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     iface = np.array([[right[k], left[k + 1]] for k in range(len(interfaces))], dtype=np.int64).reshape(-1, 2)
     k_if, c_if = np.zeros(len(interfaces)), np.zeros(len(interfaces))
     kinematic = np.array([itf.stiffness is None for itf in interfaces], dtype=np.bool_)
-    dt = min(b.length / n / b.c0 for n, b in zip(counts, bars))
-    if beta_of > 0:
-        # stiffness damping shortens the step as in the finite-element solver (kernels._damped_step):
-        # dt <= (2 / w)(sqrt(1 + xi^2) - xi), w = 2 / dtc, xi = beta / dtc
-        xi = beta_of / dt
-        dt = dt * (math.sqrt(1 + xi * xi) - xi)
+    # stiffness damping shortens the step as in the finite-element solver (kernels._damped_step):
+    # dt <= (2 / w)(sqrt(1 + xi^2) - xi), w = 2 / dtc, xi = beta / dtc
+    dt = min(dtc * (math.sqrt(1 + (beta / dtc) ** 2) - beta / dtc)
+             for dtc, beta in ((b.length / n / b.c0, beta) for n, b, beta in zip(counts, bars, beta_of)))
     for k, itf in enumerate(interfaces):
         if itf.stiffness is None:
             continue
@@ -266,6 +285,12 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
         omega = math.sqrt(k_if[k] / m_star)
         z = c_if[k] / (2 * math.sqrt(k_if[k] * m_star))
         dt = min(dt, 2 / omega * (math.sqrt(1 + z * z) - z))
+    middle = [(left[k] + right[k]) // 2 for k in range(len(bars))]
+    tether = np.array([[middle[t.a], middle[t.b]] for t in tethers], dtype=np.int64).reshape(-1, 2)
+    k_t = np.array([t.stiffness for t in tethers], dtype=float)
+    rest_t = np.array([x[j] - x[i] for i, j in tether], dtype=float)
+    for (i, j), k in zip(tether, k_t):
+        dt = min(dt, 2 / math.sqrt(k * (1 / m[i] + 1 / m[j])))
     dt *= safety_factor
     steps = int(math.ceil(end_time / dt))
     dt = end_time / steps
@@ -281,7 +306,7 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     smoothing = min(1.0, dt / (SMOOTHING_TRANSITS * transit))
     rec = _march(x, v, m, elem, h0, area, E, sy, np.array(Hs), np.array(betas), iface, k_if, c_if, kinematic,
                  anvil_gap is not None, dt, steps, every, out_v, out_f, out_e, np.array(owner, dtype=np.int64),
-                 len(bars), max_stress, smoothing, peak_force)
+                 len(bars), max_stress, smoothing, peak_force, tether, k_t, rest_t)
     wall = time.perf_counter() - t0
     h = {"time": out_e[:rec, 4]}
     for b_index, bar in enumerate(bars):

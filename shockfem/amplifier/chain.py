@@ -11,7 +11,8 @@ article), without positions or velocities, which the chain sets:
     fidelity = "1d"                   # rigid | 1d | axisymmetric | 3d (default rigid)
     gap = "1 mm"                      # launched chain: between neighbours; stack: to the anvil
     restitution = 0.9                 # the rigid model's, every interface (or a list)
-    damping = 0.02                    # structural damping ratio (1d and finite elements)
+    damping = 0.02                    # structural damping ratio, every body at its own first mode
+                                      #   c0 / 2L (1d and finite elements)
     end_time = "2 ms"                 # default: the last first-pass collision of a rigid chain
                                       #   at e = 0.2, plus three transits of the longest body
 
@@ -31,7 +32,8 @@ the fidelity has one, and the peak interface stress against each material's yiel
 * ``1d``: ``bars.py``, each body a uniform bar of its length and its volume / length section;
   restitution emerges from the waves; interface stress from the low-passed contact force.
 * ``axisymmetric`` / ``3d``: the finite-element solver (``run.py``) on the bodies stacked along
-  z, contact between neighbours, the same damping; von Mises peaks against yield.
+  z, contact between neighbours, the same damping (stiffness-proportional, each body's own);
+  von Mises peaks against yield.
 """
 from __future__ import annotations
 
@@ -132,8 +134,10 @@ def _height(body) -> float:
 
 
 def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] | None = None,
-             end_time: float = 1.0) -> dict:
-    """The chain as an ordinary raw scene: bodies stacked along z, contact between neighbours.
+             end_time: float = 1.0, frequencies: list[float] | None = None) -> dict:
+    """The chain as an ordinary raw scene: bodies stacked along z, contact between neighbours;
+    each body damped (``spec.damping`` of critical, stiffness-proportional) at its own first
+    frequency in ``frequencies`` [Hz] unless it has a damping of its own.
 
     Launched chain: the test article stands on z = 0, each heavier body above the next with the
     gap, the first moving down at the launch speed.  Stack on anvil: the first body above a rigid
@@ -166,9 +170,17 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
                      "element": "hex" if gdim == 3 else "quad"},
            "materials": raw.get("materials", {}), "bodies": bodies, "contact": contacts,
            "shock": {"test_articles": [bodies[-1]["name"]], "cfc": "none", **raw.get("shock", {})}}
-    if spec.damping:
-        out["damping"] = {"ratio": spec.damping, "frequency": 1.0, "type": "stiffness"}   # set by resolve_chain
+    if spec.damping and frequencies:
+        for b, f in zip(bodies, frequencies):
+            b.setdefault("damping", {"ratio": spec.damping, "frequency": f, "type": "stiffness"})
     return out
+
+
+def first_frequencies(scene, heights: list[float]) -> list[float]:
+    """Each body's first free-free longitudinal frequency as a bar, c0 / 2L [Hz]: where the chain
+    puts its structural damping, so that a small stiff body is damped as much as a large one at
+    its own first mode (stiffness-proportional damping grows with frequency)."""
+    return [scene.material_of(b).c_bar / (2 * h) for b, h in zip(scene.bodies, heights)]
 
 
 def resolve_chain(raw: dict, fidelity: str | None = None):
@@ -204,11 +216,8 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
     heights = [_height(b) for b in scene.bodies]
     if "launcher" in raw:
         _fire_launcher(raw, spec, _masses(scene))
-    first = scene.material_of(scene.bodies[0])
-    f1 = first.c_bar / (2 * heights[0])                  # first body's first longitudinal mode
-    scene_raw = fe_scene(raw, spec, kinematics, heights, end_time=spec.end_time or 1.0)
-    if spec.damping:
-        scene_raw["damping"]["frequency"] = f1
+    scene_raw = fe_scene(raw, spec, kinematics, heights, end_time=spec.end_time or 1.0,
+                         frequencies=first_frequencies(scene, heights))
     return spec, resolve(scene_raw), heights
 
 
@@ -355,8 +364,8 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
                             yield_stress=sy, hardening=H))
         gaps = ([Interface(iface_names[k + 1], spec.gap * STACK_SHRINK ** (k + 1)) for k in range(len(bars) - 1)]
                 if stack else [Interface(iface_names[k], spec.gap) for k in range(len(bars) - 1)])
-        r = run_bars(bars, gaps, end_time, damping_ratio=spec.damping,
-                     damping_frequency=scene.damping.frequency if scene.damping else None,
+        r = run_bars(bars, gaps, end_time, damping_ratio=[b.damping.ratio if b.damping else 0.0 for b in scene.bodies],
+                     damping_frequency=[b.damping.frequency if b.damping else 0.0 for b in scene.bodies],
                      anvil_gap=spec.gap if stack else None)
         wall = r.wall_time_s
         h = r.history
@@ -370,9 +379,8 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         stress_kind = "peak contact force (low-passed over 4 element transits) over the smaller face"
     else:
         from ..run import run_scene
-        scene = resolve({**fe_scene(raw, spec, spec.fidelity, heights, end_time),
-                         **({"damping": {"ratio": spec.damping, "frequency": scene.damping.frequency,
-                                         "type": "stiffness"}} if spec.damping else {})})
+        scene = resolve(fe_scene(raw, spec, spec.fidelity, heights, end_time,
+                                 frequencies=first_frequencies(scene, heights)))
         res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress)
         wall = res.summary["wall_time_s"]
         from ..output.history import read_history_csv

@@ -1,5 +1,5 @@
-"""Material tables for the compiled kernels: one row of parameters per scene material
-(columns ``solver/columns.py``) and one row of hardening-curve points per material."""
+"""Material tables for the compiled kernels: one row of parameters per body (its material and
+its damping; columns ``solver/columns.py``) and one row of hardening-curve points per row."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,15 +9,17 @@ from ..scene.schema import RATE_FORMS
 from ..solver import columns as col
 
 
-def parameter_table(materials: list[Material], damping: Damping | None,
+def parameter_table(materials: list[Material], damping: list[Damping | None] | Damping | None,
                     bulk_viscosity: tuple[float, float] = (1.5, 0.06)) -> tuple[np.ndarray, np.ndarray]:
-    """(params, curves): params (materials, ``col.NUM_PARAMS``); curves (materials, points, 2) holds
-    each plastic material's isotropic hardening curve (plastic strain, yield stress).
+    """(params, curves): params (rows, ``col.NUM_PARAMS``); curves (rows, points, 2) holds each
+    plastic row's isotropic hardening curve (plastic strain, yield stress).
 
-    The stiffness-proportional damping coefficient beta [s] and the bulk viscosity sit in the
-    table because they act through the material: viscous stresses beta C : d and -q I.
+    ``damping``: one for all rows or one per row.  The stiffness-proportional damping coefficient
+    beta [s] and the bulk viscosity sit in the table because they act through the material:
+    viscous stresses beta C : d and -q I.
     """
-    beta = damping.coefficients()[1] if damping else 0.0
+    per_row = damping if isinstance(damping, list) else [damping] * len(materials)
+    betas = [d.coefficients()[1] if d else 0.0 for d in per_row]
     n = max(len(materials), 1)
     points = max([len(m.plasticity.curve) for m in materials if m.plasticity] or [1])
     table = np.zeros((n, col.NUM_PARAMS))
@@ -28,7 +30,7 @@ def parameter_table(materials: list[Material], damping: Damping | None,
         table[i, col.P_LAMBDA] = m.lam
         table[i, col.P_MU] = m.mu
         table[i, col.P_WAVE_SPEED] = m.c_dilatational
-        table[i, col.P_BETA] = beta
+        table[i, col.P_BETA] = betas[i]
         table[i, col.P_Q_QUADRATIC], table[i, col.P_Q_LINEAR] = bulk_viscosity
         p = m.plasticity
         if p is None:

@@ -18,7 +18,7 @@ from .. import compat
 from ..geometry import MeshedScene, region_facets
 from ..scene import Scene
 from . import kinematics as kin
-from ..solver import kernels, one_point
+from ..solver import columns, kernels, one_point
 from .materials import parameter_table
 
 
@@ -70,7 +70,7 @@ class Model:
     mass: np.ndarray                           # (nodes,) lumped mass [kg]
     node_body: np.ndarray                      # (nodes,) body index
     cell_body: np.ndarray                      # (cells,) body index
-    cell_material: np.ndarray                  # (cells,) row of ``params``
+    cell_material: np.ndarray                  # (cells,) row of ``params`` (the cell's body)
     kernel_cells: np.ndarray                   # owned cells of deformable bodies
     params: np.ndarray                         # material table (solver/columns.py)
     curves: np.ndarray                         # hardening curves of plastic materials
@@ -167,12 +167,11 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     node_body = np.full(num_nodes, -1, dtype=np.int32)
     node_body[dofmap.ravel()] = np.repeat(cell_body, nn)
 
-    material_names = list(scene.materials)
-    body_material = np.array([material_names.index(b.material) for b in scene.bodies], dtype=np.int32)
-    cell_material = body_material[cell_body]
-    params, curves = parameter_table([scene.materials[n] for n in material_names], scene.damping,
-                                     scene.bulk_viscosity)
-    cell_rho = np.array([scene.materials[n].rho for n in material_names])[cell_material]
+    # one row of kernel parameters per body: its material, and its own damping or the scene's
+    cell_material = cell_body
+    params, curves = parameter_table([scene.material_of(b) for b in scene.bodies],
+                                     [b.damping or scene.damping for b in scene.bodies], scene.bulk_viscosity)
+    cell_rho = params[cell_material, columns.P_RHO]
     mass = _lumped_mass(V, cell_rho, scene, gdim)
 
     rigid_ids = [i for i, b in enumerate(scene.bodies) if b.rigid]
@@ -294,6 +293,11 @@ def describe(model: Model) -> str:
         d = model.scene.damping
         a, be = d.coefficients()
         lines.append(f"  damping: {d.kind}, {d.ratio:.3g} of critical at {d.frequency:.6g} Hz "
-                     f"(alpha = {a:.4g} 1/s, beta = {be:.4g} s)")
+                     f"(alpha = {a:.4g} 1/s, beta = {be:.4g} s)"
+                     + (", bodies with their own below" if any(b.damping for b in sc.bodies) else ""))
+    for b in sc.bodies:
+        if b.damping and not b.rigid:
+            lines.append(f"  damping of {b.name}: stiffness, {b.damping.ratio:.3g} of critical at "
+                         f"{b.damping.frequency:.6g} Hz (beta = {b.damping.coefficients()[1]:.4g} s)")
     return "\n".join(lines)
 

@@ -118,6 +118,7 @@ class Body:
     mesh_file: str | None = None
     regions: dict[str, int] = field(default_factory=dict)   # mesh bodies: name -> gmsh physical tag
     refine: tuple[tuple[str, float, float], ...] = ()       # (region, element size, distance) near faces
+    damping: Damping | None = None   # its own stiffness-proportional damping (instead of the scene's beta)
 
 
 @dataclass(frozen=True)
@@ -289,6 +290,24 @@ def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[
     if part.name == "clamp_ring":
         accepted.add("fits")
     return accepted, len(ck.problems) == before
+
+
+def _damping(ck, raw: dict, path: str, kinds, default_kind: str) -> Damping:
+    """A ``{ratio, frequency, type}`` damping table."""
+    d = ck.table(raw, "damping", path)
+    ck.unknown(d, ("ratio", "frequency", "type"), path)
+    ratio = ck.quantity(d, "ratio", path, "dimensionless", nonnegative=True, upper=1.0)
+    freq = ck.quantity(d, "frequency", path, "frequency", positive=True)
+    kind = ck.choice(d, "type", path, kinds, default=default_kind)
+    return Damping(ratio, freq, kind)
+
+
+def _body_damping(ck, b: dict, path: str) -> Damping:
+    """``bodies[i].damping``: the body's own stiffness-proportional damping, as LS-DYNA's
+    *DAMPING_PART_STIFFNESS: a fraction of critical at the body's own frequency (its first mode,
+    say), so that small stiff bodies are not damped at a large body's low frequency (stiffness
+    damping grows with frequency).  Mass-proportional damping stays scene-wide."""
+    return _damping(ck, b, f"{path}.damping", ("stiffness",), "stiffness")
 
 
 def _refinements(ck, b: dict, path: str, h: float) -> tuple:
@@ -544,7 +563,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             ck.fail(f"{path}.name", f"duplicate body name {bname!r}")
         names.add(bname)
         shape = ck.choice(b, "shape", path, SHAPES)
-        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "rigid", "refine"}
+        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "rigid", "refine",
+                   "damping"}
         dims: dict[str, float] = {}
         mesh_file = None
         regions: dict[str, int] = {}
@@ -600,8 +620,9 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         if not isinstance(rigid, bool):
             ck.fail(f"{path}.rigid", f"must be true or false, got {rigid!r}")
             rigid = False
+        own_damping = _body_damping(ck, b, path) if "damping" in b else None
         bodies.append(Body(bname, mat if mat in materials else "", shape, dims, h, pos, vel, spin,
-                           rigid, mesh_file, regions, refine))
+                           rigid, mesh_file, regions, refine, own_damping))
 
     bodies = _fit_clamp_rings(ck, raw, bodies, gdim)
     body_regions = {b.name: _regions_of(b, gdim) if sound.get(b.name, True) else () for b in bodies}
@@ -640,14 +661,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     contacts = _contacts(ck, raw, body_regions, kin)
     springs = _springs(ck, raw, body_regions, gdim)
 
-    damping = None
-    if "damping" in raw:
-        d = ck.table(raw, "damping", "damping")
-        ck.unknown(d, ("ratio", "frequency", "type"), "damping")
-        ratio = ck.quantity(d, "ratio", "damping", "dimensionless", nonnegative=True, upper=1.0)
-        freq = ck.quantity(d, "frequency", "damping", "frequency", positive=True)
-        kind = ck.choice(d, "type", "damping", DAMPING_TYPES, default="rayleigh")
-        damping = Damping(ratio, freq, kind)
+    damping = _damping(ck, raw, "damping", DAMPING_TYPES, "rayleigh") if "damping" in raw else None
 
     o = ck.table(raw, "outputs", "outputs", required=False)
     ck.unknown(o, ("fields", "field_interval", "history_interval"), "outputs")

@@ -13,12 +13,18 @@ def test_amplifier_study_smoke(tmp_path):
     assert p.returncode == 0, p.stderr
     report = (out / "report.md").read_text()
     for section in ("## 1. The white paper's sizing claim", "## 2. Apparent restitution",
-                    "## 3. The five-mass design"):
+                    "## 3. The five-mass design", "## 4. The white paper's diminishing rods",
+                    "## 5. Cylinders against thick plates"):
         assert section in report
     # the closed forms: 775 lb of intermediate masses at 325 ft/s, e = 0.9 (launched chain)
     assert "| launched-chain | 0.9 | 325 | 2082 | 775 |" in report
     assert (out / "restitution_vs_frequency_ratio.png").stat().st_size > 20_000
     assert "| axisymmetric (30 mm) |" in report
+    # the rods: rigid reference at e = 0.5 with mass ratio 0.55^3 per stage, [1.5 / (1 + 0.166)]^4
+    assert "| 2.74 |" in report and "10%-damped penalty + soft spring" in report
+    # every body at one L/D = a: D_i = (4 m_i / (pi rho a))^(1/3), so the envelope pi/4 D_1^2 sum(a D_i)
+    # does not depend on a: 304.2 L for the design's masses (two ratios, two materials)
+    assert report.count("| 304.2 |") == 4 and (out / "gain_vs_volume.png").stat().st_size > 20_000
 
 
 def test_launcher_study_smoke(tmp_path):

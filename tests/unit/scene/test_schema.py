@@ -77,6 +77,18 @@ def test_damping_coefficients_give_the_ratio_at_the_frequency():
     assert alpha / (2 * w) + beta * w / 2 == pytest.approx(0.02, rel=1e-12)
 
 
+def test_body_damping_is_stiffness_proportional_at_its_own_frequency():
+    import math
+    raw = base()
+    raw["bodies"][0]["damping"] = {"ratio": 0.02, "frequency": "25 kHz"}
+    d = resolve(raw).bodies[0].damping
+    assert d.kind == "stiffness" and d.coefficients() == (0.0, pytest.approx(0.04 / (2 * math.pi * 25e3)))
+    raw["bodies"][0]["damping"] = {"ratio": 0.02, "frequency": "-1 Hz", "type": "mass"}
+    text = "\n".join(_problems(raw))
+    assert "bodies[0].damping.type: must be one of stiffness" in text
+    assert "bodies[0].damping.frequency" in text
+
+
 def test_element_integration_defaults_and_checks():
     s = resolve(base())
     assert (s.integration, s.hourglass, s.hourglass_coefficient) == ("reduced", "stiffness", 0.05)
