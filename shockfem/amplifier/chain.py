@@ -15,6 +15,11 @@ article), without positions or velocities, which the chain sets:
                                       #   c0 / 2L (1d and finite elements)
     end_time = "2 ms"                 # default: the last first-pass collision of a rigid chain
                                       #   at e = 0.2, plus three transits of the longest body
+    pad_stiffness = "1.4 GN/m"        # optional: an elastic pad on every struck face (or a list,
+                                      #   one per interface, 0 for none), met after the gap
+    pad_thickness = "60 mm"           # its free thickness (or a list): the faces meet when it is
+                                      #   crushed through (finite elements)
+    pad_damping = 0.02                # the pads' damping ratio on the two bodies' reduced mass
 
     [launcher]                        # instead of launch_speed: the gas gun that fires the first
     bore = "12 in"                    #   body (or the whole stack), as in a launcher scene
@@ -22,6 +27,14 @@ article), without positions or velocities, which the chain sets:
     reservoir_pressure = "2000 psi"   #   which the chain gives it; its muzzle velocity is the
     reservoir_volume = "20 ft**3"     #   launch speed, so the test article's speed follows from
                                       #   the tank pressure in one run
+
+A pad sits on the struck face; the striker meets it after the gap.  ``rigid`` gives the
+interface the restitution of rigid bodies on a spring-dashpot that never pulls
+(``rigid.pad_restitution``);
+``1d`` an interface spring (no thickness: it never bottoms); the finite elements a
+compression-only spring and dashpot between the two faces, set the gap plus the pad's thickness
+apart, that engages when the gap has closed, with the faces' contact as the stop should the pad
+be crushed through.
 
 Every fidelity writes the same ``summary.json`` (key ``chain``): which model ran, its wall
 time, the stage table (``metrics/stages.py``), the gain, the pulse on the test article where
@@ -50,11 +63,13 @@ from ..metrics.stages import stage_table
 from ..scene import SceneError, resolve
 from ..units import UnitError, to_si
 from . import rigid
+from .interfaces import flat_face_stress, pad_peak_force, reduced_mass
 from .bars import Bar, Interface, run_bars
 from .gain import ARCHITECTURES
 
 FIDELITIES = ("rigid", "1d", "axisymmetric", "3d")
-CHAIN_FIELDS = ("name", "architecture", "launch_speed", "fidelity", "gap", "restitution", "damping", "end_time")
+CHAIN_FIELDS = ("name", "architecture", "launch_speed", "fidelity", "gap", "restitution", "damping", "end_time",
+                "pad_stiffness", "pad_thickness", "pad_damping")
 # The default end time follows a rigid chain this lossy, so a slower real chain still finishes.
 TIMING_RESTITUTION = 0.2
 # FE gaps in a stack shrink up the stack (the closed form's strike order) but stay resolvable.
@@ -71,8 +86,28 @@ class ChainSpec:
     restitution: tuple[float, ...]
     damping: float
     end_time: float | None
+    pad_stiffness: tuple[float, ...] = ()   # per interface [N/m], 0: none
+    pad_thickness: tuple[float, ...] = ()   # per interface [m]
+    pad_damping: float = 0.02
     launcher: dict | None = None      # the shot's summary and sizing when a [launcher] fired the chain
     shot: object = None               # and the shot itself (its histories)
+
+    def pad(self, k: int) -> float:
+        """Stiffness of interface k's pad [N/m] (0: plain contact)."""
+        return self.pad_stiffness[k] if self.pad_stiffness else 0.0
+
+    def pad_space(self, k: int) -> float:
+        """The pad's thickness at interface k [m] (0: no pad)."""
+        return self.pad_thickness[k] if self.pad(k) else 0.0
+
+    def pad_dashpot(self, k: int, m_a: float, m_b: float) -> float:
+        """Dashpot of interface k's pad, c = 2 zeta sqrt(k M*) [N s/m]."""
+        return 2 * self.pad_damping * math.sqrt(self.pad(k) * reduced_mass(m_a, m_b))
+
+    def rigid_restitution(self) -> tuple[float, ...]:
+        """The rigid model's restitution per interface: as given, or its pad's."""
+        return tuple(rigid.pad_restitution(self.pad_damping) if self.pad(k) else e
+                     for k, e in enumerate(self.restitution))
 
 
 def is_chain(raw: dict) -> bool:
@@ -122,9 +157,36 @@ def _spec(raw: dict, n: int, problems: list[str]) -> ChainSpec:
     if "launcher" in raw and "launch_speed" in c:
         problems.append("chain.launch_speed: the [launcher] sets the launch speed; give one or the other")
     speed = quantity("launch_speed", "velocity", 1.0 if "launcher" in raw else None)
+    def per_interface(key, dim):
+        given = c[key] if isinstance(c[key], list) else [c[key]] * max(n - 1, 0)
+        try:
+            values = tuple(to_si(x, dim) if x != 0 else 0.0 for x in given)
+        except UnitError as err:
+            problems.append(f"chain.{key}: {err}")
+            return ()
+        if len(given) != max(n - 1, 0) or any(x < 0 for x in values):
+            problems.append(f"chain.{key}: one {dim} >= 0 or a list of {n - 1} (one per interface, 0 for "
+                            f"none); got {c[key]!r}")
+            return ()
+        return values
+    pads = per_interface("pad_stiffness", "stiffness") if "pad_stiffness" in c else ()
+    thickness: tuple[float, ...] = ()
+    if any(pads):
+        if "pad_thickness" not in c:
+            problems.append("chain.pad_thickness: missing (the pads' free thickness, e.g. \"50 mm\"; more than "
+                            "their compression, or the faces meet)")
+        else:
+            thickness = per_interface("pad_thickness", "length")
+            if thickness and any(k and not t for k, t in zip(pads, thickness)):
+                problems.append("chain.pad_thickness: every pad needs a thickness > 0")
+    pad_damping = c.get("pad_damping", 0.02)
+    if not isinstance(pad_damping, (int, float)) or not 0 <= pad_damping < 1:
+        problems.append(f"chain.pad_damping: a damping ratio in [0, 1), got {pad_damping!r}")
+        pad_damping = 0.0
     return ChainSpec(str(c.get("name", "chain")), arch, speed, fidelity,
                      quantity("gap", "length", 1e-3), tuple(float(x) for x in e), float(damping),
-                     quantity("end_time", "time", 0.0) or None)
+                     quantity("end_time", "time", 0.0) or None, pads if thickness else (), thickness,
+                     float(pad_damping))
 
 
 def _height(body) -> float:
@@ -134,10 +196,12 @@ def _height(body) -> float:
 
 
 def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] | None = None,
-             end_time: float = 1.0, frequencies: list[float] | None = None) -> dict:
+             end_time: float = 1.0, frequencies: list[float] | None = None,
+             masses: list[float] | None = None) -> dict:
     """The chain as an ordinary raw scene: bodies stacked along z, contact between neighbours;
     each body damped (``spec.damping`` of critical, stiffness-proportional) at its own first
-    frequency in ``frequencies`` [Hz] unless it has a damping of its own.
+    frequency in ``frequencies`` [Hz] unless it has a damping of its own; the pads (with the
+    bodies' ``masses`` for their dashpots) as compression-only springs across the gaps.
 
     Launched chain: the test article stands on z = 0, each heavier body above the next with the
     gap, the first moving down at the launch speed.  Stack on anvil: the first body above a rigid
@@ -149,12 +213,12 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
     z = [0.0] * n
     if spec.architecture == "launched-chain":
         for k in range(n - 2, -1, -1):
-            z[k] = z[k + 1] + heights[k + 1] + spec.gap
+            z[k] = z[k + 1] + heights[k + 1] + spec.gap + spec.pad_space(k)
         speeds = [-spec.launch_speed] + [0.0] * (n - 1)
     else:
         z[0] = spec.gap
         for k in range(1, n):
-            z[k] = z[k - 1] + heights[k - 1] + spec.gap * STACK_SHRINK ** k
+            z[k] = z[k - 1] + heights[k - 1] + spec.gap * STACK_SHRINK ** k + spec.pad_space(k - 1)
         speeds = [-spec.launch_speed] * n
     for b, zk, vk in zip(bodies, z, speeds):
         b["position"] = [0.0] * (gdim - 1) + [zk]
@@ -173,7 +237,22 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
     if spec.damping and frequencies:
         for b, f in zip(bodies, frequencies):
             b.setdefault("damping", {"ratio": spec.damping, "frequency": f, "type": "stiffness"})
+    if masses and any(spec.pad(k) for k in range(n - 1)):
+        pairs = [c for c in contacts if "b" in c]          # the body-body interfaces, k = 0 .. n - 2
+        # the spring's extension is the change of the faces' distance: nothing until the gap has
+        # closed, then k per metre of the pad's compression (extrapolated beyond the table)
+        out["spring"] = [{"name": _pad_name(c["name"]), "a": c["a"], "b": c["b"],
+                          "curve": [[-gap - spec.pad_space(k), -spec.pad(k) * spec.pad_space(k)], [-gap, 0.0],
+                                    [0.0, 0.0]],
+                          "damping": spec.pad_dashpot(k, masses[k], masses[k + 1]), "compression_only": True}
+                         for k, c in enumerate(pairs) if spec.pad(k)
+                         for gap in [spec.gap * (STACK_SHRINK ** (k + 1) if spec.architecture == "stack-on-anvil"
+                                                 else 1.0)]]
     return out
+
+
+def _pad_name(interface: str) -> str:
+    return f"pad_{interface}"
 
 
 def first_frequencies(scene, heights: list[float]) -> list[float]:
@@ -217,7 +296,7 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
     if "launcher" in raw:
         _fire_launcher(raw, spec, _masses(scene))
     scene_raw = fe_scene(raw, spec, kinematics, heights, end_time=spec.end_time or 1.0,
-                         frequencies=first_frequencies(scene, heights))
+                         frequencies=first_frequencies(scene, heights), masses=_masses(scene))
     return spec, resolve(scene_raw), heights
 
 
@@ -246,8 +325,9 @@ def _masses(scene) -> list[float]:
     return [scene.material_of(b).rho * PARTS[b.shape].volume(b.dims, 3) for b in scene.bodies]
 
 
-def _impedance_stress(scene, heights, stages) -> dict:
-    """Rigid fidelity: the elastic interface stress of each collision from 1D impedances."""
+def _impedance_stress(scene, heights, stages, spec, masses) -> dict:
+    """Rigid fidelity: the elastic interface stress of each collision from 1D impedances, or
+    on a pad the peak force of rigid bodies on an undamped spring, dv sqrt(k M*)."""
     out = {}
     names = [b.name for b in scene.bodies]
     for s in stages:
@@ -259,7 +339,10 @@ def _impedance_stress(scene, heights, stages) -> dict:
         za, zb = [scene.material_of(x).rho * scene.material_of(x).c_bar * PARTS[x.shape].volume(x.dims, 3) / h
                   for x, h in ((a, heights[names.index(a.name)]), (b, heights[names.index(b.name)]))]
         area = min(PARTS[x.shape].volume(x.dims, 3) / heights[names.index(x.name)] for x in (a, b))
-        out[s.pair] = abs(s.striker_before - s.struck_before) * za * zb / (za + zb) / area
+        k = min(names.index(a.name), names.index(b.name))
+        dv = abs(s.striker_before - s.struck_before)
+        out[s.pair] = (pad_peak_force(dv, spec.pad(k), reduced_mass(masses[k], masses[k + 1])) / area
+                       if spec.pad(k) else flat_face_stress(dv, za, zb, area))
     return out
 
 
@@ -284,16 +367,19 @@ def _default_end(spec, masses, heights, scene) -> float:
     timing = dataclasses.replace(spec, restitution=tuple(min(e, TIMING_RESTITUTION) for e in spec.restitution))
     r = _run_rigid_model(timing, masses, heights)
     last = max((c.time for c in r.collisions), default=0.0)
-    return last + 3 * transit + spec.gap / spec.launch_speed
+    # a pad's contact lasts half its period on the two masses, pi sqrt(M* / k)
+    pads = sum(math.pi * math.sqrt(reduced_mass(masses[k], masses[k + 1]) / spec.pad(k))
+               for k in range(len(masses) - 1) if spec.pad(k))
+    return last + 3 * transit + spec.gap / spec.launch_speed + 1.5 * pads
 
 
 def _run_rigid_model(spec, masses, heights):
     if spec.architecture == "launched-chain":
         v = [spec.launch_speed] + [0.0] * (len(masses) - 1)
-        return rigid.run_chain(masses, v, heights, [spec.gap] * (len(masses) - 1), spec.restitution)
+        return rigid.run_chain(masses, v, heights, [spec.gap] * (len(masses) - 1), spec.rigid_restitution())
     return rigid.run_chain(masses, [-spec.launch_speed] * len(masses), heights,
-                           [spec.gap * STACK_SHRINK ** (k + 1) for k in range(len(masses) - 1)], spec.restitution,
-                           anvil=spec.restitution[0], anvil_gap=spec.gap)
+                           [spec.gap * STACK_SHRINK ** (k + 1) for k in range(len(masses) - 1)],
+                           spec.rigid_restitution(), anvil=spec.restitution[0], anvil_gap=spec.gap)
 
 
 def _rigid_history(result, names, interface_names) -> dict:
@@ -347,11 +433,15 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         result = _run_rigid_model(spec, masses, heights)
         wall = time.perf_counter() - t0
         h = _rigid_history(result, names, iface_names)
-        model = (f"rigid: event-driven rigid-body collisions, restitution {list(spec.restitution)}; "
+        padded = (f" (pads: rigid bodies on a spring-dashpot that never pulls, zeta = {spec.pad_damping:g})"
+                  if spec.pad_stiffness and any(spec.pad_stiffness) else "")
+        model = (f"rigid: event-driven rigid-body collisions, restitution "
+                 f"{[round(e, 6) for e in spec.rigid_restitution()]}{padded}; "
                  f"{len(result.collisions)} collisions ({result.stopped})")
         stages = stage_table(h, dict(zip(names, masses)), contacts, "z", ("z",))
-        stress = _impedance_stress(scene, heights, stages)
-        stress_kind = "elastic 1D impedance estimate dv Z_a Z_b / (Z_a + Z_b) over the smaller face"
+        stress = _impedance_stress(scene, heights, stages, spec, masses)
+        stress_kind = ("elastic 1D impedance estimate dv Z_a Z_b / (Z_a + Z_b) over the smaller face; "
+                       "on a pad dv sqrt(k M*) over it")
     elif spec.fidelity == "1d":
         bars = []
         for b, hgt in zip(scene.bodies, heights):
@@ -362,8 +452,9 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
             v0 = (-launch if stack else (launch if b is scene.bodies[0] else 0.0))
             bars.append(Bar(b.name, hgt, PARTS[b.shape].volume(b.dims, 3) / hgt, mat.rho, mat.E, v0,
                             yield_stress=sy, hardening=H))
-        gaps = ([Interface(iface_names[k + 1], spec.gap * STACK_SHRINK ** (k + 1)) for k in range(len(bars) - 1)]
-                if stack else [Interface(iface_names[k], spec.gap) for k in range(len(bars) - 1)])
+        gaps = [Interface(iface_names[k + 1 if stack else k], spec.gap * (STACK_SHRINK ** (k + 1) if stack else 1.0),
+                          spec.pad(k) or None, spec.pad_damping if spec.pad(k) else 0.0)
+                for k in range(len(bars) - 1)]
         r = run_bars(bars, gaps, end_time, damping_ratio=[b.damping.ratio if b.damping else 0.0 for b in scene.bodies],
                      damping_frequency=[b.damping.frequency if b.damping else 0.0 for b in scene.bodies],
                      anvil_gap=spec.gap if stack else None)
@@ -380,11 +471,15 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
     else:
         from ..run import run_scene
         scene = resolve(fe_scene(raw, spec, spec.fidelity, heights, end_time,
-                                 frequencies=first_frequencies(scene, heights)))
+                                 frequencies=first_frequencies(scene, heights), masses=masses))
         res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress)
         wall = res.summary["wall_time_s"]
         from ..output.history import read_history_csv
         h = read_history_csv(os.path.join(out_dir, "history.csv"))
+        for c in scene.contacts:        # an interface's force: its contact's and its pad's
+            pad = f"spring.{_pad_name(c.name)}.force_z"
+            if pad in h:
+                h[f"contact.{c.name}.normal_z"] = h[f"contact.{c.name}.normal_z"] + h[pad]
         model = "finite elements (" + spec.fidelity + "): " + "; ".join(m.strip() for m in res.summary["models"])
         fe_contacts = [{"name": c.name, "a": c.a, "b": c.b,
                         "wall_velocity": c.rigid.velocity[-1] if c.rigid else 0.0} for c in scene.contacts]

@@ -44,6 +44,21 @@ class ChainResult:
         return (0.5 * float(self.masses @ self.initial ** 2), 0.5 * float(self.masses @ self.final ** 2))
 
 
+def pad_restitution(zeta: float) -> float:
+    """Restitution of two rigid bodies meeting on a linear spring-dashpot pad that never pulls,
+    of damping ratio ``zeta`` on their reduced mass, whatever the stiffness and the masses.
+
+    The pad lets go when its force k x + c x' falls to zero, before the spring is back at rest;
+    with beta = zeta w0 and w = w0 sqrt(1 - zeta^2) (Schwager and Poeschel, Granular Matter 2007):
+        e = exp(-(beta / w) (pi - atan2(2 beta w, w^2 - beta^2)))
+    which is above exp(-pi zeta / sqrt(1 - zeta^2)), the value if the pad could pull.
+    """
+    if not 0 <= zeta < 1:
+        raise ValueError(f"pad damping ratio must be in [0, 1), got {zeta}")
+    w = math.sqrt(1 - zeta * zeta)
+    return math.exp(-(zeta / w) * (math.pi - math.atan2(2 * zeta * w, w * w - zeta * zeta)))
+
+
 def run_chain(masses, velocities, lengths, gaps, restitution, anvil: float | None = None,
               anvil_gap: float = 0.0) -> ChainResult:
     """Follow a chain to its last collision.

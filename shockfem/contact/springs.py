@@ -8,7 +8,8 @@ averaged nodes).  With n the unit direction from end a to end b:
     extension  e = (u_b - u_a) . n,   rate  e_dot = (v_b - v_a) . n     (mean motions)
     tension    T = F(e) + c e_dot     F: k e, or a tabulated curve (linear between points,
                                       extrapolated with the end slopes)
-    force on a = +T n, on b = -T n    (compression_only: T <= 0, a pad that never pulls)
+    force on a = +T n, on b = -T n    (compression_only: T <= 0, a pad that never pulls, and
+                                      zero while F(e) >= 0: the dashpot acts in contact only)
 
 Its stable step joins the element steps like a contact spring: the two-mass oscillator of the
 ends, omega^2 = k_max (1/M_a + 1/M_b), shortened by the dashpot.
@@ -67,6 +68,7 @@ class DiscreteSpring:
         else:
             self.curve = None
             k_max = spec.stiffness
+        self.k_max = k_max
         m_eff = 1.0 / (1.0 / self.end_mass[0] + 1.0 / self.end_mass[1])
         if k_max > 0:
             omega = math.sqrt(k_max / m_eff)
@@ -106,9 +108,12 @@ class DiscreteSpring:
         mean_u, mean_v = self._means(u, v)
         e = float((mean_u[1] - mean_u[0]) @ n)
         e_dot = float((mean_v[1] - mean_v[0]) @ n)
-        T = self.force_law(e) + self.spec.damping * e_dot
+        F = self.force_law(e)
+        T = F + self.spec.damping * e_dot
         if self.spec.compression_only:
-            T = min(T, 0.0)
+            # a pad: pushes only while compressed, and its dashpot acts only then (not while a gap
+            # in its curve closes); a dashpot alone pushes against any approach
+            T = 0.0 if F >= 0.0 and self.k_max > 0 else min(T, 0.0)
         f[self.nodes[0]] += T * self.share[0][:, None] * n
         f[self.nodes[1]] -= T * self.share[1][:, None] * n
         # work on the bodies over the step, (T_n + T_{n+1})/2 against e_dot_{n+1/2} as the solver counts it

@@ -39,6 +39,9 @@ class HistoryRecorder:
             # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
             self.columns += [(f"contact.{c.name}.normal_{a}", "N") for a in axes]
             self.columns += [(f"contact.{c.name}.friction_{a}", "N") for a in axes]
+        for sp in m.scene.springs:
+            # the spring's force on its end a, as a vector (tension T along the unit a -> b)
+            self.columns += [(f"spring.{sp.name}.force_{a}", "N") for a in axes]
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
@@ -55,6 +58,8 @@ class HistoryRecorder:
             row += list(s.comm.allreduce(vn, op=MPI.SUM) if s.parallel else vn)
         for pair in s.contacts:
             row += list(pair.force_a) + list(pair.friction_a)
+        for spring in s.springs:
+            row += list(spring.tension * spring.direction)
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
 

@@ -271,7 +271,7 @@ from .material_point import material_point  # noqa: E402
 from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d  # noqa: E402
 from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine  # noqa: E402
 from .modal_cases import circular_plate, modal_rod, nafems_fv12  # noqa: E402
-from .amplifier_cases import amplifier_1d, amplifier_rigid  # noqa: E402
+from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid  # noqa: E402
 from .launcher_cases import launcher_design, launcher_model  # noqa: E402
 
 CASES = {
@@ -305,6 +305,7 @@ CASES = {
     "circular_plate": circular_plate,
     "amplifier_rigid": amplifier_rigid,
     "amplifier_1d": amplifier_1d,
+    "amplifier_pads": amplifier_pads,
     "launcher_model": launcher_model,
     "launcher_design": launcher_design,
 }

@@ -110,3 +110,40 @@ def test_tether_swings_two_free_bars_at_its_frequency():
     assert rel[-1] == pytest.approx(-1.0, abs=2e-3)
     assert np.max(np.abs(rel - np.cos(w * t))) < 5e-3
     assert r.energy_balance_error < 1e-6
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.02, 0.3, 0.75, 0.95])
+def test_pad_restitution_matches_the_integrated_pad(zeta):
+    """Two rigid masses on a linear spring-dashpot that never pulls: integrate x'' = -(k x + c x') / M*
+    until the force falls to zero; the rebound speed over the approach speed is the closed form."""
+    from shockfem.amplifier.rigid import pad_restitution
+    w0, dt = 1.0, 1e-5
+    x, v = dt, 1.0                   # just in contact, closing at 1
+    while True:
+        a = -(w0 * w0 * x + 2 * zeta * w0 * v)
+        if a >= 0:                   # the pad would pull: it lets go
+            break
+        v += dt * a                  # semi-implicit Euler, first order: dt = 1e-5 is plenty
+        x += dt * v
+    assert -v == pytest.approx(pad_restitution(zeta), abs=2e-4)
+    if zeta:
+        assert pad_restitution(zeta) > math.exp(-math.pi * zeta / math.sqrt(1 - zeta ** 2))
+
+
+def test_hertz_yield_speed_of_a_sphere_is_johnsons():
+    """A sphere on a rigid flat (M* = its mass) first yields at rho v^2 / Y = 26 (Y / E*)^4
+    (Johnson, Contact Mechanics, eq. 11.24; (pi^4 / 40) 1.6^5 = 25.5 with p0 = 1.6 Y)."""
+    from shockfem.amplifier.interfaces import hertz_yield_speed
+    rho, Y, E_star, R = 7850.0, 690e6, 115e9, 0.05
+    m = 4 / 3 * math.pi * R ** 3 * rho
+    v = hertz_yield_speed(m, R, E_star, Y)
+    assert rho * v ** 2 / Y / (Y / E_star) ** 4 == pytest.approx(math.pi ** 4 / 40 * 1.6 ** 5, rel=1e-12)
+    assert rho * v ** 2 / Y / (Y / E_star) ** 4 == pytest.approx(26, rel=0.02)
+
+
+def test_pad_for_force_gives_that_peak_force_and_takes_the_energy():
+    from shockfem.amplifier.interfaces import pad_for_force, pad_peak_force
+    pad = pad_for_force(dv=300.0, m_star=4.27, force=4e6)
+    assert pad_peak_force(300.0, pad.stiffness, 4.27) == pytest.approx(4e6, rel=1e-12)
+    assert 0.5 * pad.stiffness * pad.travel ** 2 == pytest.approx(pad.energy, rel=1e-12)
+    assert pad.duration == pytest.approx(math.pi / math.sqrt(pad.stiffness / 4.27), rel=1e-12)
