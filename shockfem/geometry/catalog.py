@@ -393,6 +393,11 @@ def _carrier_check(d):
 
 
 P = Param
+# Files a body can come from instead of a part: a mesh with physical groups, or CAD geometry
+# that gmsh meshes at the body's element size
+MESH_FILES = (".msh",)
+CAD_FILES = (".step", ".stp")
+
 PARTS: dict[str, Part] = {p.name: p for p in [
     Part("cylinder", "solid cylinder, rod or striking mass; each end flat, chamfered (45 deg) or crowned "
                      "(a spherical face of the given sphere radius, which softens and shapes the contact)",

@@ -21,6 +21,7 @@ from ..errors import ModelError
 if TYPE_CHECKING:                         # the scene imports the catalog of parts from this package
     from ..scene import Scene
 from . import parts
+from .catalog import CAD_FILES
 
 MESH_FORMAT_VERSION = 4   # bump when part drawing changes, to invalidate caches
 
@@ -102,20 +103,10 @@ def _draw_part(body, gdim: int, element: str):
     hexahedra by splitting each tetrahedron in four (drawn at twice the size, so the hexes come
     out at the element size; their shape is poorer than a structured mesh's, which the quality
     report shows)."""
-    import gmsh
     from .catalog import PARTS, draw
     origin = (0.0, body.position[1], 0.0) if gdim == 2 else tuple(body.position)
     entities, regions = draw(PARTS[body.shape], body.dims, gdim, origin)
-    scale = 2.0 if element == "hex" else 1.0
-    gmsh.option.setNumber("Mesh.MeshSizeMax", scale * body.element_size)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", CURVATURE_ELEMENTS)
-    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-    if element == "quad":
-        gmsh.option.setNumber("Mesh.Algorithm", 8)
-        gmsh.option.setNumber("Mesh.RecombineAll", 1)
-        gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 2)
-    if element == "hex":
-        gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 2)
+    scale = _mesh_options(body, element)
     if body.refine:
         _refinement_field(body, regions, gdim, scale)
     return entities, regions
@@ -144,6 +135,52 @@ def _refinement_field(body, regions: dict, gdim: int, scale: float):
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
 
 
+def _mesh_options(body, element: str) -> float:
+    """Element size and type options of one body's gmsh mesh; returns the size scale (hexes come
+    from splitting tetrahedra drawn at twice the size)."""
+    import gmsh
+    scale = 2.0 if element == "hex" else 1.0
+    gmsh.option.setNumber("Mesh.MeshSizeMax", scale * body.element_size)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", CURVATURE_ELEMENTS)
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    if element == "quad":
+        gmsh.option.setNumber("Mesh.Algorithm", 8)
+        gmsh.option.setNumber("Mesh.RecombineAll", 1)
+        gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 2)
+    if element == "hex":
+        gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 2)
+    return scale
+
+
+def _import_cad(body, gdim: int, element: str):
+    """A STEP file through gmsh's OCC kernel, converted to metres, meshed at the body's element
+    size; its faces (edges in 2D) named by the scene's ``regions`` tags."""
+    import gmsh
+    _reset_options()
+    gmsh.option.setString("Geometry.OCCTargetUnit", "M")
+    try:
+        gmsh.model.occ.importShapes(body.mesh_file)
+        gmsh.model.occ.synchronize()
+    except Exception as e:                   # gmsh raises a bare Exception with its own message
+        raise ModelError(f"body {body.name}: gmsh cannot read {body.mesh_file}: {e}") from None
+    finally:
+        gmsh.option.setString("Geometry.OCCTargetUnit", "")
+    entities = [tag for _, tag in gmsh.model.getEntities(gdim)]
+    if not entities:
+        raise ModelError(f"body {body.name}: {body.mesh_file} has no {'solid' if gdim == 3 else 'face'} to mesh "
+                         f"for a {gdim}D scene")
+    faces = {tag for _, tag in gmsh.model.getEntities(gdim - 1)}
+    for name, tags in body.regions.items():
+        missing = [t for t in tags if t not in faces]
+        if missing:
+            raise ModelError(f"body {body.name}: {body.mesh_file} has no {'face' if gdim == 3 else 'edge'} "
+                             f"{missing} (region '{name}'); it has {sorted(faces)}: fix bodies.regions")
+    _mesh_options(body, element)
+    gmsh.model.mesh.generate(gdim)
+    _reset_options()
+    return entities, {name: list(tags) for name, tags in body.regions.items()}
+
+
 def _draw_body(body, gdim: int, element: str) -> BodyMesh:
     """Mesh one body in a gmsh model of its own (current model) and take its mesh out.
 
@@ -151,7 +188,9 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
     join the pieces of one part, never joins two bodies that touch (a striker resting on its
     target would be glued to it)."""
     import gmsh
-    if body.shape == "mesh":
+    if body.shape == "mesh" and body.mesh_file.lower().endswith(CAD_FILES):
+        entities, regions = _import_cad(body, gdim, element)
+    elif body.shape == "mesh":
         gmsh.merge(body.mesh_file)
         entities = [tag for _, tag in gmsh.model.getEntities(gdim)]
         regions = {}

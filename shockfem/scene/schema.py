@@ -11,7 +11,7 @@ import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..geometry.catalog import PARTS
+from ..geometry.catalog import CAD_FILES, MESH_FILES, PARTS
 from ..units import UnitError, to_si
 
 KINEMATICS = ("axisymmetric", "plane-strain", "3d")
@@ -116,7 +116,8 @@ class Body:
     spin: float                      # [rad/s] about the body's z axis (3D only)
     rigid: bool
     mesh_file: str | None = None
-    regions: dict[str, int] = field(default_factory=dict)   # mesh bodies: name -> gmsh physical tag
+    # mesh bodies: name -> gmsh physical tag (.msh), or -> CAD face tags (.step: a tuple)
+    regions: dict[str, int | tuple[int, ...]] = field(default_factory=dict)
     refine: tuple[tuple[str, float, float], ...] = ()       # (region, element size, distance) near faces
     damping: Damping | None = None   # its own stiffness-proportional damping (instead of the scene's beta)
 
@@ -584,14 +585,31 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         elif shape == "mesh":
             allowed |= {"file", "regions"}
             f = b.get("file")
-            if not isinstance(f, str):
-                ck.fail(f"{path}.file", "missing (path of a gmsh .msh file with physical groups)")
+            if not isinstance(f, str) or not f.lower().endswith(MESH_FILES + CAD_FILES):
+                ck.fail(f"{path}.file", "missing or not a mesh: the path of a gmsh .msh file with physical groups, "
+                                        "or of a .step / .stp CAD file (lengths in its own units)")
             else:
                 mesh_file = f if os.path.isabs(f) else os.path.normpath(os.path.join(base_dir, f))
                 if not os.path.exists(mesh_file):
                     ck.fail(f"{path}.file", f"no such file {mesh_file}")
+            cad = isinstance(f, str) and f.lower().endswith(CAD_FILES)
             reg = b.get("regions", {})
-            if not isinstance(reg, dict) or not all(isinstance(v, int) for v in reg.values()):
+            if cad:
+                # a CAD file has no physical groups: a region is one face tag or a list of them
+                ok = isinstance(reg, dict) and all(
+                    isinstance(v, int) or (isinstance(v, list) and v and all(isinstance(x, int) for x in v))
+                    for v in reg.values())
+                if not ok:
+                    ck.fail(f"{path}.regions", "must map region names to the CAD file's face tags (an integer or a "
+                                               "list of integers, as gmsh numbers them on import)")
+                else:
+                    regions = {k: tuple(v) if isinstance(v, list) else (v,) for k, v in reg.items()}
+                if not b.get("element_size"):
+                    ck.fail(f"{path}.element_size", "missing: a CAD file is meshed here; give an element size")
+                if kin != "3d":
+                    ck.fail(f"{path}.file", "a CAD (.step) body needs kinematics = '3d'; in 2D use a catalogued "
+                                            "part or a .msh of the section")
+            elif not isinstance(reg, dict) or not all(isinstance(v, int) for v in reg.values()):
                 ck.fail(f"{path}.regions", "must map region names to gmsh physical group tags (integers)")
             else:
                 regions = dict(reg)
