@@ -40,6 +40,8 @@ class Part:
     cut_3d: Callable[[dict, list[int], tuple], list[int]] | None = None     # (dims, volumes, origin)
     cut_region: str = "cut"
     regions_3d_only: tuple[str, ...] = ()
+    # (dims, gdim): what the drawn part leaves out of the real one, said in the run log
+    approximations: Callable[[dict, int], list[str]] = lambda d, g: []
 
     def regions(self, dims: dict, gdim: int) -> tuple[str, ...]:
         names = [r for r in self.profile(dims).regions() if not (gdim == 3 and r == "axis")]
@@ -428,12 +430,17 @@ PARTS: dict[str, Part] = {p.name: p for p in [
          (P("outer_radius", "outer radius"), P("length", "length"), P("entry_radius", "bore radius at the top"),
           P("exit_radius", "bore radius at the bottom"), P("segments", "number of segments (3D)", 4, "count"),
           P("slot_width", "width of the axial slots (3D)", 0.001)),
-         _split_cone_profile, _split_cone_volume, _split_cone_check, _split_cone_slots, "slots", ("slots",)),
+         _split_cone_profile, _split_cone_volume, _split_cone_check, _split_cone_slots, "slots", ("slots",),
+         lambda d, g: [f"no slots in axisymmetry: the {d['segments']:g} segments act as one closed ring, stiffer in "
+                       "hoop than the slotted cone (run 3d to let them open)"] if g == 2 and d["segments"] > 1 else []),
     Part("clamp_ring", "ring shrunk onto a body (fits = its name) with a radial interference that sets the preload",
          (P("thickness", "radial wall thickness"), P("length", "length"),
           P("interference", "radial interference with the body it fits", 0.0, minimum="nonnegative")),
          _clamp_ring_profile,
-         lambda d, g: math.pi * ((d["inner_radius"] + d["thickness"]) ** 2 - d["inner_radius"] ** 2) * d["length"]),
+         lambda d, g: math.pi * ((d["inner_radius"] + d["thickness"]) ** 2 - d["inner_radius"] ** 2) * d["length"],
+         approximations=lambda d, g: [f"starts overlapping the body it fits by the interference "
+                                      f"{d['interference'] * 1e3:.3g} mm; contact pushes it out to the preload"]
+         if d["interference"] > 0 else []),
     Part("dashpot", "fluid dashpot fixture: a cylinder with a toroidal cavity (circular section) and, in 3D, an "
                     "orifice from the cavity to the top face",
          (P("outer_radius", "outer radius"), P("length", "length"),
@@ -442,7 +449,9 @@ PARTS: dict[str, Part] = {p.name: p for p in [
           P("cavity_centre_radius", "radius at which the cavity's section is centred"),
           P("cavity_height", "height of the cavity's centre (0: mid-length)", 0.0, minimum="nonnegative"),
           P("orifice_radius", "radius of the orifice (3D; 0: none)", 0.0, minimum="nonnegative")),
-         _dashpot_profile, _dashpot_volume, _dashpot_check, _dashpot_orifice, "orifice", ("orifice",)),
+         _dashpot_profile, _dashpot_volume, _dashpot_check, _dashpot_orifice, "orifice", ("orifice",),
+         lambda d, g: ["no orifice in axisymmetry (a hole off the axis is not axisymmetric)"]
+         if g == 2 and d["orifice_radius"] > 0 else []),
     Part("projectile", "penetrator: tangent-ogive nose of crh calibre-radius-head, blunted by a small flat "
                        "(meplat) at z = 0, shank, flat base, "
                        "optional internal cavity below the base",
@@ -452,7 +461,8 @@ PARTS: dict[str, Part] = {p.name: p for p in [
           P("cavity_radius", "radius of the internal cavity (0: solid)", 0.0, minimum="nonnegative"),
           P("cavity_length", "length of the cavity", 0.0, minimum="nonnegative"),
           P("base_thickness", "material between the cavity and the base", 0.0, minimum="nonnegative")),
-         _projectile_profile, _projectile_volume, _projectile_check),
+         _projectile_profile, _projectile_volume, _projectile_check,
+         approximations=lambda d, g: [f"ogive nose blunted by a flat tip (meplat) of radius {_meplat(d) * 1e3:.3g} mm"]),
     Part("carrier", "striking mass, anvil or test-article carrier: a cylinder with a counterbored seat in its top",
          (P("radius", "radius"), P("length", "length"), P("seat_radius", "seat radius"),
           P("seat_depth", "seat depth")),

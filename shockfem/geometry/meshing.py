@@ -176,9 +176,20 @@ def _import_cad(body, gdim: int, element: str):
             raise ModelError(f"body {body.name}: {body.mesh_file} has no {'face' if gdim == 3 else 'edge'} "
                              f"{missing} (region '{name}'); it has {sorted(faces)}: fix bodies.regions")
     _mesh_options(body, element)
-    gmsh.model.mesh.generate(gdim)
+    _generate(body, gdim, element)
     _reset_options()
     return entities, {name: list(tags) for name, tags in body.regions.items()}
+
+
+def _generate(body, gdim: int, element: str):
+    """gmsh's mesh of the current model; its failures become a ModelError naming the body."""
+    import gmsh
+    try:
+        gmsh.model.mesh.generate(gdim)
+    except Exception as e:                   # gmsh raises a bare Exception with its own message
+        raise ModelError(f"body {body.name}: gmsh cannot mesh it with {element} elements of "
+                         f"{body.element_size * 1e3:.3g} mm ({e}); try a smaller element_size, or another "
+                         "scene.element") from None
 
 
 def _draw_body(body, gdim: int, element: str) -> BodyMesh:
@@ -209,7 +220,7 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
             gmsh.model.geo.synchronize()
         else:
             entities, regions = _draw_part(body, gdim, element)
-        gmsh.model.mesh.generate(gdim)
+        _generate(body, gdim, element)
         _reset_options()
     node_tags, coords, _ = gmsh.model.mesh.getNodes()
     coords = coords.reshape(-1, 3)

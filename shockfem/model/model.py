@@ -16,6 +16,7 @@ from mpi4py import MPI
 
 from .. import compat
 from ..geometry import MeshedScene, region_facets
+from ..geometry.catalog import PARTS
 from ..scene import Scene
 from . import kinematics as kin
 from ..solver import columns, kernels, one_point
@@ -271,6 +272,8 @@ def describe(model: Model) -> str:
         law = material.plasticity.model if material.plasticity else "linear elastic"
         kind = "rigid body (no stiffness)" if b.rigid else f"{law}, updated Lagrangian, {element}"
         lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
+        if b.shape in PARTS:
+            lines += [f"    approximation: {note}" for note in PARTS[b.shape].approximations(b.dims, model.gdim)]
         if material.source and not b.rigid:
             lines.append(f"    material {material.name} from the {material.source}")
     q1, q2 = sc.bulk_viscosity

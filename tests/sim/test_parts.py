@@ -136,3 +136,29 @@ def test_clamp_ring_bore_from_the_cone_and_the_interference():
                           "position": [0, "10 mm"]})
     ring = resolve(raw).bodies[1]
     assert ring.dims["inner_radius"] == pytest.approx(0.02995)
+
+
+def test_run_log_states_the_approximations_of_each_part():
+    """The axisymmetric split cone has no slots, the ring starts overlapping by its interference, the
+    projectile's nose is blunted: the 'models that run' block says so; the 3D cone has its slots."""
+    from shockfem.model import describe
+    path = next(p for p in GALLERY if p.endswith("split_cone.toml"))
+    axi = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)))
+    assert "approximation: no slots in axisymmetry: the 4 segments act as one closed ring" in axi
+    assert "approximation: starts overlapping the body it fits by the interference 0.05 mm" in axi
+    solid = describe(build_model(s := _load(path, "3d", "tet"), build_mesh(s, log=lambda *a: None)))
+    assert "no slots" not in solid
+    path = next(p for p in GALLERY if p.endswith("projectile.toml"))
+    text = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)))
+    assert "approximation: ogive nose blunted by a flat tip (meplat) of radius" in text
+
+
+def test_a_mesh_gmsh_cannot_make_is_a_clear_error(tmp_path):
+    """The projectile's quads at twice the gallery's element size: gmsh's full-quad recombination
+    cannot halve the edge of its small flat tip; the run stops naming the body and what to change,
+    not with gmsh's traceback."""
+    from shockfem.errors import ModelError
+    path = next(p for p in GALLERY if p.endswith("projectile.toml"))
+    with pytest.raises(ModelError, match=r"body penetrator: gmsh cannot mesh it with quad elements of 6 mm .*"
+                                         r"smaller element_size"):
+        build_mesh(_load(path, coarsen=2.0), log=lambda *a: None, cache_dir=str(tmp_path))
