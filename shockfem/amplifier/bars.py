@@ -40,6 +40,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
+from .interfaces import pad_dashpot, reduced_mass
+
 # Elements in the shortest bar when a bar does not say: the dispersion of linear elements
 # (ringing behind a steep front) shifts the St Venant restitution by about 0.8% at 400
 # (2% at 100); the element size is then the same in every bar (no finer than structural
@@ -277,11 +279,9 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
         if itf.stiffness is None:
             continue
         k_if[k] = itf.stiffness
-        M_a, M_b = bars[k].mass, bars[k + 1].mass
-        c_if[k] = 2 * itf.damping_ratio * math.sqrt(k_if[k] * M_a * M_b / (M_a + M_b))
+        c_if[k] = pad_dashpot(itf.damping_ratio, k_if[k], bars[k].mass, bars[k + 1].mass)
         # the stable step of the damped spring on the two end nodes: (sqrt(1 + z^2) - z) 2 / omega
-        m_a, m_b = m[right[k]], m[left[k + 1]]
-        m_star = m_a * m_b / (m_a + m_b)
+        m_star = reduced_mass(m[right[k]], m[left[k + 1]])
         omega = math.sqrt(k_if[k] / m_star)
         z = c_if[k] / (2 * math.sqrt(k_if[k] * m_star))
         dt = min(dt, 2 / omega * (math.sqrt(1 + z * z) - z))

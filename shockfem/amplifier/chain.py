@@ -63,7 +63,7 @@ from ..metrics.stages import stage_table
 from ..scene import SceneError, resolve
 from ..units import UnitError, to_si
 from . import rigid
-from .interfaces import flat_face_stress, pad_peak_force, reduced_mass
+from .interfaces import flat_face_stress, pad_dashpot, pad_peak_force, reduced_mass
 from .bars import Bar, Interface, run_bars
 from .gain import ARCHITECTURES
 
@@ -100,9 +100,10 @@ class ChainSpec:
         """The pad's thickness at interface k [m] (0: no pad)."""
         return self.pad_thickness[k] if self.pad(k) else 0.0
 
-    def pad_dashpot(self, k: int, m_a: float, m_b: float) -> float:
-        """Dashpot of interface k's pad, c = 2 zeta sqrt(k M*) [N s/m]."""
-        return 2 * self.pad_damping * math.sqrt(self.pad(k) * reduced_mass(m_a, m_b))
+    def interface_gap(self, k: int) -> float:
+        """Gap between bodies k and k + 1 [m]: ``gap`` in a launched chain; in a stack ``gap`` is
+        the anvil's and the others shrink up the stack by STACK_SHRINK."""
+        return self.gap * (STACK_SHRINK ** (k + 1) if self.architecture == "stack-on-anvil" else 1.0)
 
     def rigid_restitution(self) -> tuple[float, ...]:
         """The rigid model's restitution per interface: as given, or its pad's."""
@@ -213,12 +214,12 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
     z = [0.0] * n
     if spec.architecture == "launched-chain":
         for k in range(n - 2, -1, -1):
-            z[k] = z[k + 1] + heights[k + 1] + spec.gap + spec.pad_space(k)
+            z[k] = z[k + 1] + heights[k + 1] + spec.interface_gap(k) + spec.pad_space(k)
         speeds = [-spec.launch_speed] + [0.0] * (n - 1)
     else:
         z[0] = spec.gap
         for k in range(1, n):
-            z[k] = z[k - 1] + heights[k - 1] + spec.gap * STACK_SHRINK ** k + spec.pad_space(k - 1)
+            z[k] = z[k - 1] + heights[k - 1] + spec.interface_gap(k - 1) + spec.pad_space(k - 1)
         speeds = [-spec.launch_speed] * n
     for b, zk, vk in zip(bodies, z, speeds):
         b["position"] = [0.0] * (gdim - 1) + [zk]
@@ -237,17 +238,16 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
     if spec.damping and frequencies:
         for b, f in zip(bodies, frequencies):
             b.setdefault("damping", {"ratio": spec.damping, "frequency": f, "type": "stiffness"})
-    if masses and any(spec.pad(k) for k in range(n - 1)):
+    if masses and any(spec.pad_stiffness):
         pairs = [c for c in contacts if "b" in c]          # the body-body interfaces, k = 0 .. n - 2
         # the spring's extension is the change of the faces' distance: nothing until the gap has
         # closed, then k per metre of the pad's compression (extrapolated beyond the table)
         out["spring"] = [{"name": _pad_name(c["name"]), "a": c["a"], "b": c["b"],
                           "curve": [[-gap - spec.pad_space(k), -spec.pad(k) * spec.pad_space(k)], [-gap, 0.0],
                                     [0.0, 0.0]],
-                          "damping": spec.pad_dashpot(k, masses[k], masses[k + 1]), "compression_only": True}
-                         for k, c in enumerate(pairs) if spec.pad(k)
-                         for gap in [spec.gap * (STACK_SHRINK ** (k + 1) if spec.architecture == "stack-on-anvil"
-                                                 else 1.0)]]
+                          "damping": pad_dashpot(spec.pad_damping, spec.pad(k), masses[k], masses[k + 1]),
+                          "compression_only": True}
+                         for k, c in enumerate(pairs) if spec.pad(k) for gap in [spec.interface_gap(k)]]
     return out
 
 
@@ -376,9 +376,10 @@ def _default_end(spec, masses, heights, scene) -> float:
 def _run_rigid_model(spec, masses, heights):
     if spec.architecture == "launched-chain":
         v = [spec.launch_speed] + [0.0] * (len(masses) - 1)
-        return rigid.run_chain(masses, v, heights, [spec.gap] * (len(masses) - 1), spec.rigid_restitution())
+        return rigid.run_chain(masses, v, heights, [spec.interface_gap(k) for k in range(len(masses) - 1)],
+                               spec.rigid_restitution())
     return rigid.run_chain(masses, [-spec.launch_speed] * len(masses), heights,
-                           [spec.gap * STACK_SHRINK ** (k + 1) for k in range(len(masses) - 1)],
+                           [spec.interface_gap(k) for k in range(len(masses) - 1)],
                            spec.rigid_restitution(), anvil=spec.restitution[0], anvil_gap=spec.gap)
 
 
@@ -434,7 +435,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         wall = time.perf_counter() - t0
         h = _rigid_history(result, names, iface_names)
         padded = (f" (pads: rigid bodies on a spring-dashpot that never pulls, zeta = {spec.pad_damping:g})"
-                  if spec.pad_stiffness and any(spec.pad_stiffness) else "")
+                  if any(spec.pad_stiffness) else "")
         model = (f"rigid: event-driven rigid-body collisions, restitution "
                  f"{[round(e, 6) for e in spec.rigid_restitution()]}{padded}; "
                  f"{len(result.collisions)} collisions ({result.stopped})")
@@ -452,7 +453,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
             v0 = (-launch if stack else (launch if b is scene.bodies[0] else 0.0))
             bars.append(Bar(b.name, hgt, PARTS[b.shape].volume(b.dims, 3) / hgt, mat.rho, mat.E, v0,
                             yield_stress=sy, hardening=H))
-        gaps = [Interface(iface_names[k + 1 if stack else k], spec.gap * (STACK_SHRINK ** (k + 1) if stack else 1.0),
+        gaps = [Interface(iface_names[k + 1 if stack else k], spec.interface_gap(k),
                           spec.pad(k) or None, spec.pad_damping if spec.pad(k) else 0.0)
                 for k in range(len(bars) - 1)]
         r = run_bars(bars, gaps, end_time, damping_ratio=[b.damping.ratio if b.damping else 0.0 for b in scene.bodies],

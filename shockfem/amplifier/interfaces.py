@@ -25,6 +25,12 @@ def reduced_mass(m_a: float, m_b: float) -> float:
     return m_a * m_b / (m_a + m_b)
 
 
+def pad_dashpot(zeta: float, stiffness: float, m_a: float, m_b: float) -> float:
+    """Dashpot [N s/m] that gives a pad of ``stiffness`` the damping ratio ``zeta`` on two bodies'
+    reduced mass, c = 2 zeta sqrt(k M*)."""
+    return 2 * zeta * math.sqrt(stiffness * reduced_mass(m_a, m_b))
+
+
 def flat_face_stress(dv: float, z_a: float, z_b: float, area: float) -> float:
     """Stress [Pa] when two elastic bars of impedances z_a, z_b [kg/s] meet flat at closing speed
     dv [m/s], over the smaller face ``area`` [m^2]."""

@@ -166,11 +166,8 @@ def restitution_sweep(rep: Report, size: str, out_dir: str):
         ax.set_ylabel("apparent restitution")
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(rep.path("restitution_vs_frequency_ratio.png"), dpi=110)
-    plt.close(fig)
     rep.figure("restitution_vs_frequency_ratio.png", "Apparent restitution of two steel cylinders against their "
-               "frequency ratio and against contact duration over the target's natural period")
+               "frequency ratio and against contact duration over the target's natural period", fig)
     findings = []
     for key, pts in curves.items():
         best = max(pts, key=lambda p: p[1])
@@ -294,7 +291,7 @@ def paper_rods(rep: Report, size: str):
              "rod's largest speed over the launch speed (and its speed at the end of the run).")
     cascade = rigid.launched_chain(masses, 1.0, 0.5, lengths, gap)
     t_cascade = max(c.time for c in cascade.collisions)
-    m_star = masses[0] * masses[-1] / (masses[0] + masses[-1])
+    m_star = reduced_mass(masses[0], masses[-1])
     c0 = _steel_bar("x", 1, 1).c0
     rows = []
     for speed in cfg["rod_speeds"]:
@@ -402,11 +399,8 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
     ax.set_ylabel("gain")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(rep.path("gain_vs_volume.png"), dpi=110)
-    plt.close(fig)
     rep.figure("gain_vs_volume.png", "Gain of the five-mass design against the volume its stack occupies, "
-               "cylinders to thick plates")
+               "cylinders to thick plates", fig)
     words = []
     for key, pts in curves.items():
         if pts:

@@ -28,7 +28,13 @@ class Report:
         self.lines.append("")
         self.write()
 
-    def figure(self, filename: str, caption: str):
+    def figure(self, filename: str, caption: str, fig=None):
+        """Reference the PNG ``filename`` in the report; with a matplotlib ``fig``, save it there first."""
+        if fig is not None:
+            import matplotlib.pyplot as plt
+            fig.tight_layout()
+            fig.savefig(self.path(filename), dpi=110)
+            plt.close(fig)
         self.lines += [f"![{caption}]({filename})", "", f"*{caption}*", ""]
         self.write()
 
