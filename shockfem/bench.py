@@ -106,7 +106,7 @@ def taylor_bar_bench(sizes, echo=print) -> list[dict]:
     """Copper Taylor bar: final length and radius errors against wall time and element-cycles/s."""
     from .verify.plasticity_cases import TAYLOR, taylor_measures, taylor_scene
     from .verify.scenes import solve
-    echo("speed against error: copper Taylor bar (axisymmetric, one-point quads, 80 us)")
+    echo("speed against error: copper Taylor bar (axisymmetric, one-point quads, 80 us, impact face held on the wall)")
     echo(f"{'size[mm]':>8s} {'elements':>9s} {'steps':>7s} {'wall[s]':>8s} {'Mcyc/s':>7s} {'length err':>10s} "
          f"{'radius err':>10s} {'eps_max':>7s} {'E err':>8s} {'return share':>12s}")
     out = []

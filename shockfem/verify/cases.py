@@ -268,7 +268,7 @@ from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_
                             rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)  # (they use check and SIZES above)
 from .spring_cases import spring_oscillator  # noqa: E402
 from .material_point import material_point  # noqa: E402
-from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d  # noqa: E402
+from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d, taylor_bar_full  # noqa: E402
 from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine  # noqa: E402
 from .modal_cases import circular_plate, modal_rod, nafems_fv12  # noqa: E402
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid  # noqa: E402
@@ -295,6 +295,7 @@ CASES = {
     "material_point": material_point,
     "plastic_wave": plastic_wave,
     "taylor_bar": taylor_bar,
+    "taylor_bar_full": taylor_bar_full,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,
     "srs_half_sine": srs_half_sine,

@@ -15,8 +15,7 @@ from shockfem.verify.plasticity_cases import TAYLOR, taylor_scene
 
 
 def test_taylor_bar_run_directory(tmp_path):
-    raw = taylor_scene(0.0004)
-    raw["scene"]["end_time"] = 40e-6
+    raw = taylor_scene(0.0004, end_time=40e-6, impact_face="wall")
     result = run_scene(resolve(raw), str(tmp_path), progress=False, quiet=True)
     s = result.summary
     bar = s["bodies"]["bar"]
@@ -46,7 +45,7 @@ def test_crushed_element_stops_the_run_and_keeps_its_outputs(tmp_path):
     """At 3 km/s the copper bar's impact corner crushes: the stable step collapses (below 1e-3 of
     its first value, at about 13 us) and the run stops with the body, element and time named,
     status "unstable" and everything written so far kept."""
-    raw = taylor_scene(0.0008)
+    raw = taylor_scene(0.0008, impact_face="wall")
     raw["bodies"][0]["velocity"] = [0.0, -3000.0]
     raw["scene"]["end_time"] = 20e-6
     with pytest.raises(UnstableRun) as info:
