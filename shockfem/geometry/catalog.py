@@ -428,11 +428,13 @@ PARTS: dict[str, Part] = {p.name: p for p in [
     Part("split_cone", "pulse-shaping fixture: a cylinder whose bore narrows from entry (top) to exit (bottom), "
                        "cut by axial slots into segments in 3D",
          (P("outer_radius", "outer radius"), P("length", "length"), P("entry_radius", "bore radius at the top"),
-          P("exit_radius", "bore radius at the bottom"), P("segments", "number of segments (3D)", 4, "count"),
-          P("slot_width", "width of the axial slots (3D)", 0.001)),
+          P("exit_radius", "bore radius at the bottom"), P("segments", "number of segments (3D; a hoop law in axisymmetry)", 4, "count"),
+          P("slot_width", "width of the axial slots", 0.001)),
          _split_cone_profile, _split_cone_volume, _split_cone_check, _split_cone_slots, "slots", ("slots",),
-         lambda d, g: [f"no slots in axisymmetry: the {d['segments']:g} segments act as one closed ring, stiffer in "
-                       "hoop than the slotted cone (run 3d to let them open)"] if g == 2 and d["segments"] > 1 else []),
+         lambda d, g: [f"slots in axisymmetry as a slotted-ring hoop law: the {d['segments']:g} segments carry no "
+                       f"hoop stress until their slots ({d['segments']:g} x {d['slot_width'] * 1e3:.3g} mm) close, "
+                       "then bear as one ring in hoop compression; a segment's own bending as an arch is not "
+                       "there (run 3d for it)"] if g == 2 and d["segments"] > 1 else []),
     Part("clamp_ring", "ring shrunk onto a body (fits = its name) with a radial interference that sets the preload",
          (P("thickness", "radial wall thickness"), P("length", "length"),
           P("interference", "radial interference with the body it fits", 0.0, minimum="nonnegative")),

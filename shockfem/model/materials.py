@@ -10,13 +10,15 @@ from ..solver import columns as col
 
 
 def parameter_table(materials: list[Material], damping: list[Damping | None] | Damping | None,
-                    bulk_viscosity: tuple[float, float] = (1.5, 0.06)) -> tuple[np.ndarray, np.ndarray]:
+                    bulk_viscosity: tuple[float, float] = (1.5, 0.06),
+                    slot_widths: list[float] | None = None) -> tuple[np.ndarray, np.ndarray]:
     """(params, curves): params (rows, ``col.NUM_PARAMS``); curves (rows, points, 2) holds each
     plastic row's isotropic hardening curve (plastic strain, yield stress).
 
     ``damping``: one for all rows or one per row.  The stiffness-proportional damping coefficient
     beta [s] and the bulk viscosity sit in the table because they act through the material:
-    viscous stresses beta C : d and -q I.
+    viscous stresses beta C : d and -q I.  ``slot_widths``: per row, the total width of a slotted
+    ring's slots (axisymmetric split cones, ``solver/slotted.py``), 0 for a full ring.
     """
     per_row = damping if isinstance(damping, list) else [damping] * len(materials)
     betas = [d.coefficients()[1] if d else 0.0 for d in per_row]
@@ -32,6 +34,7 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
         table[i, col.P_WAVE_SPEED] = m.c_dilatational
         table[i, col.P_BETA] = betas[i]
         table[i, col.P_Q_QUADRATIC], table[i, col.P_Q_LINEAR] = bulk_viscosity
+        table[i, col.P_SLOT_WIDTH] = slot_widths[i] if slot_widths else 0.0
         p = m.plasticity
         if p is None:
             continue

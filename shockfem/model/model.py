@@ -104,8 +104,21 @@ class Model:
 
     @property
     def plastic(self) -> bool:
-        """Does any deformable body yield?  Only then is the plastic state stored."""
+        """Does any deformable body yield?"""
         return any(self.scene.material_of(b).plasticity for b in self.scene.bodies if not b.rigid)
+
+    @property
+    def point_state(self) -> bool:
+        """Is a state stored at every point?  Only for plastic bodies and slotted rings."""
+        return self.plastic or any(slot_width(b, self.scene.kinematics) > 0 for b in self.scene.bodies if not b.rigid)
+
+
+def slot_width(body, kinematics: str) -> float:
+    """The total width of a body's axial slots where its section cannot hold them (a split cone
+    in axisymmetry: ``solver/slotted.py``), else 0."""
+    if body.shape != "split_cone" or kinematics != "axisymmetric" or body.dims.get("segments", 0) < 2:
+        return 0.0
+    return body.dims["segments"] * body.dims["slot_width"]
 
 
 def _lumped_mass(V, cell_rho, scene: Scene, gdim: int) -> np.ndarray:
@@ -171,7 +184,8 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     # one row of kernel parameters per body: its material, and its own damping or the scene's
     cell_material = cell_body
     params, curves = parameter_table([scene.material_of(b) for b in scene.bodies],
-                                     [b.damping or scene.damping for b in scene.bodies], scene.bulk_viscosity)
+                                     [b.damping or scene.damping for b in scene.bodies], scene.bulk_viscosity,
+                                     [slot_width(b, scene.kinematics) for b in scene.bodies])
     cell_rho = params[cell_material, columns.P_RHO]
     mass = _lumped_mass(V, cell_rho, scene, gdim)
 
@@ -181,6 +195,13 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
 
     points, wq, N, dN = kin.quadrature(cell_name, scene.kinematics, scene.integration)
     one_point_cells = kin.one_point(cell_name, scene.integration)
+    slotted = [b.name for b in scene.bodies if slot_width(b, scene.kinematics) > 0 and not b.rigid]
+    if slotted and not one_point_cells:
+        from ..errors import ModelError
+        raise ModelError(f"body {slotted[0]!r}: the slotted split cone's hoop model (open slots carry no hoop "
+                         f"stress) runs in the default one-point quadrilaterals; this scene has {cell_name}s "
+                         f"with integration = {scene.integration!r}. Use element = \"quad\" and "
+                         f"integration = \"reduced\", or run it in 3d with real slots")
     if one_point_cells:
         one_point.check_vertex_order(basix.geometry(kin.BASIX_CELLS[cell_name]))
     alpha = scene.damping.coefficients()[0] if scene.damping else 0.0

@@ -14,6 +14,7 @@ P_RATE_FORM = 9        # 0: viscoplastic (LS-DYNA VP=1), 1: yield scaling by the
 P_CURVE_POINTS = 10    # points of the material's hardening curve (row of the curve table)
 P_Q_QUADRATIC = 11     # bulk viscosity Q1 (LS-DYNA default 1.5)
 P_Q_LINEAR = 12        # bulk viscosity Q2 (LS-DYNA default 0.06)
+P_SLOT_WIDTH = 13      # total width of a slotted ring's axial slots [m] (axisymmetric split cone); 0: a full ring
 NUM_PARAMS = 16
 
 ELASTIC, PLASTIC = 0, 1

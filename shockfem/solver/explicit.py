@@ -118,7 +118,7 @@ class ExplicitSolver:
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # plastic state per point (equivalent plastic strain, its rate, back stress); a stub if all elastic
         self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, plasticity.STATE_SIZE)
-                                      if m.plastic else (1, 1, plasticity.STATE_SIZE))
+                                      if m.point_state else (1, 1, plasticity.STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         self.owned = np.zeros(len(self.x), dtype=bool)

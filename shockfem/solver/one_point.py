@@ -26,7 +26,8 @@ hourglass forces, Q . q per cell, is returned so that the hourglass energy is re
 LS-DYNA reports it, and a run can be judged by its hourglass-to-internal energy ratio.
 
 Axisymmetric quads carry the ring volume V = 2 pi r_c A and the hoop term sigma_tt N_a / r_c
-with N_a = 1/4 at the centre; the hoop strain rate is v_r / r at the centre.
+with N_a = 1/4 at the centre; the hoop strain rate is v_r / r at the centre (of which a slotted
+ring's metal takes what its slots leave, ``slotted.py``).
 """
 from __future__ import annotations
 
@@ -36,9 +37,10 @@ import numpy as np
 from numba import njit
 
 from .columns import (P_BETA, P_KINEMATIC, P_LAMBDA, P_MODEL, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO,
-                      P_WAVE_SPEED, PLASTIC)
+                      P_SLOT_WIDTH, P_WAVE_SPEED, PLASTIC)
 from .kernels import _cayley_matrix, _hooke, _rotate_symmetric, bulk_viscosity, rotate_back_stress, viscous_step
 from .plasticity import radial_return
+from .slotted import slotted_hoop_rate
 
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
@@ -201,15 +203,21 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         d5 = 0.5 * (l01 + l10)
         # objective stress update (Hughes-Winget) and Hooke increment
         s0, s1, s5, cq, sq = _rotate_2d(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 5], 0.5 * (l01 - l10), dt)
+        s2 = sigma[c, 0, 2]
+        plastic = params[m, P_MODEL] == PLASTIC
+        if plastic and params[m, P_KINEMATIC] > 0.0:
+            rotate_back_stress(state, c, 0, 0.0, 0.0, 0.5 * (l01 - l10), dt)
+        if axisymmetric and params[m, P_SLOT_WIDTH] > 0.0:
+            # a slotted ring: its metal takes the hoop rate its open slots leave it
+            d2 = slotted_hoop_rate(params, curves, m, state, c, 0, s0, s1, s2, 0.0, 0.0, s5,
+                                   d0, d1, d2, 0.0, 0.0, d5, dt, r)
         c0, c1, c2, _, _, c5 = _hooke(d0, d1, d2, 0.0, 0.0, d5, lam, mu)      # C : d
         s0 += dt * c0
         s1 += dt * c1
-        s2 = sigma[c, 0, 2] + dt * c2
+        s2 += dt * c2
         s5 += dt * c5
         wp = 0.0
-        if params[m, P_MODEL] == PLASTIC:
-            if params[m, P_KINEMATIC] > 0.0:
-                rotate_back_stress(state, c, 0, 0.0, 0.0, 0.5 * (l01 - l10), dt)
+        if plastic:
             s0, s1, s2, _, _, s5, wp = radial_return(params, curves, m, state, c, 0, s0, s1, s2, 0.0, 0.0, s5,
                                                      d0, d1, d2, 0.0, 0.0, d5, dt)
         sigma[c, 0, 0] = s0

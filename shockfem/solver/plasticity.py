@@ -33,7 +33,8 @@ Rate factor ``R = 1 + (rate / D)^(1/q)`` (Cowper-Symonds), in one of LS-DYNA's t
   so R is known before the return.
 
 The state of a point is ``STATE_SIZE`` numbers: equivalent plastic strain, plastic strain rate,
-and the back stress (6 components, order 11 22 33 23 13 12 like the stress).
+the back stress (6 components, order 11 22 33 23 13 12 like the stress) and, for a slotted ring,
+how far its slots have closed (``slotted.py``).
 """
 from __future__ import annotations
 
@@ -45,7 +46,8 @@ from .columns import P_CURVE_POINTS, P_KINEMATIC, P_MU, P_RATE_D, P_RATE_FORM, P
 
 VISCOPLASTIC, YIELD_SCALING = 0, 1
 S_EPS, S_RATE = 0, 1   # state columns; the back stress is columns 2..7
-STATE_SIZE = 8
+S_SLOT = 8             # how much of a slotted ring's slot width has closed [m]
+STATE_SIZE = 9
 
 _NEWTON_ITERATIONS = 60
 _TOLERANCE = 1e-12     # of the consistency residual, relative to q_trial

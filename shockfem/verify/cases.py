@@ -273,6 +273,7 @@ from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_hal
 from .modal_cases import circular_plate, modal_rod, nafems_fv12  # noqa: E402
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid  # noqa: E402
 from .launcher_cases import launcher_design, launcher_model  # noqa: E402
+from .slotted_cases import slotted_ring  # noqa: E402
 
 CASES = {
     "free_flight": free_flight,
@@ -296,6 +297,7 @@ CASES = {
     "plastic_wave": plastic_wave,
     "taylor_bar": taylor_bar,
     "taylor_bar_full": taylor_bar_full,
+    "slotted_ring": slotted_ring,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,
     "srs_half_sine": srs_half_sine,

@@ -143,18 +143,31 @@ def test_clamp_ring_bore_from_the_cone_and_the_interference():
 
 
 def test_run_log_states_the_approximations_of_each_part():
-    """The axisymmetric split cone has no slots, the ring starts overlapping by its interference, the
-    projectile's nose is blunted: the 'models that run' block says so; the 3D cone has its slots."""
+    """The axisymmetric split cone's slots are a hoop law, the ring starts overlapping by its
+    interference, the projectile's nose is blunted: the 'models that run' block says so; the 3D cone
+    has its slots."""
     from shockfem.model import describe
     path = next(p for p in GALLERY if p.endswith("split_cone.toml"))
     axi = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)))
-    assert "approximation: no slots in axisymmetry: the 4 segments act as one closed ring" in axi
+    assert "approximation: slots in axisymmetry as a slotted-ring hoop law: the 4 segments carry no hoop" in axi
     assert "approximation: starts overlapping the body it fits by the interference 0.05 mm" in axi
     solid = describe(build_model(s := _load(path, "3d", "tet"), build_mesh(s, log=lambda *a: None)))
-    assert "no slots" not in solid
+    assert "slotted-ring" not in solid
     path = next(p for p in GALLERY if p.endswith("projectile.toml"))
     text = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)))
     assert "approximation: ogive nose blunted by a flat tip (meplat) of radius" in text
+
+
+def test_slotted_cone_outside_one_point_quads_is_a_clear_error(tmp_path):
+    """The slotted-ring hoop law lives in the one-point quad kernel: triangles (or full
+    integration) stop with the body named and what to change."""
+    from shockfem.errors import ModelError
+    raw = _scene_with({"name": "cone", "shape": "split_cone", "outer_radius": "30 mm", "length": "40 mm",
+                       "entry_radius": "15 mm", "exit_radius": "12 mm", "element_size": "4 mm"})
+    raw["scene"]["element"] = "tri"
+    scene = resolve(raw)
+    with pytest.raises(ModelError, match=r"body 'cone': the slotted split cone's hoop model .* element = \"quad\""):
+        build_model(scene, build_mesh(scene, log=lambda *a: None, cache_dir=str(tmp_path)))
 
 
 def test_a_mesh_gmsh_cannot_make_is_a_clear_error(tmp_path):
