@@ -32,6 +32,10 @@ from .plasticity import S_SLOT, STATE_SIZE, radial_return
 
 _SECANT_ITERATIONS = 30
 
+# The plastic return as a called function, not inlined like the element kernels' own call:
+# numba inlines at the IR level, and a second inlined copy here tripled the kernel's compile time.
+_radial_return_call = njit(cache=True, fastmath=True)(radial_return.py_func)
+
 
 @njit(cache=True, fastmath=True)
 def _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, d2, d3, d4, d5, dt, plastic):
@@ -45,7 +49,7 @@ def _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1,
     if not plastic:
         return t2
     saved = state[c, p].copy()
-    r = radial_return(params, curves, m, state, c, p, t0, t1, t2, s3 + dt * 2.0 * mu * d3, s4 + dt * 2.0 * mu * d4,
+    r = _radial_return_call(params, curves, m, state, c, p, t0, t1, t2, s3 + dt * 2.0 * mu * d3, s4 + dt * 2.0 * mu * d4,
                       s5 + dt * 2.0 * mu * d5, d0, d1, d2, d3, d4, d5, dt)
     for k in range(STATE_SIZE):
         state[c, p, k] = saved[k]
