@@ -19,11 +19,13 @@ from dataclasses import dataclass
 import numpy as np
 import ufl
 from dolfinx import fem
+from dolfinx.mesh import compute_midpoints
 from mpi4py import MPI
 from petsc4py import PETSc
 
 from ..errors import ModelError
 from ..model import kinematics as kin
+from ..model.model import plane_normal_axis
 from ..scene import Scene
 
 # Rigid-body modes per kinematics (free body): translations and rotations the strain misses.
@@ -80,7 +82,8 @@ def _conditions(scene: Scene, meshed, V, body_index: int, constrained: bool):
             names.append(f"{bc.region} fixed")
             continue
         if bc.kind == "symmetry":
-            comp = _facet_normal_axis(mesh, facets, bc.region, gdim)
+            mid = compute_midpoints(mesh, fdim, facets)[:, :gdim]
+            comp = plane_normal_axis(mid, mesh.comm, bc.region)
         else:
             comp = bc.components[0]
         Vi, _ = V.sub(comp).collapse()
@@ -88,19 +91,6 @@ def _conditions(scene: Scene, meshed, V, body_index: int, constrained: bool):
         bcs.append(fem.dirichletbc(PETSc.ScalarType(0), dofs[0], V.sub(comp)))
         names.append(f"{bc.region} held along {'rz'[comp] if scene.kinematics == 'axisymmetric' else 'xyz'[comp]}")
     return bcs, names
-
-
-def _facet_normal_axis(mesh, facets, region: str, gdim: int) -> int:
-    """The coordinate axis normal to a planar region."""
-    from dolfinx.mesh import compute_midpoints
-    mid = compute_midpoints(mesh, mesh.topology.dim - 1, facets)[:, :gdim]
-    lo = mesh.comm.allreduce(mid.min(axis=0) if len(mid) else np.full(gdim, np.inf), op=MPI.MIN)
-    hi = mesh.comm.allreduce(mid.max(axis=0) if len(mid) else np.full(gdim, -np.inf), op=MPI.MAX)
-    flat = np.flatnonzero(hi - lo <= 1e-9 * max((hi - lo).max(), 1e-30))
-    if len(flat) != 1:
-        raise ModelError(f"boundary region {region}: a symmetry condition needs a plane normal to a "
-                         f"coordinate axis")
-    return int(flat[0])
 
 
 def _shift(material, extent: float) -> float:

@@ -252,7 +252,7 @@ def _add_boundaries(model: Model):
             dofs = (nodes[:, None] * gdim + np.arange(gdim)[None, :]).ravel()
             model.constraints.append(Constraint(dofs, np.array([0.0]), np.array([0.0]), bc.region))
         elif bc.kind == "symmetry":
-            comp = _plane_normal(model, nodes, bc.region)
+            comp = plane_normal_axis(model.X0[nodes], model.comm, bc.region)
             model.constraints.append(Constraint(nodes * gdim + comp, np.array([0.0]), np.array([0.0]),
                                                 bc.region))
         elif bc.kind == "velocity":
@@ -262,12 +262,12 @@ def _add_boundaries(model: Model):
             model.loads.append(Load(nodes * gdim + bc.components[0], times, values, bc.region, shares))
 
 
-def _plane_normal(model: Model, nodes: np.ndarray, region: str) -> int:
-    """The coordinate axis normal to a planar region (for symmetry conditions)."""
-    comm = model.comm
-    x = model.X0[nodes]
-    lo = comm.allreduce(x.min(axis=0) if len(x) else np.full(model.gdim, np.inf), op=MPI.MIN)
-    hi = comm.allreduce(x.max(axis=0) if len(x) else np.full(model.gdim, -np.inf), op=MPI.MAX)
+def plane_normal_axis(points: np.ndarray, comm, region: str) -> int:
+    """The coordinate axis normal to a planar region, from points on it (over all ranks), for
+    symmetry conditions in the explicit model and in the modal solver alike."""
+    gdim = points.shape[1]
+    lo = comm.allreduce(points.min(axis=0) if len(points) else np.full(gdim, np.inf), op=MPI.MIN)
+    hi = comm.allreduce(points.max(axis=0) if len(points) else np.full(gdim, -np.inf), op=MPI.MAX)
     span = hi - lo
     flat = np.flatnonzero(span <= 1e-9 * max(span.max(), 1e-30))
     if len(flat) != 1:

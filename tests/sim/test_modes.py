@@ -48,6 +48,18 @@ def test_fixed_end_gives_the_quarter_wave_rod(tmp_path):
     assert free.rigid == 1 and free.frequencies[0] == pytest.approx(C0 / (2 * 0.2), rel=5e-3)
 
 
+def test_symmetry_end_is_the_half_of_a_free_rod_twice_as_long(tmp_path):
+    """A symmetry plane at the bottom (u_z = 0, free to slide radially) makes the rod half of a
+    free-free rod of length 2 L: its first mode is that rod's, c0 / (4 L); the second, 3 c0 / (4 L)."""
+    scene_file = tmp_path / "symmetry.toml"
+    scene_file.write_text(open(SCENE).read() + '\n[[boundary]]\nregion = "rod.bottom"\ntype = "symmetry"\n')
+    scene = load_scene(str(scene_file), ['bodies.rod.element_size="4 mm"'])
+    modes = body_modes(scene, build_mesh(scene), "rod", 2, 1, True)
+    assert modes.rigid == 0 and modes.conditions == ["rod.bottom held along z"]
+    assert modes.frequencies[0] == pytest.approx(rayleigh_love_f1(0.01, 0.4), rel=2e-3)
+    assert modes.frequencies[1] == pytest.approx(3 * rayleigh_love_f1(0.01, 0.4), rel=1e-2)
+
+
 def test_modes_command_writes_json_and_xdmf(tmp_path):
     out = tmp_path / "modes"
     p = subprocess.run([sys.executable, "-m", "shockfem", "modes", SCENE, "--count", "3", "--out", str(out),
