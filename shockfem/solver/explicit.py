@@ -116,7 +116,7 @@ class ExplicitSolver:
         self.f_gravity = (m.mass[:, None] * np.asarray(m.scene.gravity)[None, :] if m.scene.gravity
                           else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
-        # plastic state per point (equivalent plastic strain, its rate, back stress); a stub if all elastic
+        # state per point (plastic strain, its rate, back stress, slot closure); a stub if no body needs one
         self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, plasticity.STATE_SIZE)
                                       if m.point_state else (1, 1, plasticity.STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)

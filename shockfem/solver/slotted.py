@@ -10,16 +10,15 @@ and the slots open again:
     open:    sigma_tt = 0; the metal takes the hoop rate d_tt that keeps it so, the slots the rest
     closed:  the metal takes the ring's hoop rate, while sigma_tt <= 0
 
-``slotted_hoop_rate`` returns the metal's hoop rate for one point and keeps the slots' hoop
-strain in the point's state (``plasticity.S_SLOT``).  The rest of the step (Hooke, the plastic
+``slotted_hoop_rate`` returns the metal's hoop rate for one point and keeps how far the slots
+have closed in the point's state (``plasticity.S_SLOT``).  The rest of the step (Hooke, the plastic
 return, viscosities, forces) is the element kernel's, with this rate in place of v_r / r, so the
 stress power sigma : d is the metal's and the open slots do no work.  For a plastic material the
 hoop rate of zero hoop stress is found by the secant method through the plastic return (as
 plane-stress shells find their thickness strain), on a copy of the point's state.
 
 Approximations (stated in the run log): the segments are a continuum in hoop (a slot is smeared
-round the circumference, so a segment's own bending as an arch is not there), and the slots
-close everywhere at the same ring strain.
+round the circumference, so a segment's own bending as an arch is not there).
 """
 from __future__ import annotations
 
@@ -28,6 +27,7 @@ import math
 from numba import njit
 
 from .columns import P_LAMBDA, P_MODEL, P_MU, P_SLOT_WIDTH, PLASTIC
+from .kernels import _hooke
 from .plasticity import S_SLOT, STATE_SIZE, radial_return
 
 _SECANT_ITERATIONS = 30
@@ -40,17 +40,12 @@ _radial_return_call = njit(cache=True, fastmath=True)(radial_return.py_func)
 @njit(cache=True, fastmath=True)
 def _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, d2, d3, d4, d5, dt, plastic):
     """The hoop stress after the step with hoop rate d2 (the point's plastic state left as it was)."""
-    lam = params[m, P_LAMBDA]
-    mu = params[m, P_MU]
-    ltr = lam * (d0 + d1 + d2)
-    t0 = s0 + dt * (ltr + 2.0 * mu * d0)
-    t1 = s1 + dt * (ltr + 2.0 * mu * d1)
-    t2 = s2 + dt * (ltr + 2.0 * mu * d2)
+    c0, c1, c2, c3, c4, c5 = _hooke(d0, d1, d2, d3, d4, d5, params[m, P_LAMBDA], params[m, P_MU])
     if not plastic:
-        return t2
+        return s2 + dt * c2
     saved = state[c, p].copy()
-    r = _radial_return_call(params, curves, m, state, c, p, t0, t1, t2, s3 + dt * 2.0 * mu * d3, s4 + dt * 2.0 * mu * d4,
-                      s5 + dt * 2.0 * mu * d5, d0, d1, d2, d3, d4, d5, dt)
+    r = _radial_return_call(params, curves, m, state, c, p, s0 + dt * c0, s1 + dt * c1, s2 + dt * c2,
+                            s3 + dt * c3, s4 + dt * c4, s5 + dt * c5, d0, d1, d2, d3, d4, d5, dt)
     for k in range(STATE_SIZE):
         state[c, p, k] = saved[k]
     return r[2]
