@@ -81,15 +81,15 @@ def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
 def _material_update_share(solver, repeats: int = 20) -> float:
     """Share of the internal-force pass taken by the plastic return: the pass on the solver's
     state timed with its materials as they are and switched to elastic (state restored after)."""
-    from .solver import columns
+    from .materials import layout
     m = solver.model
     saved = (solver.sigma.copy(), solver.plastic_state.copy(),
              None if solver.hourglass is None else solver.hourglass.copy(), solver.f_int.copy())
     params = m.params.copy()
     times = []
-    for model_code in (None, columns.ELASTIC):
+    for model_code in (None, layout.ELASTIC):
         if model_code is not None:
-            m.params[:, columns.P_MODEL] = model_code
+            m.params[:, layout.P_LAW] = model_code
         t0 = time.perf_counter()
         for _ in range(repeats):
             solver._internal_force(solver.dt)
@@ -130,7 +130,7 @@ def taylor_bar_bench(sizes, echo=print) -> list[dict]:
 
 def speed_against_error(echo=print) -> list[dict]:
     """Bar wave at three sizes: errors of front speed and plateau stress against wall time."""
-    from .verify.cases import bar_step
+    from .verify.foundation_cases import bar_step
     out = []
     echo("speed against error: bar wave (axisymmetric, R = 2 mm, L = 0.4 m, v = 1 m/s)")
     echo(f"{'integration':11s} {'size':8s} {'elements':>9s} {'wall[s]':>8s} {'front err':>10s} {'stress err':>10s}")

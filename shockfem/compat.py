@@ -10,11 +10,6 @@ from dolfinx import cpp
 from dolfinx.fem import assemble as _assemble
 from dolfinx.la import ScatterMode
 
-# FFCx JIT options: -O3 and native instructions make a measurable difference to the
-# assembly of the forms shockfem compiles (mass, loads, reference internal force).
-JIT_PARAMS = {"cffi_extra_compile_args": ["-O3", "-march=native"], "cffi_libraries": ["m"]}
-
-
 def assemble_vector_into(b: np.ndarray, form) -> np.ndarray:
     """Add the local (owned + ghost) contributions of a linear form to the array ``b``.
 

@@ -21,7 +21,7 @@ from .output.history import HistoryRecorder
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene
-from .solver import plasticity
+from .materials.layout import S_EPS
 from .solver.explicit import ExplicitSolver
 
 
@@ -185,7 +185,7 @@ def _max_plastic_strain(solver: ExplicitSolver) -> np.ndarray:
     """Per body (the plastic strain only grows, so its final value is its maximum)."""
     if not solver.model.plastic:
         return np.zeros(len(solver.model.scene.bodies))
-    return _body_maxima(solver, solver.plastic_state[:, :, plasticity.S_EPS].max(axis=1))
+    return _body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
 
 
 def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, max_vm) -> dict:

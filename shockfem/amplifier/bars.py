@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
+from ..materials.viscosity import damped_step
 from .interfaces import pad_dashpot, reduced_mass
 
 # Elements in the shortest bar when a bar does not say: the dispersion of linear elements
@@ -271,10 +272,8 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     iface = np.array([[right[k], left[k + 1]] for k in range(len(interfaces))], dtype=np.int64).reshape(-1, 2)
     k_if, c_if = np.zeros(len(interfaces)), np.zeros(len(interfaces))
     kinematic = np.array([itf.stiffness is None for itf in interfaces], dtype=np.bool_)
-    # stiffness damping shortens the step as in the finite-element solver (kernels._damped_step):
-    # dt <= (2 / w)(sqrt(1 + xi^2) - xi), w = 2 / dtc, xi = beta / dtc
-    dt = min(dtc * (math.sqrt(1 + (beta / dtc) ** 2) - beta / dtc)
-             for dtc, beta in ((b.length / n / b.c0, beta) for n, b, beta in zip(counts, bars, beta_of)))
+    # stiffness damping shortens the step as in the finite-element solver
+    dt = min(damped_step(b.length / n / b.c0, beta) for n, b, beta in zip(counts, bars, beta_of))
     for k, itf in enumerate(interfaces):
         if itf.stiffness is None:
             continue

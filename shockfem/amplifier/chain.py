@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry.catalog import PARTS
+from ..parts.catalog import PARTS
 from ..metrics.stages import stage_table
 from ..scene import SceneError, resolve
 from ..units import UnitError, to_si

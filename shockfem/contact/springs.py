@@ -25,7 +25,7 @@ from ..errors import ModelError
 from ..model import Model
 from ..model.model import region_nodes
 from ..scene.schema import Spring
-from ..solver.kernels import _damped_step
+from ..materials.viscosity import damped_step
 
 
 def _end_nodes(model: Model, spec: str) -> np.ndarray:
@@ -72,7 +72,7 @@ class DiscreteSpring:
         m_eff = 1.0 / (1.0 / self.end_mass[0] + 1.0 / self.end_mass[1])
         if k_max > 0:
             omega = math.sqrt(k_max / m_eff)
-            self.dt_limit = _damped_step(2.0 / omega, spec.damping / k_max)
+            self.dt_limit = damped_step(2.0 / omega, spec.damping / k_max)
         else:
             self.dt_limit = 2.0 * m_eff / spec.damping        # a dashpot alone: explicit decay of v
         self.tension = 0.0

@@ -24,7 +24,7 @@ from mpi4py import MPI
 from ..geometry import region_facets
 from ..model import Model
 from ..model.kinematics import BASIX_CELLS
-from ..solver.kernels import P_LAMBDA, P_MU
+from ..materials.layout import P_LAMBDA, P_MU
 
 TWO_PI = 2.0 * math.pi
 # tensor-ordered hexahedron (vertex k at (k & 1, k >> 1 & 1, k >> 2 & 1)) as six tetrahedra

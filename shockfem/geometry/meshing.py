@@ -20,10 +20,10 @@ from mpi4py import MPI
 from ..errors import ModelError
 if TYPE_CHECKING:                         # the scene imports the catalog of parts from this package
     from ..scene import Scene
-from . import parts
-from .catalog import CAD_FILES
+from . import draw
+from ..parts.catalog import CAD_FILES
 
-MESH_FORMAT_VERSION = 4   # bump when part drawing changes, to invalidate caches
+MESH_FORMAT_VERSION = 5   # bump when part drawing changes, to invalidate caches
 
 
 @dataclass
@@ -103,7 +103,8 @@ def _draw_part(body, gdim: int, element: str):
     hexahedra by splitting each tetrahedron in four (drawn at twice the size, so the hexes come
     out at the element size; their shape is poorer than a structured mesh's, which the quality
     report shows)."""
-    from .catalog import PARTS, draw
+    from ..parts.catalog import PARTS
+    from .outline import draw
     origin = (0.0, body.position[1], 0.0) if gdim == 2 else tuple(body.position)
     entities, regions = draw(PARTS[body.shape], body.dims, gdim, origin)
     scale = _mesh_options(body, element)
@@ -212,7 +213,7 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
             regions[name] = list(gmsh.model.getEntitiesForPhysicalGroup(gdim - 1, tag))
     else:
         _reset_options()
-        structured = parts.structured_builder(body, gdim)
+        structured = draw.structured_builder(body, gdim)
         if structured is not None:
             builder, dims = structured
             position = body.position if gdim == 3 else (body.position[0], body.position[1])

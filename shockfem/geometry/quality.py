@@ -6,7 +6,7 @@
   folded cell (unusable), below ``POOR_JACOBIAN`` a badly distorted one.
 * Aspect ratio: longest over shortest edge of the cell.
 * Smallest element: the characteristic length the solver's stable step uses
-  (``solver.kernels.characteristic_length``), and the step it gives, l / c times the safety factor.
+  (``elements.cells.characteristic_length``), and the step it gives, l / c times the safety factor.
 
 Vertex order is dolfinx's: quads 0-1-3-2 around, hexes the tensor grid i + 2 j + 4 k.
 """
@@ -61,7 +61,7 @@ def aspect_ratio(xc: np.ndarray, cell: str) -> np.ndarray:
 
 
 def characteristic_lengths(xc: np.ndarray, cell: str) -> np.ndarray:
-    from ..solver.kernels import characteristic_lengths as lengths
+    from ..elements.cells import characteristic_lengths as lengths
     kind = {"triangle": 0, "quadrilateral": 1, "tetrahedron": 2, "hexahedron": 3}[cell]
     padded = np.zeros(xc.shape[:2] + (3,))
     padded[:, :, :xc.shape[2]] = xc

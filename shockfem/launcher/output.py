@@ -7,12 +7,9 @@ import json
 import math
 import os
 
-import matplotlib
+from ..output.figures import pyplot, save
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from .vessel import barrel_weight, tank_weight  # noqa: E402
+from .vessel import barrel_weight, tank_weight
 
 G0 = 9.80665
 FT, IN, PSI, LB = 0.3048, 0.0254, 6894.757, 0.45359237
@@ -36,6 +33,7 @@ def sizing(gun, options) -> dict:
 
 
 def write_shot(out_dir: str, shot, size: dict) -> str:
+    plt = pyplot()
     os.makedirs(out_dir, exist_ok=True)
     with open(os.path.join(out_dir, "summary.json"), "w") as fh:
         json.dump({**shot.summary(), "sizing": size}, fh, indent=2, default=float)
@@ -62,11 +60,7 @@ def write_shot(out_dir: str, shot, size: dict) -> str:
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
     fig.suptitle(f"muzzle {shot.muzzle_velocity:.4g} m/s; {shot.model}", fontsize=7)
-    fig.tight_layout()
-    path = os.path.join(out_dir, "launcher.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save(fig, os.path.join(out_dir, "launcher.png"))
 
 
 def shot_lines(name: str, shot, size: dict) -> list[str]:
@@ -112,6 +106,7 @@ def design_lines(design) -> list[str]:
 def write_design(out_dir: str, design, trades: dict | None = None) -> list[str]:
     """design.json; with ``trades`` (``weight_vs_pressure``: designs, ``length_vs_bore``: rows of
     ``design.length_against_bore``), trade.csv and trade.png."""
+    plt = pyplot()
     os.makedirs(out_dir, exist_ok=True)
     trades = trades or {}
     pressure = trades.get("weight_vs_pressure", [])
@@ -153,8 +148,5 @@ def write_design(out_dir: str, design, trades: dict | None = None) -> list[str]:
         ax.grid(alpha=0.3, which="both")
     fig.suptitle(f"{g.projectile_mass / LB:.5g} lb at {design.required_velocity / FT:.4g} ft/s, "
                  f"{g.reservoir_pressure / PSI:.4g} psi", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "trade.png"), dpi=110)
-    plt.close(fig)
-    written.append(os.path.join(out_dir, "trade.png"))
+    written.append(save(fig, os.path.join(out_dir, "trade.png")))
     return written

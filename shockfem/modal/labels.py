@@ -1,8 +1,9 @@
 """What kind of mode a mode shape is.
 
-The body's axis is z through its centroid (the parts are bodies of revolution about z; a plate
-lies in x-y).  A mode's displacement energy (node-weighted, all nodes alike) splits into axial
-(u_z), radial and circumferential parts about that axis:
+The body's axis is one of its own principal axes through its centroid (``principal_axis``: the
+longest of a slender body, the normal of a flat one), so a beam lying along x or a tilted part is
+labelled as one along z would be.  A mode's displacement energy (node-weighted, all nodes alike)
+splits into axial, radial and circumferential parts about that axis:
 
 * axial dominant: ``longitudinal`` in a body at least half as long as it is wide, ``bending``
   (out of plane) in a flatter one (a plate or disc)
@@ -21,12 +22,30 @@ import numpy as np
 from dolfinx import fem
 
 DOMINANT = 0.5          # share of the energy that names a mode
-SLICES = 20             # slices along z for the section-translation test
+SLICES = 20             # slices along the axis for the section-translation test
 
 
 def _body_nodes(V, cells):
     dofs = fem.locate_dofs_topological(V, V.mesh.topology.dim, cells)
     return dofs, V.tabulate_dof_coordinates()[dofs]
+
+
+def principal_axis(x: np.ndarray) -> np.ndarray:
+    """The unit axis of a body from its node coordinates ``x`` (n, 3): of the principal directions of
+    their spread, the one that stands apart from the other two (the largest for a rod or beam, the
+    smallest for a plate or disc)."""
+    rel = x - x.mean(axis=0)
+    spread, directions = np.linalg.eigh(rel.T @ rel / len(x))        # ascending
+    small, middle, large = np.maximum(spread, 1e-300)
+    return directions[:, 2] if large / middle >= middle / small else directions[:, 0]
+
+
+def _axis_frame(axis: np.ndarray) -> np.ndarray:
+    """A right-handed orthonormal basis (columns) whose third vector is ``axis``."""
+    helper = np.eye(3)[np.argmin(np.abs(axis))]
+    first = np.cross(helper, axis)
+    first /= np.linalg.norm(first)
+    return np.column_stack([first, np.cross(axis, first), axis])
 
 
 def label_modes(modes, cells) -> list[dict]:
@@ -44,6 +63,11 @@ def label_modes(modes, cells) -> list[dict]:
                         "shares": shares})
         return out
     axisymmetric = modes.kinematics == "axisymmetric"
+    frame = np.eye(3)
+    if not axisymmetric:
+        # coordinates and displacements in the body's own frame, its axis third
+        frame = _axis_frame(principal_axis(x[:, :3]))
+        x = (x[:, :3] - x[:, :3].mean(axis=0)) @ frame
     centre = np.zeros(2) if axisymmetric else x[:, :2].mean(axis=0)
     rel = x[:, :2] - centre if not axisymmetric else np.column_stack([x[:, 0], np.zeros(len(x))])
     r = np.linalg.norm(rel, axis=1)
@@ -60,6 +84,7 @@ def label_modes(modes, cells) -> list[dict]:
             ur, ut, uz = u[:, 0], np.zeros(len(u)), u[:, 1]
             transverse = np.zeros((len(u), 2))
         else:
+            u = u @ frame
             transverse = u[:, :2]
             ur, ut, uz = (transverse * er).sum(axis=1), (transverse * et).sum(axis=1), u[:, 2]
         e_r, e_t, e_z = (ur ** 2).sum(), (ut ** 2).sum(), (uz ** 2).sum()

@@ -6,7 +6,7 @@
 * 3d: nothing added.
 
 The UFL forms here are the reference definitions; the compiled kernel in
-``solver/kernels.py`` is checked against ``internal_force_form`` in the tests.
+``elements/full_integration.py`` is checked against ``internal_force_form`` in the tests.
 """
 from __future__ import annotations
 
@@ -16,20 +16,17 @@ import basix
 import numpy as np
 import ufl
 
-from ..solver import kernels
+from ..elements.cells import AXISYMMETRIC, PLANE_STRAIN, THREE_D
 
-CODES = {"plane-strain": kernels.PLANE_STRAIN, "axisymmetric": kernels.AXISYMMETRIC, "3d": kernels.THREE_D}
+CODES = {"plane-strain": PLANE_STRAIN, "axisymmetric": AXISYMMETRIC, "3d": THREE_D}
 CELL_KINDS = {"triangle": 0, "quadrilateral": 1, "tetrahedron": 2, "hexahedron": 3}
 BASIX_CELLS = {"triangle": basix.CellType.triangle, "quadrilateral": basix.CellType.quadrilateral,
                "tetrahedron": basix.CellType.tetrahedron, "hexahedron": basix.CellType.hexahedron}
 
 
-INTEGRATIONS = ("reduced", "full")
-
-
 def quadrature_degree(cell: str, kinematics: str, integration: str = "full") -> int:
     """Degree of the Gauss rule.  Quads (hexes): one point at the centre for ``reduced``
-    integration (with hourglass control, ``solver/one_point.py``), 2x2 (2x2x2) for ``full``,
+    integration (with hourglass control, ``elements/one_point.py``), 2x2 (2x2x2) for ``full``,
     the rule Q1 needs.  One point for linear triangles/tetrahedra (constant strain), three
     points for axisymmetric triangles, whose hoop strain u_r/r varies over the cell."""
     if cell in ("quadrilateral", "hexahedron"):

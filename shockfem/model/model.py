@@ -16,10 +16,12 @@ from mpi4py import MPI
 
 from .. import compat
 from ..geometry import MeshedScene, region_facets
-from ..geometry.catalog import PARTS
+from ..parts.catalog import PARTS
 from ..scene import Scene
 from . import kinematics as kin
-from ..solver import columns, kernels, one_point
+from ..elements import one_point
+from ..elements.cells import cell_orientation
+from ..materials import layout
 from .materials import parameter_table
 
 
@@ -73,7 +75,7 @@ class Model:
     cell_body: np.ndarray                      # (cells,) body index
     cell_material: np.ndarray                  # (cells,) row of ``params`` (the cell's body)
     kernel_cells: np.ndarray                   # owned cells of deformable bodies
-    params: np.ndarray                         # material table (solver/columns.py)
+    params: np.ndarray                         # material rows (materials/layout.py)
     curves: np.ndarray                         # hardening curves of plastic materials
     cell_kind: int
     cell_sign: np.ndarray                      # (cells,) orientation of the reference cells
@@ -85,7 +87,7 @@ class Model:
     loads: list[Load] = field(default_factory=list)
     alpha: float = 0.0                          # mass-proportional damping [1/s]
     body_mass: np.ndarray = None                # (bodies,) global masses [kg]
-    one_point: bool = False                     # reduced quads/hexes: solver/one_point.py kernels
+    one_point: bool = False                     # reduced quads/hexes: elements/one_point.py kernels
     hourglass_form: int = 0                     # one_point.HOURGLASS_FORMS
     hourglass_coefficient: float = 0.0
 
@@ -115,7 +117,7 @@ class Model:
 
 def slot_width(body, kinematics: str) -> float:
     """The total width of a body's axial slots where its section cannot hold them (a split cone
-    in axisymmetry: ``solver/slotted.py``), else 0."""
+    in axisymmetry: ``materials/slotted.py``), else 0."""
     if body.shape != "split_cone" or kinematics != "axisymmetric" or body.dims.get("segments", 0) < 2:
         return 0.0
     return body.dims["segments"] * body.dims["slot_width"]
@@ -186,7 +188,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     params, curves = parameter_table([scene.material_of(b) for b in scene.bodies],
                                      [b.damping or scene.damping for b in scene.bodies], scene.bulk_viscosity,
                                      [slot_width(b, scene.kinematics) for b in scene.bodies])
-    cell_rho = params[cell_material, columns.P_RHO]
+    cell_rho = params[cell_material, layout.P_RHO]
     mass = _lumped_mass(V, cell_rho, scene, gdim)
 
     rigid_ids = [i for i, b in enumerate(scene.bodies) if b.rigid]
@@ -210,7 +212,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     body_mass = np.array([comm.allreduce(mass[owned & (node_body == i)].sum(), op=MPI.SUM)
                           for i in range(len(scene.bodies))])
 
-    cell_sign = kernels.cell_orientation(dofmap, X0, dN)
+    cell_sign = cell_orientation(dofmap, X0, dN)
     model = Model(scene, meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
                   mass, node_body, cell_body, cell_material, kernel_cells, params, curves,
                   kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,

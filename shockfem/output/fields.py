@@ -16,7 +16,7 @@ import os
 import numpy as np
 from dolfinx import fem, io
 
-from ..solver import plasticity
+from ..materials.layout import S_EPS, S_RATE
 from ..solver.explicit import ExplicitSolver
 
 CELL_FIELDS = ("von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
@@ -42,7 +42,7 @@ def cell_values(solver: ExplicitSolver, name: str) -> np.ndarray:
         return pressure(solver.sigma.mean(axis=1))
     if not solver.model.plastic:
         return np.zeros(len(solver.sigma))
-    column = plasticity.S_EPS if name == "plastic_strain" else plasticity.S_RATE
+    column = S_EPS if name == "plastic_strain" else S_RATE
     return solver.plastic_state[:, :, column].mean(axis=1)
 
 

@@ -3,22 +3,15 @@ from __future__ import annotations
 
 import os
 
-import matplotlib
+from .figures import pyplot, save
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from .history import ENERGY_COLUMNS, read_history_csv  # noqa: E402
+from .history import ENERGY_COLUMNS, read_history_csv
 
 
-def _save(fig, path: str) -> str:
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
 
 
 def plot_histories(run_dir: str, body_names) -> list[str]:
+    plt = pyplot()
     h = read_history_csv(os.path.join(run_dir, "history.csv"))
     t = h["time"] * 1e3
     written = []
@@ -30,7 +23,7 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
     ax.legend()
     ax.grid(alpha=0.3)
     ax.set_title("Energy balance")
-    written.append(_save(fig, os.path.join(run_dir, "energy.png")))
+    written.append(save(fig, os.path.join(run_dir, "energy.png")))
     fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
     for name in body_names:
         for key, ax, scale in ((f"{name}.v_", axes[0], 1.0), (f"{name}.a_", axes[1], 1 / 9.80665)):
@@ -44,7 +37,7 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle("Rigid-body motion of each body (mass-weighted means)")
-    written.append(_save(fig, os.path.join(run_dir, "bodies.png")))
+    written.append(save(fig, os.path.join(run_dir, "bodies.png")))
     return written
 
 
@@ -53,6 +46,7 @@ G0 = 9.80665
 
 def plot_pulse(path: str, name: str, arrays: dict, metrics: dict) -> str:
     """Acceleration pulse of a channel in g: unfiltered, filtered, the ideal pulse and its tolerance band."""
+    plt = pyplot()
     t = arrays["t"] * 1e3
     fig, ax = plt.subplots(figsize=(7, 4))
     ax.plot(t, arrays["a_raw"] / G0, color="0.7", lw=0.7, label="unfiltered")
@@ -70,11 +64,12 @@ def plot_pulse(path: str, name: str, arrays: dict, metrics: dict) -> str:
                  f"dV {abs(p['velocity_change']):.4g} m/s, {metrics['shape']['classified']}")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_srs(path: str, name: str, spectrum) -> str:
     """Maximax shock response spectrum in g against natural frequency (log-log)."""
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4))
     f = spectrum.frequency
     ax.loglog(f, spectrum.maximax / G0, color="C0", lw=1.6, label="maximax")
@@ -85,11 +80,12 @@ def plot_srs(path: str, name: str, spectrum) -> str:
     ax.set_title(f"{name}: shock response spectrum, Q = {spectrum.q:g}")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_stages(path: str, stages: list[dict]) -> str:
     """Velocity ratio (struck body's speed over the launch speed) after each contact event."""
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4))
     labels = [f"{s['striker']} -> {s['struck']}" for s in stages]
     ratios = [s["velocity_ratio"] for s in stages]
@@ -102,4 +98,4 @@ def plot_stages(path: str, stages: list[dict]) -> str:
     ax.set_ylabel("speed after / launch speed")
     ax.set_title("Velocity gain by stage (restitution above each bar)")
     ax.grid(alpha=0.3, axis="y")
-    return _save(fig, path)
+    return save(fig, path)

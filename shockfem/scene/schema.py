@@ -11,7 +11,8 @@ import dataclasses
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..geometry.catalog import CAD_FILES, MESH_FILES, PARTS
+from ..parts.catalog import CAD_FILES, MESH_FILES, PARTS
+from ..materials.j2 import RATE_FORMS as J2_RATE_FORMS
 from ..units import UnitError, to_si
 
 KINEMATICS = ("axisymmetric", "plane-strain", "3d")
@@ -34,12 +35,12 @@ class SceneError(Exception):
         super().__init__("\n".join(problems))
 
 
-RATE_FORMS = ("plastic-strain-rate", "total-strain-rate")     # LS-DYNA VP = 1, VP = 0
+RATE_FORMS = tuple(J2_RATE_FORMS)          # LS-DYNA VP = 1, VP = 0 (materials/j2.py)
 
 
 @dataclass(frozen=True)
 class Plasticity:
-    """J2 plasticity of a material (``solver/plasticity.py``)."""
+    """J2 plasticity of a material (``materials/j2.py``)."""
     curve: tuple[tuple[float, float], ...]   # isotropic hardening (plastic strain [-], yield stress [Pa])
     kinematic_modulus: float                 # H_k [Pa] (MAT_003: (1 - beta) H)
     rate_D: float                            # Cowper-Symonds D [1/s]; 0: rate independent
@@ -244,7 +245,6 @@ class Scene:
     gravity: tuple[float, ...] = ()              # [m/s^2]; empty or zero: none
     bulk_viscosity: tuple[float, float] = (1.5, 0.06)   # (Q1 quadratic, Q2 linear), LS-DYNA's defaults
     shock: Shock = Shock()
-    raw: dict = field(repr=False, default_factory=dict)
 
     @property
     def gdim(self) -> int:
@@ -697,7 +697,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
-                 gravity if any(gravity) else (), bulk_viscosity, shock, raw=raw)
+                 gravity if any(gravity) else (), bulk_viscosity, shock)
 
 
 def _shock(ck: _Checker, raw: dict, body_regions: dict, kin: str, end_time: float) -> Shock:
@@ -963,13 +963,8 @@ def _springs(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Spr
     return out
 
 
-def replace(scene: Scene, **changes) -> Scene:
-    return dataclasses.replace(scene, **changes)
-
-
 def to_plain(scene: Scene) -> dict[str, Any]:
     """The resolved scene (SI units) as plain data for ``resolved_scene.json``."""
     d = dataclasses.asdict(scene)
-    d.pop("raw", None)
     d["units"] = "SI (m, kg, s, N, Pa, J)"
     return d

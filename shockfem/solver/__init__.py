@@ -1,1 +1,1 @@
-"""The explicit solver: compiled element kernels and the central-difference time loop."""
+"""The central-difference time loop over the element kernels (``shockfem.elements``), contact and loads."""

@@ -30,7 +30,10 @@ from ..errors import UnstableRun
 from ..model import Model
 from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
-from . import kernels, nodal, one_point, plasticity
+from ..elements import full_integration, one_point
+from ..elements.cells import AXISYMMETRIC
+from ..materials.layout import STATE_SIZE
+from . import nodal
 
 
 # A run stops when the elements' stable step falls below this share of its first value: an element
@@ -117,8 +120,8 @@ class ExplicitSolver:
                           else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # state per point (plastic strain, its rate, back stress, slot closure); a stub if no body needs one
-        self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, plasticity.STATE_SIZE)
-                                      if m.point_state else (1, 1, plasticity.STATE_SIZE))
+        self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, STATE_SIZE)
+                                      if m.point_state else (1, 1, STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         self.owned = np.zeros(len(self.x), dtype=bool)
@@ -192,7 +195,7 @@ class ExplicitSolver:
         if m.one_point and m.gdim == 2:
             dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = (one_point.quad_one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
-                m.kinematics == kernels.AXISYMMETRIC, m.scene.thickness, m.hourglass_form,
+                m.kinematics == AXISYMMETRIC, m.scene.thickness, m.hourglass_form,
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
                 self.f_int))
         elif m.one_point:
@@ -201,7 +204,7 @@ class ExplicitSolver:
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
                 self.f_int))
         else:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = kernels.stress_divergence(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = full_integration.stress_divergence(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
                 m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
                 self.sigma, self.f_int)

@@ -27,23 +27,20 @@ import math
 import os
 import time
 
-import matplotlib
+from ..output.figures import pyplot
+from scipy.optimize import brentq
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from scipy.optimize import brentq  # noqa: E402
-
-from ..amplifier import rigid  # noqa: E402
-from ..amplifier.bars import Bar, Interface, Tether, run_bars  # noqa: E402
-from ..amplifier.chain import default_end_time, run_chain_scene  # noqa: E402
-from ..amplifier.gain import chain_gain, cylinder_size, design, stack_gain  # noqa: E402
-from ..amplifier.interfaces import (flat_face_stress, hertz_yield_speed, pad_for_force,  # noqa: E402
+from ..amplifier import rigid
+from ..amplifier.bars import Bar, Interface, Tether, run_bars
+from ..amplifier.chain import default_end_time, run_chain_scene
+from ..amplifier.gain import chain_gain, cylinder_size, design, stack_gain
+from ..amplifier.interfaces import (flat_face_stress, hertz_yield_speed, pad_for_force,
                                     reduced_mass)
-from ..errors import UnstableRun  # noqa: E402
-from ..metrics.stages import stage_table  # noqa: E402
-from ..scene.library import LIBRARY  # noqa: E402
-from ..units import to_si  # noqa: E402
-from .report import Report  # noqa: E402
+from ..errors import UnstableRun
+from ..metrics.stages import stage_table
+from ..scene.library import LIBRARY
+from ..units import to_si
+from .report import Report
 
 LB, FTS, FT3 = 0.45359237, 0.3048, 0.3048 ** 3
 MATERIAL = "high_strength_steel"
@@ -127,6 +124,7 @@ def _pair(fidelity, ratio, speed, h, out_dir, elastic):
 
 
 def restitution_sweep(rep: Report, size: str, out_dir: str):
+    plt = pyplot()
     rep.heading("2. Apparent restitution against natural-frequency ratio")
     cfg = SIZES[size]
     c0 = math.sqrt(210e9 / 7850)
@@ -342,6 +340,7 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
     """The five-mass design's masses as cylinders of several length / diameter ratios, down to
     thick plates: gain against the volume the stack occupies (axisymmetric, elastic and
     elastic-plastic)."""
+    plt = pyplot()
     rep.heading("5. Cylinders against thick plates")
     cfg = SIZES[size]
     rho = to_si(LIBRARY[MATERIAL]["density"], "density")

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import os
 
+from ..output.figures import save
+
 
 class Report:
     def __init__(self, out_dir: str, title: str):
@@ -31,10 +33,7 @@ class Report:
     def figure(self, filename: str, caption: str, fig=None):
         """Reference the PNG ``filename`` in the report; with a matplotlib ``fig``, save it there first."""
         if fig is not None:
-            import matplotlib.pyplot as plt
-            fig.tight_layout()
-            fig.savefig(self.path(filename), dpi=110)
-            plt.close(fig)
+            save(fig, self.path(filename))
         self.lines += [f"![{caption}]({filename})", "", f"*{caption}*", ""]
         self.write()
 

@@ -5,7 +5,7 @@ import time
 
 from mpi4py import MPI
 
-from .cases import CASES
+from .registry import CASES
 
 
 def run_cases(names, size: str = "default", workdir: str = "results/verify", echo=print) -> list[dict]:

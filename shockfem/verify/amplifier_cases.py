@@ -30,7 +30,7 @@ from ..metrics.stages import stage_table
 from ..output.history import read_history_csv
 from ..run import run_scene
 from ..scene import resolve
-from .cases import SIZES, check
+from .checks import SIZES, check
 from .contact_cases import RADIUS, SPEED
 from .scenes import STEEL, steel_c0
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .cases import SIZES, _elements, check
+from .checks import SIZES, check, element_count, parallel_agreement
 from .scenes import STEEL, resample, solve, steel_c0
 
 RADIUS, LENGTH, SPEED = 0.0025, 0.1, 1.0
@@ -68,7 +68,7 @@ def _rod_pair(h, workdir, kinematics="axisymmetric", radius=RADIUS, length=LENGT
             "striker_velocity": v[0, -1], "target_velocity": v[1, -1], "restitution": pair.restitution() or 0.0,
             "momentum": float(m @ v[:, -1]) / (m[0] * -SPEED),
             "vibration_share": 1.0 - 0.5 * float(m @ (v ** 2).sum(axis=1)) / solver.energy.initial,
-            "balance_error": solver.energy.balance_error, "wall": wall, "elements": _elements(solver)}
+            "balance_error": solver.energy.balance_error, "wall": wall, "elements": element_count(solver)}
 
 
 def rod_on_rod(size, workdir):
@@ -164,7 +164,7 @@ def rod_on_wall(size, workdir):
     pair = solver.contacts[0]
     v, _ = solver.body_means()
     e = solver.energy
-    n = _elements(solver)
+    n = element_count(solver)
     return [
         check("rod_on_wall.contact_time [s]", t_contact, _contact_time(pair), 0.02, wall, n),
         check("rod_on_wall.rebound_velocity [m/s]", SPEED, v[0, 1], 0.02, wall, n),
@@ -192,7 +192,7 @@ def unequal_rods(size, workdir):
     m = solver.model.body_mass
     rigid_motion = 0.5 * float(m @ (v ** 2).sum(axis=1))
     vibration = 1.0 - rigid_motion / solver.energy.initial
-    n = _elements(solver)
+    n = element_count(solver)
     return [
         # not one of the issue's checks: 1D theory ends the pulse sharply at 2 L1/c0, the rods' dispersive
         # tail (nothing pulls the faces apart) keeps it 4.4% longer at the default size; a regression guard
@@ -237,7 +237,7 @@ def sliding_block(size, workdir):
     sel = (t > 0.2 * t_stop) & (t < 0.8 * t_stop)
     decel = -np.polyfit(t[sel], vx[sel], 1)[0]
     pair = solver.contacts[0]
-    n = _elements(solver)
+    n = element_count(solver)
     e = solver.energy
     return [
         check("sliding_block.deceleration [m/s^2]", mu * g, decel, 0.01, wall, n),
@@ -250,7 +250,6 @@ def sliding_block(size, workdir):
 def contact_parallel(size, workdir):
     """Contact under mpirun -n 2 gives the one-process results: body-to-body (rod on rod) and a
     rigid floor with friction and gravity (the sliding block)."""
-    from .cases import parallel_agreement
     return [parallel_agreement(_rod_pair_scene(0.0005 * SIZES[size]), "contact_parallel.rod_on_rod", workdir,
                                ["striker.v_z", "target.v_z", "energy.contact", "energy.internal"]),
             parallel_agreement(_sliding_block_scene(size), "contact_parallel.sliding_block", workdir,
@@ -285,7 +284,7 @@ def hertz_spheres(size, workdir):
     t, F = resample(*np.array(forces).T, t_contact / 2000)
     smooth = np.convolve(F, np.ones(100) / 100, mode="same")
     pair = solver.contacts[0]
-    n = _elements(solver)
+    n = element_count(solver)
     return [
         check("hertz.contact_time [s]", t_contact, _contact_time(pair), 0.05, wall, n),
         check("hertz.peak_force [N]", peak, smooth.max(), 0.05, wall, n),
@@ -324,7 +323,7 @@ def tunnel_slide(size, workdir):
     t, vz, uz, normal = np.array(samples).T
     sel = (t > 0.2 * t_stop) & (t < 0.8 * t_stop)
     decel = -np.polyfit(t[sel], vz[sel], 1)[0]
-    n = _elements(solver)
+    n = element_count(solver)
     weight = solver.model.body_mass[0] * g
     return [
         check("tunnel_slide.normal_force [N]", weight, normal[sel].mean(), 0.02, wall, n),

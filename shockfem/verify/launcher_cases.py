@@ -25,7 +25,7 @@ from scipy.optimize import brentq
 from ..launcher.gas import GASES
 from ..launcher.design import Limits, Sizing, _with, lightest_launcher, valve_ratio_of, weights
 from ..launcher.gun import Gun, fire
-from .cases import check
+from .checks import check
 
 PSI, INCH, FT = 6894.757, 0.0254, 0.3048
 # The white paper's gun: 12 in bore, 6 ft barrel, 2000 psi.

@@ -1,5 +1,5 @@
-"""Material-point verification of the plasticity: one point driven through the same objective
-update and radial return the element kernels call, against closed forms.
+"""Material-point verification of the laws: one point driven through the very function the element
+kernels call (``materials.update.update_stress``: objective rotation, law), against closed forms.
 
 The driver prescribes some strain-rate components and holds the stress of the others at zero
 (uniaxial stress: d11 given, sigma22 = sigma33 = 0; plane strain: d11 given, d33 = 0,
@@ -12,10 +12,11 @@ import time
 
 import numpy as np
 
+from ..materials.layout import S_BACK, S_EPS, S_RATE, STATE_SIZE
+from ..materials.update import update_stress
 from ..model.materials import parameter_table
 from ..scene import resolve
-from ..solver import kernels, plasticity
-from .cases import check
+from .checks import check
 
 COPPER = {"density": 8930.0, "youngs_modulus": 117e9, "poisson_ratio": 0.35, "yield_stress": 400e6,
           "tangent_modulus": 100e6}
@@ -29,34 +30,19 @@ def material(fields: dict):
     return resolve(raw).materials["m"]
 
 
-def _elastic_matrix(lam, mu):
-    C = np.zeros((6, 6))
-    C[:3, :3] = lam
-    C[range(3), range(3)] += 2 * mu
-    C[range(3, 6), range(3, 6)] = 2 * mu      # acts on the tensor shear rate d_ij
-    return C
-
-
 class MaterialPoint:
     """One point of one material: stress (6), plastic state, and a step with mixed control."""
 
     def __init__(self, mat):
         self.params, self.curves = parameter_table([mat], None, (0.0, 0.0))
         self.lam, self.mu = mat.lam, mat.mu
-        self.C = _elastic_matrix(self.lam, self.mu)
         self.sigma = np.zeros(6)
-        self.state = np.zeros((1, 1, plasticity.STATE_SIZE))
-        self.plastic = mat.plasticity is not None
+        self.state = np.zeros((1, 1, STATE_SIZE))
 
     def _update(self, d, w, dt, state):
-        """The kernels' sequence: Hughes-Winget rotation, elastic trial, radial return."""
-        q = kernels._cayley_matrix(w[0], w[1], w[2], dt)
-        s = np.array(kernels._rotate_symmetric(*self.sigma, *q))
-        s += dt * np.array(kernels._hooke(*d, self.lam, self.mu))
-        work = 0.0
-        if self.plastic:
-            kernels.rotate_back_stress(state, 0, 0, w[0], w[1], w[2], dt)
-            *s, work = plasticity.radial_return(self.params, self.curves, 0, state, 0, 0, *s, *d, dt)
+        """The element kernels' material update at one point (no slots: radius 0)."""
+        s, _, work = update_stress(self.params, self.curves, 0, state, 0, 0, tuple(map(float, self.sigma)),
+                                   tuple(map(float, d)), tuple(map(float, w)), dt, 0.0)
         return np.array(s), work
 
     def step(self, d_given: dict, free: tuple, dt: float, w=(0.0, 0.0, 0.0), iterations=50):
@@ -96,11 +82,11 @@ class MaterialPoint:
 
     @property
     def eps_p(self) -> float:
-        return float(self.state[0, 0, plasticity.S_EPS])
+        return float(self.state[0, 0, S_EPS])
 
     @property
     def plastic_rate(self) -> float:
-        return float(self.state[0, 0, plasticity.S_RATE])
+        return float(self.state[0, 0, S_RATE])
 
     @property
     def von_mises(self) -> float:
@@ -243,7 +229,7 @@ def objectivity(size, workdir):
     for _ in range(500):
         point.step({0: 100.0, 5: 40.0}, (1, 2), dt)         # tension with shear, into the plastic range
     s0, vm0, ep0 = point.sigma.copy(), point.von_mises, point.eps_p
-    alpha0 = _tensor_norm(point.state[0, 0, 2:])
+    alpha0 = _tensor_norm(point.state[0, 0, S_BACK:S_BACK + 6])
     spin, steps = 0.5 * math.pi / (1000 * dt), 1000      # about z, a quarter turn
     for _ in range(steps):
         point.step({}, (), dt, w=(0.0, 0.0, spin))
@@ -261,7 +247,7 @@ def objectivity(size, workdir):
               absolute=True),
         check("point.rotation.von_mises [Pa]", vm0, point.von_mises, 1e-10, wall, 1),
         check("point.rotation.plastic_strain [-]", ep0, point.eps_p, 1e-12, wall, 1),
-        check("point.rotation.back_stress [Pa]", alpha0, _tensor_norm(point.state[0, 0, 2:]), 1e-10, wall, 1),
+        check("point.rotation.back_stress [Pa]", alpha0, _tensor_norm(point.state[0, 0, S_BACK:S_BACK + 6]), 1e-10, wall, 1),
     ]
 
 

@@ -20,7 +20,7 @@ import numpy as np
 from ..metrics import filters, shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.srs import shock_response_spectrum
-from .cases import SIZES, check
+from .checks import SIZES, check
 from .scenes import STEEL, steel_c0
 
 # Exact undamped half-sine shock spectrum maximum and where it lies (shared/references/README.md).

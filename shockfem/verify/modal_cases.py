@@ -22,7 +22,7 @@ from ..geometry import build_mesh
 from ..modal.eigen import body_modes
 from ..modal.labels import label_modes
 from ..scene import resolve
-from .cases import check
+from .checks import check
 from .scenes import STEEL, rayleigh_love_f1
 
 # Element-size factor per verification size.

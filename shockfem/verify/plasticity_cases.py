@@ -20,7 +20,7 @@ import math
 import numpy as np
 from mpi4py import MPI
 
-from .cases import SIZES, _elements, check
+from .checks import SIZES, check, element_count
 from .scenes import solve
 
 TAYLOR = {"length": 0.0324, "radius": 0.0032, "speed": 227.0, "end_time": 80e-6,
@@ -73,7 +73,7 @@ def taylor_measures(solver) -> dict:
 def _taylor_checks(prefix, solver, wall, length_tol, radius_tol):
     r = taylor_measures(solver)
     e = solver.energy
-    n = _elements(solver)
+    n = element_count(solver)
     length = check(f"{prefix}.final_length [m]", TAYLOR["final_length"], r["length"], length_tol, wall, n)
     length["note"] = (f"max equivalent plastic strain {r['max_plastic_strain']:.3g} (impact-face corner), "
                       f"plastic work {e.plastic:.4g} J of {e.initial:.4g} J, hourglass {e.hourglass:.3g} J, "
@@ -117,7 +117,7 @@ def taylor_bar_3d(size, workdir):
     axi, wall_a = solve(taylor_scene(h, end_time=t_early), cache_dir=workdir)
     solid, wall = solve(taylor_scene(h, kinematics="3d", end_time=t_early), cache_dir=workdir)
     a, r = taylor_measures(axi), taylor_measures(solid)
-    n = _elements(solid)
+    n = element_count(solid)
     radius = check("taylor_3d.radius_12us [m, vs axisymmetric]", a["radius"], r["radius"], 0.01, wall, n)
     radius["note"] = (f"axisymmetric {a['radius'] * 1e3:.4f} mm in {wall_a:.2f} s, 3D {r['radius'] * 1e3:.4f} mm "
                       f"in {wall:.2f} s (published, converged: 5.44-5.46 mm); max plastic strain "
@@ -160,7 +160,7 @@ def plastic_wave(size, workdir):
     eps_plateau = (speed - v_y) / cp * (1 - Et / E)
     elastic = comm.allreduce(float(zc[szz > 0.5 * sy].max(initial=0.0)), op=MPI.MAX)
     plastic = comm.allreduce(float(zc[eps > 0.5 * eps_plateau].max(initial=0.0)), op=MPI.MAX)
-    n = _elements(solver)
+    n = element_count(solver)
     t = solver.t
     return [check("plastic_wave.elastic_front_speed [m/s]", c0, elastic / t, 0.05, wall, n),
             check("plastic_wave.plastic_front_speed [m/s]", cp, plastic / t, 0.05, wall, n),

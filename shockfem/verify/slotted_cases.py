@@ -1,4 +1,4 @@
-"""Verification of the slotted ring's hoop law (the axisymmetric split cone, ``solver/slotted.py``).
+"""Verification of the slotted ring's hoop law (the axisymmetric split cone, ``materials/slotted.py``).
 
 A thin split ring (bore 38 mm, outer radius 40 mm, 10 mm long, 4 slots of 1 mm) is squeezed
 inward by a radial velocity on its outer face, ramped to 5 m/s over 20 us.  Its slots close when
@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from .cases import SIZES, _elements, check
+from .checks import SIZES, check, element_count
 from .scenes import solve
 
 RING = {"outer_radius": 0.040, "bore": 0.038, "length": 0.010, "segments": 4, "slot_width": 0.001}
@@ -64,7 +64,7 @@ def slotted_ring(size, workdir):
 
     solver, wall = solve(_ring_scene(h, t_open, STEEL), cache_dir=workdir)
     whole, wall_w = solve(_ring_scene(h, t_open, STEEL, segments=1), cache_dir=workdir)
-    n = _elements(solver)
+    n = element_count(solver)
     r0, hoop = _hoop(solver)
     _, hoop_whole = _hoop(whole)
     u = _inward(t_open)

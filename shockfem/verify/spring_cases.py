@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from .cases import SIZES, _elements, check
+from .checks import SIZES, check, element_count, parallel_agreement
 from .scenes import STEEL, solve
 
 RADIUS, LENGTH, GAP, V0, K = 0.01, 0.02, 0.01, 1.0, 1e6
@@ -63,7 +63,7 @@ def spring_oscillator(size, workdir):
     raw, m, omega = _scene(h)
     solver, wall, t, e = _run(raw, workdir)
     tp, ep = _peaks(t, e)
-    n = _elements(solver)
+    n = element_count(solver)
     out = [check("spring.period [s]", 2 * math.pi / omega, tp[1] - tp[0], 0.005, wall, n),
            check("spring.amplitude [m]", V0 / omega, ep[0], 0.005, wall, n),
            check("spring.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n, absolute=True)]
@@ -77,6 +77,5 @@ def spring_oscillator(size, workdir):
             check("spring.damped_energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
                   absolute=True)]
     # the ends' mean motions are sums over ranks: mpirun -n 2 must give the one-process history
-    from .cases import parallel_agreement
     out.append(parallel_agreement(raw, "spring.np2_vs_np1", workdir, ["lower.v_z", "upper.v_z", "energy.contact"]))
     return out

@@ -8,7 +8,7 @@ import os
 import pytest
 
 from shockfem.geometry import build_mesh, region_facets
-from shockfem.geometry.catalog import PARTS
+from shockfem.parts.catalog import PARTS
 from shockfem.geometry.quality import mesh_quality
 from shockfem.model import build_model
 from shockfem.scene import SceneError, read_toml, resolve
@@ -199,3 +199,20 @@ def test_payload_is_carried_in_the_projectile_cavity(tmp_path):
     assert cavity == pytest.approx(lost["payload"], rel=5e-3) and cavity > 0.1 * m["payload"] * 50.0
     assert s["contacts"]["payload_in_cavity"]["max_penetration"] < 1e-4
     assert abs(s["energy"]["balance_error"]) < 1e-3
+
+
+@pytest.mark.parametrize("kinematics, refine", [("axisymmetric", False), ("axisymmetric", True), ("3d", False)])
+def test_a_sphere_stands_on_its_bottom_pole(kinematics, refine):
+    """One definition of a sphere's position, whichever mesher draws it (the structured axisymmetric
+    builder, the outline with local refinement, the 3D revolved outline): the bottom pole at the
+    body's position, the top pole 2 R above it (to the mesh's coordinates, which lie on the sphere)."""
+    R, z = 0.01, 0.05
+    body = {"name": "ball", "material": "steel", "shape": "sphere", "radius": R, "element_size": 0.002,
+            "position": [0.0, z] if kinematics == "axisymmetric" else [0.0, 0.0, z]}
+    if refine:
+        body["refine"] = [{"region": "bottom", "size": 0.001}]
+    raw = {"scene": {"kinematics": kinematics, "end_time": 1e-6}, "materials": {"steel": {"library": "mild_steel"}},
+           "bodies": [body]}
+    meshed = build_mesh(resolve(raw), log=lambda *a: None)
+    zs = meshed.mesh.geometry.x[:, 1 if kinematics == "axisymmetric" else 2]
+    assert zs.min() == pytest.approx(z, abs=1e-9) and zs.max() == pytest.approx(z + 2 * R, abs=1e-9)

@@ -1,77 +1,16 @@
-"""Parts of revolution as (r, z) profiles, drawn with gmsh's OpenCASCADE kernel.
-
-Most of a shock machine turns on a lathe: striker, amplifier cylinders, split cone, clamp
-ring, dashpot, projectile.  Each such part is a closed outline in the (r, z) half plane
-(``Profile``: lines and circular arcs, each naming the region it bounds) with optional
-holes (internal cavities).  The same profile gives
-
-* the axisymmetric body: the outline's plane surface, x = r, y = z;
-* the 3D body: the outline revolved a full turn about z (x = r, y = 0 before the turn).
-  Its faces are named by the profile segment they come from (a point of each face, taken
-  back to (r, z), lies on exactly one segment); faces that lie on none (cuts a part makes
-  afterwards, such as the split cone's slots) take the part's ``cut_region`` name.
-
-Profiles are built with z = 0 at the part's bottom; ``position`` moves the whole part.
+"""Draw the catalogue's parts with gmsh's OpenCASCADE kernel: their (r, z) outlines
+(``parts.profiles``) as plane surfaces (axisymmetric) or revolved solids (3D), then the 3D-only cuts
+(the split cone's slots, the dashpot's orifice), with every boundary face named by its region.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
+import gmsh
 import numpy as np
 
-
-@dataclass(frozen=True)
-class Line:
-    start: tuple[float, float]          # (r, z)
-    end: tuple[float, float]
-    region: str
-
-
-@dataclass(frozen=True)
-class Arc:
-    """A circular arc shorter than a half turn from ``start`` to ``end`` about ``centre``."""
-    start: tuple[float, float]
-    end: tuple[float, float]
-    centre: tuple[float, float]
-    region: str
-
-
-@dataclass
-class Profile:
-    outline: list                       # closed chain of Line/Arc, end of each = start of the next
-    holes: list[list] = field(default_factory=list)
-    cut_region: str = "cut"
-
-    def segments(self):
-        yield from self.outline
-        for hole in self.holes:
-            yield from hole
-
-    def regions(self) -> list[str]:
-        seen = []
-        for seg in self.segments():
-            if seg.region and seg.region not in seen:
-                seen.append(seg.region)
-        return seen
-
-
-def distance_to_segment(seg, r: float, z: float) -> float:
-    """Distance from (r, z) to a profile segment."""
-    p = np.array([r, z])
-    a, b = np.array(seg.start), np.array(seg.end)
-    if isinstance(seg, Line):
-        ab = b - a
-        t = np.clip(np.dot(p - a, ab) / np.dot(ab, ab), 0.0, 1.0)
-        return float(np.linalg.norm(p - (a + t * ab)))
-    c = np.array(seg.centre)
-    radius = np.linalg.norm(a - c)
-    # within the arc's angle (the chord separates the arc from the centre side for arcs under
-    # a half turn): distance to the circle; otherwise to the nearer end
-    chord_side = np.cross(b - a, p - a) * np.cross(b - a, c - a) <= 0.0
-    if chord_side or np.linalg.norm(p - c) < 1e-300:
-        return float(abs(np.linalg.norm(p - c) - radius))
-    return float(min(np.linalg.norm(p - a), np.linalg.norm(p - b)))
+from ..parts.catalog import Part
+from ..parts.profiles import Line, Profile, distance_to_segment
 
 
 def _add_loop(occ, chain, gdim, points, origin):
@@ -103,7 +42,6 @@ def draw_profile(profile: Profile, gdim: int, origin=(0.0, 0.0, 0.0)):
     always move a solid of revolution after the fact).  Returns (entities, {region: [boundary
     entity tags]}) after synchronising; for gdim 3 the regions are found by ``classify_faces``
     (so cuts made later must call it again)."""
-    import gmsh
     occ = gmsh.model.occ
     points: dict = {}
     outer, curves = _add_loop(occ, profile.outline, gdim, points, origin)
@@ -129,7 +67,6 @@ def draw_profile(profile: Profile, gdim: int, origin=(0.0, 0.0, 0.0)):
 def _point_on_face(face: int, origin) -> tuple[float, float]:
     """(r, z) of a point inside a face: the first point of a parametric grid that gmsh finds on the
     face (the middle of the parameter box of a planar annulus is its hole)."""
-    import gmsh
     lo, hi = (np.asarray(b) for b in gmsh.model.getParametrizationBounds(2, face))
     for fu in (0.5, 0.37, 0.63, 0.21, 0.79, 0.1, 0.9):
         for fv in (0.5, 0.37, 0.63, 0.21, 0.79, 0.1, 0.9):
@@ -143,7 +80,6 @@ def _point_on_face(face: int, origin) -> tuple[float, float]:
 def classify_faces(profile: Profile, volumes: list[int], origin=(0.0, 0.0, 0.0),
                    tolerance: float | None = None) -> dict[str, list[int]]:
     """Name the boundary faces of a solid of revolution by the profile segment each lies on."""
-    import gmsh
     segments = [s for s in profile.segments() if s.region and s.region != "axis"]     # the axis makes no face
     scale = max(max(abs(c) for s in profile.segments() for c in s.start + s.end), 1e-12)
     tol = tolerance or 1e-6 * scale
@@ -156,3 +92,50 @@ def classify_faces(profile: Profile, volumes: list[int], origin=(0.0, 0.0, 0.0),
         regions.setdefault(name, []).append(face)
     return regions
 
+
+# ------------------------------------------------------------- 3D-only cuts
+
+def _split_cone_slots(d, volumes, origin):
+    """Cut ``segments`` axial slots of ``slot_width`` through the wall, the whole length."""
+    occ = gmsh.model.occ
+    n, w = int(d["segments"]), d["slot_width"]
+    if n < 2:
+        return volumes
+    Ro, L = d["outer_radius"], d["length"]
+    tools = []
+    for k in range(n):
+        box = occ.addBox(origin[0], origin[1] - 0.5 * w, origin[2] - 0.1 * L, 1.5 * Ro, w, 1.2 * L)
+        occ.rotate([(3, box)], *origin, 0, 0, 1, 2 * math.pi * k / n)
+        tools.append((3, box))
+    out, _ = occ.cut([(3, v) for v in volumes], tools)
+    occ.synchronize()
+    return [t for dim, t in out if dim == 3]
+
+
+def _dashpot_orifice(d, volumes, origin):
+    """Drill the orifice: a round hole at r = cavity_centre_radius from the top face into the cavity."""
+    occ = gmsh.model.occ
+    ro = d["orifice_radius"]
+    if not ro:
+        return volumes
+    L = d["length"]
+    zc = d["cavity_height"] or 0.5 * L
+    hole = occ.addCylinder(origin[0] + d["cavity_centre_radius"], origin[1], origin[2] + zc, 0.0, 0.0, 1.1 * L - zc, ro)
+    out, _ = occ.cut([(3, v) for v in volumes], [(3, hole)])
+    occ.synchronize()
+    return [t for dim, t in out if dim == 3]
+
+
+CUTS_3D = {"slots": _split_cone_slots, "orifice": _dashpot_orifice}
+
+
+def draw(part: Part, dims: dict, gdim: int, origin=(0.0, 0.0, 0.0)):
+    """Draw the part in the current gmsh model, its bottom centre at ``origin``:
+    (entities, {region: boundary tags})."""
+    profile = part.profile(dims)
+    profile.cut_region = part.cut_region
+    entities, regions = draw_profile(profile, gdim, origin)
+    if gdim == 3 and part.cut_3d is not None:
+        entities = CUTS_3D[part.cut_3d](dims, entities, origin)
+        regions = classify_faces(profile, entities, origin)
+    return entities, regions

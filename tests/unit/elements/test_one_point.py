@@ -7,9 +7,10 @@ from dolfinx import fem, mesh
 
 from shockfem import compat
 from shockfem.model import kinematics as kin
-from shockfem.solver import kernels, one_point
+from shockfem.elements import cells as ec, one_point
+from shockfem.materials import layout
 
-from solver_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
+from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
 
 STIFFNESS, VISCOUS = one_point.HOURGLASS_FORMS["stiffness"], one_point.HOURGLASS_FORMS["viscous"]
 
@@ -21,7 +22,7 @@ def _arrays(m):
     dofmap = np.ascontiguousarray(V.dofmap.list.array.reshape(-1, nn), dtype=np.int32)
     X = np.ascontiguousarray(V.tabulate_dof_coordinates()[:, :gdim])
     _, _, _, dN = kin.quadrature(m.topology.cell_name(), "3d" if gdim == 3 else "plane-strain", "reduced")
-    return V, dofmap, X, kernels.cell_orientation(dofmap, X, dN)
+    return V, dofmap, X, ec.cell_orientation(dofmap, X, dN)
 
 
 def _run(kinematics, dofmap, sign, x, v, dt, sigma, hourglass, form=STIFFNESS, coefficient=0.05, params=None):
@@ -104,7 +105,7 @@ def test_hourglass_mode_is_resisted_and_its_energy_counted(gdim):
     p = _params()
     f, dt_stable, _, power, _ = _run(kinematics, dofmap, sign, X + dt * v, v, dt, sigma, hg, coefficient=0.1,
                                      params=p)
-    lam, mu = p[0, kernels.P_LAMBDA], p[0, kernels.P_MU]
+    lam, mu = p[0, layout.P_LAMBDA], p[0, layout.P_MU]
     n = len(X)
     # b:b of a square (cube) of side a: 2/a^2 (3/(2 a^2)); volume a^2 * thickness (a^3); q = |h|^2 = n
     a = 0.01
@@ -116,7 +117,7 @@ def test_hourglass_mode_is_resisted_and_its_energy_counted(gdim):
     assert np.allclose(f[:, 0], h[0] * Q, rtol=1e-4)
     assert np.allclose(f[:, 1:], 0.0, atol=1e-4 * Q)
     assert power == pytest.approx(0.5 * Q * n, rel=1e-4)    # (0 + Q)/2 . q > 0: the mode is resisted
-    c = p[0, kernels.P_WAVE_SPEED]
+    c = p[0, layout.P_WAVE_SPEED]
     assert dt_stable == pytest.approx(a / (np.sqrt(gdim) * c), rel=1e-4)
 
 

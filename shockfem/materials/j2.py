@@ -1,9 +1,9 @@
 """J2 (von Mises) plasticity with radial return, mixed hardening and Cowper-Symonds rate effects.
 
-One material point, called by every element kernel after the objective rotation and the
-elastic trial step (so the kernels stay the single place of the stress-rate update):
+The law ``J2`` of ``laws.py``: after the objective rotation (``objective.py``, done by
+``update.update_stress`` for every law) the elastic trial step, then the return:
 
-    sigma_trial = Q sigma_n Q^T + dt C : d          (kernels.py, one_point.py)
+    sigma_trial = Q sigma_n Q^T + dt C : d          (objective.py, elastic.py)
     xi_trial    = dev(sigma_trial) - alpha_n        alpha: back stress (kinematic hardening)
     q_trial     = sqrt(3/2 xi_trial : xi_trial)
 
@@ -32,9 +32,8 @@ Rate factor ``R = 1 + (rate / D)^(1/q)`` (Cowper-Symonds), in one of LS-DYNA's t
 * yield scaling (VP = 0): rate = the total effective strain rate sqrt(2/3 d':d') of the step,
   so R is known before the return.
 
-The state of a point is ``STATE_SIZE`` numbers: equivalent plastic strain, plastic strain rate,
-the back stress (6 components, order 11 22 33 23 13 12 like the stress) and, for a slotted ring,
-how far its slots have closed (``slotted.py``).
+The state of a point (``layout.py``): equivalent plastic strain ``S_EPS``, plastic strain rate
+``S_RATE`` and the back stress ``S_BACK``.. (6 components, order 11 22 33 23 13 12 like the stress).
 """
 from __future__ import annotations
 
@@ -42,12 +41,12 @@ import math
 
 from numba import njit
 
-from .columns import P_CURVE_POINTS, P_KINEMATIC, P_MU, P_RATE_D, P_RATE_FORM, P_RATE_Q
+from .elastic import hooke
+from .layout import (P_CURVE_POINTS, P_KINEMATIC, P_LAMBDA, P_MU, P_RATE_D, P_RATE_FORM, P_RATE_Q, S_BACK, S_EPS,
+                     S_RATE, VISCOPLASTIC, YIELD_SCALING)
 
-VISCOPLASTIC, YIELD_SCALING = 0, 1
-S_EPS, S_RATE = 0, 1   # state columns; the back stress is columns 2..7
-S_SLOT = 8             # how much of a slotted ring's slot width has closed [m]
-STATE_SIZE = 9
+# the scene's names of the two rate forms (``rate_form``), LS-DYNA's VP = 1 and VP = 0
+RATE_FORMS = {"plastic-strain-rate": VISCOPLASTIC, "total-strain-rate": YIELD_SCALING}
 
 _NEWTON_ITERATIONS = 60
 _TOLERANCE = 1e-12     # of the consistency residual, relative to q_trial
@@ -118,28 +117,31 @@ def _flow_increment(q_trial, eps, stiffness, curve, npts, dt, D, q, viscoplastic
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def radial_return(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, d2, d3, d4, d5, dt):
-    """Return the trial stress (s0..s5) to the yield surface of material ``m`` at point (c, p).
+def radial_return(row, curve, point, s, d, dt):
+    """Return the trial stress ``s`` to the yield surface of the material whose parameter row is
+    ``row`` (hardening ``curve``), at the point whose state is ``point`` (updated in place).
 
-    d0..d5 is the step's strain rate (for the yield-scaling rate form).  Updates ``state[c, p]``
-    and returns the stress and the plastic work density of the step sigma : d eps_p [J/m^3].
+    ``d`` is the step's strain rate (for the yield-scaling rate form).  Returns the stress and the
+    plastic work density of the step sigma : d eps_p [J/m^3].
     """
-    mu = params[m, P_MU]
-    hk = params[m, P_KINEMATIC]
-    D = params[m, P_RATE_D]
-    qexp = params[m, P_RATE_Q]
-    npts = int(params[m, P_CURVE_POINTS])
-    curve = curves[m]
-    eps = state[c, p, S_EPS]
+    s0, s1, s2, s3, s4, s5 = s
+    d0, d1, d2, d3, d4, d5 = d
+    mu = row[P_MU]
+    hk = row[P_KINEMATIC]
+    D = row[P_RATE_D]
+    qexp = row[P_RATE_Q]
+    npts = int(row[P_CURVE_POINTS])
+    eps = point[S_EPS]
+    b = S_BACK
     mean = (s0 + s1 + s2) / 3.0
-    x0 = s0 - mean - state[c, p, 2]
-    x1 = s1 - mean - state[c, p, 3]
-    x2 = s2 - mean - state[c, p, 4]
-    x3 = s3 - state[c, p, 5]
-    x4 = s4 - state[c, p, 6]
-    x5 = s5 - state[c, p, 7]
+    x0 = s0 - mean - point[b]
+    x1 = s1 - mean - point[b + 1]
+    x2 = s2 - mean - point[b + 2]
+    x3 = s3 - point[b + 3]
+    x4 = s4 - point[b + 4]
+    x5 = s5 - point[b + 5]
     q_trial = math.sqrt(1.5 * (x0 * x0 + x1 * x1 + x2 * x2 + 2.0 * (x3 * x3 + x4 * x4 + x5 * x5)))
-    viscoplastic = D > 0.0 and params[m, P_RATE_FORM] == VISCOPLASTIC
+    viscoplastic = D > 0.0 and row[P_RATE_FORM] == VISCOPLASTIC
     scale = 1.0
     if D > 0.0 and not viscoplastic:
         dm = (d0 + d1 + d2) / 3.0
@@ -148,8 +150,8 @@ def radial_return(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1
         scale = rate_factor(rate, D, qexp)
     sy, _ = hardening(curve, npts, eps)
     if q_trial <= scale * sy:
-        state[c, p, S_RATE] = 0.0
-        return s0, s1, s2, s3, s4, s5, 0.0
+        point[S_RATE] = 0.0
+        return s, 0.0
     de = _flow_increment(q_trial, eps, 3.0 * mu + hk, curve, npts, dt, D, qexp, viscoplastic, scale)
     k = 1.5 * de / q_trial                       # d eps_p = k xi_trial (tensor), |.|_eq = de
     r = 2.0 * mu * k
@@ -161,13 +163,37 @@ def radial_return(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1
     s5 -= r * x5
     if hk > 0.0:
         a = 2.0 / 3.0 * hk * k
-        state[c, p, 2] += a * x0
-        state[c, p, 3] += a * x1
-        state[c, p, 4] += a * x2
-        state[c, p, 5] += a * x3
-        state[c, p, 6] += a * x4
-        state[c, p, 7] += a * x5
-    state[c, p, S_EPS] = eps + de
-    state[c, p, S_RATE] = de / dt
+        point[b] += a * x0
+        point[b + 1] += a * x1
+        point[b + 2] += a * x2
+        point[b + 3] += a * x3
+        point[b + 4] += a * x4
+        point[b + 5] += a * x5
+    point[S_EPS] = eps + de
+    point[S_RATE] = de / dt
     work = k * (s0 * x0 + s1 * x1 + s2 * x2 + 2.0 * (s3 * x3 + s4 * x4 + s5 * x5))
-    return s0, s1, s2, s3, s4, s5, work
+    return (s0, s1, s2, s3, s4, s5), work
+
+
+@njit(cache=True, fastmath=True)
+def j2_update(row, curve, point, s, d, dt):
+    """The J2 law over one step in the rotated frame: elastic trial, then the return.
+
+    ``row``: the material's parameter row; ``curve``: its hardening curve; ``point``: the point's
+    state, updated in place.  A called function, compiled once: the return mapping inlined into
+    every element kernel made numba's compile of the first plastic run several times longer.
+    """
+    c0, c1, c2, c3, c4, c5 = hooke(d, row[P_LAMBDA], row[P_MU])
+    trial = (s[0] + dt * c0, s[1] + dt * c1, s[2] + dt * c2, s[3] + dt * c3, s[4] + dt * c4, s[5] + dt * c5)
+    return radial_return(row, curve, point, trial, d, dt)
+
+
+def pack_j2(row, curve, plasticity) -> None:
+    """Write the J2 constants of a material's ``plasticity`` (the scene's ``Plasticity``: curve,
+    kinematic_modulus, rate_D, rate_q, rate_form) into its parameter ``row`` and hardening ``curve``."""
+    row[P_KINEMATIC] = plasticity.kinematic_modulus
+    row[P_RATE_D] = plasticity.rate_D
+    row[P_RATE_Q] = plasticity.rate_q
+    row[P_RATE_FORM] = RATE_FORMS[plasticity.rate_form]
+    row[P_CURVE_POINTS] = len(plasticity.curve)
+    curve[:len(plasticity.curve)] = plasticity.curve

@@ -27,7 +27,8 @@ LS-DYNA reports it, and a run can be judged by its hourglass-to-internal energy 
 
 Axisymmetric quads carry the ring volume V = 2 pi r_c A and the hoop term sigma_tt N_a / r_c
 with N_a = 1/4 at the centre; the hoop strain rate is v_r / r at the centre (of which a slotted
-ring's metal takes what its slots leave, ``slotted.py``).
+ring's metal takes what its slots leave, ``shockfem.materials.slotted``).  The stress update at the
+centre is ``shockfem.materials.update.update_stress``, as in every element.
 """
 from __future__ import annotations
 
@@ -36,11 +37,10 @@ import math
 import numpy as np
 from numba import njit
 
-from .columns import (P_BETA, P_KINEMATIC, P_LAMBDA, P_MODEL, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO,
-                      P_SLOT_WIDTH, P_WAVE_SPEED, PLASTIC)
-from .kernels import _cayley_matrix, _hooke, _rotate_symmetric, bulk_viscosity, rotate_back_stress, viscous_step
-from .plasticity import radial_return
-from .slotted import slotted_hoop_rate
+from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
+from ..materials.objective import cayley_matrix
+from ..materials.update import update_stress
+from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress
 
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
@@ -120,23 +120,6 @@ def _inverse_3x3(j00, j01, j02, j10, j11, j12, j20, j21, j22):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _rotate_2d(s0, s1, s5, w12, dt):
-    """In-plane Cayley rotation of (s11, s22, s12) by dt * W12 (``kernels._cayley_matrix`` with a1 = a2 = 0).
-
-    Returns the rotated components and (cos, sin) of the rotation Q = [[c, s], [-s, c]].
-    """
-    a3 = 0.5 * dt * w12
-    k = 2.0 / (1.0 + a3 * a3)
-    cq = 1.0 - k * a3 * a3
-    sq = k * a3
-    t00 = cq * s0 + sq * s5       # T = Q S, then S' = T Q^T
-    t01 = cq * s5 + sq * s1
-    t10 = cq * s5 - sq * s0
-    t11 = cq * s1 - sq * s5
-    return t00 * cq + t01 * sq, t11 * cq - t10 * sq, t01 * cq - t00 * sq, cq, sq
-
-
-@njit(cache=True, fastmath=True, inline="always")
 def _step_length(nodes, bb):
     """c times the stable step of a uniform-strain element with lumped mass, 2 / sqrt(n b:b), from
     Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b (a square of side h: h / sqrt(2),
@@ -201,29 +184,15 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         d0 = l00
         d1 = l11
         d5 = 0.5 * (l01 + l10)
-        # objective stress update (Hughes-Winget) and Hooke increment
-        s0, s1, s5, cq, sq = _rotate_2d(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 5], 0.5 * (l01 - l10), dt)
-        s2 = sigma[c, 0, 2]
-        plastic = params[m, P_MODEL] == PLASTIC
-        if plastic and params[m, P_KINEMATIC] > 0.0:
-            rotate_back_stress(state, c, 0, 0.0, 0.0, 0.5 * (l01 - l10), dt)
-        if axisymmetric and params[m, P_SLOT_WIDTH] > 0.0:
-            # a slotted ring: its metal takes the hoop rate its open slots leave it
-            d2 = slotted_hoop_rate(params, curves, m, state, c, 0, s0, s1, s2, 0.0, 0.0, s5,
-                                   d0, d1, d2, 0.0, 0.0, d5, dt, r)
-        c0, c1, c2, _, _, c5 = _hooke(d0, d1, d2, 0.0, 0.0, d5, lam, mu)      # C : d
-        s0 += dt * c0
-        s1 += dt * c1
-        s2 += dt * c2
-        s5 += dt * c5
-        wp = 0.0
-        if plastic:
-            s0, s1, s2, _, _, s5, wp = radial_return(params, curves, m, state, c, 0, s0, s1, s2, 0.0, 0.0, s5,
-                                                     d0, d1, d2, 0.0, 0.0, d5, dt)
-        sigma[c, 0, 0] = s0
-        sigma[c, 0, 1] = s1
-        sigma[c, 0, 2] = s2
-        sigma[c, 0, 5] = s5
+        # the material update at the centre (objective rotation, slotted ring, law)
+        w12 = 0.5 * (l01 - l10)
+        s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
+                                     (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], 0.0, 0.0, sigma[c, 0, 5]),
+                                     (d0, d1, d2, 0.0, 0.0, d5), (0.0, 0.0, w12), dt, r if axisymmetric else 0.0)
+        sigma[c, 0, 0] = s_np1[0]
+        sigma[c, 0, 1] = s_np1[1]
+        sigma[c, 0, 2] = s_np1[2]
+        sigma[c, 0, 5] = s_np1[5]
         # end-of-step configuration: volume and J^-1
         det, i00, i01, i10, i11 = _inverse_2x2(j00, j01, j10, j11)
         det *= cell_sign[c]
@@ -231,14 +200,6 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
             bad_cell = c
         vol = det * (two_pi * r if axisymmetric else thickness)
         plastic_work += vol * wp
-        if beta > 0.0:
-            # stiffness-proportional damping: viscous stress beta C : d
-            sv0, sv1, sv2, sv5 = beta * c0, beta * c1, beta * c2, beta * c5
-            damping_power += vol * (sv0 * d0 + sv1 * d1 + sv2 * d2 + 2.0 * sv5 * d5)
-            s0 += sv0
-            s1 += sv1
-            s2 += sv2
-            s5 += sv5
         # hourglass rate q = h.v - L_end (h.x), and resultant Q
         e00 = v00 * i00 + v01 * i10
         e01 = v00 * i01 + v01 * i11
@@ -248,14 +209,12 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
         q1 = hv1 - e10 * hx0 - e11 * hx1
         bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
         ls = _step_length(4.0, bb)
-        trd = d0 + d1 + d2
+        trd = d[0] + d[1] + d[2]
         pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC],
                             params[m, P_Q_LINEAR])
-        if pq > 0.0:
-            viscosity_power -= vol * pq * trd
-            s0 -= pq
-            s1 -= pq
-            s2 -= pq
+        (s0, s1, s2, _, _, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
+        damping_power += vol * pd
+        viscosity_power += vol * pv
         o0 = hourglass[c, 0]
         o1 = hourglass[c, 1]
         if hourglass_form == 1:
@@ -263,9 +222,11 @@ def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, a
             Q0 = cv * q0
             Q1 = cv * q1
         else:
+            # the resultant turns with the material (the centre's in-plane rotation) and grows
             k = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 16.0
-            Q0 = cq * o0 + sq * o1 + k * dt * q0
-            Q1 = cq * o1 - sq * o0 + k * dt * q1
+            r00, r01, _, r10, r11, _, _, _, _ = cayley_matrix(0.0, 0.0, w12, dt)
+            Q0 = r00 * o0 + r01 * o1 + k * dt * q0
+            Q1 = r10 * o0 + r11 * o1 + k * dt * q1
         hourglass[c, 0] = Q0
         hourglass[c, 1] = Q1
         # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
@@ -301,7 +262,7 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
     """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
 
     hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
-    xi eta zeta), 3 components each.  Returns (dt_stable, critical_cell, damping_power, hourglass_power, bad_cell).
+    xi eta zeta), 3 components each.  Returns what ``quad_one_point`` returns.
     """
     hdt = 0.5 * dt
     dt_stable = 1e300
@@ -359,30 +320,12 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         w23 = 0.5 * (l12 - l21)
         w13 = 0.5 * (l02 - l20)
         w12 = 0.5 * (l01 - l10)
-        # objective stress update (Hughes-Winget) and Hooke increment
-        r00, r01, r02, r10, r11, r12, r20, r21, r22 = _cayley_matrix(w23, w13, w12, dt)
-        s0, s1, s2, s3, s4, s5 = _rotate_symmetric(sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3],
-                                                   sigma[c, 0, 4], sigma[c, 0, 5],
-                                                   r00, r01, r02, r10, r11, r12, r20, r21, r22)
-        c0, c1, c2, c3, c4, c5 = _hooke(d0, d1, d2, d3, d4, d5, lam, mu)      # C : d
-        s0 += dt * c0
-        s1 += dt * c1
-        s2 += dt * c2
-        s3 += dt * c3
-        s4 += dt * c4
-        s5 += dt * c5
-        wp = 0.0
-        if params[m, P_MODEL] == PLASTIC:
-            if params[m, P_KINEMATIC] > 0.0:
-                rotate_back_stress(state, c, 0, w23, w13, w12, dt)
-            s0, s1, s2, s3, s4, s5, wp = radial_return(params, curves, m, state, c, 0, s0, s1, s2, s3, s4, s5,
-                                                       d0, d1, d2, d3, d4, d5, dt)
-        sigma[c, 0, 0] = s0
-        sigma[c, 0, 1] = s1
-        sigma[c, 0, 2] = s2
-        sigma[c, 0, 3] = s3
-        sigma[c, 0, 4] = s4
-        sigma[c, 0, 5] = s5
+        # the material update at the centre (objective rotation, law)
+        s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
+                                     (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
+                                      sigma[c, 0, 5]), (d0, d1, d2, d3, d4, d5), (w23, w13, w12), dt, 0.0)
+        for k in range(6):
+            sigma[c, 0, k] = s_np1[k]
         # end-of-step configuration
         (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
             j00, j01, j02, j10, j11, j12, j20, j21, j22)
@@ -390,16 +333,6 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         if vol <= 0.0:
             bad_cell = c
         plastic_work += vol * wp
-        if beta > 0.0:
-            # stiffness-proportional damping: viscous stress beta C : d
-            sv0, sv1, sv2, sv3, sv4, sv5 = beta * c0, beta * c1, beta * c2, beta * c3, beta * c4, beta * c5
-            damping_power += vol * (sv0 * d0 + sv1 * d1 + sv2 * d2 + 2.0 * (sv3 * d3 + sv4 * d4 + sv5 * d5))
-            s0 += sv0
-            s1 += sv1
-            s2 += sv2
-            s3 += sv3
-            s4 += sv4
-            s5 += sv5
         # hourglass: q^alpha = h^alpha.v - L_end (h^alpha.x), L_end = Jv J^-1, resultants Q^alpha
         e00 = v00 * i00 + v01 * i10 + v02 * i20
         e01 = v00 * i01 + v01 * i11 + v02 * i21
@@ -417,11 +350,11 @@ def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, ho
         # the viscosity's length is LS-DYNA's volume / largest face, sqrt(3) ls for a cube
         pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd,
                             params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
-        if pq > 0.0:
-            viscosity_power -= vol * pq * trd
-            s0 -= pq
-            s1 -= pq
-            s2 -= pq
+        (s0, s1, s2, s3, s4, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
+        damping_power += vol * pd
+        viscosity_power += vol * pv
+        # the stiffness-form resultants turn with the material, like the stress
+        r00, r01, r02, r10, r11, r12, r20, r21, r22 = cayley_matrix(w23, w13, w12, dt)
         if hourglass_form == 1:
             coef = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 8.0
         else:

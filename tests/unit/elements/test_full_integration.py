@@ -6,9 +6,10 @@ from dolfinx import fem, mesh
 
 from shockfem import compat
 from shockfem.model import kinematics as kin
-from shockfem.solver import kernels
+from shockfem.elements import cells as ec, full_integration
+from shockfem.materials import layout
 
-from solver_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
+from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
 
 CASES = [("axisymmetric", mesh.CellType.quadrilateral), ("axisymmetric", mesh.CellType.triangle),
          ("plane-strain", mesh.CellType.quadrilateral), ("3d", mesh.CellType.hexahedron),
@@ -39,8 +40,8 @@ def test_internal_force_matches_ufl_form(kinematics, cell):
     f = np.zeros_like(X)
     cells = np.arange(ncell, dtype=np.int32)
     # dt = 0 and v = 0: the stress stays as given and the kernel only assembles the force
-    sign = kernels.cell_orientation(dofmap, X, dN)
-    kernels.stress_divergence(cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X), 0.0, N, dN, wq,
+    sign = ec.cell_orientation(dofmap, X, dN)
+    full_integration.stress_divergence(cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X), 0.0, N, dN, wq,
                               kin.CODES[kinematics], 0.7, kind, True, _params(), NO_CURVES, NO_STATE, sigma.copy(), f)
     degree = kin.quadrature_degree(m.topology.cell_name(), kinematics)
     Qe = ufl.VectorElement("Quadrature", m.ufl_cell(), degree=degree, dim=6, quad_scheme="default")
@@ -66,9 +67,9 @@ def test_rigid_rotation_rotates_stress_exactly():
     ncell, nq = len(dofmap), len(wq)
     s0 = np.array([100e6, -20e6, 5e6, 7e6, -3e6, 11e6])
     sigma = np.tile(s0, (ncell, nq, 1))
-    kernels.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
-                              kernels.cell_orientation(dofmap, X, dN), x_np1, v, dt,
-                              N, dN, wq, kernels.THREE_D, 1.0, kind, True, _params(), NO_CURVES, NO_STATE, sigma,
+    full_integration.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
+                              ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
+                              N, dN, wq, ec.THREE_D, 1.0, kind, True, _params(), NO_CURVES, NO_STATE, sigma,
                               np.zeros_like(X))
     S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
     S1 = R @ S0 @ R.T
@@ -87,11 +88,11 @@ def test_uniform_stretch_gives_hooke_stress():
     ncell, nq = len(dofmap), len(wq)
     sigma = np.zeros((ncell, nq, 6))
     p = _params()
-    kernels.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
-                              kernels.cell_orientation(dofmap, X, dN), x_np1, v, dt,
-                              N, dN, wq, kernels.PLANE_STRAIN, 1.0, kind, True, p, NO_CURVES, NO_STATE, sigma,
+    full_integration.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
+                              ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
+                              N, dN, wq, ec.PLANE_STRAIN, 1.0, kind, True, p, NO_CURVES, NO_STATE, sigma,
                               np.zeros_like(X))
-    lam, mu = p[0, kernels.P_LAMBDA], p[0, kernels.P_MU]
+    lam, mu = p[0, layout.P_LAMBDA], p[0, layout.P_MU]
     # the mid-step configuration differs from X by dt/2 * v: strain rate exact to O(dt)
     tr = 0.5
     assert np.allclose(sigma[..., 0], dt * (lam * tr + 2 * mu * 1.0), rtol=1e-5)
@@ -101,10 +102,10 @@ def test_uniform_stretch_gives_hooke_stress():
 
 def test_characteristic_length_of_unit_cells():
     sq = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.0]])
-    assert kernels.characteristic_length(sq, 1, 4) == pytest.approx(1 / np.sqrt(2))
+    assert ec.characteristic_length(sq, 1, 4) == pytest.approx(1 / np.sqrt(2))
     tri = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
-    assert kernels.characteristic_length(tri, 0, 3) == pytest.approx(1 / np.sqrt(2))   # smallest altitude
+    assert ec.characteristic_length(tri, 0, 3) == pytest.approx(1 / np.sqrt(2))   # smallest altitude
     cube = np.array([[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], dtype=float)
-    assert kernels.characteristic_length(cube, 3, 8) == pytest.approx(1 / np.sqrt(3))
+    assert ec.characteristic_length(cube, 3, 8) == pytest.approx(1 / np.sqrt(3))
     tet = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0]])
-    assert kernels.characteristic_length(tet, 2, 4) == pytest.approx(1 / np.sqrt(3))
+    assert ec.characteristic_length(tet, 2, 4) == pytest.approx(1 / np.sqrt(3))

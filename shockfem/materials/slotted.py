@@ -11,10 +11,10 @@ and the slots open again:
     closed:  the metal takes the ring's hoop rate, while sigma_tt <= 0
 
 ``slotted_hoop_rate`` returns the metal's hoop rate for one point and keeps how far the slots
-have closed in the point's state (``plasticity.S_SLOT``).  The rest of the step (Hooke, the plastic
-return, viscosities, forces) is the element kernel's, with this rate in place of v_r / r, so the
-stress power sigma : d is the metal's and the open slots do no work.  For a plastic material the
-hoop rate of zero hoop stress is found by the secant method through the plastic return (as
+have closed in the point's state (``layout.S_SLOT``).  ``update.update_stress`` calls it before the
+metal's law (elastic or J2), which then steps with this rate in place of v_r / r, so the stress power
+sigma : d is the metal's and the open slots do no work.  For a plastic material the
+hoop rate of zero hoop stress is found by the secant method through the metal's law (as
 plane-stress shells find their thickness strain), on a copy of the point's state.
 
 Approximations (stated in the run log): the segments are a continuum in hoop (a slot is smeared
@@ -26,39 +26,38 @@ import math
 
 from numba import njit
 
-from .columns import P_LAMBDA, P_MODEL, P_MU, P_SLOT_WIDTH, PLASTIC
-from .kernels import _hooke
-from .plasticity import S_SLOT, STATE_SIZE, radial_return
+from .elastic import hooke
+from .laws import law_update
+from .layout import ELASTIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH, S_SLOT, STATE_SIZE
 
 _SECANT_ITERATIONS = 30
 
-# The plastic return as a called function, not inlined like the element kernels' own call:
-# numba inlines at the IR level, and a second inlined copy here tripled the kernel's compile time.
-_radial_return_call = njit(cache=True, fastmath=True)(radial_return.py_func)
+# The metal's law as a called function, not inlined like ``update_stress``'s own call: numba inlines
+# at the IR level, and a second inlined copy of the plastic return tripled the kernels' compile time.
+_law_update_call = njit(cache=True, fastmath=True)(law_update.py_func)
 
 
 @njit(cache=True, fastmath=True)
-def _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, d2, d3, d4, d5, dt, plastic):
-    """The hoop stress after the step with hoop rate d2 (the point's plastic state left as it was)."""
-    c0, c1, c2, c3, c4, c5 = _hooke(d0, d1, d2, d3, d4, d5, params[m, P_LAMBDA], params[m, P_MU])
-    if not plastic:
-        return s2 + dt * c2
+def _hoop_stress(params, curves, m, state, c, p, s, d, dt):
+    """The hoop stress after the step with strain rate ``d`` (the point's state left as it was)."""
+    if params[m, P_LAW] == ELASTIC:
+        return s[2] + dt * hooke(d, params[m, P_LAMBDA], params[m, P_MU])[2]
     saved = state[c, p].copy()
-    r = _radial_return_call(params, curves, m, state, c, p, s0 + dt * c0, s1 + dt * c1, s2 + dt * c2,
-                            s3 + dt * c3, s4 + dt * c4, s5 + dt * c5, d0, d1, d2, d3, d4, d5, dt)
+    r = _law_update_call(params, curves, m, state, c, p, s, d, dt)[0]
     for k in range(STATE_SIZE):
         state[c, p, k] = saved[k]
     return r[2]
 
 
 @njit(cache=True, fastmath=True)
-def slotted_hoop_rate(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, d2, d3, d4, d5, dt, r):
-    """The hoop strain rate the metal of a slotted ring takes this step, given the ring's d2.
+def slotted_hoop_rate(params, curves, m, state, c, p, s, d, dt, r):
+    """The hoop strain rate the metal of a slotted ring takes this step, given the ring's d[2].
 
-    s0..s5: the point's stress at the start of the step (rotated); d0..d5 its strain rate;
-    r: its radius.  Updates how much the slots have closed, ``state[c, p, S_SLOT]`` [m].
+    s: the point's stress at the start of the step (rotated); d: its strain rate; r: its radius.
+    Updates how much the slots have closed, ``state[c, p, S_SLOT]`` [m].
     """
-    plastic = params[m, P_MODEL] == PLASTIC
+    d0, d1, d2, d3, d4, d5 = d
+    elastic = params[m, P_LAW] == ELASTIC
     width = params[m, P_SLOT_WIDTH]
     closed = state[c, p, S_SLOT]                       # of the slots' total width
     lam = params[m, P_LAMBDA]
@@ -66,20 +65,18 @@ def slotted_hoop_rate(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0
     stiffness = lam + 2.0 * mu
     if dt <= 0.0:                                      # the forces at t = 0: no step, rates only
         return d2 if closed >= width else -lam * (d0 + d1) / stiffness
-    if closed >= width and _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5,
-                                        d0, d1, d2, d3, d4, d5, dt, plastic) <= 0.0:
+    if closed >= width and _hoop_stress(params, curves, m, state, c, p, s, d, dt) <= 0.0:
         return d2                                      # closed, and staying in compression
     # open: the hoop rate of zero hoop stress (exact for an elastic material)
-    x0 = -(s2 / dt + lam * (d0 + d1)) / stiffness
-    if plastic:
-        f0 = _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, x0, d3, d4, d5, dt, True)
-        scale = abs(s0) + abs(s1) + abs(s5) + abs(s3) + abs(s4) + 1e-6 * mu
+    x0 = -(s[2] / dt + lam * (d0 + d1)) / stiffness
+    if not elastic:
+        f0 = _hoop_stress(params, curves, m, state, c, p, s, (d0, d1, x0, d3, d4, d5), dt)
+        scale = abs(s[0]) + abs(s[1]) + abs(s[5]) + abs(s[3]) + abs(s[4]) + 1e-6 * mu
         x1 = x0 - f0 / (dt * stiffness)
         for _ in range(_SECANT_ITERATIONS):
             if abs(f0) <= 1e-10 * scale:
                 break
-            f1 = _hoop_stress(params, curves, m, state, c, p, s0, s1, s2, s3, s4, s5, d0, d1, x1, d3, d4, d5, dt,
-                              True)
+            f1 = _hoop_stress(params, curves, m, state, c, p, s, (d0, d1, x1, d3, d4, d5), dt)
             if f1 == f0:
                 x0, f0 = x1, f1
                 break

@@ -1,39 +1,15 @@
-"""Verification cases of the foundation: each returns a list of checks.
-
-A check is ``{name, reference, result, error, tolerance, passed, wall_time_s, elements}``;
-``error`` is relative unless the check's name says otherwise.  Tolerances carry a comment
-saying where they come from.
-"""
+"""Verification cases of the foundation (free flight, waves, vibration, damping, parallel agreement):
+each returns a list of checks (``checks.py``)."""
 from __future__ import annotations
 
-import json
 import math
-import os
-import shutil
-import subprocess
-import sys
 
 import numpy as np
 from mpi4py import MPI
 
-from ..output.history import read_history_csv
+from .checks import SIZES, check, element_count, parallel_agreement
 from .scenes import (dominant_frequency, end_nodes, rayleigh_love_f1, resample, rod_scene, solve, steel_c0,
                      STEEL)
-from .toml_writer import dumps
-
-# Element size of the rods per verification size [m].
-SIZES = {"coarse": 2.0, "default": 1.0, "fine": 0.5}
-
-
-def check(name, reference, result, tolerance, wall, elements, absolute=False):
-    error = abs(result - reference) if absolute else abs(result - reference) / abs(reference)
-    return {"name": name, "reference": float(reference), "result": float(result), "error": float(error),
-            "tolerance": float(tolerance), "passed": bool(error <= tolerance), "wall_time_s": float(wall),
-            "elements": int(elements)}
-
-
-def _elements(solver):
-    return solver.model.num_cells_global
 
 
 def free_flight(size, workdir):
@@ -48,9 +24,9 @@ def free_flight(size, workdir):
         err_u = np.abs(solver.u[solver.owned] - np.asarray(v0) * solver.t).max()
         # round-off only: a body in free flight carries no stress, so nothing should change
         out.append(check(f"free_flight.{kin}.velocity [m/s, abs]", 0.0, err_v, 1e-9, wall,
-                         _elements(solver), absolute=True))
+                         element_count(solver), absolute=True))
         out.append(check(f"free_flight.{kin}.displacement [m, abs]", 0.0, err_u, 1e-12, wall,
-                         _elements(solver), absolute=True))
+                         element_count(solver), absolute=True))
     return out
 
 
@@ -83,10 +59,10 @@ def bar_wave(size, workdir):
     rho = STEEL["density"]
     return [
         # dispersion of the discrete wave smears the front over a few elements: 2% at h = L/800
-        check("bar_wave.front_speed [m/s]", c0, speed, 0.02, wall, _elements(solver)),
+        check("bar_wave.front_speed [m/s]", c0, speed, 0.02, wall, element_count(solver)),
         # the plateau behind the front is uniaxial stress, exact in 1D theory; lateral inertia
         # of a slender bar (R/L = 1/200) changes it by far less than 1%
-        check("bar_wave.stress [Pa]", -rho * c0 * 1.0, plateau, 0.01, wall, _elements(solver)),
+        check("bar_wave.stress [Pa]", -rho * c0 * 1.0, plateau, 0.01, wall, element_count(solver)),
     ]
 
 
@@ -123,7 +99,7 @@ def free_free_frequency(size, workdir):
     f = dominant_frequency(tg, yg)
     # spectral resolution after 6 periods with zero padding and interpolation is ~0.1%;
     # the discretisation (80 elements along L at default size) is ~0.1% low
-    return [check("free_free.f1 [Hz]", f_ref, f, 0.01, wall, _elements(solver))]
+    return [check("free_free.f1 [Hz]", f_ref, f, 0.01, wall, element_count(solver))]
 
 
 def energy_conservation(size, workdir):
@@ -142,7 +118,7 @@ def energy_conservation(size, workdir):
 
     solver, wall = solve(raw, initial_velocity=field)
     return [check("energy.balance_error [-, abs]", 0.0, solver.energy.balance_error, 0.005, wall,
-                  _elements(solver), absolute=True)]
+                  element_count(solver), absolute=True)]
 
 
 def rayleigh_damping(size, workdir):
@@ -155,7 +131,7 @@ def rayleigh_damping(size, workdir):
     # 10% is the issue's tolerance; higher modes excited by the lumped-mass discretisation
     # decay faster (stiffness part) and perturb the peaks slightly
     return [check("rayleigh.damping_ratio [-]", zeta, _damping_ratio(t, y, solver.dt), 0.10, wall,
-                  _elements(solver))]
+                  element_count(solver))]
 
 
 def _damping_ratio(t, y, dt) -> float:
@@ -204,7 +180,7 @@ def body_damping(size, workdir):
     solver, wall = solve(raw, initial_velocity=field, probe=probe)
     t = np.array(times)
     return [check(f"body_damping.{name}_ratio [-]", zeta, _damping_ratio(t, np.array(y), solver.dt), 0.10, wall,
-                  _elements(solver)) for name, y in stretch.items()]
+                  element_count(solver)) for name, y in stretch.items()]
 
 
 def axisymmetric_vs_3d(size, workdir):
@@ -215,8 +191,8 @@ def axisymmetric_vs_3d(size, workdir):
     s3, w3, p3, c3 = bar_step("3d", "coarse" if size == "coarse" else size, radius=0.004, length=0.2)
     # the two kinematics discretise the same 1D-like problem; their plateau stresses
     # and front speeds differ by discretisation only (issue tolerance 2%)
-    out.append(check("axisym_vs_3d.stress [Pa]", pa, p3, 0.02, wa + w3, _elements(s3)))
-    out.append(check("axisym_vs_3d.front_speed [m/s]", ca, c3, 0.02, wa + w3, _elements(s3)))
+    out.append(check("axisym_vs_3d.stress [Pa]", pa, p3, 0.02, wa + w3, element_count(s3)))
+    out.append(check("axisym_vs_3d.front_speed [m/s]", ca, c3, 0.02, wa + w3, element_count(s3)))
     out.append(_parallel_check(size, workdir))
     return out
 
@@ -227,89 +203,3 @@ def _parallel_check(size, workdir):
                     end_time=4e-5, boundary=[{"region": "rod.bottom", "type": "velocity",
                                               "direction": "z", "value": 2.0}])
     return parallel_agreement(raw, "parallel.np2_vs_np1", workdir, ["rod.v_z", "energy.internal"])
-
-
-def parallel_agreement(raw: dict, name: str, workdir: str, columns: list[str]):
-    """Run a raw scene with 1 and 2 MPI processes (``shockfem run``); the largest difference of the
-    history ``columns``, each relative to its own largest magnitude, must be round-off."""
-    path = os.path.join(workdir, f"{raw['scene']['name']}.toml")
-    os.makedirs(workdir, exist_ok=True)
-    with open(path, "w") as fh:
-        fh.write(dumps(raw))
-    mpirun = shutil.which("mpirun")
-    exe = [sys.executable, "-m", "shockfem", "run", path, "--no-progress", "--no-fields"]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_rmaps_base_oversubscribe="1")
-    results = {}
-    wall = 0.0
-    for n in (1, 2):
-        out = os.path.join(workdir, f"{raw['scene']['name']}_np{n}")
-        cmd = exe + ["--out", out]
-        if n > 1:
-            if mpirun is None:
-                return {"name": name, "reference": 0.0, "result": float("nan"),
-                        "error": float("nan"), "tolerance": 1e-9, "passed": False, "wall_time_s": 0.0,
-                        "elements": 0, "note": "mpirun not found (apt-get install openmpi-bin)"}
-            cmd = [mpirun, "-n", str(n)] + cmd
-        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=900)
-        if proc.returncode != 0:
-            raise RuntimeError(f"parallel run with {n} process(es) failed:\n{proc.stderr[-2000:]}")
-        results[n] = read_history_csv(os.path.join(out, "history.csv"))
-        with open(os.path.join(out, "summary.json")) as fh:
-            summary = json.load(fh)
-        wall += summary["wall_time_s"]
-    a, b = results[1], results[2]
-    diff = max(np.abs(a[c] - b[c]).max() / max(np.abs(a[c]).max(), 1e-30) for c in columns)
-    # same arithmetic up to the order of floating-point sums across ranks
-    return check(f"{name} [-, abs]", 0.0, diff, 1e-9, wall, summary["elements"], absolute=True)
-
-
-from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_rod_3d,  # noqa: E402
-                            rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)  # (they use check and SIZES above)
-from .spring_cases import spring_oscillator  # noqa: E402
-from .material_point import material_point  # noqa: E402
-from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d, taylor_bar_full  # noqa: E402
-from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine  # noqa: E402
-from .modal_cases import circular_plate, modal_rod, nafems_fv12  # noqa: E402
-from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid  # noqa: E402
-from .launcher_cases import launcher_design, launcher_model  # noqa: E402
-from .slotted_cases import slotted_ring  # noqa: E402
-
-CASES = {
-    "free_flight": free_flight,
-    "bar_wave": bar_wave,
-    "free_free_frequency": free_free_frequency,
-    "energy_conservation": energy_conservation,
-    "axisymmetric_vs_3d": axisymmetric_vs_3d,
-    "rayleigh_damping": rayleigh_damping,
-    "body_damping": body_damping,
-    "rod_on_rod": rod_on_rod,
-    "rod_on_wall": rod_on_wall,
-    "unequal_rods": unequal_rods,
-    "thick_rods": thick_rods,
-    "hertz_spheres": hertz_spheres,
-    "rod_on_rod_3d": rod_on_rod_3d,
-    "contact_parallel": contact_parallel,
-    "spring_oscillator": spring_oscillator,
-    "sliding_block": sliding_block,
-    "tunnel_slide": tunnel_slide,
-    "material_point": material_point,
-    "plastic_wave": plastic_wave,
-    "taylor_bar": taylor_bar,
-    "taylor_bar_full": taylor_bar_full,
-    "slotted_ring": slotted_ring,
-    "taylor_bar_3d": taylor_bar_3d,
-    "cfc_filter": cfc_filter,
-    "srs_half_sine": srs_half_sine,
-    "pulse_shapes": pulse_shapes,
-    "rod_impact_metrics": rod_impact_metrics,
-    "modal_rod": modal_rod,
-    "nafems_fv12": nafems_fv12,
-    "circular_plate": circular_plate,
-    "amplifier_rigid": amplifier_rigid,
-    "amplifier_1d": amplifier_1d,
-    "amplifier_pads": amplifier_pads,
-    "launcher_model": launcher_model,
-    "launcher_design": launcher_design,
-}
-

@@ -3,7 +3,8 @@
 A part is described by its dimensions (``Param``), checked as a whole (``check``: a bore
 wider than the part, a chamfer longer than the radius...), drawn from its (r, z) outline
 (``profiles.Profile``) in axisymmetric form or revolved in 3D, with 3D-only features cut
-afterwards (``cut_3d``: the split cone's slots, the dashpot's orifice).  ``volume`` is the
+afterwards (``cut_3d``: the split cone's slots, the dashpot's orifice); the drawing is gmsh's
+and lives in ``geometry/outline.py``: this module is pure geometry.  ``volume`` is the
 textbook volume of the part, written out independently of the outline so that the meshed
 volume checks both the drawing and the mesh.
 
@@ -37,7 +38,7 @@ class Part:
     profile: Callable[[dict], Profile]
     volume: Callable[[dict, int], float]            # (dims, gdim): 3D volume of what is drawn
     check: Callable[[dict], list[tuple[str, str]]] = lambda d: []
-    cut_3d: Callable[[dict, list[int], tuple], list[int]] | None = None     # (dims, volumes, origin)
+    cut_3d: str | None = None         # a 3D-only feature ``geometry/outline.py`` cuts (CUTS_3D)
     cut_region: str = "cut"
     regions_3d_only: tuple[str, ...] = ()
     # (dims, gdim): what the drawn part leaves out of the real one, said in the run log
@@ -208,24 +209,6 @@ def _split_cone_check(d):
     return out
 
 
-def _split_cone_slots(d, volumes, origin):
-    """Cut ``segments`` axial slots of ``slot_width`` through the wall, the whole length."""
-    import gmsh
-    occ = gmsh.model.occ
-    n, w = int(d["segments"]), d["slot_width"]
-    if n < 2:
-        return volumes
-    Ro, L = d["outer_radius"], d["length"]
-    tools = []
-    for k in range(n):
-        box = occ.addBox(origin[0], origin[1] - 0.5 * w, origin[2] - 0.1 * L, 1.5 * Ro, w, 1.2 * L)
-        occ.rotate([(3, box)], *origin, 0, 0, 1, 2 * math.pi * k / n)
-        tools.append((3, box))
-    out, _ = occ.cut([(3, v) for v in volumes], tools)
-    occ.synchronize()
-    return [t for dim, t in out if dim == 3]
-
-
 def _clamp_ring_profile(d):
     return _tube_profile({"inner_radius": d["inner_radius"], "outer_radius": d["inner_radius"] + d["thickness"],
                           "length": d["length"]})
@@ -282,21 +265,6 @@ def _dashpot_check(d):
     if ro >= a:
         out.append(("orifice_radius", f"must be smaller than the cavity_radius {a:g} m, got {ro:g} m"))
     return out
-
-
-def _dashpot_orifice(d, volumes, origin):
-    """Drill the orifice: a round hole at r = cavity_centre_radius from the top face into the cavity."""
-    import gmsh
-    occ = gmsh.model.occ
-    ro = d["orifice_radius"]
-    if not ro:
-        return volumes
-    L = d["length"]
-    zc = d["cavity_height"] or 0.5 * L
-    hole = occ.addCylinder(origin[0] + d["cavity_centre_radius"], origin[1], origin[2] + zc, 0.0, 0.0, 1.1 * L - zc, ro)
-    out, _ = occ.cut([(3, v) for v in volumes], [(3, hole)])
-    occ.synchronize()
-    return [t for dim, t in out if dim == 3]
 
 
 # ---------------------------------------------------------------------------- projectile, carrier
@@ -420,7 +388,7 @@ PARTS: dict[str, Part] = {p.name: p for p in [
     Part("plate", "thick circular plate (a rectangular plate is shape = 'box' in 3D)",
          (P("radius", "radius"), P("thickness", "thickness")),
          _plate_profile, lambda d, g: math.pi * d["radius"] ** 2 * d["thickness"]),
-    Part("sphere", "sphere, bottom pole at z = 0",
+    Part("sphere", "sphere, bottom pole at the body's position (its centre one radius above)",
          (P("radius", "radius"),
           P("pole_element_size", "element size at the poles, axisymmetric (0: element_size)", 0.0,
             minimum="nonnegative")),
@@ -430,7 +398,7 @@ PARTS: dict[str, Part] = {p.name: p for p in [
          (P("outer_radius", "outer radius"), P("length", "length"), P("entry_radius", "bore radius at the top"),
           P("exit_radius", "bore radius at the bottom"), P("segments", "number of segments (3D; a hoop law in axisymmetry)", 4, "count"),
           P("slot_width", "width of the axial slots", 0.001)),
-         _split_cone_profile, _split_cone_volume, _split_cone_check, _split_cone_slots, "slots", ("slots",),
+         _split_cone_profile, _split_cone_volume, _split_cone_check, "slots", "slots", ("slots",),
          lambda d, g: [f"slots in axisymmetry as a slotted-ring hoop law: the {d['segments']:g} segments carry no "
                        f"hoop stress until their slots ({d['segments']:g} x {d['slot_width'] * 1e3:.3g} mm) close, "
                        "then bear as one ring in hoop compression; a segment's own bending as an arch is not "
@@ -451,7 +419,7 @@ PARTS: dict[str, Part] = {p.name: p for p in [
           P("cavity_centre_radius", "radius at which the cavity's section is centred"),
           P("cavity_height", "height of the cavity's centre (0: mid-length)", 0.0, minimum="nonnegative"),
           P("orifice_radius", "radius of the orifice (3D; 0: none)", 0.0, minimum="nonnegative")),
-         _dashpot_profile, _dashpot_volume, _dashpot_check, _dashpot_orifice, "orifice", ("orifice",),
+         _dashpot_profile, _dashpot_volume, _dashpot_check, "orifice", "orifice", ("orifice",),
          lambda d, g: ["no orifice in axisymmetry (a hole off the axis is not axisymmetric)"]
          if g == 2 and d["orifice_radius"] > 0 else []),
     Part("projectile", "penetrator: tangent-ogive nose of crh calibre-radius-head, blunted by a small flat "
@@ -472,16 +440,3 @@ PARTS: dict[str, Part] = {p.name: p for p in [
                                                    * d["seat_depth"]),
          _carrier_check),
 ]}
-
-
-def draw(part: Part, dims: dict, gdim: int, origin=(0.0, 0.0, 0.0)):
-    """Draw the part in the current gmsh model, its bottom centre at ``origin``:
-    (entities, {region: boundary tags})."""
-    from .profiles import classify_faces, draw_profile
-    profile = part.profile(dims)
-    profile.cut_region = part.cut_region
-    entities, regions = draw_profile(profile, gdim, origin)
-    if gdim == 3 and part.cut_3d is not None:
-        entities = part.cut_3d(dims, entities, origin)
-        regions = classify_faces(profile, entities, origin)
-    return entities, regions

@@ -1,5 +1,6 @@
 """Structured meshes of the plain shapes, drawn with gmsh's built-in kernel, one function per shape
-(every other part, and these with local refinement, comes from its outline in ``catalog``).
+(every other part, and these with local refinement, comes from its outline in ``parts.catalog``,
+drawn by ``outline.py``).
 
 Each function adds one body to the current gmsh model and returns
 ``(entities, regions)``: the tags of its top-dimensional entities and, for every named
@@ -107,11 +108,12 @@ def box_3d(dims, position, size, hexes):
 
 
 def sphere_2d(dims, position, size, quads):
-    """Axisymmetric sphere: the half disc r >= 0 of radius R centred at (0, z0), meshed with
-    unstructured quads graded from ``pole_element_size`` at the two poles (where spheres strike)
-    to ``size`` at the equator."""
+    """Axisymmetric sphere: the half disc r >= 0 of radius R with its bottom pole at the body's
+    position (the catalogue's definition: centre at z0 = z + R), meshed with unstructured quads graded
+    from ``pole_element_size`` at the two poles (where spheres strike) to ``size`` at the equator."""
     geo = gmsh.model.geo
-    R, z0 = dims["radius"], position[1]
+    R = dims["radius"]
+    z0 = position[1] + R
     h_pole = dims.get("pole_element_size", size) or size
     south = geo.addPoint(0.0, z0 - R, 0.0, h_pole)
     north = geo.addPoint(0.0, z0 + R, 0.0, h_pole)
@@ -138,7 +140,7 @@ SHAPED_ENDS = ("bottom_chamfer", "top_chamfer", "bottom_crown", "top_crown")
 def structured_builder(body, gdim: int):
     """(builder, dims) of the structured mesh for a plain shape (flat-ended cylinder, plate, box,
     axisymmetric sphere) with no local refinement, or None: the part is then drawn from its
-    outline (``catalog``), unstructured."""
+    outline (``parts.catalog``, ``outline.py``), unstructured."""
     d = body.dims
     if body.shape == "box":
         return BUILDERS[("box", gdim)], d

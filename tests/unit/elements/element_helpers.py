@@ -3,11 +3,11 @@ import numpy as np
 from dolfinx import mesh
 from mpi4py import MPI
 
-from shockfem.solver import kernels, plasticity
+from shockfem.materials import layout
 
 # elastic materials read neither hardening curves nor plastic state: one-entry stubs
 NO_CURVES = np.zeros((1, 1, 2))
-NO_STATE = np.zeros((1, 1, plasticity.STATE_SIZE))
+NO_STATE = np.zeros((1, 1, layout.STATE_SIZE))
 
 
 def distorted_mesh(kinematics, cell):
@@ -24,8 +24,8 @@ def distorted_mesh(kinematics, cell):
 
 
 def steel_params(E=200e9, nu=0.3, rho=7800.0, beta=0.0):
-    p = np.zeros((1, kernels.NUM_PARAMS))
+    p = np.zeros((1, layout.NUM_PARAMS))
     lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
-    p[0, [kernels.P_RHO, kernels.P_LAMBDA, kernels.P_MU, kernels.P_WAVE_SPEED, kernels.P_BETA]] = \
+    p[0, [layout.P_RHO, layout.P_LAMBDA, layout.P_MU, layout.P_WAVE_SPEED, layout.P_BETA]] = \
         [rho, lam, mu, np.sqrt((lam + 2 * mu) / rho), beta]
     return p

@@ -1,0 +1,9 @@
+"""Element kernels: one compiled pass over the cells computes the strain rate, calls the material
+update (``shockfem.materials``) and assembles the internal force.
+
+* ``cells.py``: kinematics codes, shape-function gradients, characteristic lengths, orientation;
+* ``full_integration.py``: any P1 cell at its Gauss points (``stress_divergence``);
+* ``one_point.py``: reduced quads and hexes with hourglass control.
+
+This package imports only ``shockfem.materials``: no model, scene, contact or geometry code.
+"""

@@ -1,0 +1,29 @@
+"""Linear isotropic elasticity (hypoelastic in the objective frame): the stress rate C : d.
+
+    C : d = lambda tr(d) I + 2 mu d
+
+The one place of Hooke's law: the elastic law, the elastic trial step of J2 plasticity, the slotted
+ring's zero-hoop-stress rate and (times beta) the viscous stress of stiffness-proportional damping.
+"""
+from __future__ import annotations
+
+from numba import njit
+
+from .layout import P_LAMBDA, P_MU
+
+
+@njit(cache=True, fastmath=True)
+def hooke(d, lam, mu):
+    """C : d for a symmetric d given and returned as (11, 22, 33, 23, 13, 12)."""
+    d0, d1, d2, d3, d4, d5 = d
+    ltr = lam * (d0 + d1 + d2)
+    return (ltr + 2.0 * mu * d0, ltr + 2.0 * mu * d1, ltr + 2.0 * mu * d2,
+            2.0 * mu * d3, 2.0 * mu * d4, 2.0 * mu * d5)
+
+
+@njit(cache=True, fastmath=True)
+def elastic_update(row, s, d, dt):
+    """The elastic law over one step in the rotated frame: sigma + dt C : d with the constants of the
+    parameter ``row``; no plastic work."""
+    c0, c1, c2, c3, c4, c5 = hooke(d, row[P_LAMBDA], row[P_MU])
+    return (s[0] + dt * c0, s[1] + dt * c1, s[2] + dt * c2, s[3] + dt * c3, s[4] + dt * c4, s[5] + dt * c5), 0.0

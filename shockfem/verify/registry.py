@@ -1,0 +1,59 @@
+"""The registry of verification cases: name -> function(size, workdir) -> list of checks.
+
+``shockfem verify`` runs them by name; each lives in the module of its topic and imports only the
+shared helpers of ``checks.py`` and ``scenes.py``, never this registry.
+"""
+from __future__ import annotations
+
+from .foundation_cases import (axisymmetric_vs_3d, bar_wave, body_damping, energy_conservation, free_flight,
+                               free_free_frequency, rayleigh_damping)
+from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_rod_3d,
+                            rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)
+from .spring_cases import spring_oscillator
+from .material_point import material_point
+from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d, taylor_bar_full
+from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine
+from .modal_cases import circular_plate, modal_rod, nafems_fv12
+from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
+from .launcher_cases import launcher_design, launcher_model
+from .slotted_cases import slotted_ring
+
+
+CASES = {
+    "free_flight": free_flight,
+    "bar_wave": bar_wave,
+    "free_free_frequency": free_free_frequency,
+    "energy_conservation": energy_conservation,
+    "axisymmetric_vs_3d": axisymmetric_vs_3d,
+    "rayleigh_damping": rayleigh_damping,
+    "body_damping": body_damping,
+    "rod_on_rod": rod_on_rod,
+    "rod_on_wall": rod_on_wall,
+    "unequal_rods": unequal_rods,
+    "thick_rods": thick_rods,
+    "hertz_spheres": hertz_spheres,
+    "rod_on_rod_3d": rod_on_rod_3d,
+    "contact_parallel": contact_parallel,
+    "spring_oscillator": spring_oscillator,
+    "sliding_block": sliding_block,
+    "tunnel_slide": tunnel_slide,
+    "material_point": material_point,
+    "plastic_wave": plastic_wave,
+    "taylor_bar": taylor_bar,
+    "taylor_bar_full": taylor_bar_full,
+    "slotted_ring": slotted_ring,
+    "taylor_bar_3d": taylor_bar_3d,
+    "cfc_filter": cfc_filter,
+    "srs_half_sine": srs_half_sine,
+    "pulse_shapes": pulse_shapes,
+    "rod_impact_metrics": rod_impact_metrics,
+    "modal_rod": modal_rod,
+    "nafems_fv12": nafems_fv12,
+    "circular_plate": circular_plate,
+    "amplifier_rigid": amplifier_rigid,
+    "amplifier_1d": amplifier_1d,
+    "amplifier_pads": amplifier_pads,
+    "launcher_model": launcher_model,
+    "launcher_design": launcher_design,
+}
+

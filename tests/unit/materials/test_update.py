@@ -1,0 +1,76 @@
+"""The one material update (``materials.update.update_stress``) at a point, against closed forms:
+Hooke's law, the objective rotation, perfect plasticity, and every registered law reachable."""
+import math
+
+import numpy as np
+import pytest
+
+from shockfem.materials.laws import LAWS
+from shockfem.materials.layout import P_LAW, S_EPS, STATE_SIZE
+from shockfem.materials.update import update_stress
+from shockfem.model.materials import law_of, parameter_table
+from shockfem.verify.material_point import material
+
+STEEL = {"density": 7850.0, "youngs_modulus": 210e9, "poisson_ratio": 0.3}
+E, NU = 210e9, 0.3
+LAM, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+ZERO = (0.0,) * 6
+
+
+def _point(fields):
+    params, curves = parameter_table([material(fields)], None, (0.0, 0.0))
+    return params, curves, np.zeros((1, 1, STATE_SIZE))
+
+
+def _step(point, s, d, w=(0.0, 0.0, 0.0), dt=1e-6):
+    params, curves, state = point
+    return update_stress(params, curves, 0, state, 0, 0, tuple(map(float, s)), tuple(map(float, d)),
+                         tuple(map(float, w)), dt, 0.0)
+
+
+def test_elastic_step_is_hookes_law():
+    s, d, work = _step(_point(STEEL), ZERO, (1.0, 0, 0, 0, 0, 0.5), dt=1e-6)
+    # C : d = lam tr(d) I + 2 mu d, times dt; the shear component is the tensor one (d_12 = 0.5)
+    expected = np.array([LAM + 2 * MU, LAM, LAM, 0.0, 0.0, 2 * MU * 0.5]) * 1e-6
+    assert np.allclose(s, expected, rtol=1e-14, atol=0.0)
+    assert work == 0.0 and d == (1.0, 0.0, 0.0, 0.0, 0.0, 0.5)
+
+
+def test_spin_turns_the_stress_without_changing_it():
+    """A pure spin W12 over one step turns sigma by the Cayley angle 2 atan(W12 dt / 2) about 3."""
+    s0 = (100e6, -20e6, 5e6, 0.0, 0.0, 30e6)
+    spin, dt = 2e5, 1e-6
+    s, _, _ = _step(_point(STEEL), s0, ZERO, (0.0, 0.0, spin), dt)
+    a = 2 * math.atan(0.5 * spin * dt)
+    R = np.array([[math.cos(a), math.sin(a), 0], [-math.sin(a), math.cos(a), 0], [0, 0, 1]])
+    S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
+    S1 = R @ S0 @ R.T
+    assert np.allclose(s, [S1[0, 0], S1[1, 1], S1[2, 2], S1[1, 2], S1[0, 2], S1[0, 1]], rtol=0, atol=1e-6)
+
+
+def test_perfect_plasticity_returns_to_the_yield_stress():
+    """Isochoric shear far past yield (d_12 only): the von Mises stress is the yield stress (a one-
+    point curve is perfectly plastic), and the step's plastic work is sigma_y times the plastic
+    strain increment."""
+    sy = 300e6
+    point = _point({**STEEL, "yield_stress": sy})
+    s, total = ZERO, 0.0
+    for _ in range(40):
+        s, _, work = _step(point, s, (0, 0, 0, 0, 0, 100.0), dt=1e-6)
+        total += work
+    vm = math.sqrt(1.5 * (sum((c - sum(s[:3]) / 3) ** 2 for c in s[:3]) + 2 * sum(c * c for c in s[3:])))
+    assert vm == pytest.approx(sy, rel=1e-10)
+    eps_p = point[2][0, 0, S_EPS]
+    assert eps_p > 0 and total == pytest.approx(sy * eps_p, rel=1e-9)
+
+
+@pytest.mark.parametrize("name", sorted(LAWS))
+def test_every_registered_law_runs_through_the_update(name):
+    """Each law of the registry has a unique id, a material that selects it, and gives a finite stress."""
+    fields = {"elastic": STEEL, "j2": {**STEEL, "yield_stress": 300e6}}[name]
+    assert law_of(material(fields)) == name
+    point = _point(fields)
+    assert point[0][0, P_LAW] == LAWS[name].id
+    s, _, _ = _step(point, ZERO, (1e3, -300.0, -300.0, 0, 0, 0))
+    assert np.all(np.isfinite(s)) and s[0] > 0
+    assert len({law.id for law in LAWS.values()}) == len(LAWS)
