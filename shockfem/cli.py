@@ -152,7 +152,7 @@ def _dispatch(args) -> int:
             return EXIT_OK
         if args.fidelity:
             raise ModelError("--fidelity: only a chain scene (a [chain] table) runs at a chosen fidelity")
-        from .run import run_scene
+        from .runner import run_scene
         scene = _scene(args)
         out = args.out or os.path.join("results", scene.name)
         run_scene(scene, out, progress=not args.no_progress, write_fields=not args.no_fields)

@@ -44,7 +44,7 @@ the fidelity has one, and the peak interface stress against each material's yiel
   estimate F = dv Z_a Z_b / (Z_a + Z_b), Z = rho c0 A, over the smaller face.
 * ``1d``: ``bars.py``, each body a uniform bar of its length and its volume / length section;
   restitution emerges from the waves; interface stress from the low-passed contact force.
-* ``axisymmetric`` / ``3d``: the finite-element solver (``run.py``) on the bodies stacked along
+* ``axisymmetric`` / ``3d``: the finite-element solver (``runner.py``) on the bodies stacked along
   z, contact between neighbours, the same damping (stiffness-proportional, each body's own);
   von Mises peaks against yield.
 """
@@ -470,7 +470,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         stress = dict(r.interface_stress)
         stress_kind = "peak contact force (low-passed over 4 element transits) over the smaller face"
     else:
-        from ..run import run_scene
+        from ..runner import run_scene
         scene = resolve(fe_scene(raw, spec, spec.fidelity, heights, end_time,
                                  frequencies=first_frequencies(scene, heights), masses=masses))
         res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress)

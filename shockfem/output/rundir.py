@@ -17,7 +17,8 @@ import subprocess
 import sys
 import time
 
-from .. import __version__, compat
+from .. import compat
+from ..version import __version__
 from ..scene import Scene, to_plain
 
 

@@ -28,7 +28,7 @@ from ..metrics.pulse import pulse_metrics
 from ..metrics.signals import acceleration_from_velocity
 from ..metrics.stages import stage_table
 from ..output.history import read_history_csv
-from ..run import run_scene
+from ..runner import run_scene
 from ..scene import resolve
 from .checks import SIZES, check
 from .contact_cases import RADIUS, SPEED

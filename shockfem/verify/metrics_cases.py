@@ -146,7 +146,7 @@ RADIUS, LENGTH, SPEED, GAP = 0.0025, 0.1, 1.0, 1e-5
 
 def rod_impact_metrics(size, workdir):
     """Rod on rod through `shockfem run`: stage table, restitution and the struck rod's pulse vs 1D theory."""
-    from ..run import run_scene
+    from ..runner import run_scene
     from ..scene import resolve
     c0 = steel_c0()
     h = 0.00025 * SIZES[size]          # as rod_on_rod

@@ -187,7 +187,7 @@ def test_payload_is_carried_in_the_projectile_cavity(tmp_path):
     the cavity's impulse on the payload is the momentum the payload loses (each to 0.5%: the
     impulses are trapezoid sums of the recorded forces); the payload stays in the cavity."""
     import json
-    from shockfem.run import run_scene
+    from shockfem.runner import run_scene
     path = next(p for p in GALLERY if p.endswith("projectile_payload.toml"))
     run_scene(_load(path), str(tmp_path / "run"), progress=False, quiet=True)
     s = json.loads((tmp_path / "run" / "summary.json").read_text())

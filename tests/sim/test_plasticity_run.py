@@ -9,7 +9,7 @@ import pytest
 
 from shockfem.errors import UnstableRun
 from shockfem.output.history import read_history_csv
-from shockfem.run import run_scene
+from shockfem.runner import run_scene
 from shockfem.scene import resolve
 from shockfem.verify.plasticity_cases import TAYLOR, taylor_scene
 

@@ -25,7 +25,7 @@ LAYERS = [
     {"solver"},
     {"output"},
     {"metrics"},
-    {"run"},
+    {"runner"},
     {"modal", "launcher", "amplifier"},
     {"verify", "study", "bench"},
     {"api", "cli", "__main__", "__init__"},
@@ -102,8 +102,8 @@ from ..materials.layout import P_MU
 import shockfem.solver.explicit
 
 def later():
-    from .. import run
+    from .. import runner
 """
     found = upward_imports(source, "shockfem.elements.fake")
     assert [f.split(" imports ")[1] for f in found] == ["shockfem.model (model)", "shockfem.solver.explicit (solver)",
-                                                        "shockfem.run (run)"]
+                                                        "shockfem.runner (runner)"]
