@@ -1,10 +1,12 @@
-"""Matplotlib for figures saved to files, set up when the first figure is made (not on import).
+"""Matplotlib and pyvista for pictures saved to files, set up when the first one is made (not on import).
 
 * The Agg backend, unless the user chose one (``MPLBACKEND``) or has pyplot loaded already
   (a notebook keeps its own).
 * Without the "Unable to import Axes3D" warning matplotlib prints when Debian's python3-matplotlib
   sits beside the venv's (installing ParaView brings it): shockfem draws no 3D axes, and a user can
-  do nothing about the warning.
+  do nothing about the warning.  pyvista imports matplotlib too.
+* Without VTK's "bad X server connection" log line on a machine with no display: pyvista renders
+  off screen there and the picture is written all the same.
 """
 from __future__ import annotations
 
@@ -22,6 +24,16 @@ def pyplot():
         warnings.filterwarnings("ignore", message="Unable to import Axes3D")
         import matplotlib.pyplot as plt
     return plt
+
+
+def pyvista():
+    """``pyvista``, ready to render off screen to files."""
+    pyplot()                        # pyvista imports matplotlib: set it up (and quiet) first
+    import pyvista as pv
+    import vtk
+    if not os.environ.get("DISPLAY"):
+        vtk.vtkLogger.SetStderrVerbosity(vtk.vtkLogger.VERBOSITY_OFF)
+    return pv
 
 
 def save(fig, path: str) -> str:

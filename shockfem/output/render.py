@@ -3,10 +3,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from .figures import pyvista
+
 
 def _grid(meshed):
-    import pyvista as pv
     from dolfinx import plot
+    pv = pyvista()
     topology, cell_types, x = plot.create_vtk_mesh(meshed.mesh)
     grid = pv.UnstructuredGrid(topology, cell_types, x)
     body = np.zeros(grid.n_cells, dtype=np.int32)
@@ -18,7 +20,7 @@ def _grid(meshed):
 def render_mesh(meshed, path: str, title: str = "", cut: bool = True):
     """A PNG of the mesh with its element edges, coloured by body; 3D meshes are cut open along
     two half planes through the axis (a quarter removed) to show bores and cavities."""
-    import pyvista as pv
+    pv = pyvista()
     grid = _grid(meshed)
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
     if meshed.mesh.geometry.dim == 3 and cut:
