@@ -11,6 +11,7 @@ import os
 import sys
 
 from .errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_UNSTABLE, ModelError, UnstableRun
+from .units import LB
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -285,15 +286,14 @@ def _amplifier(args) -> int:
     d.sizes = [cylinder_size(m, rho, args.aspect) for m in d.masses]
     run = (rigid.launched_chain(d.masses, values["launch"], args.restitution) if args.architecture == "launched-chain"
            else rigid.stack_on_anvil(d.masses, values["launch"], args.restitution))
-    lb = 0.45359237
     print(f"{'mass':>5s} {'kg':>11s} {'lb':>10s} {'diameter mm':>12s} {'length mm':>10s} {'first pass m/s':>15s} "
           f"{'final m/s':>10s}")
     for k, (m, size) in enumerate(zip(d.masses, d.sizes), start=1):
         fp = run.first_pass[k - 1]
-        print(f"{k:5d} {m:11.4g} {m / lb:10.4g} {size['diameter'] * 1e3:12.4g} {size['length'] * 1e3:10.4g} "
+        print(f"{k:5d} {m:11.4g} {m / LB:10.4g} {size['diameter'] * 1e3:12.4g} {size['length'] * 1e3:10.4g} "
               f"{'-' if fp != fp else format(fp, '.5g'):>15s} {run.final[k - 1]:10.5g}")
     print(f"mass ratio m(k+1)/m(k) = {d.stage_ratio:.4g}; intermediate masses {d.intermediate_mass:.4g} kg "
-          f"({d.intermediate_mass / lb:.4g} lb); energy efficiency {d.efficiency:.1%} "
+          f"({d.intermediate_mass / LB:.4g} lb); energy efficiency {d.efficiency:.1%} "
           f"({args.material} cylinders, L/D = {args.aspect:g}; rigid-body model: {len(run.collisions)} collisions)")
     if args.json:
         with open(args.json, "w") as fh:

@@ -40,6 +40,14 @@ SI_UNITS = {
 }
 
 
+# The factors shockfem's own reports divide by (inputs go through pint, which agrees with these):
+G0 = 9.80665              # standard gravity [m/s^2]: accelerations are also reported in g
+LB = 0.45359237           # pound (avoirdupois) [kg]
+FT = 0.3048               # foot [m]
+IN = 0.0254               # inch [m]
+PSI = LB * G0 / IN ** 2   # pound-force per square inch [Pa] (6894.757...)
+
+
 class UnitError(ValueError):
     """A value whose unit cannot be read or has the wrong dimension."""
 
@@ -49,7 +57,7 @@ def registry() -> pint.UnitRegistry:
     ureg = pint.UnitRegistry()
     # "g" is gram in pint; shock engineers write accelerations in standard gravities as "gn"
     # or "g0"; we accept "gee" too so that "10000 gee" is unambiguous.
-    ureg.define("gee = 9.80665 m/s**2")
+    ureg.define(f"gee = {G0} m/s**2")
     return ureg
 
 

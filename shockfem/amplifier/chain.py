@@ -61,7 +61,7 @@ import numpy as np
 from ..parts.catalog import PARTS
 from ..metrics.stages import stage_table
 from ..scene import SceneError, resolve
-from ..units import UnitError, to_si
+from ..units import G0, UnitError, to_si
 from . import rigid
 from .interfaces import flat_face_stress, pad_dashpot, pad_peak_force, reduced_mass
 from .bars import Bar, Interface, run_bars
@@ -517,7 +517,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         L = spec.launcher
         echo(f"launcher '{L['name']}': {L['model']}\n  fires {L['gun']['projectile_mass']:.5g} kg at "
              f"{launch:.5g} m/s from {L['gun']['reservoir_pressure'] / 1e6:.4g} MPa "
-             f"(peak {L['peak_acceleration'] / 9.80665:.4g} g, efficiency {L['efficiency']:.1%}); "
+             f"(peak {L['peak_acceleration'] / G0:.4g} g, efficiency {L['efficiency']:.1%}); "
              f"barrel and tank {L['sizing']['total_weight']:.4g} kg")
     echo(f"chain '{spec.name}', {spec.architecture}, fidelity {spec.fidelity}:\n    " + model.replace("; ", "\n    "))
     for s in stages:

@@ -10,9 +10,8 @@ import os
 from ..output.figures import pyplot, save
 
 from .vessel import barrel_weight, tank_weight
+from ..units import FT, G0, IN, LB, PSI
 
-G0 = 9.80665
-FT, IN, PSI, LB = 0.3048, 0.0254, 6894.757, 0.45359237
 
 
 def sizing(gun, options) -> dict:

@@ -11,13 +11,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from ..units import PSI
 
 # Allowable tensile stress S at room temperature [Pa], ASME II-D Table 1A as commonly quoted
 # (ksi x 6.894757e6), and density [kg/m^3].
 MATERIALS = {
-    "SA-516-70": {"allowable": 20.0e3 * 6894.757, "density": 7850.0, "doc": "carbon steel plate (tanks)"},
-    "SA-106-B": {"allowable": 17.1e3 * 6894.757, "density": 7850.0, "doc": "seamless carbon steel pipe"},
-    "SA-312-TP304": {"allowable": 20.0e3 * 6894.757, "density": 8000.0, "doc": "seamless stainless pipe"},
+    "SA-516-70": {"allowable": 20.0e3 * PSI, "density": 7850.0, "doc": "carbon steel plate (tanks)"},
+    "SA-106-B": {"allowable": 17.1e3 * PSI, "density": 7850.0, "doc": "seamless carbon steel pipe"},
+    "SA-312-TP304": {"allowable": 20.0e3 * PSI, "density": 8000.0, "doc": "seamless stainless pipe"},
 }
 
 

@@ -27,8 +27,8 @@ from .pulse import pulse_metrics
 from .signals import acceleration_from_velocity
 from .srs import log_frequencies, shock_response_spectrum
 from .stages import stage_table
+from ..units import G0
 
-G0 = 9.80665     # standard gravity [m/s^2]: accelerations are also reported in g
 # A channel whose record integrates to a velocity change this far off its body's gets a note.
 VELOCITY_CHANGE_MISMATCH = 0.01
 

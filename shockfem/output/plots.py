@@ -6,6 +6,7 @@ import os
 from .figures import pyplot, save
 
 from .history import ENERGY_COLUMNS, read_history_csv
+from ..units import G0
 
 
 
@@ -26,7 +27,7 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
     written.append(save(fig, os.path.join(run_dir, "energy.png")))
     fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
     for name in body_names:
-        for key, ax, scale in ((f"{name}.v_", axes[0], 1.0), (f"{name}.a_", axes[1], 1 / 9.80665)):
+        for key, ax, scale in ((f"{name}.v_", axes[0], 1.0), (f"{name}.a_", axes[1], 1 / G0)):
             for col in h:
                 if col.startswith(key):
                     ax.plot(t, h[col] * scale, label=col)
@@ -41,7 +42,6 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
     return written
 
 
-G0 = 9.80665
 
 
 def plot_pulse(path: str, name: str, arrays: dict, metrics: dict) -> str:

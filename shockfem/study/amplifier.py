@@ -39,10 +39,10 @@ from ..amplifier.interfaces import (flat_face_stress, hertz_yield_speed, pad_for
 from ..errors import UnstableRun
 from ..metrics.stages import stage_table
 from ..scene.library import LIBRARY
-from ..units import to_si
+from ..units import FT, LB, to_si
 from .report import Report
 
-LB, FTS, FT3 = 0.45359237, 0.3048, 0.3048 ** 3
+FTS, FT3 = FT, FT ** 3              # ft/s and cubic feet in SI
 MATERIAL = "high_strength_steel"
 # pads (section 6): their damping ratio, the face stress they allow over yield, their thickness
 # over their travel, and the working stress of the spring steel that bounds their volume

@@ -28,10 +28,9 @@ from ..launcher.design import Limits, Sizing, around, length_against_bore, light
 from ..launcher.gun import Gun, barrel_length_for, fire
 from ..launcher.output import write_design
 from ..scene.library import LIBRARY
-from ..units import to_si
+from ..units import FT, G0, IN, LB, PSI, to_si
 from .report import Report
 
-LB, FT, IN, PSI = 0.45359237, 0.3048, 0.0254, 6894.757
 ARTICLE, TARGET, LAUNCH, E, N = 12 * LB, 1600 * FT, 325 * FT, 0.9, 5
 MATERIAL = "high_strength_steel"
 # "customary equipment dimensions and industry standard pressures": the assumptions of sections 1 and 4
@@ -74,7 +73,7 @@ def _design_row(label, d) -> list:
     g = d.gun
     binding = ", ".join(b["limit"] for b in d.binding) or "velocity only"
     return [label, g.projectile_mass / LB, g.bore / IN, g.length / FT, g.reservoir_pressure / PSI,
-            g.reservoir_volume / FT ** 3, d.weight / LB, d.peak_acceleration / 9.80665, d.efficiency,
+            g.reservoir_volume / FT ** 3, d.weight / LB, d.peak_acceleration / G0, d.efficiency,
             binding if d.feasible else "INFEASIBLE: " + d.note]
 
 

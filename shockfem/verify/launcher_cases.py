@@ -26,10 +26,10 @@ from ..launcher.gas import GASES
 from ..launcher.design import Limits, Sizing, _with, lightest_launcher, valve_ratio_of, weights
 from ..launcher.gun import Gun, fire
 from .checks import check
+from ..units import FT, IN, PSI
 
-PSI, INCH, FT = 6894.757, 0.0254, 0.3048
 # The white paper's gun: 12 in bore, 6 ft barrel, 2000 psi.
-BORE, LENGTH, PRESSURE = 12 * INCH, 6 * FT, 2000 * PSI
+BORE, LENGTH, PRESSURE = 12 * IN, 6 * FT, 2000 * PSI
 
 
 def launcher_model(size, workdir):
@@ -91,10 +91,10 @@ def launcher_model(size, workdir):
 def launcher_design(size, workdir):
     """Launcher design: SLSQP's lightest gun against a brute-force grid; the speed it must reach."""
     n = {"coarse": 3, "default": 5, "fine": 7}[size]
-    template = Gun(0.02, 1000 * PSI, 4 * INCH, 2.0, 20.0, valve_area=math.pi * (3 * INCH) ** 2 / 4,
+    template = Gun(0.02, 1000 * PSI, 4 * IN, 2.0, 20.0, valve_area=math.pi * (3 * IN) ** 2 / 4,
                    opening_time=1e-3)
     speed = 150.0
-    limits = Limits(max_length=3.0, max_bore=8 * INCH, max_pressure=3000 * PSI, min_bore=2 * INCH, min_length=0.5,
+    limits = Limits(max_length=3.0, max_bore=8 * IN, max_pressure=3000 * PSI, min_bore=2 * IN, min_length=0.5,
                     min_pressure=300 * PSI)
     sizing = Sizing()
     t0 = time.perf_counter()

@@ -10,7 +10,7 @@ from shockfem.launcher import vessel
 from shockfem.launcher.gas import GASES, orifice_flow
 from shockfem.launcher.gun import Gun, fire
 
-PSI, INCH, FT = 6894.757, 0.0254, 0.3048
+from shockfem.units import FT, PSI, IN as INCH   # checked against pint in test_units.py
 BORE, LENGTH, P0 = 12 * INCH, 6 * FT, 2000 * PSI
 AREA = math.pi * BORE ** 2 / 4
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

@@ -13,7 +13,7 @@ from shockfem.launcher.design import Limits, Sizing, lightest_launcher, weights
 from shockfem.launcher.gun import Gun, barrel_length_for, fire
 from shockfem.scene import SceneError
 
-PSI, INCH, FT = 6894.757, 0.0254, 0.3048
+from shockfem.units import FT, PSI, IN as INCH   # checked against pint in test_units.py
 TEMPLATE = Gun(reservoir_volume=0.02, reservoir_pressure=1000 * PSI, bore=4 * INCH, length=2.0, projectile_mass=20.0,
                valve_area=math.pi * (3 * INCH) ** 2 / 4, opening_time=1e-3)
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -81,7 +81,7 @@ def test_chain_fired_by_a_launcher(tmp_path):
     chain = run_chain_scene(_chain(), str(tmp_path), echo=lambda *a: None)
     m1 = chain["masses"]["m1"]
     gun = Gun(2 * FT ** 3, 2000 * PSI, 8 * INCH, 6 * FT, m1, valve_area=math.pi * (5 * INCH) ** 2 / 4)
-    # (pint's psi is 6894.757293 Pa, this file's 6894.757)
+    # (the scene's "2000 psi" goes through pint, units.PSI through LB G0 / IN^2: the same to 1e-15)
     assert chain["launch_speed"] == pytest.approx(fire(gun).muzzle_velocity, rel=1e-6)
     assert chain["launcher"]["sizing"]["total_weight"] > 0 and (tmp_path / "launcher" / "launcher.png").exists()
     # rigid chain, e = 0.9: v2 = (1 + e) m1 / (m1 + m2) v1

@@ -27,3 +27,13 @@ def test_wrong_dimension_names_expected_dimension():
 def test_unreadable():
     with pytest.raises(UnitError, match="cannot read"):
         to_si("fast", "velocity")
+
+
+def test_report_factors_agree_with_the_input_units():
+    """The factors reports divide by (units.G0, LB, FT, IN, PSI) are pint's conversions of the same
+    units, to round-off: a value read as "2000 psi" prints back as 2000 psi."""
+    from shockfem import units
+    for text, dimension, factor in (("1 gee", "acceleration", units.G0), ("1 lb", "mass", units.LB),
+                                    ("1 ft", "length", units.FT), ("1 in", "length", units.IN),
+                                    ("1 psi", "pressure", units.PSI)):
+        assert to_si(text, dimension) == pytest.approx(factor, rel=1e-14), text
