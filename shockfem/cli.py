@@ -330,7 +330,7 @@ def _modes(args) -> int:
 
 
 def _metrics(args) -> int:
-    from .metrics.filters import CFC_CLASSES
+    from .scene.schema import CFC_CLASSES
     from .metrics.report import shock_report
     from .scene import SceneError
     problems = []

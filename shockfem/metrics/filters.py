@@ -19,8 +19,6 @@ import math
 
 import numpy as np
 from scipy import signal
-
-CFC_CLASSES = (60, 180, 600, 1000)
 # J211-1 asks for a sample rate of at least 10 times the class frequency (CFC 1000: 10 kHz).
 MIN_SAMPLES_PER_CFC = 10
 

@@ -26,9 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..scene.schema import PULSE_SHAPES as SHAPES   # the shapes a scene's [shock.spec] may name
 from .pulse import Pulse, integral
-
-SHAPES = ("half-sine", "terminal-peak sawtooth", "trapezoid")
 
 TOLERANCE = {
     "amplitude": 0.20,         # band half-width over the pulse, fraction of P

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..parts.catalog import CAD_FILES, MESH_FILES, PARTS
+from ..elements.one_point import HOURGLASS_FORMS as HOURGLASS_CODES
 from ..materials.j2 import RATE_FORMS as J2_RATE_FORMS
 from ..units import UnitError, to_si
 
@@ -24,7 +25,7 @@ BC_TYPES = ("fixed", "symmetry", "velocity", "force")
 DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
 FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
 INTEGRATIONS = ("reduced", "full")
-HOURGLASS_FORMS = ("stiffness", "viscous")
+HOURGLASS_FORMS = tuple(HOURGLASS_CODES)   # elements/one_point.py
 
 
 class SceneError(Exception):
