@@ -25,6 +25,7 @@ from types import MappingProxyType
 
 import numpy as np
 
+from .output.history import read_history
 from .scene import Scene, apply_override, load_scene as _load_scene_file, resolve
 
 
@@ -83,13 +84,9 @@ def load_run(path: str) -> Run:
     history, units = {}, {}
     csv_path = os.path.join(path, "history.csv")
     if os.path.exists(csv_path):
-        with open(csv_path) as fh:
-            header = fh.readline().strip().split(",")
-        data = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
-        for j, column in enumerate(header):
-            name, unit = column.rsplit(" [", 1)
-            values = np.ascontiguousarray(data[:, j])
-            values.flags.writeable = False
-            history[name], units[name] = values, unit.rstrip("]")
+        columns, units = read_history(csv_path)
+        for name, values in columns.items():
+            history[name] = np.ascontiguousarray(values)
+            history[name].flags.writeable = False
     scene = read_json("resolved_scene.json") if os.path.exists(os.path.join(path, "resolved_scene.json")) else {}
     return Run(path, read_json("summary.json"), MappingProxyType(history), MappingProxyType(units), scene)

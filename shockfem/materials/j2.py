@@ -41,8 +41,8 @@ import math
 
 from numba import njit
 
-from .elastic import hooke
-from .layout import (P_CURVE_POINTS, P_KINEMATIC, P_LAMBDA, P_MU, P_RATE_D, P_RATE_FORM, P_RATE_Q, S_BACK, S_EPS,
+from .elastic import elastic_update
+from .layout import (P_CURVE_POINTS, P_KINEMATIC, P_MU, P_RATE_D, P_RATE_FORM, P_RATE_Q, S_BACK, S_EPS,
                      S_RATE, VISCOPLASTIC, YIELD_SCALING)
 
 # the scene's names of the two rate forms (``rate_form``), LS-DYNA's VP = 1 and VP = 0
@@ -183,8 +183,7 @@ def j2_update(row, curve, point, s, d, dt):
     state, updated in place.  A called function, compiled once: the return mapping inlined into
     every element kernel made numba's compile of the first plastic run several times longer.
     """
-    c0, c1, c2, c3, c4, c5 = hooke(d, row[P_LAMBDA], row[P_MU])
-    trial = (s[0] + dt * c0, s[1] + dt * c1, s[2] + dt * c2, s[3] + dt * c3, s[4] + dt * c4, s[5] + dt * c5)
+    trial, _ = elastic_update(row, s, d, dt)
     return radial_return(row, curve, point, trial, d, dt)
 
 

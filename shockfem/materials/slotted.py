@@ -26,24 +26,20 @@ import math
 
 from numba import njit
 
-from .elastic import hooke
+from .elastic import elastic_update
 from .laws import law_update
 from .layout import ELASTIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH, S_SLOT, STATE_SIZE
 
 _SECANT_ITERATIONS = 30
 
-# The metal's law as a called function, not inlined like ``update_stress``'s own call: numba inlines
-# at the IR level, and a second inlined copy of the plastic return tripled the kernels' compile time.
-_law_update_call = njit(cache=True, fastmath=True)(law_update.py_func)
-
 
 @njit(cache=True, fastmath=True)
 def _hoop_stress(params, curves, m, state, c, p, s, d, dt):
     """The hoop stress after the step with strain rate ``d`` (the point's state left as it was)."""
-    if params[m, P_LAW] == ELASTIC:
-        return s[2] + dt * hooke(d, params[m, P_LAMBDA], params[m, P_MU])[2]
+    if params[m, P_LAW] == ELASTIC:                    # no state to keep
+        return elastic_update(params[m], s, d, dt)[0][2]
     saved = state[c, p].copy()
-    r = _law_update_call(params, curves, m, state, c, p, s, d, dt)[0]
+    r = law_update(params, curves, m, state, c, p, s, d, dt)[0]
     for k in range(STATE_SIZE):
         state[c, p, k] = saved[k]
     return r[2]

@@ -104,9 +104,16 @@ def _place_accelerometer(solver: ExplicitSolver, meter) -> tuple[int, int, str]:
     return best, owner, note
 
 
-def read_history_csv(path: str) -> dict[str, np.ndarray]:
-    """Columns of a ``history.csv`` keyed by name without the unit."""
+def read_history(path: str) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    """(columns, units) of a ``history.csv``: arrays and units keyed by the column name, whose header
+    is written as "name [unit]"."""
     with open(path) as fh:
         header = next(csv.reader(fh))
     data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {h.rsplit(" [", 1)[0]: data[:, j] for j, h in enumerate(header)}
+    names, units = zip(*(h[:-1].rsplit(" [", 1) for h in header))
+    return {n: data[:, j] for j, n in enumerate(names)}, dict(zip(names, units))
+
+
+def read_history_csv(path: str) -> dict[str, np.ndarray]:
+    """Columns of a ``history.csv`` keyed by name without the unit."""
+    return read_history(path)[0]
