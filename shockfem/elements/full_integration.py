@@ -131,7 +131,7 @@ def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt
                  0.5 * (L[q, 0, 1] + L[q, 1, 0]))
             spin = (0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]), 0.5 * (L[q, 0, 1] - L[q, 1, 0]))
             s_n = (sigma[c, q, 0], sigma[c, q, 1], sigma[c, q, 2], sigma[c, q, 3], sigma[c, q, 4], sigma[c, q, 5])
-            s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0)
+            s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0, False)
             plastic_work += wmid[q] * wp
             for k in range(6):
                 sigma[c, q, k] = s_np1[k]

@@ -127,308 +127,335 @@ def _step_length(nodes, bb):
     return 2.0 / math.sqrt(nodes * bb)
 
 
-@njit(cache=True, fastmath=True)
-def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
-                   hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f):
-    """One-point quads (plane strain or axisymmetric): stress update and internal force.
+def _quad_kernel(elastic_only: bool):
+    """``quad_one_point`` compiled for ``elastic_only`` (a constant of the closure)."""
 
-    Arguments as ``kernels.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
-    hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
-    hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
-    stiffness form accumulates them; both forms need them for the trapezoidal work).
+    @njit(cache=True, fastmath=True)
+    def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
+                       hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f):
+        """One-point quads (plane strain or axisymmetric): stress update and internal force.
 
-    Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
-    """
-    two_pi = 2.0 * math.pi
-    hdt = 0.5 * dt
-    dt_stable = 1e300
-    critical_cell = -1
-    damping_power = 0.0
-    viscosity_power = 0.0
-    plastic_work = 0.0
-    hourglass_power = 0.0
-    bad_cell = -1
-    for ci in range(cells.shape[0]):
-        c = cells[ci]
-        m = cell_material[c]
-        lam = params[m, P_LAMBDA]
-        mu = params[m, P_MU]
-        beta = params[m, P_BETA]
-        n0 = dofmap[c, 0]
-        n1 = dofmap[c, 1]
-        n2 = dofmap[c, 2]
-        n3 = dofmap[c, 3]
-        # transforms of x and v: (sum, sum xi ., sum eta ., sum xi eta .) per component
-        sx, j00, j01, hx0 = _walsh4(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0])
-        sy, j10, j11, hx1 = _walsh4(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1])
-        svx, v00, v01, hv0 = _walsh4(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0])
-        svy, v10, v11, hv1 = _walsh4(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1])
-        # J = sum_a x_a dN0_a^T with dN0_a = xi_a / 2; Jv likewise from v
-        j00 *= 0.5
-        j01 *= 0.5
-        j10 *= 0.5
-        j11 *= 0.5
-        v00 *= 0.5
-        v01 *= 0.5
-        v10 *= 0.5
-        v11 *= 0.5
-        r = 0.25 * sx
-        vr = 0.25 * svx
-        # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
-        det, i00, i01, i10, i11 = _inverse_2x2(j00 - hdt * v00, j01 - hdt * v01, j10 - hdt * v10, j11 - hdt * v11)
-        l00 = v00 * i00 + v01 * i10
-        l01 = v00 * i01 + v01 * i11
-        l10 = v10 * i00 + v11 * i10
-        l11 = v10 * i01 + v11 * i11
-        d2 = vr / (r - hdt * vr) if axisymmetric else 0.0
-        d0 = l00
-        d1 = l11
-        d5 = 0.5 * (l01 + l10)
-        # the material update at the centre (objective rotation, slotted ring, law)
-        w12 = 0.5 * (l01 - l10)
-        s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
-                                     (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], 0.0, 0.0, sigma[c, 0, 5]),
-                                     (d0, d1, d2, 0.0, 0.0, d5), (0.0, 0.0, w12), dt, r if axisymmetric else 0.0)
-        sigma[c, 0, 0] = s_np1[0]
-        sigma[c, 0, 1] = s_np1[1]
-        sigma[c, 0, 2] = s_np1[2]
-        sigma[c, 0, 5] = s_np1[5]
-        # end-of-step configuration: volume and J^-1
-        det, i00, i01, i10, i11 = _inverse_2x2(j00, j01, j10, j11)
-        det *= cell_sign[c]
-        if det <= 0.0:
-            bad_cell = c
-        vol = det * (two_pi * r if axisymmetric else thickness)
-        plastic_work += vol * wp
-        # hourglass rate q = h.v - L_end (h.x), and resultant Q
-        e00 = v00 * i00 + v01 * i10
-        e01 = v00 * i01 + v01 * i11
-        e10 = v10 * i00 + v11 * i10
-        e11 = v10 * i01 + v11 * i11
-        q0 = hv0 - e00 * hx0 - e01 * hx1
-        q1 = hv1 - e10 * hx0 - e11 * hx1
-        bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
-        ls = _step_length(4.0, bb)
-        trd = d[0] + d[1] + d[2]
-        pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC],
-                            params[m, P_Q_LINEAR])
-        (s0, s1, s2, _, _, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
-        damping_power += vol * pd
-        viscosity_power += vol * pv
-        o0 = hourglass[c, 0]
-        o1 = hourglass[c, 1]
-        if hourglass_form == 1:
-            cv = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 4.0
-            Q0 = cv * q0
-            Q1 = cv * q1
-        else:
-            # the resultant turns with the material (the centre's in-plane rotation) and grows
-            k = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 16.0
-            r00, r01, _, r10, r11, _, _, _, _ = cayley_matrix(0.0, 0.0, w12, dt)
-            Q0 = r00 * o0 + r01 * o1 + k * dt * q0
-            Q1 = r10 * o0 + r11 * o1 + k * dt * q1
-        hourglass[c, 0] = Q0
-        hourglass[c, 1] = Q1
-        # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
-        hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
-        # f_a = S b_a + h_a Q (+ hoop N_a), S = V sigma - Q (h.x)^T, b_a = J^-T dN0_a: with
-        # M = J^-1 S^T the force is M^T dN0_a, i.e. the transposed transform of (hoop, M/2, Q).
-        t00 = vol * s0 - Q0 * hx0
-        t01 = vol * s5 - Q0 * hx1
-        t10 = vol * s5 - Q1 * hx0
-        t11 = vol * s1 - Q1 * hx1
-        hoop = 0.25 * vol * s2 / r if axisymmetric else 0.0
-        f00, f10, f20, f30 = _unwalsh4(hoop, 0.5 * (i00 * t00 + i01 * t01), 0.5 * (i10 * t00 + i11 * t01), Q0)
-        f01, f11, f21, f31 = _unwalsh4(0.0, 0.5 * (i00 * t10 + i01 * t11), 0.5 * (i10 * t10 + i11 * t11), Q1)
-        f[n0, 0] += f00
-        f[n1, 0] += f10
-        f[n2, 0] += f20
-        f[n3, 0] += f30
-        f[n0, 1] += f01
-        f[n1, 1] += f11
-        f[n2, 1] += f21
-        f[n3, 1] += f31
-        dtc = viscous_step(ls, params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR],
-                           beta)
-        if dtc < dt_stable:
-            dt_stable = dtc
-            critical_cell = c
-    return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+        Arguments as ``full_integration.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
+        hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
+        hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
+        stiffness form accumulates them; both forms need them for the trapezoidal work).
 
-
-@njit(cache=True, fastmath=True)
-def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
-                  hourglass_coefficient, params, curves, state, sigma, hourglass, f):
-    """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
-
-    hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
-    xi eta zeta), 3 components each.  Returns what ``quad_one_point`` returns.
-    """
-    hdt = 0.5 * dt
-    dt_stable = 1e300
-    critical_cell = -1
-    damping_power = 0.0
-    viscosity_power = 0.0
-    plastic_work = 0.0
-    hourglass_power = 0.0
-    bad_cell = -1
-    for ci in range(cells.shape[0]):
-        c = cells[ci]
-        m = cell_material[c]
-        lam = params[m, P_LAMBDA]
-        mu = params[m, P_MU]
-        beta = params[m, P_BETA]
-        n0, n1, n2, n3 = dofmap[c, 0], dofmap[c, 1], dofmap[c, 2], dofmap[c, 3]
-        n4, n5, n6, n7 = dofmap[c, 4], dofmap[c, 5], dofmap[c, 6], dofmap[c, 7]
-        # transforms of x and v per component (tuples stay in registers; small arrays would not):
-        # entries 1, 2, 4 are 4 J[i, :] (dN0_a = xi_a / 4); 3, 6, 5, 7 the hourglass projections
-        tx = _walsh8(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0],
-                     x_np1[n4, 0], x_np1[n5, 0], x_np1[n6, 0], x_np1[n7, 0])
-        ty = _walsh8(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1],
-                     x_np1[n4, 1], x_np1[n5, 1], x_np1[n6, 1], x_np1[n7, 1])
-        tz = _walsh8(x_np1[n0, 2], x_np1[n1, 2], x_np1[n2, 2], x_np1[n3, 2],
-                     x_np1[n4, 2], x_np1[n5, 2], x_np1[n6, 2], x_np1[n7, 2])
-        ux = _walsh8(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0],
-                     v_half[n4, 0], v_half[n5, 0], v_half[n6, 0], v_half[n7, 0])
-        uy = _walsh8(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1],
-                     v_half[n4, 1], v_half[n5, 1], v_half[n6, 1], v_half[n7, 1])
-        uz = _walsh8(v_half[n0, 2], v_half[n1, 2], v_half[n2, 2], v_half[n3, 2],
-                     v_half[n4, 2], v_half[n5, 2], v_half[n6, 2], v_half[n7, 2])
-        j00, j01, j02 = 0.25 * tx[1], 0.25 * tx[2], 0.25 * tx[4]
-        j10, j11, j12 = 0.25 * ty[1], 0.25 * ty[2], 0.25 * ty[4]
-        j20, j21, j22 = 0.25 * tz[1], 0.25 * tz[2], 0.25 * tz[4]
-        v00, v01, v02 = 0.25 * ux[1], 0.25 * ux[2], 0.25 * ux[4]
-        v10, v11, v12 = 0.25 * uy[1], 0.25 * uy[2], 0.25 * uy[4]
-        v20, v21, v22 = 0.25 * uz[1], 0.25 * uz[2], 0.25 * uz[4]
-        # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
-        (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
-            j00 - hdt * v00, j01 - hdt * v01, j02 - hdt * v02, j10 - hdt * v10, j11 - hdt * v11,
-            j12 - hdt * v12, j20 - hdt * v20, j21 - hdt * v21, j22 - hdt * v22)
-        l00 = v00 * i00 + v01 * i10 + v02 * i20
-        l01 = v00 * i01 + v01 * i11 + v02 * i21
-        l02 = v00 * i02 + v01 * i12 + v02 * i22
-        l10 = v10 * i00 + v11 * i10 + v12 * i20
-        l11 = v10 * i01 + v11 * i11 + v12 * i21
-        l12 = v10 * i02 + v11 * i12 + v12 * i22
-        l20 = v20 * i00 + v21 * i10 + v22 * i20
-        l21 = v20 * i01 + v21 * i11 + v22 * i21
-        l22 = v20 * i02 + v21 * i12 + v22 * i22
-        d0, d1, d2 = l00, l11, l22
-        d3 = 0.5 * (l12 + l21)
-        d4 = 0.5 * (l02 + l20)
-        d5 = 0.5 * (l01 + l10)
-        w23 = 0.5 * (l12 - l21)
-        w13 = 0.5 * (l02 - l20)
-        w12 = 0.5 * (l01 - l10)
-        # the material update at the centre (objective rotation, law)
-        s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
-                                     (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
-                                      sigma[c, 0, 5]), (d0, d1, d2, d3, d4, d5), (w23, w13, w12), dt, 0.0)
-        for k in range(6):
-            sigma[c, 0, k] = s_np1[k]
-        # end-of-step configuration
-        (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
-            j00, j01, j02, j10, j11, j12, j20, j21, j22)
-        vol = det * cell_sign[c]
-        if vol <= 0.0:
-            bad_cell = c
-        plastic_work += vol * wp
-        # hourglass: q^alpha = h^alpha.v - L_end (h^alpha.x), L_end = Jv J^-1, resultants Q^alpha
-        e00 = v00 * i00 + v01 * i10 + v02 * i20
-        e01 = v00 * i01 + v01 * i11 + v02 * i21
-        e02 = v00 * i02 + v01 * i12 + v02 * i22
-        e10 = v10 * i00 + v11 * i10 + v12 * i20
-        e11 = v10 * i01 + v11 * i11 + v12 * i21
-        e12 = v10 * i02 + v11 * i12 + v12 * i22
-        e20 = v20 * i00 + v21 * i10 + v22 * i20
-        e21 = v20 * i01 + v21 * i11 + v22 * i21
-        e22 = v20 * i02 + v21 * i12 + v22 * i22
-        bb = 0.5 * (i00 * i00 + i01 * i01 + i02 * i02 + i10 * i10 + i11 * i11 + i12 * i12
-                    + i20 * i20 + i21 * i21 + i22 * i22)          # b:b, sum_a dN0_a dN0_a^T = I / 2
-        ls = _step_length(8.0, bb)
-        trd = d0 + d1 + d2
-        # the viscosity's length is LS-DYNA's volume / largest face, sqrt(3) ls for a cube
-        pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd,
-                            params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
-        (s0, s1, s2, s3, s4, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
-        damping_power += vol * pd
-        viscosity_power += vol * pv
-        # the stiffness-form resultants turn with the material, like the stress
-        r00, r01, r02, r10, r11, r12, r20, r21, r22 = cayley_matrix(w23, w13, w12, dt)
-        if hourglass_form == 1:
-            coef = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 8.0
-        else:
-            coef = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 64.0
-        # S = V sigma - sum_alpha Q^alpha (h^alpha.x)^T, accumulated mode by mode
-        t00, t11, t22 = vol * s0, vol * s1, vol * s2
-        t12 = t21 = vol * s3
-        t02 = t20 = vol * s4
-        t01 = t10 = vol * s5
-        Q = (0.0, 0.0, 0.0)
-        Qa = Qb = Qc = Qd = Q
-        for al in range(4):
-            w = (3, 6, 5, 7)[al]          # transform entry of mode al (xi eta, eta zeta, zeta xi, xi eta zeta)
-            hx0, hx1, hx2 = tx[w], ty[w], tz[w]
-            q0 = ux[w] - e00 * hx0 - e01 * hx1 - e02 * hx2
-            q1 = uy[w] - e10 * hx0 - e11 * hx1 - e12 * hx2
-            q2 = uz[w] - e20 * hx0 - e21 * hx1 - e22 * hx2
-            o0 = hourglass[c, 3 * al]
-            o1 = hourglass[c, 3 * al + 1]
-            o2 = hourglass[c, 3 * al + 2]
+        Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
+        """
+        two_pi = 2.0 * math.pi
+        hdt = 0.5 * dt
+        dt_stable = 1e300
+        critical_cell = -1
+        damping_power = 0.0
+        viscosity_power = 0.0
+        plastic_work = 0.0
+        hourglass_power = 0.0
+        bad_cell = -1
+        for ci in range(cells.shape[0]):
+            c = cells[ci]
+            m = cell_material[c]
+            lam = params[m, P_LAMBDA]
+            mu = params[m, P_MU]
+            beta = params[m, P_BETA]
+            n0 = dofmap[c, 0]
+            n1 = dofmap[c, 1]
+            n2 = dofmap[c, 2]
+            n3 = dofmap[c, 3]
+            # transforms of x and v: (sum, sum xi ., sum eta ., sum xi eta .) per component
+            sx, j00, j01, hx0 = _walsh4(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0])
+            sy, j10, j11, hx1 = _walsh4(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1])
+            svx, v00, v01, hv0 = _walsh4(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0])
+            svy, v10, v11, hv1 = _walsh4(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1])
+            # J = sum_a x_a dN0_a^T with dN0_a = xi_a / 2; Jv likewise from v
+            j00 *= 0.5
+            j01 *= 0.5
+            j10 *= 0.5
+            j11 *= 0.5
+            v00 *= 0.5
+            v01 *= 0.5
+            v10 *= 0.5
+            v11 *= 0.5
+            r = 0.25 * sx
+            vr = 0.25 * svx
+            # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
+            det, i00, i01, i10, i11 = _inverse_2x2(j00 - hdt * v00, j01 - hdt * v01, j10 - hdt * v10, j11 - hdt * v11)
+            l00 = v00 * i00 + v01 * i10
+            l01 = v00 * i01 + v01 * i11
+            l10 = v10 * i00 + v11 * i10
+            l11 = v10 * i01 + v11 * i11
+            d2 = vr / (r - hdt * vr) if axisymmetric else 0.0
+            d0 = l00
+            d1 = l11
+            d5 = 0.5 * (l01 + l10)
+            # the material update at the centre (objective rotation, slotted ring, law)
+            w12 = 0.5 * (l01 - l10)
+            s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
+                                         (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], 0.0, 0.0, sigma[c, 0, 5]),
+                                         (d0, d1, d2, 0.0, 0.0, d5), (0.0, 0.0, w12), dt, r if axisymmetric else 0.0,
+                                         elastic_only)
+            sigma[c, 0, 0] = s_np1[0]
+            sigma[c, 0, 1] = s_np1[1]
+            sigma[c, 0, 2] = s_np1[2]
+            sigma[c, 0, 5] = s_np1[5]
+            # end-of-step configuration: volume and J^-1
+            det, i00, i01, i10, i11 = _inverse_2x2(j00, j01, j10, j11)
+            det *= cell_sign[c]
+            if det <= 0.0:
+                bad_cell = c
+            vol = det * (two_pi * r if axisymmetric else thickness)
+            plastic_work += vol * wp
+            # hourglass rate q = h.v - L_end (h.x), and resultant Q
+            e00 = v00 * i00 + v01 * i10
+            e01 = v00 * i01 + v01 * i11
+            e10 = v10 * i00 + v11 * i10
+            e11 = v10 * i01 + v11 * i11
+            q0 = hv0 - e00 * hx0 - e01 * hx1
+            q1 = hv1 - e10 * hx0 - e11 * hx1
+            bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
+            ls = _step_length(4.0, bb)
+            trd = d[0] + d[1] + d[2]
+            pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC],
+                                params[m, P_Q_LINEAR])
+            (s0, s1, s2, _, _, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
+            damping_power += vol * pd
+            viscosity_power += vol * pv
+            o0 = hourglass[c, 0]
+            o1 = hourglass[c, 1]
             if hourglass_form == 1:
-                Q0 = coef * q0
-                Q1 = coef * q1
-                Q2 = coef * q2
+                cv = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 4.0
+                Q0 = cv * q0
+                Q1 = cv * q1
             else:
-                Q0 = r00 * o0 + r01 * o1 + r02 * o2 + coef * dt * q0
-                Q1 = r10 * o0 + r11 * o1 + r12 * o2 + coef * dt * q1
-                Q2 = r20 * o0 + r21 * o1 + r22 * o2 + coef * dt * q2
-            hourglass[c, 3 * al] = Q0
-            hourglass[c, 3 * al + 1] = Q1
-            hourglass[c, 3 * al + 2] = Q2
-            hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1 + (o2 + Q2) * q2)
-            t00 -= Q0 * hx0
-            t01 -= Q0 * hx1
-            t02 -= Q0 * hx2
-            t10 -= Q1 * hx0
-            t11 -= Q1 * hx1
-            t12 -= Q1 * hx2
-            t20 -= Q2 * hx0
-            t21 -= Q2 * hx1
-            t22 -= Q2 * hx2
-            if al == 0:
-                Qa = (Q0, Q1, Q2)
-            elif al == 1:
-                Qb = (Q0, Q1, Q2)
-            elif al == 2:
-                Qc = (Q0, Q1, Q2)
+                # the resultant turns with the material (the centre's in-plane rotation) and grows
+                k = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 16.0
+                r00, r01, _, r10, r11, _, _, _, _ = cayley_matrix(0.0, 0.0, w12, dt)
+                Q0 = r00 * o0 + r01 * o1 + k * dt * q0
+                Q1 = r10 * o0 + r11 * o1 + k * dt * q1
+            hourglass[c, 0] = Q0
+            hourglass[c, 1] = Q1
+            # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
+            hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
+            # f_a = S b_a + h_a Q (+ hoop N_a), S = V sigma - Q (h.x)^T, b_a = J^-T dN0_a: with
+            # M = J^-1 S^T the force is M^T dN0_a, i.e. the transposed transform of (hoop, M/2, Q).
+            t00 = vol * s0 - Q0 * hx0
+            t01 = vol * s5 - Q0 * hx1
+            t10 = vol * s5 - Q1 * hx0
+            t11 = vol * s1 - Q1 * hx1
+            hoop = 0.25 * vol * s2 / r if axisymmetric else 0.0
+            f00, f10, f20, f30 = _unwalsh4(hoop, 0.5 * (i00 * t00 + i01 * t01), 0.5 * (i10 * t00 + i11 * t01), Q0)
+            f01, f11, f21, f31 = _unwalsh4(0.0, 0.5 * (i00 * t10 + i01 * t11), 0.5 * (i10 * t10 + i11 * t11), Q1)
+            f[n0, 0] += f00
+            f[n1, 0] += f10
+            f[n2, 0] += f20
+            f[n3, 0] += f30
+            f[n0, 1] += f01
+            f[n1, 1] += f11
+            f[n2, 1] += f21
+            f[n3, 1] += f31
+            dtc = viscous_step(ls, params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR],
+                               beta)
+            if dtc < dt_stable:
+                dt_stable = dtc
+                critical_cell = c
+        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+
+    return quad_one_point
+
+
+def _hex_kernel(elastic_only: bool):
+    """``hex_one_point`` compiled for ``elastic_only``."""
+
+    @njit(cache=True, fastmath=True)
+    def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
+                      hourglass_coefficient, params, curves, state, sigma, hourglass, f):
+        """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
+
+        hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
+        xi eta zeta), 3 components each.  Returns what ``quad_one_point`` returns.
+        """
+        hdt = 0.5 * dt
+        dt_stable = 1e300
+        critical_cell = -1
+        damping_power = 0.0
+        viscosity_power = 0.0
+        plastic_work = 0.0
+        hourglass_power = 0.0
+        bad_cell = -1
+        for ci in range(cells.shape[0]):
+            c = cells[ci]
+            m = cell_material[c]
+            lam = params[m, P_LAMBDA]
+            mu = params[m, P_MU]
+            beta = params[m, P_BETA]
+            n0, n1, n2, n3 = dofmap[c, 0], dofmap[c, 1], dofmap[c, 2], dofmap[c, 3]
+            n4, n5, n6, n7 = dofmap[c, 4], dofmap[c, 5], dofmap[c, 6], dofmap[c, 7]
+            # transforms of x and v per component (tuples stay in registers; small arrays would not):
+            # entries 1, 2, 4 are 4 J[i, :] (dN0_a = xi_a / 4); 3, 6, 5, 7 the hourglass projections
+            tx = _walsh8(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0],
+                         x_np1[n4, 0], x_np1[n5, 0], x_np1[n6, 0], x_np1[n7, 0])
+            ty = _walsh8(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1],
+                         x_np1[n4, 1], x_np1[n5, 1], x_np1[n6, 1], x_np1[n7, 1])
+            tz = _walsh8(x_np1[n0, 2], x_np1[n1, 2], x_np1[n2, 2], x_np1[n3, 2],
+                         x_np1[n4, 2], x_np1[n5, 2], x_np1[n6, 2], x_np1[n7, 2])
+            ux = _walsh8(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0],
+                         v_half[n4, 0], v_half[n5, 0], v_half[n6, 0], v_half[n7, 0])
+            uy = _walsh8(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1],
+                         v_half[n4, 1], v_half[n5, 1], v_half[n6, 1], v_half[n7, 1])
+            uz = _walsh8(v_half[n0, 2], v_half[n1, 2], v_half[n2, 2], v_half[n3, 2],
+                         v_half[n4, 2], v_half[n5, 2], v_half[n6, 2], v_half[n7, 2])
+            j00, j01, j02 = 0.25 * tx[1], 0.25 * tx[2], 0.25 * tx[4]
+            j10, j11, j12 = 0.25 * ty[1], 0.25 * ty[2], 0.25 * ty[4]
+            j20, j21, j22 = 0.25 * tz[1], 0.25 * tz[2], 0.25 * tz[4]
+            v00, v01, v02 = 0.25 * ux[1], 0.25 * ux[2], 0.25 * ux[4]
+            v10, v11, v12 = 0.25 * uy[1], 0.25 * uy[2], 0.25 * uy[4]
+            v20, v21, v22 = 0.25 * uz[1], 0.25 * uz[2], 0.25 * uz[4]
+            # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
+            (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
+                j00 - hdt * v00, j01 - hdt * v01, j02 - hdt * v02, j10 - hdt * v10, j11 - hdt * v11,
+                j12 - hdt * v12, j20 - hdt * v20, j21 - hdt * v21, j22 - hdt * v22)
+            l00 = v00 * i00 + v01 * i10 + v02 * i20
+            l01 = v00 * i01 + v01 * i11 + v02 * i21
+            l02 = v00 * i02 + v01 * i12 + v02 * i22
+            l10 = v10 * i00 + v11 * i10 + v12 * i20
+            l11 = v10 * i01 + v11 * i11 + v12 * i21
+            l12 = v10 * i02 + v11 * i12 + v12 * i22
+            l20 = v20 * i00 + v21 * i10 + v22 * i20
+            l21 = v20 * i01 + v21 * i11 + v22 * i21
+            l22 = v20 * i02 + v21 * i12 + v22 * i22
+            d0, d1, d2 = l00, l11, l22
+            d3 = 0.5 * (l12 + l21)
+            d4 = 0.5 * (l02 + l20)
+            d5 = 0.5 * (l01 + l10)
+            w23 = 0.5 * (l12 - l21)
+            w13 = 0.5 * (l02 - l20)
+            w12 = 0.5 * (l01 - l10)
+            # the material update at the centre (objective rotation, law)
+            s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
+                                         (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
+                                          sigma[c, 0, 5]), (d0, d1, d2, d3, d4, d5), (w23, w13, w12), dt, 0.0,
+                                         elastic_only)
+            for k in range(6):
+                sigma[c, 0, k] = s_np1[k]
+            # end-of-step configuration
+            (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
+                j00, j01, j02, j10, j11, j12, j20, j21, j22)
+            vol = det * cell_sign[c]
+            if vol <= 0.0:
+                bad_cell = c
+            plastic_work += vol * wp
+            # hourglass: q^alpha = h^alpha.v - L_end (h^alpha.x), L_end = Jv J^-1, resultants Q^alpha
+            e00 = v00 * i00 + v01 * i10 + v02 * i20
+            e01 = v00 * i01 + v01 * i11 + v02 * i21
+            e02 = v00 * i02 + v01 * i12 + v02 * i22
+            e10 = v10 * i00 + v11 * i10 + v12 * i20
+            e11 = v10 * i01 + v11 * i11 + v12 * i21
+            e12 = v10 * i02 + v11 * i12 + v12 * i22
+            e20 = v20 * i00 + v21 * i10 + v22 * i20
+            e21 = v20 * i01 + v21 * i11 + v22 * i21
+            e22 = v20 * i02 + v21 * i12 + v22 * i22
+            bb = 0.5 * (i00 * i00 + i01 * i01 + i02 * i02 + i10 * i10 + i11 * i11 + i12 * i12
+                        + i20 * i20 + i21 * i21 + i22 * i22)          # b:b, sum_a dN0_a dN0_a^T = I / 2
+            ls = _step_length(8.0, bb)
+            trd = d0 + d1 + d2
+            # the viscosity's length is LS-DYNA's volume / largest face, sqrt(3) ls for a cube
+            pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd,
+                                params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
+            (s0, s1, s2, s3, s4, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
+            damping_power += vol * pd
+            viscosity_power += vol * pv
+            # the stiffness-form resultants turn with the material, like the stress
+            r00, r01, r02, r10, r11, r12, r20, r21, r22 = cayley_matrix(w23, w13, w12, dt)
+            if hourglass_form == 1:
+                coef = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 8.0
             else:
-                Qd = (Q0, Q1, Q2)
-        # M = J^-1 S^T; the forces are the transposed transform of the coefficients
-        # (0, M_0/4, M_1/4, Q_xieta, M_2/4, Q_zetaxi, Q_etazeta, Q_xietazeta), split by zeta layer
-        for i in range(3):
-            if i == 0:
-                ta, tb, tc = t00, t01, t02
-            elif i == 1:
-                ta, tb, tc = t10, t11, t12
-            else:
-                ta, tb, tc = t20, t21, t22
-            m0 = 0.25 * (i00 * ta + i01 * tb + i02 * tc)
-            m1 = 0.25 * (i10 * ta + i11 * tb + i12 * tc)
-            m2 = 0.25 * (i20 * ta + i21 * tb + i22 * tc)
-            lo = _unwalsh4(-m2, m0 - Qc[i], m1 - Qb[i], Qa[i] - Qd[i])
-            hi = _unwalsh4(m2, m0 + Qc[i], m1 + Qb[i], Qa[i] + Qd[i])
-            f[n0, i] += lo[0]
-            f[n1, i] += lo[1]
-            f[n2, i] += lo[2]
-            f[n3, i] += lo[3]
-            f[n4, i] += hi[0]
-            f[n5, i] += hi[1]
-            f[n6, i] += hi[2]
-            f[n7, i] += hi[3]
-        dtc = viscous_step(ls, params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd, params[m, P_Q_QUADRATIC],
-                           params[m, P_Q_LINEAR], beta)
-        if dtc < dt_stable:
-            dt_stable = dtc
-            critical_cell = c
-    return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+                coef = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 64.0
+            # S = V sigma - sum_alpha Q^alpha (h^alpha.x)^T, accumulated mode by mode
+            t00, t11, t22 = vol * s0, vol * s1, vol * s2
+            t12 = t21 = vol * s3
+            t02 = t20 = vol * s4
+            t01 = t10 = vol * s5
+            Q = (0.0, 0.0, 0.0)
+            Qa = Qb = Qc = Qd = Q
+            for al in range(4):
+                w = (3, 6, 5, 7)[al]          # transform entry of mode al (xi eta, eta zeta, zeta xi, xi eta zeta)
+                hx0, hx1, hx2 = tx[w], ty[w], tz[w]
+                q0 = ux[w] - e00 * hx0 - e01 * hx1 - e02 * hx2
+                q1 = uy[w] - e10 * hx0 - e11 * hx1 - e12 * hx2
+                q2 = uz[w] - e20 * hx0 - e21 * hx1 - e22 * hx2
+                o0 = hourglass[c, 3 * al]
+                o1 = hourglass[c, 3 * al + 1]
+                o2 = hourglass[c, 3 * al + 2]
+                if hourglass_form == 1:
+                    Q0 = coef * q0
+                    Q1 = coef * q1
+                    Q2 = coef * q2
+                else:
+                    Q0 = r00 * o0 + r01 * o1 + r02 * o2 + coef * dt * q0
+                    Q1 = r10 * o0 + r11 * o1 + r12 * o2 + coef * dt * q1
+                    Q2 = r20 * o0 + r21 * o1 + r22 * o2 + coef * dt * q2
+                hourglass[c, 3 * al] = Q0
+                hourglass[c, 3 * al + 1] = Q1
+                hourglass[c, 3 * al + 2] = Q2
+                hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1 + (o2 + Q2) * q2)
+                t00 -= Q0 * hx0
+                t01 -= Q0 * hx1
+                t02 -= Q0 * hx2
+                t10 -= Q1 * hx0
+                t11 -= Q1 * hx1
+                t12 -= Q1 * hx2
+                t20 -= Q2 * hx0
+                t21 -= Q2 * hx1
+                t22 -= Q2 * hx2
+                if al == 0:
+                    Qa = (Q0, Q1, Q2)
+                elif al == 1:
+                    Qb = (Q0, Q1, Q2)
+                elif al == 2:
+                    Qc = (Q0, Q1, Q2)
+                else:
+                    Qd = (Q0, Q1, Q2)
+            # M = J^-1 S^T; the forces are the transposed transform of the coefficients
+            # (0, M_0/4, M_1/4, Q_xieta, M_2/4, Q_zetaxi, Q_etazeta, Q_xietazeta), split by zeta layer
+            for i in range(3):
+                if i == 0:
+                    ta, tb, tc = t00, t01, t02
+                elif i == 1:
+                    ta, tb, tc = t10, t11, t12
+                else:
+                    ta, tb, tc = t20, t21, t22
+                m0 = 0.25 * (i00 * ta + i01 * tb + i02 * tc)
+                m1 = 0.25 * (i10 * ta + i11 * tb + i12 * tc)
+                m2 = 0.25 * (i20 * ta + i21 * tb + i22 * tc)
+                lo = _unwalsh4(-m2, m0 - Qc[i], m1 - Qb[i], Qa[i] - Qd[i])
+                hi = _unwalsh4(m2, m0 + Qc[i], m1 + Qb[i], Qa[i] + Qd[i])
+                f[n0, i] += lo[0]
+                f[n1, i] += lo[1]
+                f[n2, i] += lo[2]
+                f[n3, i] += lo[3]
+                f[n4, i] += hi[0]
+                f[n5, i] += hi[1]
+                f[n6, i] += hi[2]
+                f[n7, i] += hi[3]
+            dtc = viscous_step(ls, params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd, params[m, P_Q_QUADRATIC],
+                               params[m, P_Q_LINEAR], beta)
+            if dtc < dt_stable:
+                dt_stable = dtc
+                critical_cell = c
+        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+
+    return hex_one_point
+
+
+# Each kernel is compiled twice, with ``elastic_only`` a constant of the closure (numba caches the two
+# apart: its cache key holds the closure's values).  For meshes of elastic rows without slots the
+# loop then holds no call to a law: a call left in the loop, even one never taken, cost a third of
+# the quad kernel's speed (docs/performance.md).
+KERNELS = {(2, flag): _quad_kernel(flag) for flag in (True, False)}
+KERNELS.update({(3, flag): _hex_kernel(flag) for flag in (True, False)})
+
+
+def one_point_kernel(gdim: int, elastic_only: bool):
+    """The one-point kernel of a mesh of dimension ``gdim``: ``quad_one_point`` (2) or ``hex_one_point``
+    (3), in its copy for ``elastic_only`` (``materials.update.is_elastic_only(params)``: every row
+    elastic without slots) or for any law."""
+    return KERNELS[gdim, bool(elastic_only)]

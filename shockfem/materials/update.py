@@ -1,6 +1,6 @@
 """The one material update every element kernel calls, per integration point and step:
 
-    update_stress(params, curves, m, state, c, p, sigma_n, d, w, dt, r)
+    update_stress(params, curves, m, state, c, p, sigma_n, d, w, dt, r, elastic_only)
         -> (sigma_np1, d_metal, plastic work density)
 
 1. the objective rotation of the stress (and of a J2 back stress) by the step's spin w
@@ -12,33 +12,39 @@
 ``state[c, p]`` is updated in place (state_n -> state_np1).  The element adds the viscous
 stresses for its forces with ``viscosity.viscous_stress(params, m, sigma_np1, d_metal, q)``.
 Tensors are 6-tuples (11, 22, 33, 23, 13, 12) [Pa, 1/s], the spin is (W23, W13, W12) [1/s], r the
-point's radius in axisymmetry [m] (0 otherwise).  ``shockfem verify material_point`` and the unit
-tests drive this very function.
+point's radius in axisymmetry [m] (0 otherwise).  ``elastic_only`` (a compile-time constant in the
+one-point kernels, ``is_elastic_only``) says every row is elastic without slots: steps 2 and 3 are
+then the elastic law alone, with no call.  ``shockfem verify material_point`` and the unit tests
+drive this very function.
 
 Compiled code: ``update_stress``, the dispatch ``laws.law_update`` and the rotation are inlined into
 each element kernel (numba ``inline="always"``); the laws and the slotted ring are called functions,
 each compiled once.  Numba inlines at its IR level and the cost grows steeply with nesting: with the
 return mapping inlined through update -> dispatch -> law, the cold compile of the first plastic run
-took 107-254 s against 73 s before this layer; as it is, 65 s (``docs/performance.md``).
+took 107-254 s against 73 s before this layer; as it is, 49-65 s (``docs/performance.md``).
 """
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
+from .elastic import elastic_update
 from .laws import law_update
-from .layout import J2, P_KINEMATIC, P_LAW, P_SLOT_WIDTH
+from .layout import ELASTIC, J2, P_KINEMATIC, P_LAW, P_SLOT_WIDTH
 from .objective import cayley_matrix, rotate_back_stress, rotate_symmetric
 from .slotted import slotted_hoop_rate
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def update_stress(params, curves, m, state, c, p, s, d, w, dt, r):
+def update_stress(params, curves, m, state, c, p, s, d, w, dt, r, elastic_only):
     """One point of material row ``m`` over one step (module docstring)."""
-    if w[0] != 0.0 or w[1] != 0.0 or w[2] != 0.0:
-        q = cayley_matrix(w[0], w[1], w[2], dt)
-        s = rotate_symmetric(s, q)
-        if params[m, P_LAW] == J2 and params[m, P_KINEMATIC] > 0.0:
-            rotate_back_stress(state, c, p, q)
+    q = cayley_matrix(w[0], w[1], w[2], dt)
+    s = rotate_symmetric(s, q)
+    if elastic_only:
+        s, work = elastic_update(params[m], s, d, dt)
+        return s, d, work
+    if params[m, P_LAW] == J2 and params[m, P_KINEMATIC] > 0.0:
+        rotate_back_stress(state, c, p, q)
     if r > 0.0 and params[m, P_SLOT_WIDTH] > 0.0:
         # int64 indices whatever the kernel's, so that the called hoop law is compiled once
         d = (d[0], d[1], slotted_hoop_rate(params, curves, int(m), state, int(c), int(p), s, d, dt, r), d[3], d[4],
@@ -46,3 +52,8 @@ def update_stress(params, curves, m, state, c, p, s, d, w, dt, r):
     s, work = law_update(params, curves, m, state, c, p, s, d, dt)
     return s, d, work
 
+
+def is_elastic_only(params: np.ndarray) -> bool:
+    """Whether every row of ``params`` is elastic without slots: the kernels then run their loop that
+    calls no law with state (``update_stress``'s ``elastic_only``)."""
+    return bool(np.all(params[:, P_LAW] == ELASTIC) and np.all(params[:, P_SLOT_WIDTH] == 0.0))

@@ -33,6 +33,7 @@ from ..contact.springs import DiscreteSpring
 from ..elements import full_integration, one_point
 from ..elements.cells import AXISYMMETRIC
 from ..materials.layout import STATE_SIZE
+from ..materials.update import is_elastic_only
 from . import nodal
 
 
@@ -123,6 +124,8 @@ class ExplicitSolver:
         self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, STATE_SIZE)
                                       if m.point_state else (1, 1, STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
+        # the one-point kernel's copy without law calls when every material is elastic
+        self._one_point = one_point.one_point_kernel(gdim, is_elastic_only(m.params)) if m.one_point else None
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         self.owned = np.zeros(len(self.x), dtype=bool)
         self.owned[:m.num_owned] = True
@@ -193,16 +196,16 @@ class ExplicitSolver:
         self.f_int[:] = 0.0
         hourglass_power = 0.0
         if m.one_point and m.gdim == 2:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = (one_point.quad_one_point(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
                 m.kinematics == AXISYMMETRIC, m.scene.thickness, m.hourglass_form,
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                self.f_int))
+                self.f_int)
         elif m.one_point:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = (one_point.hex_one_point(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                self.f_int))
+                self.f_int)
         else:
             dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = full_integration.stress_divergence(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,

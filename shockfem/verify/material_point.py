@@ -42,7 +42,7 @@ class MaterialPoint:
     def _update(self, d, w, dt, state):
         """The element kernels' material update at one point (no slots: radius 0)."""
         s, _, work = update_stress(self.params, self.curves, 0, state, 0, 0, tuple(map(float, self.sigma)),
-                                   tuple(map(float, d)), tuple(map(float, w)), dt, 0.0)
+                                   tuple(map(float, d)), tuple(map(float, w)), dt, 0.0, False)
         return np.array(s), work
 
     def step(self, d_given: dict, free: tuple, dt: float, w=(0.0, 0.0, 0.0), iterations=50):

@@ -28,7 +28,7 @@ class SlottedPoint:
     def step(self, d, dt):
         """Advance by dt at the ring's strain rate d; returns the hoop rate the metal took."""
         s, d_metal, _ = update_stress(self.params, self.curves, 0, self.state, 0, 0, tuple(map(float, self.sigma)),
-                                      tuple(map(float, d)), (0.0, 0.0, 0.0), dt, R)
+                                      tuple(map(float, d)), (0.0, 0.0, 0.0), dt, R, False)
         self.sigma = np.array(s)
         return d_metal[2]
 

@@ -7,7 +7,7 @@ import pytest
 
 from shockfem.materials.laws import LAWS
 from shockfem.materials.layout import P_LAW, S_EPS, STATE_SIZE
-from shockfem.materials.update import update_stress
+from shockfem.materials.update import is_elastic_only, update_stress
 from shockfem.model.materials import law_of, parameter_table
 from shockfem.verify.material_point import material
 
@@ -22,10 +22,10 @@ def _point(fields):
     return params, curves, np.zeros((1, 1, STATE_SIZE))
 
 
-def _step(point, s, d, w=(0.0, 0.0, 0.0), dt=1e-6):
+def _step(point, s, d, w=(0.0, 0.0, 0.0), dt=1e-6, elastic_only=False):
     params, curves, state = point
     return update_stress(params, curves, 0, state, 0, 0, tuple(map(float, s)), tuple(map(float, d)),
-                         tuple(map(float, w)), dt, 0.0)
+                         tuple(map(float, w)), dt, 0.0, elastic_only)
 
 
 def test_elastic_step_is_hookes_law():
@@ -46,6 +46,15 @@ def test_spin_turns_the_stress_without_changing_it():
     S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
     S1 = R @ S0 @ R.T
     assert np.allclose(s, [S1[0, 0], S1[1, 1], S1[2, 2], S1[1, 2], S1[0, 2], S1[0, 1]], rtol=0, atol=1e-6)
+
+
+def test_elastic_only_path_is_the_elastic_law():
+    """The kernels' loop for all-elastic meshes takes ``elastic_only``; for an elastic row it must give
+    what the dispatch through the registry gives, to the bit (same operations)."""
+    s0, d, w = (100e6, -20e6, 5e6, 7e6, -3e6, 30e6), (1.0, -0.3, 0.2, 0.1, 0.4, 0.5), (3e5, -1e5, 2e5)
+    point = _point(STEEL)
+    assert is_elastic_only(point[0])
+    assert _step(point, s0, d, w, elastic_only=True) == _step(point, s0, d, w, elastic_only=False)
 
 
 def test_perfect_plasticity_returns_to_the_yield_stress():
@@ -71,6 +80,7 @@ def test_every_registered_law_runs_through_the_update(name):
     assert law_of(material(fields)) == name
     point = _point(fields)
     assert point[0][0, P_LAW] == LAWS[name].id
+    assert is_elastic_only(point[0]) == (name == "elastic")      # only elastic rows skip the dispatch
     s, _, _ = _step(point, ZERO, (1e3, -300.0, -300.0, 0, 0, 0))
     assert np.all(np.isfinite(s)) and s[0] > 0
     assert len({law.id for law in LAWS.values()}) == len(LAWS)
