@@ -62,15 +62,19 @@ def load_scene(source: str | dict, overrides: list[str] | tuple = ()) -> Scene:
     return resolve(raw)
 
 
-def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields: bool = True) -> Run:
+def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields: bool = True,
+        on_step=None) -> Run:
     """Run a scene (a ``Scene``, a path or a dictionary) into the run directory ``out_dir``.
 
-    Raises ``shockfem.errors.UnstableRun`` when the run goes unstable (its outputs are kept); a
+    ``on_step(step)`` is called after every step with a read-only record: ``step.step``, ``step.t``
+    and ``step.dt`` [s], ``step.dt_stable`` [s], ``step.energy`` (a copy: ``kinetic``, ``internal``,
+    ``plastic``, ... [J], ``balance_error``) and ``step.messages``.  Raises
+    ``shockfem.errors.UnstableRun`` when the run goes unstable (its outputs are kept); a
     ``SceneError`` or ``ModelError`` on bad input."""
     from .runner import run_scene
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
-    run_scene(scene, out_dir, progress=progress, write_fields=fields, quiet=True)
+    run_scene(scene, out_dir, progress=progress, write_fields=fields, quiet=True, on_step=on_step)
     return load_run(out_dir)
 
 

@@ -58,8 +58,9 @@ def damping_step_note(scene: Scene, qualities, dt: float) -> str | None:
 
 
 def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = True,
-              write_fields: bool = True, quiet: bool = False) -> RunResult:
-    """Run ``scene`` and write the run directory ``out_dir``.
+              write_fields: bool = True, quiet: bool = False, on_step=None) -> RunResult:
+    """Run ``scene`` and write the run directory ``out_dir``; ``on_step(step)``, if given, is called
+    after every step with the loop's read-only ``solver.explicit.Step`` (t, dt, step, energies).
 
     Raises
     ------
@@ -77,7 +78,6 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     solver = ExplicitSolver(model)
     for msg in solver.log_messages:
         say(msg)
-    said = len(solver.log_messages)
     say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
         f"(safety factor {scene.safety_factor})")
     note = damping_step_note(scene, qualities, solver.stable_step())
@@ -111,10 +111,10 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
                     f"energy balance error {s.energy.balance_error:.3g} exceeds the limit "
                     f"{scene.energy_error_limit:.3g} at t = {s.t:.6g} s (step {s.step}): energy is being "
                     f"created, a sign of instability. Lower scene.safety_factor or refine the mesh.", s.t)
-            if len(s.log_messages) > said:
-                for msg in s.log_messages[said:]:
-                    say(msg)
-                said = len(s.log_messages)
+            for msg in s.messages:
+                say(msg)
+            if on_step is not None:
+                on_step(s)
             if bar is not None and s.step % 50 == 0:
                 bar.n = s.t * 1e6
                 bar.set_postfix_str(f"step {s.step}, dt {s.dt:.3g} s, E err {s.energy.balance_error:.1e}",

@@ -6,8 +6,10 @@
 
 (Belytschko, Liu & Moran, *Nonlinear Finite Elements*, Box 6.1.)  Each ``next()`` of
 ``ExplicitSolver.steps()`` advances one step in named phases (velocity, constraints,
-position, internal force, loads, acceleration, energy) and yields the solver, so that a
-progress bar, monitors, history recorders and field writers all consume the same stream.
+position, internal force, loads, acceleration, energy) and yields a read-only ``Step`` record
+(step, time, dt, stable step, a copy of the energies, the solver's messages), so that a progress
+bar, monitors and the API's ``on_step`` see the run without being able to change it; history
+recorders and field writers read the fields from the solver they were built on.
 
 Energy bookkeeping (every step, summed over owned nodes and reduced over ranks):
 kinetic ``0.5 m v^2``; internal work ``int f_int . du`` (trapezoidal), of which the
@@ -19,7 +21,7 @@ integrator; its size relative to the largest energy in play is ``balance_error``
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from dolfinx import fem
@@ -66,6 +68,17 @@ class Energies:
         """|balance| as a fraction of the largest energy in play (initial total if it dominates)."""
         ref = max(self.peak, self.initial, 1e-300)
         return abs(self.balance) / ref
+
+
+@dataclass(frozen=True)
+class Step:
+    """What the time loop yields after every step: numbers, not the solver (which keeps the state)."""
+    step: int                  # steps taken so far
+    t: float                   # time reached [s]
+    dt: float                  # the step just taken [s]
+    dt_stable: float           # the elements' stable step at t, before the safety factor [s]
+    energy: Energies           # a copy of the energy account at t [J]
+    messages: tuple = ()       # what the solver had to say during this step
 
 
 @dataclass
@@ -381,15 +394,17 @@ class ExplicitSolver:
         rs.center = center_new
 
     def steps(self, end_time: float):
-        """Yield the solver after every step until ``end_time``; stop with a diagnosis if the
+        """Yield a ``Step`` after every step until ``end_time``; stop with a diagnosis if the
         elements' stable step collapses below ``STEP_COLLAPSE`` of its first value."""
         first = self.dt_stable
+        said = len(self.log_messages)
         while self.t < end_time * (1 - 1e-12):
             if self.dt_stable < STEP_COLLAPSE * first:
                 self._step_collapsed(first)
             dt = min(self.stable_step(), end_time - self.t)
             self.advance(dt)
-            yield self
+            yield Step(self.step, self.t, dt, self.dt_stable, replace(self.energy), tuple(self.log_messages[said:]))
+            said = len(self.log_messages)
 
     def _step_collapsed(self, first: float):
         cell = self.critical_cell

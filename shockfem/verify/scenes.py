@@ -54,9 +54,9 @@ def solve(raw: dict, initial_velocity=None, probe=None, comm=MPI.COMM_WORLD, cac
     if probe:
         probe(solver)
     t0 = time.perf_counter()
-    for s in solver.steps(scene.end_time):
+    for _ in solver.steps(scene.end_time):
         if probe:
-            probe(s)
+            probe(solver)
     return solver, time.perf_counter() - t0
 
 

@@ -24,9 +24,18 @@ def _short_bar(speed="2 m/s"):
 
 def test_run_a_dictionary_and_read_it_back(tmp_path):
     """The bar's lower end driven at v: by t < L / c0 the wave has set c0 t of the bar's length L
-    moving at v, so the bar's mean velocity is v c0 t / L (1D theory; +0.17% measured at 2 mm)."""
-    run = shockfem.run(_short_bar(), str(tmp_path / "bar"))
+    moving at v, so the bar's mean velocity is v c0 t / L (1D theory; +0.17% measured at 2 mm).
+    ``on_step`` sees every step as a read-only record whose last one is the summary's."""
+    steps = []
+    run = shockfem.run(_short_bar(), str(tmp_path / "bar"), on_step=steps.append)
     assert run.status == "completed"
+    assert [s.step for s in steps] == list(range(1, run.summary["steps"] + 1))
+    assert steps[-1].t == pytest.approx(30e-6, rel=1e-12) and sum(s.dt for s in steps) == pytest.approx(30e-6)
+    assert all(0 < s.dt <= s.dt_stable for s in steps)
+    assert steps[-1].energy.balance_error == pytest.approx(run.summary["energy"]["balance_error"], rel=1e-12)
+    assert steps[1].energy.external < steps[-1].energy.external          # copies, not the solver's account
+    with pytest.raises(AttributeError):
+        steps[-1].t = 0.0                                                # the record is frozen
     t, vz = run.history["time"], run.history["bar.v_z"]
     assert run.units["time"] == "s" and run.units["bar.v_z"] == "m/s" and run.units["energy.kinetic"] == "J"
     c0 = math.sqrt(210e9 / 7850)
