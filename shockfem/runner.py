@@ -74,7 +74,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     meshed = build_mesh(scene, comm, log=say)
     qualities = check_mesh(scene, meshed, log=say)
     model = build_model(scene, meshed)
-    say("models that run:\n" + describe(model))
+    say("models that run:\n" + describe(model, scene))
     solver = ExplicitSolver(model)
     for msg in solver.log_messages:
         say(msg)
@@ -169,7 +169,7 @@ def _shock_metrics(out_dir: str, say) -> dict | None:
 def _body_maxima(solver: ExplicitSolver, per_cell: np.ndarray) -> np.ndarray:
     """The largest value of a per-cell quantity in every body, over all ranks."""
     m = solver.model
-    out = np.zeros(len(m.scene.bodies))
+    out = np.zeros(len(m.bodies))
     for i in range(len(out)):
         sel = m.cell_body[:len(per_cell)] == i
         out[i] = solver.comm.allreduce(float(per_cell[sel].max()) if sel.any() else 0.0, op=MPI.MAX)
@@ -184,7 +184,7 @@ def _track_max_von_mises(solver: ExplicitSolver, max_vm: np.ndarray):
 def _max_plastic_strain(solver: ExplicitSolver) -> np.ndarray:
     """Per body (the plastic strain only grows, so its final value is its maximum)."""
     if not solver.model.plastic:
-        return np.zeros(len(solver.model.scene.bodies))
+        return np.zeros(len(solver.model.bodies))
     return _body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
 
 
@@ -218,7 +218,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
                    "hourglass_to_internal": abs(e.hourglass) / max(abs(e.internal), 1e-300),
                    "contact": e.contact, "external_work": e.external, "balance": e.balance,
                    "balance_error": e.balance_error},
-        "models": describe(m).splitlines(),
+        "models": describe(m, scene).splitlines(),
         "contacts": {p.name: p.summary() for p in solver.contacts},
         "springs": {s.name: s.summary() for s in solver.springs},
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,

@@ -34,7 +34,7 @@ def _end_nodes(model: Model, spec: str) -> np.ndarray:
     if region:
         nodes = region_nodes(model.V, model.meshed, spec)
     else:
-        index = [b.name for b in model.scene.bodies].index(body_name)
+        index = model.body_names.index(body_name)
         nodes = np.flatnonzero(model.node_body == index)
     return nodes[nodes < model.num_owned]
 
@@ -52,7 +52,7 @@ class DiscreteSpring:
         centres = self._means(model.X0)[0]
         if spec.direction is not None:
             n = np.array(spec.direction, dtype=float)
-        elif model.scene.kinematics == "axisymmetric":
+        elif model.axisymmetric:
             n = np.array([0.0, 1.0 if centres[1][1] >= centres[0][1] else -1.0])   # along the axis
         else:
             n = centres[1] - centres[0]

@@ -45,7 +45,7 @@ class Surface:
 
 def _weight(model: Model, r: np.ndarray) -> np.ndarray:
     """The out-of-plane measure of 2D entities: 2 pi r (axisymmetric) or the thickness."""
-    return TWO_PI * r if model.scene.kinematics == "axisymmetric" else np.full_like(r, model.scene.thickness)
+    return TWO_PI * r if model.axisymmetric else np.full_like(r, model.thickness)
 
 
 def cell_volumes(model: Model, cells: np.ndarray) -> np.ndarray:
@@ -80,7 +80,7 @@ def _facet_geometry(model: Model, facets: np.ndarray) -> tuple[np.ndarray, np.nd
 def _boundary_facets(model: Model, spec: str) -> tuple[int, np.ndarray]:
     """Body index and the local facets of a "body" (its whole exterior) or a "body.region"."""
     body_name, _, region = spec.partition(".")
-    names = [b.name for b in model.scene.bodies]
+    names = model.body_names
     body = names.index(body_name)
     if region:
         return body, region_facets(model.meshed, spec)

@@ -62,7 +62,10 @@ class Load(_History):
 
 @dataclass
 class Model:
-    scene: Scene
+    """What the solver, contact and outputs need of a scene, on the mesh: arrays per node and cell,
+    material rows, constraints and loads, and the few scene entries they read (bodies, contacts,
+    springs, accelerometers, gravity, plane-strain thickness, safety factor).  Not the scene itself:
+    what reaches the time loop is listed here."""
     meshed: MeshedScene
     V: object                                  # P1 vector function space
     gdim: int
@@ -90,6 +93,15 @@ class Model:
     one_point: bool = False                     # reduced quads/hexes: elements/one_point.py kernels
     hourglass_form: int = 0                     # one_point.HOURGLASS_FORMS
     hourglass_coefficient: float = 0.0
+    bodies: tuple = ()                          # the scene's bodies: name, velocity, spin, position, rigid
+    contacts: tuple = ()                        # the scene's contact specs
+    springs: tuple = ()                         # the scene's discrete springs
+    accelerometers: tuple = ()                  # the scene's shock accelerometers
+    gravity: tuple | None = None                # [m/s^2]
+    thickness: float = 1.0                      # plane-strain depth [m]
+    safety_factor: float = 0.9                  # of the stable step
+    plastic: bool = False                       # does any deformable body yield?
+    point_state: bool = False                   # a state at every point (plastic bodies, slotted rings)
 
     @property
     def comm(self):
@@ -105,14 +117,12 @@ class Model:
         return self.wq.shape[0]
 
     @property
-    def plastic(self) -> bool:
-        """Does any deformable body yield?"""
-        return any(self.scene.material_of(b).plasticity for b in self.scene.bodies if not b.rigid)
+    def axisymmetric(self) -> bool:
+        return self.kinematics == kin.CODES["axisymmetric"]
 
     @property
-    def point_state(self) -> bool:
-        """Is a state stored at every point?  Only for plastic bodies and slotted rings."""
-        return self.plastic or any(slot_width(b, self.scene.kinematics) > 0 for b in self.scene.bodies if not b.rigid)
+    def body_names(self) -> list[str]:
+        return [b.name for b in self.bodies]
 
 
 def slot_width(body, kinematics: str) -> float:
@@ -213,13 +223,18 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                           for i in range(len(scene.bodies))])
 
     cell_sign = cell_orientation(dofmap, X0, dN)
-    model = Model(scene, meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
+    plastic = any(scene.material_of(b).plasticity for b in scene.bodies if not b.rigid)
+    model = Model(meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
                   mass, node_body, cell_body, cell_material, kernel_cells, params, curves,
                   kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,
                   one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
-                  hourglass_coefficient=scene.hourglass_coefficient)
+                  hourglass_coefficient=scene.hourglass_coefficient, bodies=tuple(scene.bodies),
+                  contacts=tuple(scene.contacts), springs=tuple(scene.springs),
+                  accelerometers=tuple(scene.shock.accelerometers), gravity=scene.gravity,
+                  thickness=scene.thickness, safety_factor=scene.safety_factor, plastic=plastic,
+                  point_state=plastic or bool(slotted))
     model.rigid = [_rigid_body(model, i) for i in rigid_ids]
-    _add_boundaries(model)
+    _add_boundaries(model, scene)
     return model
 
 
@@ -240,8 +255,8 @@ def _rigid_body(model: Model, index: int) -> RigidBody:
     return RigidBody(index, nodes, owned, M, c, inertia, rel)
 
 
-def _add_boundaries(model: Model):
-    scene, V, gdim = model.scene, model.V, model.gdim
+def _add_boundaries(model: Model, scene: Scene):
+    V, gdim = model.V, model.gdim
     if scene.kinematics == "axisymmetric":
         # Nodes on the axis cannot move radially (u_r = 0 at r = 0 by symmetry).
         axis = np.flatnonzero(np.abs(model.X0[:, 0]) < 1e-12 * max(1.0, np.abs(model.X0).max()))
@@ -279,10 +294,10 @@ def plane_normal_axis(points: np.ndarray, comm, region: str) -> int:
     return int(flat[0])
 
 
-def describe(model: Model) -> str:
-    """One line per body saying which model runs for it ("model only what a scene needs")."""
+def describe(model: Model, sc: Scene) -> str:
+    """One line per body of the scene ``sc`` saying which model runs for it ("model only what a
+    scene needs")."""
     lines = []
-    sc = model.scene
     cell = model.meshed.mesh.topology.cell_name()
     if model.one_point:
         element = (f"{cell}s, one point + {sc.hourglass} hourglass control "
@@ -315,8 +330,8 @@ def describe(model: Model) -> str:
                      + (", compression only" if sp.compression_only else ""))
     if sc.gravity:
         lines.append(f"  gravity: {sc.gravity} m/s^2")
-    if model.scene.damping:
-        d = model.scene.damping
+    if sc.damping:
+        d = sc.damping
         a, be = d.coefficients()
         lines.append(f"  damping: {d.kind}, {d.ratio:.3g} of critical at {d.frequency:.6g} Hz "
                      f"(alpha = {a:.4g} 1/s, beta = {be:.4g} s)"

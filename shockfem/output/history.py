@@ -26,20 +26,20 @@ class HistoryRecorder:
     def __init__(self, solver: ExplicitSolver):
         m = solver.model
         self.solver = solver
-        axes = ("r", "z") if m.scene.kinematics == "axisymmetric" else "xyz"[:m.gdim]
+        axes = ("r", "z") if m.axisymmetric else "xyz"[:m.gdim]
         self.columns = [("time", "s")]
-        for b in m.scene.bodies:
+        for b in m.bodies:
             self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
             self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
-        self.meters = [_place_accelerometer(solver, am) for am in m.scene.shock.accelerometers]
+        self.meters = [_place_accelerometer(solver, am) for am in m.accelerometers]
         self.notes = [note for _, _, note in self.meters]
-        for am in m.scene.shock.accelerometers:
+        for am in m.accelerometers:
             self.columns += [(f"accelerometer.{am.name}.v_{a}", "m/s") for a in axes]
-        for c in m.scene.contacts:
+        for c in m.contacts:
             # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
             self.columns += [(f"contact.{c.name}.normal_{a}", "N") for a in axes]
             self.columns += [(f"contact.{c.name}.friction_{a}", "N") for a in axes]
-        for sp in m.scene.springs:
+        for sp in m.springs:
             # the spring's force on its end a, as a vector (tension T along the unit a -> b)
             self.columns += [(f"spring.{sp.name}.force_{a}", "N") for a in axes]
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
@@ -87,7 +87,7 @@ class HistoryRecorder:
 def _place_accelerometer(solver: ExplicitSolver, meter) -> tuple[int, int, str]:
     """(local node, owning rank, note): the owned node of the accelerometer's body nearest to its point."""
     m = solver.model
-    body = [b.name for b in m.scene.bodies].index(meter.body)
+    body = m.body_names.index(meter.body)
     candidates = np.flatnonzero(solver.owned & (m.node_body == body))
     point = np.asarray(meter.point)
     if len(candidates):

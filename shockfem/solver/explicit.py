@@ -128,9 +128,9 @@ class ExplicitSolver:
         self.dt_contact = np.inf       # smallest stable step of the active contact springs
         self._said_contact_dt = False
         self.log_messages: list[str] = []
-        self.contacts = [ContactPair(m, c) for c in m.scene.contacts]
-        self.springs = [DiscreteSpring(m, c) for c in m.scene.springs]
-        self.f_gravity = (m.mass[:, None] * np.asarray(m.scene.gravity)[None, :] if m.scene.gravity
+        self.contacts = [ContactPair(m, c) for c in m.contacts]
+        self.springs = [DiscreteSpring(m, c) for c in m.springs]
+        self.f_gravity = (m.mass[:, None] * np.asarray(m.gravity)[None, :] if m.gravity
                           else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # state per point (plastic strain, its rate, back stress, slot closure); a stub if no body needs one
@@ -177,7 +177,7 @@ class ExplicitSolver:
     # ----------------------------------------------------------------- set-up
     def _set_initial_velocity(self):
         m = self.model
-        for i, body in enumerate(m.scene.bodies):
+        for i, body in enumerate(m.bodies):
             nodes = m.node_body == i
             self.v[nodes] = np.asarray(body.velocity)
             if body.spin and m.gdim == 3:
@@ -186,7 +186,7 @@ class ExplicitSolver:
                 self.v[nodes, 0] += -body.spin * rel[:, 1]
                 self.v[nodes, 1] += body.spin * rel[:, 0]
         for k, (rb, rs) in enumerate(zip(m.rigid, self.rigid_states)):
-            body = m.scene.bodies[rb.index]
+            body = m.bodies[rb.index]
             rs.velocity = np.asarray(body.velocity, dtype=float)
             if m.gdim == 3 and body.spin:
                 omega = np.array([0.0, 0.0, body.spin])
@@ -211,7 +211,7 @@ class ExplicitSolver:
         if m.one_point and m.gdim == 2:
             dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
-                m.kinematics == AXISYMMETRIC, m.scene.thickness, m.hourglass_form,
+                m.kinematics == AXISYMMETRIC, m.thickness, m.hourglass_form,
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
                 self.f_int)
         elif m.one_point:
@@ -222,7 +222,7 @@ class ExplicitSolver:
         else:
             dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = full_integration.stress_divergence(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
-                m.kinematics, m.scene.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
+                m.kinematics, m.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
                 self.sigma, self.f_int)
         if self.parallel:
             compat.reverse_add(self._f_fn)
@@ -273,7 +273,7 @@ class ExplicitSolver:
     # ------------------------------------------------------------ diagnosis
     def _body_of_cell(self, cell: int) -> str:
         b = self.model.cell_body[cell] if 0 <= cell < len(self.model.cell_body) else -1
-        return self.model.scene.bodies[b].name if b >= 0 else "?"
+        return self.model.bodies[b].name if b >= 0 else "?"
 
     def _diagnose_cell(self, cell: int, what: str) -> str:
         tdim = self.model.meshed.mesh.topology.dim
@@ -286,7 +286,7 @@ class ExplicitSolver:
 
     def _check_finite(self, node: int):
         if node >= 0:
-            body = self.model.scene.bodies[self.model.node_body[node]].name
+            body = self.model.bodies[self.model.node_body[node]].name
             raise UnstableRun(f"the solution is not finite (NaN/Inf): body '{body}', node {node} at "
                               f"x = {np.array2string(self.x[node], precision=4)} m, t = {self.t:.6g} s "
                               f"(step {self.step}). The step {self.dt:.3g} s may exceed the stable step "
@@ -299,7 +299,7 @@ class ExplicitSolver:
         dt = self.dt_stable
         if np.isfinite(self.dt_contact):
             dt = 1.0 / np.sqrt(1.0 / dt ** 2 + 1.0 / self.dt_contact ** 2)
-        return self.model.scene.safety_factor * dt
+        return self.model.safety_factor * dt
 
     def advance(self, dt: float):
         """One central-difference step of size ``dt`` (t_n -> t_{n+1})."""
@@ -376,7 +376,7 @@ class ExplicitSolver:
         m = self.model
         force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
         F = self._sum(force[rb.owned].sum(axis=0))
-        if m.scene.kinematics == "axisymmetric":
+        if m.axisymmetric:
             F[0] = 0.0       # a ring's radial forces cancel: an axisymmetric rigid body moves along z
         rs.velocity = rs.velocity + dt_avg * F / rb.mass
         center_new = rs.center + dt * rs.velocity
@@ -422,7 +422,7 @@ class ExplicitSolver:
         """Mass-weighted mean velocity and acceleration of every body, (bodies, gdim) each."""
         m = self.model
         o = self.owned
-        nb = len(m.scene.bodies)
+        nb = len(m.bodies)
         mv = np.zeros((nb, m.gdim))
         ma = np.zeros((nb, m.gdim))
         v_n = self.v + 0.5 * self.dt * self.a

@@ -148,13 +148,13 @@ def test_run_log_states_the_approximations_of_each_part():
     has its slots."""
     from shockfem.model import describe
     path = next(p for p in GALLERY if p.endswith("split_cone.toml"))
-    axi = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)))
+    axi = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)), s)
     assert "approximation: slots in axisymmetry as a slotted-ring hoop law: the 4 segments carry no hoop" in axi
     assert "approximation: starts overlapping the body it fits by the interference 0.05 mm" in axi
-    solid = describe(build_model(s := _load(path, "3d", "tet"), build_mesh(s, log=lambda *a: None)))
+    solid = describe(build_model(s := _load(path, "3d", "tet"), build_mesh(s, log=lambda *a: None)), s)
     assert "slotted-ring" not in solid
     path = next(p for p in GALLERY if p.endswith("projectile.toml"))
-    text = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)))
+    text = describe(build_model(s := _load(path), build_mesh(s, log=lambda *a: None)), s)
     assert "approximation: ogive nose blunted by a flat tip (meplat) of radius" in text
 
 
