@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from mpi4py import MPI
 
+from .. import compat
 from ..errors import ModelError
 if TYPE_CHECKING:                         # the scene imports the catalog of parts from this package
     from ..scene import Scene
@@ -284,7 +285,6 @@ def build_mesh(scene: Scene, comm=MPI.COMM_WORLD, cache_dir: str | None = None,
                log=print) -> MeshedScene:
     """Mesh (or load from the cache) the scene's bodies and distribute the mesh over ``comm``."""
     import gmsh
-    from dolfinx.io import gmshio
 
     cache_dir = cache_dir or default_cache_dir()
     key = mesh_key(scene)
@@ -312,7 +312,7 @@ def build_mesh(scene: Scene, comm=MPI.COMM_WORLD, cache_dir: str | None = None,
                 json.dump(region_ids, fh, indent=1)
             log(f"mesh: wrote {msh_path}")
     region_ids = comm.bcast(region_ids, root=0)
-    mesh, cell_tags, facet_tags = gmshio.model_to_mesh(gmsh.model, comm, 0, gdim=scene.gdim)
+    mesh, cell_tags, facet_tags = compat.mesh_from_gmsh(gmsh.model, comm, 0, scene.gdim)
     if comm.rank == 0:
         gmsh.clear()
     mesh.name = "mesh"

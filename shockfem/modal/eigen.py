@@ -23,6 +23,7 @@ from dolfinx.mesh import compute_midpoints
 from mpi4py import MPI
 from petsc4py import PETSc
 
+from .. import compat
 from ..errors import ModelError
 from ..model import kinematics as kin
 from ..model.model import plane_normal_axis
@@ -66,7 +67,7 @@ def _conditions(scene: Scene, meshed, V, body_index: int, constrained: bool):
     names = []
     if scene.kinematics == "axisymmetric":
         # u_r = 0 on the axis (the explicit solver holds it too)
-        V0, _ = V.sub(0).collapse()
+        V0 = compat.collapse(V.sub(0))
         axis = fem.locate_dofs_geometrical((V.sub(0), V0), lambda x: np.isclose(x[0], 0.0))
         bcs.append(fem.dirichletbc(PETSc.ScalarType(0), axis[0], V.sub(0)))
     if not constrained:
@@ -86,7 +87,7 @@ def _conditions(scene: Scene, meshed, V, body_index: int, constrained: bool):
             comp = plane_normal_axis(mid, mesh.comm, bc.region)
         else:
             comp = bc.components[0]
-        Vi, _ = V.sub(comp).collapse()
+        Vi = compat.collapse(V.sub(comp))
         dofs = fem.locate_dofs_topological((V.sub(comp), Vi), fdim, facets)
         bcs.append(fem.dirichletbc(PETSc.ScalarType(0), dofs[0], V.sub(comp)))
         names.append(f"{bc.region} held along {'rz'[comp] if scene.kinematics == 'axisymmetric' else 'xyz'[comp]}")
@@ -111,7 +112,7 @@ def body_modes(scene: Scene, meshed, body: str, count: int = 10, degree: int = 1
         raise ModelError(f"body {body} is rigid: it has no natural frequencies")
     mesh = meshed.mesh
     mat = scene.material_of(scene.bodies[index])
-    V = fem.VectorFunctionSpace(mesh, ("CG", degree))
+    V = compat.vector_space(mesh, degree)
     u, w = ufl.TrialFunction(V), ufl.TestFunction(V)
     dx = ufl.Measure("dx", domain=mesh, subdomain_data=meshed.cell_tags)(index + 1)
     lam, mu, rho = (fem.Constant(mesh, PETSc.ScalarType(v)) for v in (mat.lam, mat.mu, mat.rho))

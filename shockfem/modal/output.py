@@ -7,6 +7,7 @@ import os
 
 from dolfinx import fem, io
 
+from .. import compat
 from .labels import firsts
 
 
@@ -17,7 +18,7 @@ def write_modes(out_dir: str, modes, labels: list[dict]) -> dict:
     if comm.rank == 0:
         os.makedirs(out_dir, exist_ok=True)
     comm.barrier()
-    P1 = fem.VectorFunctionSpace(mesh, ("CG", 1))
+    P1 = compat.vector_space(mesh, 1)
     shape = fem.Function(P1, name="mode_shape")
     with io.XDMFFile(comm, os.path.join(out_dir, "modes.xdmf"), "w") as xdmf:
         xdmf.write_mesh(mesh)

@@ -136,9 +136,8 @@ def slot_width(body, kinematics: str) -> float:
 def _lumped_mass(V, cell_rho, scene: Scene, gdim: int) -> np.ndarray:
     """Row-sum lumped mass m_a = int rho N_a dV (positive for linear elements)."""
     mesh = V.mesh
-    DG0 = fem.FunctionSpace(mesh, ("DG", 0))
-    rho = fem.Function(DG0)
-    rho.x.array[:] = cell_rho
+    rho = fem.Function(compat.cell_space(mesh))
+    compat.set_cell_values(rho, cell_rho, len(cell_rho))
     w = ufl.TestFunction(V)
     weight = kin.measure_weight(mesh, scene.kinematics, scene.thickness)
     form = fem.form(rho * ufl.dot(w, ufl.as_vector([1.0] * gdim)) * weight * ufl.dx)
@@ -178,14 +177,14 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     comm = mesh.comm
     gdim = scene.gdim
     tdim = mesh.topology.dim
-    V = fem.VectorFunctionSpace(mesh, ("CG", 1))
+    V = compat.vector_space(mesh, 1)
     imap = V.dofmap.index_map
     num_nodes = imap.size_local + imap.num_ghosts
     cell_map = mesh.topology.index_map(tdim)
     num_cells = cell_map.size_local + cell_map.num_ghosts
     cell_name = mesh.topology.cell_name()
     nn = {"triangle": 3, "quadrilateral": 4, "tetrahedron": 4, "hexahedron": 8}[cell_name]
-    dofmap = np.ascontiguousarray(V.dofmap.list.array.reshape(-1, nn)[:num_cells], dtype=np.int32)
+    dofmap = np.ascontiguousarray(compat.cell_dofs(V, nn)[:num_cells])
     X0 = np.ascontiguousarray(V.tabulate_dof_coordinates()[:num_nodes, :gdim])
 
     cell_body = np.full(num_cells, -1, dtype=np.int32)

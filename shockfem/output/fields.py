@@ -16,6 +16,7 @@ import os
 import numpy as np
 from dolfinx import fem, io
 
+from .. import compat
 from ..materials.layout import S_EPS, S_RATE
 from ..solver.explicit import ExplicitSolver
 
@@ -51,7 +52,7 @@ class _CellFields:
 
     def __init__(self, solver: ExplicitSolver, names):
         mesh = solver.model.meshed.mesh
-        DG0 = fem.FunctionSpace(mesh, ("DG", 0))
+        DG0 = compat.cell_space(mesh)
         self.solver = solver
         self.functions = {n: fem.Function(DG0, name=n) for n in CELL_FIELDS if n in names}
         self.num_cells = mesh.topology.index_map(mesh.topology.dim).size_local
@@ -59,8 +60,7 @@ class _CellFields:
     def write(self, file: io.XDMFFile, t: float):
         n = self.num_cells
         for name, fn in self.functions.items():
-            fn.x.array[:n] = cell_values(self.solver, name)[:n]
-            fn.x.scatter_forward()
+            compat.set_cell_values(fn, cell_values(self.solver, name), n)
             file.write_function(fn, t)
 
 
