@@ -62,6 +62,15 @@ def collapse(subspace):
     return collapsed
 
 
+def assemble_petsc_matrix(form, bcs, diagonal: float):
+    """The assembled PETSc matrix of a bilinear form, rows and columns of the ``bcs`` dofs zeroed with
+    ``diagonal`` on the diagonal."""
+    import dolfinx.fem.petsc as fem_petsc
+    A = fem_petsc.assemble_matrix(form, bcs=bcs, diagonal=diagonal)
+    A.assemble()
+    return A
+
+
 def mesh_from_gmsh(model, comm, rank: int, gdim: int):
     """(mesh, cell tags, facet tags) from the gmsh model held on ``rank``, distributed over ``comm``."""
     from dolfinx.io import gmshio

@@ -119,11 +119,8 @@ def body_modes(scene: Scene, meshed, body: str, count: int = 10, degree: int = 1
     k_form = fem.form(kin.elastic_energy_form(u, w, lam, mu, scene.kinematics, scene.thickness) * dx)
     m_form = fem.form(kin.inertia_form(u, w, rho, scene.kinematics, scene.thickness) * dx)
     bcs, conditions = _conditions(scene, meshed, V, index, constrained)
-    import dolfinx.fem.petsc as fem_petsc
-    K = fem_petsc.assemble_matrix(k_form, bcs=bcs, diagonal=1.0)
-    K.assemble()
-    M = fem_petsc.assemble_matrix(m_form, bcs=bcs, diagonal=0.0)
-    M.assemble()
+    K = compat.assemble_petsc_matrix(k_form, bcs, diagonal=1.0)
+    M = compat.assemble_petsc_matrix(m_form, bcs, diagonal=0.0)
     if mass == "lumped":
         M = _lumped(M)
     extent = _extent(mesh, meshed.cell_tags.find(index + 1))
