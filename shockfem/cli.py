@@ -99,16 +99,25 @@ def _scene(args):
     return load_scene(args.scene, args.set)
 
 
-def _chain_raw(args):
-    """The raw chain scene of ``args.scene`` with its overrides, or None for an ordinary scene."""
-    from .amplifier.chain import is_chain
+def _raw(args) -> dict:
+    """The raw scene of ``args.scene`` with its ``--set`` overrides."""
     from .scene import apply_override, read_toml
     raw = read_toml(args.scene)
-    if not is_chain(raw):
-        return None
     for assignment in args.set:
         raw = apply_override(raw, assignment)
     return raw
+
+
+def _chain_raw(args):
+    """The raw chain scene of ``args.scene`` with its overrides, or None for an ordinary scene."""
+    from .amplifier.chain import is_chain
+    raw = _raw(args)
+    return raw if is_chain(raw) else None
+
+
+def _is_launcher_scene(raw: dict) -> bool:
+    """A gas-gun scene: a [launcher] table and no bodies (a chain's [launcher] fires its first body)."""
+    return "launcher" in raw and "bodies" not in raw and "chain" not in raw
 
 
 def main(argv=None) -> int:
@@ -138,6 +147,13 @@ def _dispatch(args) -> int:
             spec, scene, _ = resolve_chain(chain)
             print(f"{args.scene}: ok (chain of {len(scene.bodies)} bodies, {spec.architecture}, "
                   f"fidelity {spec.fidelity})")
+            return EXIT_OK
+        raw = _raw(args)
+        if _is_launcher_scene(raw):
+            from .launcher.scene import resolve_design, resolve_launcher
+            name, gun, _ = resolve_launcher(raw)
+            design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
+            print(f"{args.scene}: ok (launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design})")
             return EXIT_OK
         scene = _scene(args)
         print(f"{args.scene}: ok ({scene.kinematics}, {len(scene.bodies)} bodies, "
@@ -254,27 +270,21 @@ def _launcher(args) -> int:
 def _amplifier(args) -> int:
     from .amplifier import rigid
     from .amplifier.gain import cylinder_size, design
-    from .scene import SceneError
+    from .scene.checker import Checker
     from .scene.library import LIBRARY
-    from .units import UnitError, to_si
-    problems, values = [], {}
-    for name, dim in (("article", "mass"), ("target", "velocity"), ("launch", "velocity")):
-        try:
-            values[name] = to_si(getattr(args, name), dim)
-            if values[name] <= 0:
-                problems.append(f"--{name}: must be > 0, got {getattr(args, name)}")
-        except UnitError as e:
-            problems.append(f"--{name}: {e}")
-    if not 0 < args.restitution <= 1:
-        problems.append(f"--restitution: must be in (0, 1], got {args.restitution}")
+    from .units import to_si
+    ck = Checker()      # the options, checked like a scene's fields (every problem, exit 2)
+    options = vars(args)
+    values = {name: ck.quantity({f"--{name}": options[name]}, f"--{name}", "", dimension, positive=True)
+              for name, dimension in (("article", "mass"), ("target", "velocity"), ("launch", "velocity"))}
+    ck.number({"--restitution": args.restitution}, "--restitution", "", 0.9, 0.0, 1.0,
+              "a coefficient of restitution", low_open=True)
     if args.masses < 2:
-        problems.append(f"--masses: a chain needs at least 2 masses, got {args.masses}")
-    if args.material not in LIBRARY:
-        problems.append(f"--material: unknown {args.material!r} (library: {', '.join(LIBRARY)})")
-    if args.aspect <= 0:
-        problems.append(f"--aspect: must be > 0, got {args.aspect}")
-    if problems:
-        raise SceneError(problems)
+        ck.fail("--masses", f"a chain needs at least 2 masses, got {args.masses}")
+    ck.choice({"--material": args.material}, "--material", "", tuple(LIBRARY))
+    if not args.aspect > 0:
+        ck.fail("--aspect", f"must be > 0, got {args.aspect}")
+    ck.done()
     d = design(args.architecture, values["article"], values["target"], values["launch"], args.restitution,
                args.masses)
     print(f"{args.architecture}, {args.masses} masses, e = {args.restitution:g}: speed gain "

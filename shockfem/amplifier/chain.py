@@ -61,7 +61,8 @@ import numpy as np
 from ..parts.catalog import PARTS
 from ..metrics.stages import stage_table
 from ..scene import SceneError, resolve
-from ..units import G0, UnitError, to_si
+from ..scene.checker import Checker
+from ..units import G0
 from . import rigid
 from .interfaces import flat_face_stress, pad_dashpot, pad_peak_force, reduced_mass
 from .bars import Bar, Interface, run_bars
@@ -115,79 +116,48 @@ def is_chain(raw: dict) -> bool:
     return "chain" in raw
 
 
-def _spec(raw: dict, n: int, problems: list[str]) -> ChainSpec:
-    c = raw.get("chain")
-    if not isinstance(c, dict):
-        problems.append("chain: must be a table")
-        c = {}
-    for k in c:
-        if k not in CHAIN_FIELDS:
-            problems.append(f"chain.{k}: unknown field (allowed: {', '.join(CHAIN_FIELDS)})")
+def _spec(raw: dict, n: int, ck: Checker) -> ChainSpec:
+    """The [chain] table of a chain of ``n`` bodies, read through the scene checker ``ck``."""
+    c = ck.table(raw, "chain", "chain")
+    ck.unknown(c, CHAIN_FIELDS, "chain")
+    arch = ck.choice(c, "architecture", "chain", ARCHITECTURES, "launched-chain")
+    fidelity = ck.choice(c, "fidelity", "chain", FIDELITIES, "rigid")
+    interfaces = max(n - 1, 0)
 
-    def quantity(key, dim, default=None, positive=True):
-        if key not in c:
-            if default is None:
-                problems.append(f"chain.{key}: missing (a {dim})")
-                return 1.0
-            return default
-        try:
-            v = to_si(c[key], dim)
-        except UnitError as e:
-            problems.append(f"chain.{key}: {e}")
-            return 1.0
-        if positive and not v > 0:
-            problems.append(f"chain.{key}: must be > 0, got {c[key]}")
-        return v
+    def per_interface(key, default, read):
+        """One value for every interface, or a list of one per interface, each read by ``read(d, key)``."""
+        given = c.get(key, default)
+        values = given if isinstance(given, list) else [given] * interfaces
+        if len(values) != interfaces:
+            ck.fail(f"chain.{key}", f"one value or a list of {interfaces} (one per interface), got {given!r}")
+            return (read({key: default}, key),) * interfaces
+        return tuple(read({key: v}, key) for v in values)
 
-    arch = c.get("architecture", "launched-chain")
-    if arch not in ARCHITECTURES:
-        problems.append(f"chain.architecture: must be one of {', '.join(ARCHITECTURES)}; got {arch!r}")
-    fidelity = c.get("fidelity", "rigid")
-    if fidelity not in FIDELITIES:
-        problems.append(f"chain.fidelity: must be one of {', '.join(FIDELITIES)}; got {fidelity!r}")
-    e = c.get("restitution", 0.9)
-    e = list(e) if isinstance(e, list) else [e] * max(n - 1, 0)
-    if len(e) != max(n - 1, 0) or not all(isinstance(x, (int, float)) and 0 < x <= 1 for x in e):
-        problems.append(f"chain.restitution: one number in (0, 1] or a list of {n - 1} (one per interface); "
-                        f"got {c.get('restitution')!r}")
-        e = [0.9] * max(n - 1, 0)
-    damping = c.get("damping", 0.02)
-    if not isinstance(damping, (int, float)) or not 0 <= damping < 1:
-        problems.append(f"chain.damping: a damping ratio in [0, 1), got {damping!r}")
-        damping = 0.0
+    e = per_interface("restitution", 0.9, lambda d, k: ck.number(d, k, "chain", 0.9, 0.0, 1.0,
+                                                                  "a coefficient of restitution", low_open=True))
+    damping = ck.number(c, "damping", "chain", 0.02, 0.0, 1.0, "a damping ratio", high_open=True)
     if "launcher" in raw and "launch_speed" in c:
-        problems.append("chain.launch_speed: the [launcher] sets the launch speed; give one or the other")
-    speed = quantity("launch_speed", "velocity", 1.0 if "launcher" in raw else None)
-    def per_interface(key, dim):
-        given = c[key] if isinstance(c[key], list) else [c[key]] * max(n - 1, 0)
-        try:
-            values = tuple(to_si(x, dim) if x != 0 else 0.0 for x in given)
-        except UnitError as err:
-            problems.append(f"chain.{key}: {err}")
-            return ()
-        if len(given) != max(n - 1, 0) or any(x < 0 for x in values):
-            problems.append(f"chain.{key}: one {dim} >= 0 or a list of {n - 1} (one per interface, 0 for "
-                            f"none); got {c[key]!r}")
-            return ()
-        return values
-    pads = per_interface("pad_stiffness", "stiffness") if "pad_stiffness" in c else ()
+        ck.fail("chain.launch_speed", f"the [launcher] sets the launch speed; give one or the other, got "
+                                      f"{c['launch_speed']}")
+    speed = ck.quantity(c, "launch_speed", "chain", "velocity", 1.0 if "launcher" in raw else None, positive=True)
+    pads = (per_interface("pad_stiffness", 0.0, lambda d, k: ck.quantity(d, k, "chain", "stiffness", 0.0,
+                                                                          nonnegative=True))
+            if "pad_stiffness" in c else ())
     thickness: tuple[float, ...] = ()
     if any(pads):
         if "pad_thickness" not in c:
-            problems.append("chain.pad_thickness: missing (the pads' free thickness, e.g. \"50 mm\"; more than "
-                            "their compression, or the faces meet)")
+            ck.fail("chain.pad_thickness", "missing (the pads' free thickness, e.g. \"50 mm\"; more than their "
+                                           "compression, or the faces meet)")
         else:
-            thickness = per_interface("pad_thickness", "length")
-            if thickness and any(k and not t for k, t in zip(pads, thickness)):
-                problems.append("chain.pad_thickness: every pad needs a thickness > 0")
-    pad_damping = c.get("pad_damping", 0.02)
-    if not isinstance(pad_damping, (int, float)) or not 0 <= pad_damping < 1:
-        problems.append(f"chain.pad_damping: a damping ratio in [0, 1), got {pad_damping!r}")
-        pad_damping = 0.0
+            thickness = per_interface("pad_thickness", 0.0, lambda d, k: ck.quantity(d, k, "chain", "length", 0.0,
+                                                                                      nonnegative=True))
+            if any(k and not t for k, t in zip(pads, thickness)):
+                ck.fail("chain.pad_thickness", f"every pad needs a thickness > 0, got {c['pad_thickness']!r}")
+    pad_damping = ck.number(c, "pad_damping", "chain", 0.02, 0.0, 1.0, "a damping ratio", high_open=True)
     return ChainSpec(str(c.get("name", "chain")), arch, speed, fidelity,
-                     quantity("gap", "length", 1e-3), tuple(float(x) for x in e), float(damping),
-                     quantity("end_time", "time", 0.0) or None, pads if thickness else (), thickness,
-                     float(pad_damping))
+                     ck.quantity(c, "gap", "chain", "length", 1e-3, positive=True), e, damping,
+                     ck.quantity(c, "end_time", "chain", "time", 0.0, nonnegative=True) or None,
+                     pads if thickness else (), thickness, pad_damping)
 
 
 def _height(body) -> float:
@@ -265,33 +235,31 @@ def first_frequencies(scene, heights: list[float]) -> list[float]:
 def resolve_chain(raw: dict, fidelity: str | None = None):
     """Check a chain scene; returns (spec, scene) with the scene resolved for the fidelity's
     kinematics (axisymmetric for rigid and 1d, whose bodies are parts of revolution)."""
-    problems: list[str] = []
+    ck = Checker()
     bodies = raw.get("bodies")
     if not isinstance(bodies, list) or len(bodies) < 2:
-        raise SceneError(["bodies: a chain needs at least two [[bodies]] in chain order"])
-    for k in raw:
-        if k not in ("chain", "materials", "bodies", "shock", "launcher"):
-            problems.append(f"{k}: not part of a chain scene (allowed: chain, materials, bodies, shock, launcher)")
+        raise SceneError([f"bodies: a chain needs at least two [[bodies]] in chain order, got {bodies!r}"])
+    ck.unknown(raw, ("chain", "materials", "bodies", "shock", "launcher"), "")
     for i, b in enumerate(bodies):
+        if not isinstance(b, dict):
+            ck.fail(f"bodies[{i}]", f"must be a table, got {b!r}")
         for k in ("position", "velocity"):
             if isinstance(b, dict) and k in b:
-                problems.append(f"bodies[{i}].{k}: the chain sets it (launch_speed, gap); remove it")
+                ck.fail(f"bodies[{i}].{k}", f"the chain sets it (launch_speed, gap); remove it, got {b[k]!r}")
         if isinstance(b, dict) and b.get("shape") not in PARTS:
-            problems.append(f"bodies[{i}].shape: a chain body is a part of revolution "
-                            f"({', '.join(p for p in PARTS)}), got {b.get('shape')!r}")
-    spec = _spec(raw, len(bodies), problems)
+            ck.fail(f"bodies[{i}].shape", f"a chain body is a part of revolution ({', '.join(PARTS)}), "
+                                          f"got {b.get('shape')!r}")
+    spec = _spec(raw, len(bodies), ck)
     if fidelity is not None:
-        if fidelity not in FIDELITIES:
-            problems.append(f"--fidelity: must be one of {', '.join(FIDELITIES)}; got {fidelity!r}")
-        else:
-            spec.fidelity = fidelity
-    if problems:
-        raise SceneError(problems)
+        spec.fidelity = ck.choice({"--fidelity": fidelity}, "--fidelity", "", FIDELITIES)
     kinematics = spec.fidelity if spec.fidelity in ("axisymmetric", "3d") else "axisymmetric"
-    try:
-        scene = resolve(fe_scene(raw, spec, kinematics))
-    except SceneError as e:        # positions/velocities/contacts are generated: the rest is the user's
-        raise SceneError(e.problems) from None
+    scene = None
+    if all(isinstance(b, dict) for b in bodies):
+        try:   # positions, velocities and contacts are generated: the rest is the user's, checked as a scene's
+            scene = resolve(fe_scene(raw, spec, kinematics))
+        except SceneError as e:
+            ck.problems += e.problems
+    ck.done()
     heights = [_height(b) for b in scene.bodies]
     if "launcher" in raw:
         _fire_launcher(raw, spec, _masses(scene))

@@ -34,8 +34,7 @@ from __future__ import annotations
 
 import math
 
-from ..scene import SceneError
-from ..units import UnitError, to_si
+from ..scene.checker import Checker, SceneError
 from .design import Limits, Sizing
 from .gas import GASES
 from .gun import AIR_AHEAD, GAS_INERTIA, Gun
@@ -64,58 +63,24 @@ DEFAULTS = {"gas": "air", "air_ahead": "atmosphere", "gas_inertia": "lagrange", 
             "tank_material": "SA-516-70"}
 
 
-def _quantities(d: dict, table: str, fields: dict, problems: list[str], optional=()) -> dict:
-    """Each field of ``fields`` read from ``d`` in SI (default where absent); problems listed."""
-    v = {}
-    for k, (dim, default, positive) in fields.items():
-        if k not in d:
-            if default is None and k not in optional:
-                problems.append(f"{table}.{k}: missing ({'an' if dim[0] in 'aeiou' else 'a'} {dim})")
-            v[k] = default if default is not None else 1.0
-            continue
-        try:
-            v[k] = to_si(d[k], dim)
-        except UnitError as e:
-            problems.append(f"{table}.{k}: {e}")
-            v[k] = 1.0
-            continue
-        if positive and not v[k] > 0:
-            problems.append(f"{table}.{k}: must be > 0, got {d[k]}")
-        if not positive and v[k] < 0:
-            problems.append(f"{table}.{k}: must be >= 0, got {d[k]}")
-    return v
-
-
-def _unknown(d: dict, table: str, allowed, problems: list[str]):
-    for k in d:
-        if k not in allowed:
-            problems.append(f"{table}.{k}: unknown field (allowed: {', '.join(sorted(allowed))})")
-
-
 def resolve_launcher(raw: dict, projectile_mass: float | None = None) -> tuple[str, Gun, Sizing]:
     """(name, gun, sizing) from a raw scene with a [launcher] table; every problem listed.
     ``projectile_mass`` [kg] is the mass a chain gives the gun: the table may then omit it."""
-    problems = []
+    ck = Checker()
     d = raw.get("launcher")
     if not isinstance(d, dict):
         raise SceneError(["launcher: missing table [launcher]"])
-    _unknown(d, "launcher", set(QUANTITIES) | set(CHOICES) | {"name", "real_gas"}, problems)
-    v = _quantities(d, "launcher", QUANTITIES, problems, optional=("projectile_mass",) if projectile_mass else ())
+    ck.unknown(d, set(QUANTITIES) | set(CHOICES) | {"name", "real_gas"}, "launcher")
+    v = ck.quantities(d, "launcher", QUANTITIES, optional=("projectile_mass",) if projectile_mass else ())
     if projectile_mass:
         if "projectile_mass" in d and abs(v["projectile_mass"] / projectile_mass - 1) > 1e-3:
-            problems.append(f"launcher.projectile_mass: {d['projectile_mass']} is not the {projectile_mass:.6g} kg "
-                            f"the chain launches; remove it (the chain sets it)")
+            ck.fail("launcher.projectile_mass", f"the chain launches {projectile_mass:.6g} kg, got "
+                                                f"{d['projectile_mass']}; remove it (the chain sets it)")
         v["projectile_mass"] = projectile_mass
-    c = {}
-    for k, choices in CHOICES.items():
-        c[k] = d.get(k, DEFAULTS[k])
-        if c[k] not in choices:
-            problems.append(f"launcher.{k}: must be one of {', '.join(choices)}; got {c[k]!r}")
-            c[k] = DEFAULTS[k]
+    c = {k: ck.choice(d, k, "launcher", choices, DEFAULTS[k]) for k, choices in CHOICES.items()}
     if v["valve_diameter"] and v["bore"] > 0 and v["valve_diameter"] > 2 * v["bore"]:
-        problems.append("launcher.valve_diameter: larger than twice the bore; is it the tank's?")
-    if problems:
-        raise SceneError(problems)
+        ck.fail("launcher.valve_diameter", f"larger than twice the bore (is it the tank's?), got {d['valve_diameter']}")
+    ck.done()
     valve = math.pi * v["valve_diameter"] ** 2 / 4 if v["valve_diameter"] else None
     gun = Gun(v["reservoir_volume"], v["reservoir_pressure"], v["bore"], v["length"], v["projectile_mass"],
               v["reservoir_temperature"], c["gas"], bool(d.get("real_gas", False)), valve,
@@ -132,20 +97,19 @@ def resolve_design(raw: dict) -> tuple[float, Limits]:
     d = raw.get("design")
     if not isinstance(d, dict):
         raise SceneError(["design: missing table [design] (muzzle_velocity, max_length, max_bore, max_pressure)"])
-    problems = []
-    _unknown(d, "design", DESIGN_QUANTITIES, problems)
-    v = _quantities(d, "design", DESIGN_QUANTITIES, problems)
+    ck = Checker()
+    ck.unknown(d, DESIGN_QUANTITIES, "design")
+    v = ck.quantities(d, "design", DESIGN_QUANTITIES)
     limits = Limits(v["max_length"], v["max_bore"], v["max_pressure"], v["min_bore"], v["min_length"],
                     v["min_pressure"], v["min_volume"], v["max_volume"], v["max_acceleration"] or None)
-    problems += [f"design.{p}" for p in limits.check()]
+    ck.problems += [f"design.{problem}" for problem in limits.check()]
     _, _, sizing = resolve_launcher(raw)
     for part in ("barrel", "tank"):
         material = getattr(sizing, f"{part}_material")
         ceiling = max_pressure(material, sizing.joint_efficiency)
         if limits.max_pressure > ceiling:
-            problems.append(f"design.max_pressure: {d['max_pressure']} is above the {ceiling / 1e6:.4g} MPa an "
-                            f"{material} {part} can hold by ASME VIII-1 (S E, and 0.665 S E for its heads); "
-                            f"lower it or choose a stronger {part}_material")
-    if problems:
-        raise SceneError(problems)
+            ck.fail("design.max_pressure", f"above the {ceiling / 1e6:.4g} MPa an {material} {part} can hold by "
+                                           f"ASME VIII-1 (S E, and 0.665 S E for its heads), got {d['max_pressure']}; "
+                                           f"lower it or choose a stronger {part}_material")
+    ck.done()
     return v["muzzle_velocity"], limits

@@ -14,7 +14,7 @@ from typing import Any
 from ..parts.catalog import CAD_FILES, MESH_FILES, PARTS
 from ..elements.one_point import HOURGLASS_FORMS as HOURGLASS_CODES
 from ..materials.j2 import RATE_FORMS as J2_RATE_FORMS
-from ..units import UnitError, to_si
+from .checker import Checker, SceneError
 
 KINEMATICS = ("axisymmetric", "plane-strain", "3d")
 ELEMENTS = {"axisymmetric": ("quad", "tri"), "plane-strain": ("quad", "tri"), "3d": ("hex", "tet")}
@@ -26,14 +26,6 @@ DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
 FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
 INTEGRATIONS = ("reduced", "full")
 HOURGLASS_FORMS = tuple(HOURGLASS_CODES)   # elements/one_point.py
-
-
-class SceneError(Exception):
-    """All problems found in a scene, each ``path: message``."""
-
-    def __init__(self, problems: list[str]):
-        self.problems = problems
-        super().__init__("\n".join(problems))
 
 
 RATE_FORMS = tuple(J2_RATE_FORMS)          # LS-DYNA VP = 1, VP = 0 (materials/j2.py)
@@ -373,130 +365,6 @@ def _regions_of(body, gdim: int) -> tuple[str, ...]:
     return PARTS[body.shape].regions(body.dims, gdim)
 
 
-class _Checker:
-    """Collects problems while reading fields; every getter returns a usable default."""
-
-    def __init__(self):
-        self.problems: list[str] = []
-
-    def fail(self, path: str, message: str):
-        self.problems.append(f"{path}: {message}")
-
-    def table(self, d: dict, key: str, path: str, required=True) -> dict:
-        v = d.get(key)
-        if v is None:
-            if required:
-                self.fail(path, "missing section")
-            return {}
-        if not isinstance(v, dict):
-            self.fail(path, f"must be a table, got {v!r}")
-            return {}
-        return v
-
-    def unknown(self, d: dict, allowed, path: str):
-        for k in d:
-            if k not in allowed:
-                self.fail(f"{path}.{k}" if path else k,
-                          f"unknown field (allowed: {', '.join(sorted(allowed))})")
-
-    def quantity(self, d: dict, key: str, path: str, dimension: str, default=None,
-                 positive=False, nonnegative=False, upper=None) -> float:
-        if key not in d:
-            if default is None:
-                self.fail(f"{path}.{key}", f"missing (a {dimension.replace('_', ' ')})")
-                return 1.0
-            return default
-        raw = d[key]
-        try:
-            v = to_si(raw, dimension)
-        except UnitError as e:
-            self.fail(f"{path}.{key}", str(e))
-            return default if default is not None else 1.0
-        shown = raw if isinstance(raw, str) else repr(raw)
-        if positive and not v > 0:
-            self.fail(f"{path}.{key}", f"must be > 0, got {shown}")
-        if nonnegative and v < 0:
-            self.fail(f"{path}.{key}", f"must be >= 0, got {shown}")
-        if upper is not None and v >= upper:
-            self.fail(f"{path}.{key}", f"must be < {upper}, got {shown}")
-        return v
-
-    def choice(self, d: dict, key: str, path: str, choices, default=None) -> str:
-        v = d.get(key, default)
-        if v is None:
-            self.fail(f"{path}.{key}", f"missing (one of: {', '.join(choices)})")
-            return choices[0]
-        if v not in choices:
-            self.fail(f"{path}.{key}", f"must be one of {', '.join(choices)}; got {v!r}")
-            return choices[0]
-        return v
-
-    def entries(self, raw: dict, key: str, path: str | None = None, fields: tuple[str, ...] = ()):
-        """(path, table) of every entry of the list ``raw[key]`` (``[[key]]`` at the top level);
-        a non-list or a non-table entry is a problem.  ``fields``: the table's fields, named in
-        the messages (``path`` is the list's own, default ``key``)."""
-        path = path or key
-        items = raw.get(key, [])
-        if not isinstance(items, list):
-            self.fail(path, f"must be a list of {{{', '.join(fields)}}} tables" if fields else
-                      f"must be a list of [[{key}]] entries")
-            return
-        for i, item in enumerate(items):
-            item_path = f"{path}[{i}]"
-            if not isinstance(item, dict):
-                self.fail(item_path, "must be a table {" + ", ".join(f"{f} = ..." for f in fields) + "}"
-                          if fields else "must be a table")
-                continue
-            yield item_path, item
-
-    def pairs(self, d: dict, key: str, path: str, names: tuple[str, str], dimensions: tuple[str, str],
-              minimum: int = 1) -> list[tuple[float, float]]:
-        """A table of ``[x, y]`` pairs with units (a history, a force curve), x increasing."""
-        raw = d.get(key)
-        what = f"[{names[0]}, {names[1]}]"
-        if not isinstance(raw, list) or len(raw) < minimum:
-            at_least = f"at least {minimum} " if minimum > 1 else ""
-            self.fail(f"{path}.{key}", f"must be a list of {at_least}{what} pairs")
-            return []
-        out = []
-        for j, pair in enumerate(raw):
-            if not isinstance(pair, list) or len(pair) != 2:
-                article = "an" if names[0][0] in "aeiou" else "a"
-                self.fail(f"{path}.{key}[{j}]", f"must be {article} {what} pair")
-                continue
-            try:
-                out.append((to_si(pair[0], dimensions[0]), to_si(pair[1], dimensions[1])))
-            except UnitError as e:
-                self.fail(f"{path}.{key}[{j}]", str(e))
-        if any(x1 <= x0 for (x0, _), (x1, _) in zip(out, out[1:])):
-            self.fail(f"{path}.{key}", f"{names[0]}s must increase")
-        return out
-
-    def vector(self, d: dict, key: str, path: str, dimension: str, n: int, default) -> tuple:
-        if key not in d:
-            return tuple(default)
-        raw = d[key]
-        if not isinstance(raw, list):
-            # A single value means "along the z axis" (the axis of axisymmetry).
-            try:
-                vz = to_si(raw, dimension)
-            except UnitError as e:
-                self.fail(f"{path}.{key}", str(e))
-                return tuple(default)
-            return tuple([0.0] * (n - 1) + [vz])
-        if len(raw) != n:
-            self.fail(f"{path}.{key}", f"needs {n} components for this kinematics, got {len(raw)}")
-            return tuple(default)
-        out = []
-        for i, item in enumerate(raw):
-            try:
-                out.append(to_si(item, dimension))
-            except UnitError as e:
-                self.fail(f"{path}.{key}[{i}]", str(e))
-                out.append(0.0)
-        return tuple(out)
-
-
 def resolve(raw: dict, base_dir: str = ".") -> Scene:
     """Check a raw scene dictionary completely and return the resolved ``Scene``.
 
@@ -507,7 +375,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     """
     import os
 
-    ck = _Checker()
+    ck = Checker()
     ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "damping", "outputs",
                      "shock"), "")
     s = ck.table(raw, "scene", "scene")
@@ -667,7 +535,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         if kind in ("velocity", "force"):
             d = bc.get("direction", axes[-1])
             if d not in axes:
-                ck.fail(f"{path}.direction", f"must be one of {', '.join(axes)}; got {d!r}")
+                ck.fail(f"{path}.direction", f"must be one of {', '.join(axes)}, got {d!r}")
                 d = axes[-1]
             comps = (axes.index(d),)
             dim = "velocity" if kind == "velocity" else "force"
@@ -686,7 +554,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     ck.unknown(o, ("fields", "field_interval", "history_interval"), "outputs")
     fields = o.get("fields", list(FIELDS))
     if not isinstance(fields, list) or any(f not in FIELDS for f in fields):
-        ck.fail("outputs.fields", f"must be a list drawn from {', '.join(FIELDS)}; got {fields!r}")
+        ck.fail("outputs.fields", f"must be a list drawn from {', '.join(FIELDS)}, got {fields!r}")
         fields = list(FIELDS)
     fi = ck.quantity(o, "field_interval", "outputs", "time", default=end_time / 10, positive=True)
     hi = ck.quantity(o, "history_interval", "outputs", "time", default=0.0, nonnegative=True)
@@ -701,7 +569,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                  gravity if any(gravity) else (), bulk_viscosity, shock)
 
 
-def _shock(ck: _Checker, raw: dict, body_regions: dict, kin: str, end_time: float) -> Shock:
+def _shock(ck: Checker, raw: dict, body_regions: dict, kin: str, end_time: float) -> Shock:
     """``[shock]``: test articles, axis, CFC class, SRS settings, accelerometers, pulse spec."""
     if "shock" not in raw:
         return Shock()
@@ -720,28 +588,28 @@ def _shock(ck: _Checker, raw: dict, body_regions: dict, kin: str, end_time: floa
     axis = d.get("axis", axes[-1])
     if axis not in axes or (kin == "axisymmetric" and axis != "z"):
         allowed = "z (the axis of symmetry)" if kin == "axisymmetric" else ", ".join(axes)
-        ck.fail("shock.axis", f"must be one of {allowed}; got {axis!r}")
+        ck.fail("shock.axis", f"must be one of {allowed}, got {axis!r}")
         axis = axes[-1]
     cfc = d.get("cfc", 1000)
     if cfc == "none":
         cfc = 0
     if cfc not in CFC_CLASSES and cfc != 0:
         ck.fail("shock.cfc", f"must be a channel frequency class {', '.join(map(str, CFC_CLASSES))} "
-                             f"(SAE J211) or 'none'; got {cfc!r}")
+                             f"(SAE J211) or 'none', got {cfc!r}")
         cfc = 1000
     q = ck.quantity(d, "srs_q", "shock", "dimensionless", default=10.0, positive=True)
     band = (10.0, 10000.0)
     if "srs_frequencies" in d:
         pair = d["srs_frequencies"]
         if not isinstance(pair, list) or len(pair) != 2:
-            ck.fail("shock.srs_frequencies", f"must be [lowest, highest], e.g. ['10 Hz', '10 kHz']; got {pair!r}")
+            ck.fail("shock.srs_frequencies", f"must be [lowest, highest], e.g. ['10 Hz', '10 kHz'], got {pair!r}")
         else:
             lo = ck.quantity({"srs_frequencies[0]": pair[0]}, "srs_frequencies[0]", "shock", "frequency",
                              positive=True)
             hi = ck.quantity({"srs_frequencies[1]": pair[1]}, "srs_frequencies[1]", "shock", "frequency",
                              positive=True)
             if not lo < hi:
-                ck.fail("shock.srs_frequencies", f"the lowest frequency must be below the highest; got {pair!r}")
+                ck.fail("shock.srs_frequencies", f"the lowest frequency must be below the highest, got {pair!r}")
             band = (lo, hi)
     ppo = d.get("srs_points_per_octave", 12)
     if not isinstance(ppo, int) or isinstance(ppo, bool) or ppo < 1:
@@ -785,7 +653,7 @@ MATERIAL_FIELDS = ("library", "density", "youngs_modulus", "poisson_ratio", "yie
                    "isotropic_fraction", "hardening_curve", "cowper_symonds_D", "cowper_symonds_q", "rate_form")
 
 
-def _material(ck: _Checker, name: str, m: dict, path: str) -> Material:
+def _material(ck: Checker, name: str, m: dict, path: str) -> Material:
     """A material: elastic, or J2-plastic with a bilinear (MAT_003) or tabulated (MAT_024) hardening
     and optional Cowper-Symonds rate effects; ``library`` fills in fields the table does not give."""
     from .library import LIBRARY
@@ -851,7 +719,7 @@ def _material(ck: _Checker, name: str, m: dict, path: str) -> Material:
     return Material(name, rho, E, nu, Plasticity(curve, kinematic, D, q, rate_form, model), source)
 
 
-def _surface_spec(ck: _Checker, c: dict, key: str, path: str, body_regions: dict) -> str | None:
+def _surface_spec(ck: Checker, c: dict, key: str, path: str, body_regions: dict) -> str | None:
     """A "body" or "body.region" reference, checked against the scene's bodies."""
     spec = c.get(key)
     if not isinstance(spec, str):
@@ -861,11 +729,11 @@ def _surface_spec(ck: _Checker, c: dict, key: str, path: str, body_regions: dict
     if bname not in body_regions:
         ck.fail(f"{path}.{key}", f"unknown body {bname!r} (bodies: {', '.join(body_regions)})")
     elif rname and rname not in body_regions[bname]:
-        ck.fail(f"{path}.{key}", f"body {bname!r} has regions {', '.join(body_regions[bname])}; got {rname!r}")
+        ck.fail(f"{path}.{key}", f"body {bname!r} has regions {', '.join(body_regions[bname])}, got {rname!r}")
     return spec
 
 
-def _unit_vector(ck: _Checker, d: dict, key: str, path: str, gdim: int, default) -> tuple:
+def _unit_vector(ck: Checker, d: dict, key: str, path: str, gdim: int, default) -> tuple:
     v = ck.vector(d, key, path, "dimensionless", gdim, default)
     norm = sum(x * x for x in v) ** 0.5
     if norm == 0:
@@ -874,7 +742,7 @@ def _unit_vector(ck: _Checker, d: dict, key: str, path: str, gdim: int, default)
     return tuple(x / norm for x in v)
 
 
-def _rigid_surface(ck: _Checker, c: dict, path: str, kin: str) -> RigidSurface:
+def _rigid_surface(ck: Checker, c: dict, path: str, kin: str) -> RigidSurface:
     """``wall = {point, normal, velocity}`` or ``cylinder = {point, axis, radius, side, velocity}``."""
     gdim = 3 if kin == "3d" else 2
     zero = [0.0] * gdim
@@ -905,7 +773,7 @@ def _rigid_surface(ck: _Checker, c: dict, path: str, kin: str) -> RigidSurface:
     return RigidSurface("cylinder", point, axis, vel, radius, side == "inside")
 
 
-def _contacts(ck: _Checker, raw: dict, body_regions: dict, kin: str) -> list[Contact]:
+def _contacts(ck: Checker, raw: dict, body_regions: dict, kin: str) -> list[Contact]:
     """[[contact]] entries: two surfaces (``a``, ``b``) or a surface and a rigid ``wall`` or ``cylinder``."""
     out = []
     for path, c in ck.entries(raw, "contact"):
@@ -935,7 +803,7 @@ def _contacts(ck: _Checker, raw: dict, body_regions: dict, kin: str) -> list[Con
     return out
 
 
-def _springs(ck: _Checker, raw: dict, body_regions: dict, gdim: int) -> list[Spring]:
+def _springs(ck: Checker, raw: dict, body_regions: dict, gdim: int) -> list[Spring]:
     """[[spring]] entries: a linear ``stiffness`` or a tabulated ``curve``, and a ``damping``."""
     out = []
     for i, (path, c) in enumerate(ck.entries(raw, "spring")):

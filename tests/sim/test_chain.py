@@ -55,10 +55,14 @@ def test_axisymmetric_chain_reports_the_same_table(tmp_path):
 
 
 def test_bad_chain_lists_its_problems():
+    """The chain's own table and its bodies go through the scene checker together: every problem in
+    one message style (field: problem, got X), exit 2."""
     p = shockfem("check", SCENE, "--set", 'chain.launch_speed="-3 kg"', "--set", "chain.restitution=2",
-                 "--set", "chain.fidelity=2d")
+                 "--set", "chain.fidelity=2d", "--set", 'bodies.0.radius="-1 mm"')
     assert p.returncode == 2
-    for expected in ("chain.launch_speed: expected a velocity", "chain.restitution: one number in (0, 1]",
-                     "chain.fidelity: must be one of rigid, 1d, axisymmetric, 3d"):
+    for expected in ("chain.launch_speed: expected a velocity",
+                     "chain.restitution: must be a coefficient of restitution in (0, 1], got 2",
+                     "chain.fidelity: must be one of rigid, 1d, axisymmetric, 3d, got '2d'",
+                     "bodies[0].radius: must be > 0, got -1 mm"):
         assert expected in p.stderr
     assert "Traceback" not in p.stderr

@@ -106,9 +106,25 @@ def test_amplifier_design_tool():
     assert p.returncode == 0, p.stderr
     assert "intermediate masses 351.6 kg (775.2 lb)" in p.stdout
     p = shockfem("amplifier", "--article", "12 m", "--target", "1600 ft/s", "--launch", "325 ft/s",
-                 "--restitution", "2")
-    assert p.returncode == 2
-    assert "--article: expected a mass" in p.stderr and "--restitution: must be in (0, 1]" in p.stderr
+                 "--restitution", "2", "--material", "cheese")
+    assert p.returncode == 2                           # every option's problem, as a scene's fields are listed
+    assert "--article: expected a mass" in p.stderr
+    assert "--restitution: must be a coefficient of restitution in (0, 1], got 2.0" in p.stderr
+    assert "--material: must be one of" in p.stderr and "got 'cheese'" in p.stderr
     assert "Traceback" not in p.stderr
     p = shockfem("amplifier", "--article", "1 kg", "--target", "16 m/s", "--launch", "1 m/s", "--masses", "3")
     assert p.returncode == 2 and "more than 3 masses" in p.stdout
+
+
+def test_check_reads_a_launcher_scene_through_the_scene_checker():
+    """``shockfem check`` knows a gas-gun scene ([launcher], no bodies) and lists its problems like a
+    plain scene's: field, problem, what was given; exit 2."""
+    gun = os.path.join(REPO, "studies", "launcher", "white_paper_gun.toml")
+    p = shockfem("check", gun)
+    assert p.returncode == 0 and "ok (launcher white_paper_gun, bore 0.3048 m" in p.stdout, p.stderr
+    p = shockfem("check", gun, "--set", 'launcher.bore="-3 in"', "--set", "launcher.gas=helium",
+                 "--set", 'launcher.colour="red"')
+    assert p.returncode == 2 and "Traceback" not in p.stderr
+    for expected in ("launcher.bore: must be > 0, got -3 in", "launcher.gas: must be one of air, nitrogen, got 'helium'",
+                     "launcher.colour: unknown field"):
+        assert expected in p.stderr
