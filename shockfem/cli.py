@@ -340,7 +340,7 @@ def _modes(args) -> int:
 
 
 def _metrics(args) -> int:
-    from .scene.schema import CFC_CLASSES
+    from .scene.specs import CFC_CLASSES
     from .metrics.report import shock_report
     from .scene import SceneError
     problems = []

@@ -19,7 +19,7 @@ from scipy.spatial import cKDTree
 
 from ..errors import ModelError
 from ..model import Model
-from ..scene.schema import Contact
+from ..scene.specs import Contact
 from . import kernels
 from .surfaces import NodeExchange, Surface, build_surface
 

@@ -24,7 +24,7 @@ from mpi4py import MPI
 from ..errors import ModelError
 from ..model import Model
 from ..model.model import region_nodes
-from ..scene.schema import Spring
+from ..scene.specs import Spring
 from ..materials.viscosity import damped_step
 
 

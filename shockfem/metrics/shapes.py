@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..scene.schema import PULSE_SHAPES as SHAPES   # the shapes a scene's [shock.spec] may name
+from ..scene.specs import PULSE_SHAPES as SHAPES   # the shapes a scene's [shock.spec] may name
 from .pulse import Pulse, integral
 
 TOLERANCE = {

@@ -5,7 +5,9 @@ import copy
 import os
 import tomllib
 
-from .schema import Scene, SceneError, resolve
+from .checker import SceneError
+from .schema import resolve
+from .specs import Scene
 
 
 def read_toml(path: str) -> dict:

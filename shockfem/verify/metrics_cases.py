@@ -20,7 +20,7 @@ import numpy as np
 from ..metrics import filters, shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.srs import shock_response_spectrum
-from ..scene.schema import CFC_CLASSES
+from ..scene.specs import CFC_CLASSES
 from .checks import SIZES, check
 from .scenes import STEEL, steel_c0
 

@@ -9,7 +9,7 @@ from shockfem.metrics.pulse import pulse_metrics
 from shockfem.metrics.signals import acceleration_from_velocity
 from shockfem.metrics.srs import shock_response_spectrum
 from shockfem.metrics.stages import contact_events, stage_table
-from shockfem.scene.schema import CFC_CLASSES
+from shockfem.scene.specs import CFC_CLASSES
 
 
 @pytest.mark.parametrize("cfc", CFC_CLASSES)

@@ -1,0 +1,76 @@
+"""The [materials] tables: elastic constants, J2 plasticity with its hardening and rate law, or a
+library material by name."""
+from __future__ import annotations
+
+from .checker import Checker
+from .specs import Material, Plasticity, RATE_FORMS
+
+
+MATERIAL_FIELDS = ("library", "density", "youngs_modulus", "poisson_ratio", "yield_stress", "tangent_modulus",
+                   "isotropic_fraction", "hardening_curve", "cowper_symonds_D", "cowper_symonds_q", "rate_form")
+
+
+def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
+    """A material: elastic, or J2-plastic with a bilinear (MAT_003) or tabulated (MAT_024) hardening
+    and optional Cowper-Symonds rate effects; ``library`` fills in fields the table does not give."""
+    from .library import LIBRARY
+    ck.unknown(m, MATERIAL_FIELDS, path)
+    source = ""
+    if "library" in m:
+        entry = LIBRARY.get(m["library"])
+        if entry is None:
+            ck.fail(f"{path}.library", f"unknown library material {m['library']!r} (known: {', '.join(LIBRARY)})")
+        else:
+            source = f"library {m['library']!r}: {entry['source']}"
+            # the scene's fields win; its bilinear fields replace a library curve and vice versa
+            bilinear = ("yield_stress", "tangent_modulus", "isotropic_fraction")
+            dropped = (("hardening_curve",) if any(k in m for k in bilinear)
+                       else bilinear if "hardening_curve" in m else ())
+            m = {**{k: v for k, v in entry.items() if k != "source" and k not in dropped}, **m}
+    rho = ck.quantity(m, "density", path, "density", positive=True)
+    E = ck.quantity(m, "youngs_modulus", path, "pressure", positive=True)
+    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.3)
+    if not -1.0 < nu < 0.5:
+        ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
+    plastic_fields = [k for k in MATERIAL_FIELDS[4:] if k in m]
+    if not plastic_fields:
+        return Material(name, rho, E, nu, None, source)
+    if "hardening_curve" in m:
+        for k in ("yield_stress", "tangent_modulus", "isotropic_fraction"):
+            if k in m:
+                ck.fail(f"{path}.{k}", "give either hardening_curve (tabulated, isotropic) or yield_stress with "
+                                       "tangent_modulus and isotropic_fraction (bilinear), not both")
+        curve = ck.pairs(m, "hardening_curve", path, ("plastic strain", "stress"), ("dimensionless", "pressure"))
+        if curve and curve[0][0] != 0.0:
+            ck.fail(f"{path}.hardening_curve", f"must start at plastic strain 0 (the initial yield), got {curve[0][0]}")
+        if any(sy <= 0 for _, sy in curve):
+            ck.fail(f"{path}.hardening_curve", "stresses must be > 0")
+        if any(s1 < s0 for (_, s0), (_, s1) in zip(curve, curve[1:])):
+            ck.fail(f"{path}.hardening_curve", "stresses must not decrease (softening is not supported)")
+        curve = tuple(curve) or ((0.0, 1.0),)
+        kinematic = 0.0
+        model = f"J2 plasticity, tabulated isotropic hardening ({len(curve)} points, MAT_024-like)"
+    else:
+        sy = ck.quantity(m, "yield_stress", path, "pressure", positive=True)
+        Et = ck.quantity(m, "tangent_modulus", path, "pressure", default=0.0, nonnegative=True)
+        if Et >= E:
+            ck.fail(f"{path}.tangent_modulus", f"must be < youngs_modulus ({E:.4g} Pa), got {Et:.4g} Pa")
+            Et = 0.0
+        beta = ck.quantity(m, "isotropic_fraction", path, "dimensionless", default=1.0, nonnegative=True)
+        if beta > 1.0:
+            ck.fail(f"{path}.isotropic_fraction", f"must be in [0, 1] (1 isotropic, 0 kinematic), got {beta}")
+        H = E * Et / (E - Et)                 # plastic modulus: slope of stress against plastic strain
+        curve = ((0.0, sy), (1.0, sy + beta * H))
+        kinematic = (1.0 - beta) * H
+        model = (f"J2 plasticity, bilinear hardening (yield {sy / 1e6:.4g} MPa, tangent {Et / 1e6:.4g} MPa, "
+                 f"isotropic fraction {beta:g}; MAT_003-like)")
+    D = ck.quantity(m, "cowper_symonds_D", path, "strain_rate", default=0.0, positive="cowper_symonds_D" in m)
+    q = ck.quantity(m, "cowper_symonds_q", path, "dimensionless", default=5.0 if D else 1.0, positive=True)
+    if ("cowper_symonds_q" in m) != ("cowper_symonds_D" in m):
+        ck.fail(f"{path}.{'cowper_symonds_D' if 'cowper_symonds_q' in m else 'cowper_symonds_q'}",
+                "missing: Cowper-Symonds rate effects need both D and q")
+    rate_form = ck.choice(m, "rate_form", path, RATE_FORMS, default=RATE_FORMS[0])
+    if D:
+        model += (f", Cowper-Symonds D = {D:g} /s, q = {q:g} on the "
+                  f"{'plastic (VP=1)' if rate_form == RATE_FORMS[0] else 'total (VP=0)'} strain rate")
+    return Material(name, rho, E, nu, Plasticity(curve, kinematic, D, q, rate_form, model), source)

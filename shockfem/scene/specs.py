@@ -1,0 +1,243 @@
+"""What a resolved scene holds: frozen dataclasses in SI, and the vocabularies a scene may use
+(each defined here once; the readers in ``schema.py``, ``materials.py``, ``contacts.py`` and
+``shock.py`` check the user's tables against them)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..parts.catalog import PARTS
+from ..elements.one_point import HOURGLASS_FORMS as HOURGLASS_CODES
+from ..materials.j2 import RATE_FORMS as J2_RATE_FORMS
+
+KINEMATICS = ("axisymmetric", "plane-strain", "3d")
+ELEMENTS = {"axisymmetric": ("quad", "tri"), "plane-strain": ("quad", "tri"), "3d": ("hex", "tet")}
+SHAPES = tuple(PARTS) + ("box", "mesh")
+# Named regions of the shapes outside the catalog of parts (which names its own).
+BOX_REGIONS = {2: ("left", "right", "bottom", "top"), 3: ("left", "right", "front", "back", "bottom", "top")}
+BC_TYPES = ("fixed", "symmetry", "velocity", "force")
+DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
+FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
+INTEGRATIONS = ("reduced", "full")
+HOURGLASS_FORMS = tuple(HOURGLASS_CODES)   # elements/one_point.py
+
+
+RATE_FORMS = tuple(J2_RATE_FORMS)          # LS-DYNA VP = 1, VP = 0 (materials/j2.py)
+
+
+@dataclass(frozen=True)
+class Plasticity:
+    """J2 plasticity of a material (``materials/j2.py``)."""
+    curve: tuple[tuple[float, float], ...]   # isotropic hardening (plastic strain [-], yield stress [Pa])
+    kinematic_modulus: float                 # H_k [Pa] (MAT_003: (1 - beta) H)
+    rate_D: float                            # Cowper-Symonds D [1/s]; 0: rate independent
+    rate_q: float                            # Cowper-Symonds q [-]
+    rate_form: str                           # RATE_FORMS
+    model: str                               # what ran, for the run log
+
+    @property
+    def yield_stress(self) -> float:
+        return self.curve[0][1]
+
+
+@dataclass(frozen=True)
+class Material:
+    name: str
+    rho: float            # density [kg/m^3]
+    E: float              # Young's modulus [Pa]
+    nu: float             # Poisson's ratio [-]
+    plasticity: Plasticity | None = None     # None: elastic
+    source: str = ""                         # library entry and its references, if one was used
+
+    @property
+    def lam(self) -> float:
+        """Lame's first parameter [Pa]."""
+        return self.E * self.nu / ((1 + self.nu) * (1 - 2 * self.nu))
+
+    @property
+    def mu(self) -> float:
+        """Shear modulus [Pa]."""
+        return self.E / (2 * (1 + self.nu))
+
+    @property
+    def c_dilatational(self) -> float:
+        """Dilatational wave speed sqrt((lam + 2 mu)/rho) [m/s]; sets the explicit step."""
+        return ((self.lam + 2 * self.mu) / self.rho) ** 0.5
+
+    @property
+    def c_bar(self) -> float:
+        """Bar wave speed sqrt(E/rho) [m/s]."""
+        return (self.E / self.rho) ** 0.5
+
+
+@dataclass(frozen=True)
+class Damping:
+    ratio: float          # fraction of critical at `frequency`
+    frequency: float      # [Hz]
+    kind: str             # mass | stiffness | rayleigh
+
+    def coefficients(self) -> tuple[float, float]:
+        """Rayleigh coefficients (alpha [1/s], beta [s]) with zeta(omega) = alpha/(2 omega) + beta omega/2.
+
+        ``mass``: all of the ratio from alpha; ``stiffness``: all from beta; ``rayleigh``:
+        half from each, so that zeta = ratio at the given frequency and zeta is
+        smallest there (the usual two-term choice with both terms equal at omega).
+        """
+        import math
+        omega = 2 * math.pi * self.frequency
+        if self.kind == "mass":
+            return 2 * self.ratio * omega, 0.0
+        if self.kind == "stiffness":
+            return 0.0, 2 * self.ratio / omega
+        return self.ratio * omega, self.ratio / omega
+
+
+@dataclass(frozen=True)
+class Body:
+    name: str
+    material: str
+    shape: str
+    dims: dict[str, float]           # shape parameters in SI (radius, length, size_x...)
+    element_size: float
+    position: tuple[float, ...]
+    velocity: tuple[float, ...]
+    spin: float                      # [rad/s] about the body's z axis (3D only)
+    rigid: bool
+    mesh_file: str | None = None
+    # mesh bodies: name -> gmsh physical tag (.msh), or -> CAD face tags (.step: a tuple)
+    regions: dict[str, int | tuple[int, ...]] = field(default_factory=dict)
+    refine: tuple[tuple[str, float, float], ...] = ()       # (region, element size, distance) near faces
+    damping: Damping | None = None   # its own stiffness-proportional damping (instead of the scene's beta)
+
+
+@dataclass(frozen=True)
+class Boundary:
+    region: str                      # "body.region"
+    kind: str
+    components: tuple[int, ...]      # velocity/force components the condition acts on
+    history: tuple[tuple[float, float], ...]   # (t, value) pairs; a constant is one pair
+
+
+@dataclass(frozen=True)
+class RigidSurface:
+    """A rigid analytic surface moving at a constant velocity.
+
+    ``plane``: through ``point``, ``direction`` the unit normal toward the side bodies stay on.
+    ``cylinder``: of ``radius`` about the axis through ``point`` along the unit ``direction``
+    (axisymmetric: the symmetry axis; plane strain: zero, the cylinder is the circle about
+    ``point``); bodies stay ``inside`` or outside it.
+    """
+    kind: str                        # plane | cylinder
+    point: tuple[float, ...]
+    direction: tuple[float, ...]
+    velocity: tuple[float, ...]      # [m/s], constant
+    radius: float = 0.0
+    inside: bool = False
+
+    def describe(self) -> str:
+        if self.kind == "plane":
+            return f"rigid plane through {self.point} m, normal {self.direction}"
+        side = "inside" if self.inside else "outside"
+        return f"rigid cylinder of radius {self.radius:g} m about {self.point} m ({side})"
+
+
+@dataclass(frozen=True)
+class Contact:
+    name: str
+    a: str                           # "body" or "body.region"
+    b: str | None                    # the other surface, or None for a rigid surface
+    rigid: RigidSurface | None
+    penalty: str                     # segment | soft
+    penalty_scale: float
+    damping: float                   # fraction of critical (LS-DYNA VDC)
+    friction: tuple[float, float, float] = (0.0, 0.0, 0.0)   # mu_static, mu_dynamic, decay [s/m]
+
+
+@dataclass(frozen=True)
+class Spring:
+    """A discrete spring and dashpot between two bodies (or named regions of them), acting along
+    ``direction`` on the mass-weighted mean motion of each side (LS-DYNA's *ELEMENT_DISCRETE
+    between rigidly averaged node sets)."""
+    name: str
+    a: str
+    b: str
+    direction: tuple[float, ...] | None     # unit; None: from a's centre of mass to b's at t = 0
+    stiffness: float                        # [N/m] (linear spring), 0 with a curve
+    curve: tuple[tuple[float, float], ...]  # (extension [m], tension [N]) pairs, or ()
+    damping: float                          # [N s/m]
+    compression_only: bool                  # pads: push, never pull
+
+
+@dataclass(frozen=True)
+class Outputs:
+    fields: tuple[str, ...]
+    field_interval: float
+    history_interval: float
+
+
+CFC_CLASSES = (60, 180, 600, 1000)       # SAE J211-1 channel frequency classes [Hz]
+PULSE_SHAPES = ("half-sine", "terminal-peak sawtooth", "trapezoid")
+
+
+@dataclass(frozen=True)
+class Accelerometer:
+    """Acceleration at a point: the node of ``body`` nearest to ``point`` (scene coordinates at t = 0)."""
+    name: str
+    body: str
+    point: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class PulseSpec:
+    """The test pulse a test article must see (MIL-STD-810 Method 516 classical pulse)."""
+    shape: str
+    peak: float           # [m/s^2]
+    duration: float       # [s], foot to foot
+
+
+@dataclass(frozen=True)
+class Shock:
+    """What a shock-test engineer reads off the run (``metrics/``): pulses of the test articles
+    and accelerometers along ``axis``, filtered by CFC class ``cfc`` (0: unfiltered), checked
+    against ``spec``; the shock response spectrum at quality factor ``srs_q``."""
+    test_articles: tuple[str, ...] = ()
+    axis: str = ""                            # "" : the last axis (z)
+    cfc: int = 1000
+    srs_q: float = 10.0
+    srs_frequencies: tuple[float, float] = (10.0, 10000.0)   # [Hz]
+    srs_points_per_octave: int = 12
+    accelerometers: tuple[Accelerometer, ...] = ()
+    spec: PulseSpec | None = None
+
+
+@dataclass(frozen=True)
+class Scene:
+    name: str
+    kinematics: str
+    element: str
+    end_time: float
+    safety_factor: float
+    thickness: float
+    energy_error_limit: float
+    integration: str                 # reduced (one point + hourglass control) | full (2x2 Gauss)
+    hourglass: str                   # stiffness | viscous
+    hourglass_coefficient: float
+    materials: dict[str, Material]
+    bodies: tuple[Body, ...]
+    boundaries: tuple[Boundary, ...]
+    contacts: tuple[Contact, ...]
+    damping: Damping | None
+    outputs: Outputs
+    springs: tuple[Spring, ...] = ()
+    gravity: tuple[float, ...] = ()              # [m/s^2]; empty or zero: none
+    bulk_viscosity: tuple[float, float] = (1.5, 0.06)   # (Q1 quadratic, Q2 linear), LS-DYNA's defaults
+    shock: Shock = Shock()
+
+    @property
+    def gdim(self) -> int:
+        return 3 if self.kinematics == "3d" else 2
+
+    def body(self, name: str) -> Body:
+        return next(b for b in self.bodies if b.name == name)
+
+    def material_of(self, body: Body) -> Material:
+        return self.materials[body.material]
