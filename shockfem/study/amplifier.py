@@ -100,14 +100,14 @@ def sizing_claims(rep: Report):
                 rows.append([arch, e, v, d.masses[0] / LB, d.intermediate_mass / LB,
                              d.intermediate_mass / rho / FT3, d.efficiency,
                              "yes" if d.intermediate_mass / LB < 800 else "no"])
-    rep.table(["architecture", "e", "launch [ft/s]", "first mass [lb]", "intermediate [lb]",
+    rep.table("sizing_claims", ["architecture", "e", "launch [ft/s]", "first mass [lb]", "intermediate [lb]",
                "intermediate [ft^3]", "efficiency", "under 800 lb"], rows,
               ["{}", "{:g}", "{}", "{:.0f}", "{:.0f}", "{:.2f}", "{:.1%}", "{}"])
     rep.text("Eq. 2 of the paper, (1+e)^n / (1 + R^(1/(n-1)))^(n-1) - 1, is the gain of a stack falling onto an "
              "anvil; a gun-launched chain gains G = [(1+e)/(1 + R^(1/(n-1)))]^(n-1):")
     rows = [[n, e, R, chain_gain(e, R, n), stack_gain(e, R, n)] for n in (3, 5) for e in (0.9, 0.75)
             for R in (0.1, 0.01)]
-    rep.table(["n", "e", "R = m_n/m_1", "launched chain G", "Eq. 2 (stack on anvil)"], rows,
+    rep.table("gain_formulas", ["n", "e", "R = m_n/m_1", "launched chain G", "Eq. 2 (stack on anvil)"], rows,
               ["{}", "{:g}", "{:g}", "{:.3f}", "{:.3f}"])
     return design("launched-chain", 12 * LB, 1600 * FTS, 325 * FTS, 0.9, 5)
 
@@ -148,7 +148,7 @@ def restitution_sweep(rep: Report, size: str, out_dir: str):
                 curves[key].append((1 / ratio, s["restitution"], duration))
                 rows.append([key, ratio, 1 / ratio, s["restitution"], duration, s["vibration_share"],
                              time.perf_counter() - t0])
-    rep.table(["model", "L1/L2", "f_striker/f_target", "restitution", "contact / target period",
+    rep.table("restitution_sweep", ["model", "L1/L2", "f_striker/f_target", "restitution", "contact / target period",
                "energy left ringing", "wall [s]"], rows,
               ["{}", "{:g}", "{:.3g}", "{:.4f}", "{:.3f}", "{:.1%}", "{:.1f}"])
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
@@ -171,11 +171,34 @@ def restitution_sweep(rep: Report, size: str, out_dir: str):
         best = max(pts, key=lambda p: p[1])
         findings.append(f"{key}: highest restitution {best[1]:.3f} at frequency ratio {best[0]:.3g} "
                         f"(contact / target period {best[2]:.2f})")
-    rep.text("Reading: " + "; ".join(findings) + ". Elastic bodies tuned to the same frequency lose least to "
-             "vibration; away from it the restitution falls as the 1D wave picture says (L_short / L_long), the "
-             "axisymmetric bodies somewhat above it. Yielding lowers it further, and a 1D bar (uniaxial stress) "
-             "yields over its whole section where the real face is confined, so the 1D model overstates the loss.")
+    rep.text("Reading: " + "; ".join(findings) + ". " + _sweep_reading(rep, curves))
     return rows
+
+
+def _sweep_reading(rep: Report, curves: dict) -> str:
+    """What the restitution sweep shows, each sentence chosen by the numbers (``curves``: model ->
+    [(frequency ratio, restitution, duration)])."""
+    def mean_e(key):
+        return sum(p[1] for p in curves[key]) / len(curves[key])
+    words = []
+    for fidelity in ("1d", "axisymmetric"):
+        pts = curves[f"{fidelity}, elastic 1 m/s"]
+        best = max(pts, key=lambda p: p[1])
+        tuned = min(pts, key=lambda p: abs(math.log(p[0])))
+        words.append(f"elastic {fidelity} bodies restitute best "
+                     + ("when tuned to the same frequency" if best is tuned else
+                        f"at frequency ratio {best[0]:.3g}, not at the tuned one ({tuned[0]:.3g})"))
+    e = {k: rep.value(f"mean_restitution.{k}", mean_e(k)) for k in curves}
+    axi_el, one_el = e["axisymmetric, elastic 1 m/s"], e["1d, elastic 1 m/s"]
+    axi_pl, one_pl = e["axisymmetric, elastic-plastic 60 m/s"], e["1d, elastic-plastic 60 m/s"]
+    words.append(f"averaged over the ratios the axisymmetric bodies restitute {axi_el:.3f} elastic against 1D's "
+                 f"{one_el:.3f}")
+    words.append(f"yielding {'lowers' if max(axi_pl, one_pl) < min(axi_el, one_el) else 'does not lower'} it "
+                 f"(axisymmetric {axi_pl:.3f}, 1D {one_pl:.3f} at 60 m/s)")
+    if one_pl < axi_pl:
+        words.append("the 1D bar (uniaxial stress) yields over its whole section where the real face is confined, "
+                     "so it overstates the loss")
+    return "; ".join(words) + "."
 
 
 def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
@@ -185,7 +208,7 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
     sizes = [cylinder_size(m, rho, 1.0) for m in d.masses]
     rep.text(f"Launched chain, 12 lb at 1600 ft/s from 325 ft/s, e = 0.9 assumed, {MATERIAL} cylinders with "
              "L = D. The rigid model uses the assumed restitution; the others find their own.")
-    rep.table(["mass", "kg", "lb", "diameter [mm]", "length [mm]"],
+    rep.table("design_masses", ["mass", "kg", "lb", "diameter [mm]", "length [mm]"],
               [[k + 1, m, m / LB, s["diameter"] * 1e3, s["length"] * 1e3]
                for k, (m, s) in enumerate(zip(d.masses, sizes))], ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.4g}"])
     bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], 0.0) for k, s in enumerate(sizes)]
@@ -222,17 +245,22 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
     rep.text("Restitution per stage from the stage table (the mean velocities of the two bodies at the start of a "
              "contact and before either body's next one); gain = the test article's speed at the end of the run "
              "over the launch speed.")
-    rep.table(["fidelity", "restitution per stage", "gain", "gain vs finest", "peak stress / yield", "wall [s]"],
+    rep.table("design_fidelities", ["fidelity", "restitution per stage", "gain", "gain vs finest", "peak stress / yield", "wall [s]"],
               rows, ["{}", "{}", "{:.3f}", "{:+.1%}", "{:.2f}", "{:.3g}"])
     if finest:
         es = first_impacts(finest["stages"])
         worst = max(finest["stress_over_yield"].values(), default=float("nan"))
-        rep.text(f"Reading: with flat steel faces this design does not amplify as the rigid model assumes. The "
-                 f"finest model finds restitutions {min(es):.2f} to {max(es):.2f} per stage (0.9 assumed) and a gain "
-                 f"of {finest['gain']:.2f} instead of {d.gain:.2f}: every stage yields (von Mises up to {worst:.1f} "
-                 f"times the {MATERIAL} yield), so the energy goes into plastic work and into bodies that "
-                 "keep moving together. The interfaces must be made to stay elastic (crowned faces, pads, tuned "
-                 "lengths, stronger materials) before e = 0.9 can be assumed: section 6.")
+        short = rep.value("design.finest_gain_over_rigid", finest["gain"] / d.gain)
+        yielding = [k for k, v in finest["stress_over_yield"].items() if v > 1.0]
+        verdict = ("does not amplify as the rigid model assumes" if short < 0.9 else
+                   "amplifies as the rigid model assumes" if short < 1.1 else "amplifies more than the rigid model")
+        rep.text(f"Reading: with flat steel faces this design {verdict}: the finest model finds restitutions "
+                 f"{min(es):.2f} to {max(es):.2f} per stage (0.9 assumed) and a gain of {finest['gain']:.2f} against "
+                 f"{d.gain:.2f} ({short:.0%}). Peak von Mises stress is up to {worst:.1f} times the {MATERIAL} yield; "
+                 + (f"{len(yielding)} of {len(finest['stress_over_yield'])} bodies yield, so energy goes into "
+                    "plastic work and into bodies that keep moving together, and the interfaces must be made to "
+                    "stay elastic (crowned faces, pads, tuned lengths, stronger materials) before e = 0.9 can be "
+                    "assumed: section 6." if yielding else "no interface yields."))
     return runs
 
 
@@ -314,7 +342,7 @@ def paper_rods(rep: Report, size: str):
                          float(last[-1]) / speed, rigid_gain,
                          max(r.interface_stress.values()) / to_si(LIBRARY[MATERIAL]["yield_stress"], "pressure"),
                          r.energy_balance_error, r.wall_time_s])
-    rep.table(["launch [m/s]", "contacts", "restitution per stage", "gain (peak)", "gain (end)",
+    rep.table("paper_rods", ["launch [m/s]", "contacts", "restitution per stage", "gain (peak)", "gain (end)",
                "rigid, e = 0.5", "interface stress / yield", "energy balance", "wall [s]"], rows,
               ["{:g}", "{}", "{}", "{:.2f}", "{:.2f}", "{:.2f}", "{:.2f}", "{:.1e}", "{:.2f}"])
     by = {(r[0], r[1]): r for r in rows}
@@ -326,13 +354,17 @@ def paper_rods(rep: Report, size: str):
         words.append(f"at {speed:g} m/s the damped contacts give restitutions {min(es):.2f} to {max(es):.2f} "
                      f"(paper: about 0.5) and a gain of {pad[3]:.2f} (paper: under 3.0; exact contact "
                      f"{plain[3]:.2f}); the soft spring {'raises' if spring[3] > pad[3] else 'does not raise'} the "
-                     f"peak gain to {spring[3]:.2f} (paper: 3.5), and pulls the last rod back to {spring[4]:.2f} by the "
-                     "end")
-    rep.text("Reading: " + "; ".join(words) + ". With the rods unknown the paper's experiment can only be "
-             "matched in kind: elastic rods restitute well above 0.5 and amplify more than it found; yielding "
-             "flat faces (1D overstates it, section 2) restitute far below 0.5; and a soft spring from the first to "
-             "the last rod pushes the last one forward as the first closes on it, which raises its peak speed "
-             "only when the cascade is slow (yielding), while the same spring later pulls it back.")
+                     f"peak gain ({spring[3]:.2f} against {pad[3]:.2f}; paper: 3.5), and the last rod's speed is "
+                     f"{spring[4]:.2f} times the launch speed at the end")
+    matched = [speed for speed in cfg["rod_speeds"]
+               if abs(by[(speed, "10%-damped penalty")][3] / 3.0 - 1) < 0.2
+               and all(abs(float(e) - 0.5) < 0.15 for e in by[(speed, "10%-damped penalty")][2].split(", "))]
+    rep.value("paper_rods.speeds_matching_the_paper", matched)
+    rep.text("Reading: " + "; ".join(words) + ". With the rods' sizes unknown the paper's experiment can only be "
+             "matched in kind: " + (f"at {', '.join(f'{v:g}' for v in matched)} m/s the damped contacts restitute "
+                                   "within 0.15 of 0.5 with a gain within 20% of 3.0" if matched else
+                                   "at no launch speed do the damped contacts restitute within 0.15 of 0.5 with a "
+                                   "gain within 20% of 3.0") + ".")
     return rows
 
 
@@ -385,7 +417,7 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
             rows.append([key, shape, envelope * 1e3, chain["gain"], es,
                          "elastic" if worst is None else worst, chain["wall_time_s"]])
             curves[key].append((envelope * 1e3, chain["gain"], shape))
-    rep.table(["model", "bodies", "occupied volume [L]", "gain", "restitution per stage", "peak stress / yield",
+    rep.table("cylinders_vs_plates", ["model", "bodies", "occupied volume [L]", "gain", "restitution per stage", "peak stress / yield",
                "wall [s]"], rows, ["{}", "{}", "{:.4g}", "{:.3f}", "{}", "{:.2f}", "{:.3g}"])
     fig, ax = plt.subplots(figsize=(6, 4))
     for key, pts in curves.items():
@@ -448,7 +480,7 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
         crown = 10 * sizes[b]["diameter"]
         rows.append([f"m{a + 1}-m{b + 1}", dv, sigma / 1e6, sigma / Y, dv * Y / sigma,
                      hertz_yield_speed(reduced_mass(masses[a], masses[b]), crown, e_star, Y)])
-    rep.table(["stage", "closing speed [m/s]", "flat-face stress [MPa]", "/ yield", "flat faces elastic up to [m/s]",
+    rep.table("flat_face_stress", ["stage", "closing speed [m/s]", "flat-face stress [MPa]", "/ yield", "flat faces elastic up to [m/s]",
                "crown R = 10 D yields at [m/s]"], rows, ["{}", "{:.1f}", "{:.0f}", "{:.2f}", "{:.1f}", "{:.2f}"])
     # pads: the stiffest linear pad that holds the face stress at ALLOWABLE x yield, sized on the
     # closing speeds of a rigid chain with the pads' own restitution
@@ -470,7 +502,7 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
         period = 2 * sizes[b]["length"] / c0
         prow.append([f"m{a + 1}-m{b + 1}", dv, p.stiffness / 1e6, p.travel * 1e3, p.energy / 1e3,
                      p.duration * 1e3, p.duration / period, p.energy / (SPRING_STRESS ** 2 / (2 * E)) * 1e3])
-    rep.table(["stage", "closing speed [m/s]", "pad stiffness [MN/m]", "travel [mm]", "energy [kJ]", "contact [ms]",
+    rep.table("pads", ["stage", "closing speed [m/s]", "pad stiffness [MN/m]", "travel [mm]", "energy [kJ]", "contact [ms]",
                "contact / struck period", "ideal spring volume [L]"], prow,
               ["{}", "{:.1f}", "{:.4g}", "{:.1f}", "{:.4g}", "{:.3f}", "{:.2g}", "{:.3g}"])
     h = cfg["pad_h"]
@@ -507,7 +539,7 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
              "Restitution per stage: each pair's first contact, meaningless when contacts overlap (the bodies "
              "then act as one chain of springs). Effective restitution: the one e that gives the rigid chain of "
              "these masses the same gain. The finite-element XDMF fields are in `padded/*/fields.xdmf`.")
-    rep.table(["model", "gaps [mm]", "restitution per stage", "contacts overlap", "effective e", "gain",
+    rep.table("padded_chain", ["model", "gaps [mm]", "restitution per stage", "contacts overlap", "effective e", "gain",
                "peak stress / yield", "wall [s]"], runs,
               ["{}", "{:.0f}", "{}", "{}", "{:.3f}", "{:.3f}", "{:.2f}", "{:.3g}"])
     fe = [r for r in runs if r[0].startswith("axisymmetric") and isinstance(r[5], float)]
@@ -516,10 +548,14 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
     def span(values, fmt):
         lo, hi = fmt.format(min(values)), fmt.format(max(values))
         return lo if lo == hi else f"{lo}-{hi}"
+    strong = 2000e6 / Y * min(r[4] for r in flat)        # flat-face elastic limit of a 2 GPa steel
+    crowned_worse = max(r[5] for r in flat) < min(r[4] for r in flat)
     words = (f"Flat steel faces stay elastic only below {span([r[4] for r in flat], '{:.0f}')} m/s of closing speed, "
              f"and the design closes at {span(dvs, '{:.0f}')} m/s ({span([r[3] for r in flat], '{:.1f}')} times "
-             f"yield); a stronger steel helps little (2 GPa would allow {2000e6 / Y * min(r[4] for r in flat):.0f} "
-             f"m/s), and a crowned face is worse: it yields at {span([r[5] for r in flat], '{:.2g}')} m/s. Pads "
+             f"yield); a 2 GPa steel would allow {strong:.0f} m/s, "
+             + ("still below the design's slowest closing speed" if strong < min(dvs) else "enough for some stages")
+             + f", and a crowned face yields at {span([r[5] for r in flat], '{:.2g}')} m/s"
+             + (", sooner than a flat one" if crowned_worse else "") + f". Pads sized to "
              f"hold the faces below yield: {span([p.stiffness / 1e6 for p in pads], '{:.0f}')} MN/m with "
              f"{span([p.travel * 1e3 for p in pads], '{:.0f}')} mm of travel, storing up to "
              f"{max(p.energy for p in pads) / 1e3:.0f} kJ")
@@ -527,10 +563,15 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
         words += (f"; with {r[1]:.0f} mm gaps the axisymmetric model finds a gain of {r[5]:.2f} at {r[6]:.2f} of "
                   f"yield, an effective restitution of {r[4]:.3f} (contacts {'overlap' if r[3] == 'yes' else 'in sequence'}; "
                   f"test article at {r[5] * d.launch_speed / FTS:.0f} ft/s)")
+    overlapping = [r for r in fe if r[3] == "yes"]
+    sequenced_runs = [r for r in fe if r[3] != "yes"]
+    if overlapping and sequenced_runs:
+        lost, kept = max(r[5] for r in overlapping), max(r[5] for r in sequenced_runs)
+        words += (f". Overlapping contacts {'lose' if lost < kept else 'do not lose'} gain against stages in "
+                  f"sequence ({lost:.2f} against {kept:.2f})" + (": gaps that keep the stages in sequence recover "
+                                                                  "it at the cost of machine length" if lost < kept else ""))
     rep.text("Reading: " + words + f"; the rigid chain at the assumed e = 0.9 / 0.8 / 0.75 gains "
-             f"{runs[-3][5]:.2f} / {runs[-2][5]:.2f} / {runs[-1][5]:.2f}. Pads whose contacts last longer than "
-             "the struck body takes to reach the next pad let the stages overlap and lose gain; gaps that keep "
-             "them in sequence recover it at the cost of machine length. The price of pads is their volume: each "
+             f"{runs[-3][5]:.2f} / {runs[-2][5]:.2f} / {runs[-1][5]:.2f}. The price of pads is their volume: each "
              "must store its stage's energy elastically.")
     return runs
 

@@ -102,14 +102,15 @@ def first_mass(rep: Report, cfg) -> dict:
                      constant_pressure_speed(gun) / FT, heaviest_at(gun, v) / LB,
                      "yes" if shot.muzzle_velocity >= v else "no"])
         designs[arch] = lightest_launcher(gun, v, LIMITS, SIZING, starts=cfg["starts"])
-    rep.table(["architecture", "launched mass [lb]", "needs [ft/s]", "paper's gun [ft/s]", "infinite chamber (simple wave)",
-               "constant-p bound", "heaviest it fires at that speed [lb]", "claim holds"], rows,
+    rep.table("papers_gun", ["architecture", "launched mass [lb]", "needs [ft/s]", "paper's gun [ft/s]",
+                             "infinite chamber (simple wave) [ft/s]", "constant-p bound [ft/s]",
+                             "heaviest it fires at that speed [lb]", "claim holds"], rows,
               ["{}", "{:.0f}", "{:.0f}", "{:.0f}", "{:.0f}", "{:.0f}", "{:.0f}", "{}"])
     rep.text(f"The lightest launcher that does fire it, within {LIMITS.max_length / FT:.0f} ft of barrel, "
              f"{LIMITS.max_bore / IN:.0f} in of bore and {LIMITS.max_pressure / PSI:.0f} psi (commercial "
              f"compressors, per the paper), {SIZING.barrel_material} barrel, {SIZING.tank_material} tank of "
              f"length {SIZING.tank_aspect:g} diameters, ASME VIII-1 walls (`shockfem.launcher.design`):")
-    rep.table(DESIGN_HEADER, [_design_row(a, d) for a, d in designs.items()], DESIGN_FORMATS)
+    rep.table("designs_30lb", DESIGN_HEADER, [_design_row(a, d) for a, d in designs.items()], DESIGN_FORMATS)
     for a, d in designs.items():
         saved = [f"{b['limit']} (relaxing it 10% saves {b.get('weight_saved_by_relaxing_10%', math.nan) / LB:.0f} lb)"
                  for b in d.binding]
@@ -126,8 +127,7 @@ def first_mass(rep: Report, cfg) -> dict:
             + (" (the longest allowed)" if any(b["limit"] == "max_length" for b in d.binding) else "")
             for a, d in designs.items() if d.feasible]
     rep.text("Reading: " + "; ".join(verdicts) + ". Of the paper's gun: " + "; ".join(fit) + ". The lightest "
-             "guns that do the job: " + "; ".join(best) + f" (pressure limit {LIMITS.max_pressure / PSI:.0f} psi; "
-             "section 3 shows why pressure alone buys little).")
+             "guns that do the job: " + "; ".join(best) + f" (pressure limit {LIMITS.max_pressure / PSI:.0f} psi).")
     return designs
 
 
@@ -148,7 +148,7 @@ def thirty_pounds(rep: Report, cfg):
         wave = barrel_length_for(dataclasses.replace(g, gas_inertia="simple-wave"), v)
         tank = barrel_length_for(g, v)
         rows.append([b, const / FT, wave / FT, tank / FT])
-    rep.table(["bore [in]", "constant pressure [ft]", "infinite chamber (simple wave) [ft]", "20 ft^3 tank [ft]"], rows,
+    rep.table("barrel_length", ["bore [in]", "constant pressure [ft]", "infinite chamber (simple wave) [ft]", "20 ft^3 tank [ft]"], rows,
               ["{:g}", "{:.3g}", "{:.3g}", "{:.3g}"])
     def past_90ft(b):
         g = dataclasses.replace(gun, bore=b, valve_area=math.pi * (2 / 3 * b) ** 2 / 4)
@@ -156,13 +156,17 @@ def thirty_pounds(rep: Report, cfg):
     bore_90 = brentq(past_90ft, 4 * IN, 12 * IN, rtol=1e-4) if past_90ft(4 * IN) > 0 > past_90ft(12 * IN) else math.nan
     c0 = math.sqrt(1.4 * 287.05 * 293.15)
     base = (1 - 0.2 * v / c0) ** 7
+    rep.value("barrel_length.bore_for_90_ft_in", bore_90 / IN)
+    const, wave, tank = (rows[-1][k] for k in (1, 2, 3))
+    close = abs(wave / tank - 1) < 0.25
     rep.text(f"Reading: with the 20 ft^3 tank a {bore_90 / IN:.2f} in bore needs a 90 ft barrel; the 12 in bore "
-             f"of the first-mass gun needs {rows[-1][3]:.0f} ft. The paper's 90 ft holds for a launcher of about "
-             f"{bore_90 / IN:.0f} in bore, and its point stands: a gun that fires the target directly is several "
-             "times longer than the amplifier's gun. The constant-pressure length is far too short because at "
-             f"1600 ft/s a simple wave's base pressure has fallen to {base:.1%} of the chamber's (air, "
-             f"c0 = {c0:.0f} m/s): the gas's own inertia, not the tank, sets the length, as the close "
-             "simple-wave and 20 ft^3 columns show.")
+             f"needs {tank:.0f} ft, {tank / (gun.length / FT):.1f} times the "
+             f"{gun.length / FT:.0f} ft barrel of the paper's gun. At 1600 ft/s a simple wave's base "
+             f"pressure has fallen to {base:.1%} of the chamber's (air, c0 = {c0:.0f} m/s), so the constant-pressure "
+             f"length ({const:.3g} ft at 12 in) is {tank / const:.0f} times short; "
+             + ("the simple-wave and 20 ft^3 columns agree within 25%: the gas's own inertia, not the tank, sets "
+                "the length." if close else f"the 20 ft^3 tank adds {tank / wave - 1:.0%} to the simple-wave length: "
+                "the tank's emptying matters as much as the gas's inertia."))
     return rows
 
 
@@ -183,12 +187,17 @@ def trades(rep: Report, designs: dict, cfg, out_dir: str):
                "free). Right: barrel length against bore with the design's tank and pressure, and with an infinite chamber of the bore")
     rows = [[x.gun.reservoir_pressure / PSI, x.weight / LB if x.feasible else math.nan, x.gun.bore / IN,
              x.gun.length / FT, x.gun.reservoir_volume / FT ** 3] for x in curves["weight_vs_pressure"]]
-    rep.table(["pressure [psi]", "weight [lb]", "bore [in]", "barrel [ft]", "tank [ft^3]"], rows,
+    rep.table("pressure_trade", ["pressure [psi]", "weight [lb]", "bore [in]", "barrel [ft]", "tank [ft^3]"], rows,
               ["{:.4g}", "{:.4g}", "{:.3g}", "{:.3g}", "{:.3g}"])
-    rep.text("Reading: with thin walls a tank's weight and its stored energy both go as p V, so pressure by itself "
-             "buys little; the curve is shallow about its minimum, rising at low pressure (a large bore and tank "
-             "to hold the energy) and at high pressure (thick walls, and a smaller bore that makes the barrel "
-             "longer or the expansion less efficient).")
+    feasible = [r for r in rows if math.isfinite(r[1])]
+    if len(feasible) >= 3:
+        best = min(feasible, key=lambda r: r[1])
+        low, high = feasible[0], feasible[-1]
+        rep.value("pressure_trade.lightest_psi", best[0])
+        rises = [f"{r[1] / best[1] - 1:.0%} heavier at {r[0]:.4g} psi" for r in (low, high) if r is not best]
+        rep.text(f"Reading: with thin walls a tank's weight and its stored energy both go as p V, so pressure by "
+                 f"itself buys little: the lightest launcher of the curve is at {best[0]:.4g} psi ({best[1]:.4g} lb), "
+                 f"and the ends of the curve are {' and '.join(rises) or 'no heavier'}.")
 
 
 def payload_machines(rep: Report, cfg):
@@ -207,8 +216,8 @@ def payload_machines(rep: Report, cfg):
             biggest = cylinder_size(amp.masses[0], rho, 1.0)["diameter"]
             extra.append([f"{p} lb, {arch}", sum(amp.masses[:-1]) / LB, biggest / IN,
                           (d.weight + sum(amp.masses[:-1])) / LB])
-    rep.table(DESIGN_HEADER, rows, DESIGN_FORMATS)
-    rep.table(["machine", "masses but the test article [lb]", "largest mass diameter [in]", "launcher + masses [lb]"], extra,
+    rep.table("designs_by_payload", DESIGN_HEADER, rows, DESIGN_FORMATS)
+    rep.table("machines", ["machine", "masses but the test article [lb]", "largest mass diameter [in]", "launcher + masses [lb]"], extra,
               ["{}", "{:.4g}", "{:.3g}", "{:.4g}"])
     feasible = [r[0] for r in rows if not str(r[-1]).startswith("INFEASIBLE")]
     at_bore = [r[0] for r in rows if "max_bore" in str(r[-1])]
@@ -258,14 +267,16 @@ def coupled(rep: Report, designs: dict, cfg, out_dir: str):
                      c["test_article_speed"] / FT, c["gain"], c["wall_time_s"]])
     rep.text("The launcher of section 1 in the chain scene's `[launcher]` table (`shockfem run chain.toml`): its "
              "muzzle velocity is the first mass's launch speed.")
-    rep.table(["fidelity", "tank [psi]", "muzzle [ft/s]", "test article [ft/s]", "gain", "chain wall [s]"], rows,
+    rep.table("gun_and_chain", ["fidelity", "tank [psi]", "muzzle [ft/s]", "test article [ft/s]", "gain", "chain wall [s]"], rows,
               ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.3f}", "{:.3g}"])
     waves = [f"at fidelity {r[0]} the test article reaches {r[3]:.0f} ft/s (gain {r[4]:.2f})" for r in rows
              if r[0] != "rigid"]
+    lost = [r for r in rows if r[0] != "rigid" and r[4] < 0.5 * rows[0][4]]
     rep.text(f"Reading: the gun fires the first mass at {rows[0][2]:.0f} ft/s for the {LAUNCH / FT:.0f} the "
              f"amplifier design assumed, and the rigid chain at e = {E} makes it {rows[0][3]:.0f} ft/s"
-             + ("; " + "; ".join(waves) + ": the flat-faced steel stages yield and lose most of the gain, as the "
-                "amplifier study (`shockfem study amplifier`, section 3) finds" if waves else "")
+             + ("; " + "; ".join(waves) if waves else "")
+             + (": at " + ", ".join(r[0] for r in lost) + " the flat-faced steel stages lose more than half the rigid "
+                "gain, as the amplifier study (`shockfem study amplifier`, section 3) finds" if lost else "")
              + ". `studies/launcher/gun_and_chain.toml` is this run as a scene.")
 
 

@@ -1,9 +1,26 @@
-"""A study report: ``report.md`` with tables and figures, written as the study goes."""
+"""A study report: ``report.md`` with tables and figures, and ``results.json`` with every number of
+the report's tables and of its readings, both written as the study goes.
+
+``results.json``: ``{"title", "tables": {name: {"columns": [...], "rows": [[...], ...]}}, "values":
+{name: number or text}}``; the columns carry their units as the report's headers do ("wall [s]").
+Tests and later studies read it instead of parsing the Markdown.
+"""
 from __future__ import annotations
 
+import json
+import math
 import os
 
 from ..output.figures import save
+
+
+def _plain(value):
+    """A JSON value for a table cell or a reading's number (NaN becomes null)."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if hasattr(value, "item"):          # numpy scalars
+        return _plain(value.item())
+    return value
 
 
 class Report:
@@ -11,6 +28,13 @@ class Report:
         self.out_dir = out_dir
         os.makedirs(out_dir, exist_ok=True)
         self.lines = [f"# {title}", ""]
+        self.results = {"title": title, "tables": {}, "values": {}}
+
+    def value(self, name: str, value):
+        """Record a number a reading states (``results.json``'s ``values``); returns it."""
+        self.results["values"][name] = _plain(value)
+        self.write()
+        return value
 
     def text(self, *paragraphs: str):
         for p in paragraphs:
@@ -20,7 +44,9 @@ class Report:
     def heading(self, title: str):
         self.lines += [f"## {title}", ""]
 
-    def table(self, header: list[str], rows: list[list], formats: list[str] | None = None):
+    def table(self, name: str, header: list[str], rows: list[list], formats: list[str] | None = None):
+        """A table in the report, and its unformatted rows under ``name`` in ``results.json``."""
+        self.results["tables"][name] = {"columns": list(header), "rows": [[_plain(c) for c in row] for row in rows]}
         formats = formats or ["{}"] * len(header)
         self.lines.append("| " + " | ".join(header) + " |")
         self.lines.append("|" + "---|" * len(header))
@@ -43,3 +69,5 @@ class Report:
     def write(self):
         with open(os.path.join(self.out_dir, "report.md"), "w") as fh:
             fh.write("\n".join(self.lines) + "\n")
+        with open(os.path.join(self.out_dir, "results.json"), "w") as fh:
+            json.dump(self.results, fh, indent=1)

@@ -1,4 +1,6 @@
-"""The amplifier study at smoke size: every section written, figures real."""
+"""The studies at smoke size: every section written, figures real, and the numbers checked from
+``results.json`` (the report's tables, unformatted), not from the Markdown."""
+import json
 import os
 import subprocess
 import sys
@@ -8,48 +10,73 @@ import pytest
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def test_amplifier_study_smoke(tmp_path):
-    out = tmp_path / "amplifier"
-    p = subprocess.run([sys.executable, "-m", "shockfem", "study", "amplifier", "--size", "smoke", "--out", str(out)],
+def _study(name, out):
+    p = subprocess.run([sys.executable, "-m", "shockfem", "study", name, "--size", "smoke", "--out", str(out)],
                        capture_output=True, text=True, timeout=900)
     assert p.returncode == 0, p.stderr
-    report = (out / "report.md").read_text()
+    results = json.loads((out / "results.json").read_text())
+    return results, (out / "report.md").read_text()
+
+
+def _rows(results, table, **where):
+    """The rows of ``table`` as dicts by column, those whose columns equal ``where`` (column names with
+    spaces and brackets given as their first word)."""
+    t = results["tables"][table]
+    rows = [dict(zip(t["columns"], r)) for r in t["rows"]]
+    def column(key):
+        return next(c for c in t["columns"] if c == key or c.split(" ")[0] == key)
+    return [r for r in rows if all(r[column(k)] == v for k, v in where.items())]
+
+
+def test_amplifier_study_smoke(tmp_path):
+    results, report = _study("amplifier", tmp_path / "amplifier")
     for section in ("## 1. The white paper's sizing claim", "## 2. Apparent restitution",
                     "## 3. The five-mass design", "## 4. The white paper's diminishing rods",
                     "## 5. Cylinders against thick plates", "## 6. Interfaces that keep the design elastic"):
         assert section in report
-    # the closed forms: 775 lb of intermediate masses at 325 ft/s, e = 0.9 (launched chain)
-    assert "| launched-chain | 0.9 | 325 | 2082 | 775 |" in report
-    assert (out / "restitution_vs_frequency_ratio.png").stat().st_size > 20_000
-    assert "| axisymmetric (30 mm) |" in report
-    # the rods: rigid reference at e = 0.5 with mass ratio 0.55^3 per stage, [1.5 / (1 + 0.166)]^4
-    assert "| 2.74 |" in report and "10%-damped penalty + soft spring" in report
+    # the closed forms: 2082 lb first mass and 775 lb of intermediate masses at 325 ft/s, e = 0.9
+    (claim,) = _rows(results, "sizing_claims", architecture="launched-chain", e=0.9, launch=325)
+    assert claim["first mass [lb]"] == pytest.approx(2081.8, rel=1e-4)
+    assert claim["intermediate [lb]"] == pytest.approx(775.2, rel=1e-4) and claim["under 800 lb"] == "yes"
+    assert (tmp_path / "amplifier" / "restitution_vs_frequency_ratio.png").stat().st_size > 20_000
+    assert _rows(results, "design_fidelities", fidelity="axisymmetric (30 mm)")
+    # the rods: rigid reference at e = 0.5 with mass ratio 0.55^3 per stage, [1.5 / (1 + 0.166)]^4 = 2.74
+    rods = _rows(results, "paper_rods")
+    assert {r["contacts"] for r in rods} >= {"exact contact", "10%-damped penalty + soft spring"}
+    assert all(r["rigid, e = 0.5"] == pytest.approx(2.735, rel=1e-3) for r in rods)
     # every body at one L/D = a: D_i = (4 m_i / (pi rho a))^(1/3), so the envelope pi/4 D_1^2 sum(a D_i)
     # does not depend on a: 304.2 L for the design's masses (two ratios, two materials)
-    assert report.count("| 304.2 |") == 4 and (out / "gain_vs_volume.png").stat().st_size > 20_000
+    volumes = [r["occupied volume [L]"] for r in _rows(results, "cylinders_vs_plates")]
+    assert len(volumes) == 4 and volumes == pytest.approx([304.2] * 4, rel=1e-3)
+    assert (tmp_path / "amplifier" / "gain_vs_volume.png").stat().st_size > 20_000
     # pads: rigid bodies on a 2%-damped pad that never pulls restitute 0.940 (Schwager-Poeschel), and
     # the rigid chain of the design's masses at that e gains 5.349; the finite elements with gaps that
     # keep the stages in sequence must find the same gain, and below yield
-    rows = [[c.strip() for c in line.strip("|").split("|")] for line in report.splitlines()
-            if line.startswith("| rigid |") or line.startswith("| axisymmetric (30 mm) |")]
-    rigid_row = next(r for r in rows if r[0] == "rigid" and len(r) == 8)
-    assert rigid_row[2:6] == ["0.940, 0.940, 0.940, 0.940", "no", "0.940", "5.349"]
-    sequenced = next(r for r in rows if r[0].startswith("axisymmetric") and len(r) == 8 and r[3] == "no")
-    assert float(sequenced[5]) == pytest.approx(5.349, rel=0.01) and float(sequenced[6]) < 1.0
+    (rigid,) = _rows(results, "padded_chain", model="rigid")
+    assert rigid["restitution per stage"] == "0.940, 0.940, 0.940, 0.940" and rigid["contacts overlap"] == "no"
+    assert rigid["effective e"] == pytest.approx(0.9398, abs=5e-4) and rigid["gain"] == pytest.approx(5.349, abs=5e-4)
+    sequenced = [r for r in _rows(results, "padded_chain", **{"contacts overlap": "no"})
+                 if r["model"].startswith("axisymmetric")]
+    assert sequenced and sequenced[0]["gain"] == pytest.approx(5.349, rel=0.01)
+    assert sequenced[0]["peak stress / yield"] < 1.0
+    # the readings' numbers are recorded with the tables, and the readings follow them
+    values = results["values"]
+    assert values["design.finest_gain_over_rigid"] < 0.9 and "does not amplify as the rigid model" in report
 
 
 def test_launcher_study_smoke(tmp_path):
-    out = tmp_path / "launcher"
-    p = subprocess.run([sys.executable, "-m", "shockfem", "study", "launcher", "--size", "smoke", "--out", str(out)],
-                       capture_output=True, text=True, timeout=900)
-    assert p.returncode == 0, p.stderr
-    report = (out / "report.md").read_text()
+    results, report = _study("launcher", tmp_path / "launcher")
     for section in ("## 1. The paper's gun", "## 2. A 30 lb target", "## 4. Launchers for 10, 50 and 100 lb",
                     "## 5. Gun and chain in one run"):
         assert section in report
     # the paper's gun against the 2082 lb first mass: the constant-pressure bound sqrt(2 p A L / m)
     # = sqrt(2 x 13.79 MPa x 0.07297 m^2 x 1.8288 m / 944.4 kg) = 62.4 m/s = 205 ft/s, short of 325
-    assert "| launched-chain | 2082 | 325 | 182 | 188 | 205 |" in report and "| no |" in report
+    (gun,) = _rows(results, "papers_gun", architecture="launched-chain")
+    assert gun["launched mass [lb]"] == pytest.approx(2082, rel=1e-3) and gun["needs [ft/s]"] == 325
+    assert gun["constant-p bound [ft/s]"] == pytest.approx(205, rel=3e-3)
+    assert gun["paper's gun [ft/s]"] < gun["needs [ft/s]"] and gun["claim holds"] == "no"
     # the coupled run: the launcher's muzzle speed is the chain's launch speed, and the rigid chain
     # at e = 0.9 brings the test article to the design's 1600 ft/s
-    assert "| rigid | " in report and "| 325 | 1600 | 4.923 |" in report
+    (rigid,) = _rows(results, "gun_and_chain", fidelity="rigid")
+    assert rigid["muzzle [ft/s]"] == pytest.approx(325, rel=2e-3)
+    assert rigid["test article [ft/s]"] == pytest.approx(1600, rel=2e-3) and rigid["gain"] == pytest.approx(4.923, abs=1e-3)
