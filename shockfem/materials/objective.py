@@ -12,6 +12,7 @@ the spin is (W23, W13, W12).
 """
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from .layout import S_BACK
@@ -59,3 +60,10 @@ def rotate_back_stress(state, c, p, q):
     (state[c, p, b], state[c, p, b + 1], state[c, p, b + 2], state[c, p, b + 3], state[c, p, b + 4],
      state[c, p, b + 5]) = rotate_symmetric((state[c, p, b], state[c, p, b + 1], state[c, p, b + 2],
                                              state[c, p, b + 3], state[c, p, b + 4], state[c, p, b + 5]), q)
+
+
+def rotation_of_angular_velocity(omega, dt: float):
+    """The 3x3 rotation (numpy) a body spinning at angular velocity ``omega`` [rad/s] turns through over
+    ``dt``: the same Cayley transform, with the spin W = skew(omega) (W12 = -omega_3, W13 = omega_2,
+    W23 = -omega_1), i.e. a turn by 2 atan(|omega| dt / 2) about omega.  Rigid bodies use it."""
+    return np.array(cayley_matrix(-float(omega[0]), float(omega[1]), -float(omega[2]), dt)).reshape(3, 3)

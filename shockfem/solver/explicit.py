@@ -35,6 +35,7 @@ from ..contact.springs import DiscreteSpring
 from ..elements import full_integration, one_point
 from ..elements.cells import AXISYMMETRIC
 from ..materials.layout import STATE_SIZE
+from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
 from . import nodal
 
@@ -96,13 +97,6 @@ class PhaseTimes:
     update: float = 0.0
     energy: float = 0.0
     total: float = 0.0
-
-
-def _cayley(w: np.ndarray, dt: float) -> np.ndarray:
-    """Rotation matrix (I - A)^-1 (I + A), A = skew(w) dt / 2: the exact-orthogonal step rotation."""
-    a = 0.5 * dt * w
-    A = np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
-    return np.eye(3) + 2.0 / (1.0 + a @ a) * (A + A @ A)
 
 
 class ExplicitSolver:
@@ -386,7 +380,7 @@ class ExplicitSolver:
             rs.momentum_angular = rs.momentum_angular + dt_avg * T
             inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
             omega = np.linalg.solve(inertia, rs.momentum_angular) if rb.mass > 0 else np.zeros(3)
-            rs.rotation = _cayley(omega, dt) @ rs.rotation
+            rs.rotation = rotation_of_angular_velocity(omega, dt) @ rs.rotation
             x_new = center_new + rb.rel0 @ rs.rotation.T
         else:
             x_new = self.x[rb.nodes] + dt * rs.velocity

@@ -220,10 +220,12 @@ def payload_machines(rep: Report, cfg):
     rep.table("machines", ["machine", "masses but the test article [lb]", "largest mass diameter [in]", "launcher + masses [lb]"], extra,
               ["{}", "{:.4g}", "{:.3g}", "{:.4g}"])
     feasible = [r[0] for r in rows if not str(r[-1]).startswith("INFEASIBLE")]
-    at_bore = [r[0] for r in rows if "max_bore" in str(r[-1])]
+    at_bore = [f"{r[0]} ({r[6]:,.0f} lb)" for r in rows if "max_bore" in str(r[-1])]
+    others = [r[6] for r in rows if "max_bore" not in str(r[-1]) and not str(r[-1]).startswith("INFEASIBLE")]
     rep.text(f"Reading: a launcher within {LIMITS.max_length / FT:.0f} ft, {LIMITS.max_bore / IN:.0f} in and "
              f"{LIMITS.max_pressure / PSI:.0f} psi exists for: {'; '.join(feasible) or 'none'}. "
-             + (f"The bore limit binds for: {'; '.join(at_bore)}, whose guns weigh tens of thousands of pounds. "
+             + (f"The bore limit binds for: {'; '.join(at_bore)}"
+                + (f", against {min(others):,.0f} to {max(others):,.0f} lb for the others. " if others else ". ")
                 if at_bore else "")
              + _architectures_compared(rows))
     return rows

@@ -7,6 +7,7 @@ import pytest
 
 from shockfem.materials.laws import LAWS
 from shockfem.materials.layout import P_LAW, S_EPS, STATE_SIZE
+from shockfem.materials.objective import rotation_of_angular_velocity
 from shockfem.materials.update import is_elastic_only, update_stress
 from shockfem.model.materials import law_of, parameter_table
 from shockfem.verify.material_point import material
@@ -55,6 +56,17 @@ def test_elastic_only_path_is_the_elastic_law():
     point = _point(STEEL)
     assert is_elastic_only(point[0])
     assert _step(point, s0, d, w, elastic_only=True) == _step(point, s0, d, w, elastic_only=False)
+
+
+def test_a_rigid_body_turns_about_its_angular_velocity():
+    """The rigid bodies' step rotation (the same Cayley transform): omega about (1, 2, 2)/3 turns a
+    vector by 2 atan(|omega| dt / 2) about that axis, counterclockwise (Rodrigues' formula)."""
+    axis = np.array([1.0, 2.0, 2.0]) / 3.0
+    omega, dt = 4e4 * axis, 1e-5
+    Q = rotation_of_angular_velocity(omega, dt)
+    a = 2 * math.atan(0.5 * 4e4 * dt)
+    K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    assert np.allclose(Q, np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K, rtol=0, atol=1e-14)
 
 
 def test_perfect_plasticity_returns_to_the_yield_stress():
