@@ -24,149 +24,164 @@ from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress
 from .cells import AXISYMMETRIC, characteristic_length, gradients
 
 
-@njit(cache=True, fastmath=True)
-def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics,
-                      thickness, cell_kind, mean_dilatation, params, curves, state, sigma, f):
-    """Update the stress of ``cells`` over one step and add their internal force to ``f``.
+def _kernel(elastic_only: bool):
+    """``stress_divergence`` compiled for ``elastic_only`` (a constant of the closure, as the one-point
+    kernels are: ``one_point.KERNELS``)."""
 
-    Parameters
-    ----------
-    cells : (nc,) int32, the deformable cells this rank owns.
-    dofmap : (num_cells, nn) int32, P1 node numbers of every cell.
-    cell_material : (num_cells,) int32, row of ``params`` for every cell.
-    cell_sign : (num_cells,) float64, ``cell_orientation`` of the reference mesh.
-    x_np1 : (num_nodes, gdim) positions at t_{n+1} [m].
-    v_half : (num_nodes, gdim) velocities at t_{n+1/2} [m/s].
-    dt : step t_n -> t_{n+1} [s].
-    N, dN : shape functions (nq, nn) and reference gradients (nq, nn, tdim) at the points.
-    wq : (nq,) quadrature weights on the reference cell.
-    kinematics : 0 plane strain, 1 axisymmetric, 2 3D.
-    thickness : out-of-plane depth for plane strain [m] (ignored otherwise).
-    cell_kind : 0 tri, 1 quad, 2 tet, 3 hex (for the characteristic length).
-    mean_dilatation : replace each point's volumetric strain rate by the cell average
-        (Nagtegaal, Parks & Rice 1974), which removes volumetric locking.
-    params, curves : material rows and hardening curves (``shockfem.materials.layout``).
-    state : (num_cells, nq, STATE_SIZE) point state of the laws, updated in place (a (1, 1, STATE_SIZE)
-        stub when no law needs one).
-    sigma : (num_cells, nq, 6) Cauchy stress, updated in place from t_n to t_{n+1}.
-    f : (num_nodes, gdim) internal force, accumulated (caller zeroes it).
+    @njit(cache=True, fastmath=True)
+    def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics,
+                          thickness, cell_kind, mean_dilatation, params, curves, state, sigma, f):
+        """Update the stress of ``cells`` over one step and add their internal force to ``f``.
 
-    Returns
-    -------
-    dt_stable : smallest stable step over ``cells`` at t_{n+1} (before the safety factor).
-    critical_cell : the cell that sets it.
-    damping_power : int sigma_visc : d dV, power of the stiffness-proportional damping [W].
-    viscosity_power : int -q tr(d) dV, power of the bulk viscosity [W].
-    plastic_work : int sigma : d eps_p dV over the step [J].
-    bad_cell : a cell whose Jacobian changed sign (inverted) at t_{n+1}, or -1.
-    """
-    nq = wq.shape[0]
-    nn = dofmap.shape[1]
-    gdim = x_np1.shape[1]
-    xe = np.empty((nn, 3))
-    xm = np.empty((nn, 3))
-    ve = np.empty((nn, 3))
-    dNdx = np.empty((nn, 3))
-    L = np.zeros((nq, 3, 3))
-    wmid = np.empty(nq)
-    two_pi = 2.0 * math.pi
-    dt_stable = 1e300
-    critical_cell = -1
-    damping_power = 0.0
-    viscosity_power = 0.0
-    plastic_work = 0.0
-    bad_cell = -1
-    for ci in range(cells.shape[0]):
-        c = cells[ci]
-        m = cell_material[c]
-        sgn = cell_sign[c]
-        beta = params[m, P_BETA]
-        for a in range(nn):
-            node = dofmap[c, a]
-            for i in range(gdim):
-                xe[a, i] = x_np1[node, i]
-                ve[a, i] = v_half[node, i]
-                xm[a, i] = x_np1[node, i] - 0.5 * dt * v_half[node, i]
-        # Pass 1: velocity gradient on the mid-step configuration.
-        vol = 0.0
-        div = 0.0
-        for q in range(nq):
-            det = gradients(xm, dN[q], gdim, nn, dNdx) * sgn
-            for i in range(3):
-                for k in range(3):
-                    L[q, i, k] = 0.0
-            for i in range(gdim):
-                for k in range(gdim):
-                    t = 0.0
-                    for a in range(nn):
-                        t += ve[a, i] * dNdx[a, k]
-                    L[q, i, k] = t
-            w = wq[q] * det
-            if kinematics == AXISYMMETRIC:
-                r = 0.0
-                vr = 0.0
-                for a in range(nn):
-                    r += N[q, a] * xm[a, 0]
-                    vr += N[q, a] * ve[a, 0]
-                L[q, 2, 2] = vr / r
-                w *= two_pi * r
-            wmid[q] = w
-            vol += w
-            div += w * (L[q, 0, 0] + L[q, 1, 1] + L[q, 2, 2])
-        div_avg = div / vol
-        le = characteristic_length(xe, cell_kind, nn)
-        c_m = params[m, P_WAVE_SPEED]
-        pq = bulk_viscosity(params[m, P_RHO], c_m, le, div_avg, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
-        # Pass 2: stress update and force on the end-of-step configuration.
-        for q in range(nq):
-            d0 = L[q, 0, 0]
-            d1 = L[q, 1, 1]
-            d2 = L[q, 2, 2]
-            if mean_dilatation:
-                shift = (div_avg - (d0 + d1 + d2)) / 3.0
-                d0 += shift
-                d1 += shift
-                d2 += shift
-            d = (d0, d1, d2, 0.5 * (L[q, 1, 2] + L[q, 2, 1]), 0.5 * (L[q, 0, 2] + L[q, 2, 0]),
-                 0.5 * (L[q, 0, 1] + L[q, 1, 0]))
-            spin = (0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]), 0.5 * (L[q, 0, 1] - L[q, 1, 0]))
-            s_n = (sigma[c, q, 0], sigma[c, q, 1], sigma[c, q, 2], sigma[c, q, 3], sigma[c, q, 4], sigma[c, q, 5])
-            s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0, False)
-            plastic_work += wmid[q] * wp
-            for k in range(6):
-                sigma[c, q, k] = s_np1[k]
-            s, pd, pv = viscous_stress(params, m, s_np1, d, pq)
-            damping_power += wmid[q] * pd
-            viscosity_power += wmid[q] * pv
-            det = gradients(xe, dN[q], gdim, nn, dNdx) * sgn
-            if det <= 0.0:
-                bad_cell = c
-            w = wq[q] * det
-            if gdim == 2:
+        Parameters
+        ----------
+        cells : (nc,) int32, the deformable cells this rank owns.
+        dofmap : (num_cells, nn) int32, P1 node numbers of every cell.
+        cell_material : (num_cells,) int32, row of ``params`` for every cell.
+        cell_sign : (num_cells,) float64, ``cell_orientation`` of the reference mesh.
+        x_np1 : (num_nodes, gdim) positions at t_{n+1} [m].
+        v_half : (num_nodes, gdim) velocities at t_{n+1/2} [m/s].
+        dt : step t_n -> t_{n+1} [s].
+        N, dN : shape functions (nq, nn) and reference gradients (nq, nn, tdim) at the points.
+        wq : (nq,) quadrature weights on the reference cell.
+        kinematics : 0 plane strain, 1 axisymmetric, 2 3D.
+        thickness : out-of-plane depth for plane strain [m] (ignored otherwise).
+        cell_kind : 0 tri, 1 quad, 2 tet, 3 hex (for the characteristic length).
+        mean_dilatation : replace each point's volumetric strain rate by the cell average
+            (Nagtegaal, Parks & Rice 1974), which removes volumetric locking.
+        params, curves : material rows and hardening curves (``shockfem.materials.layout``).
+        state : (num_cells, nq, STATE_SIZE) point state of the laws, updated in place (a (1, 1, STATE_SIZE)
+            stub when no law needs one).
+        sigma : (num_cells, nq, 6) Cauchy stress, updated in place from t_n to t_{n+1}.
+        f : (num_nodes, gdim) internal force, accumulated (caller zeroes it).
+
+        Returns
+        -------
+        dt_stable : smallest stable step over ``cells`` at t_{n+1} (before the safety factor).
+        critical_cell : the cell that sets it.
+        damping_power : int sigma_visc : d dV, power of the stiffness-proportional damping [W].
+        viscosity_power : int -q tr(d) dV, power of the bulk viscosity [W].
+        plastic_work : int sigma : d eps_p dV over the step [J].
+        bad_cell : a cell whose Jacobian changed sign (inverted) at t_{n+1}, or -1.
+        """
+        nq = wq.shape[0]
+        nn = dofmap.shape[1]
+        gdim = x_np1.shape[1]
+        xe = np.empty((nn, 3))
+        xm = np.empty((nn, 3))
+        ve = np.empty((nn, 3))
+        dNdx = np.empty((nn, 3))
+        L = np.zeros((nq, 3, 3))
+        wmid = np.empty(nq)
+        two_pi = 2.0 * math.pi
+        dt_stable = 1e300
+        critical_cell = -1
+        damping_power = 0.0
+        viscosity_power = 0.0
+        plastic_work = 0.0
+        bad_cell = -1
+        for ci in range(cells.shape[0]):
+            c = cells[ci]
+            m = cell_material[c]
+            sgn = cell_sign[c]
+            beta = params[m, P_BETA]
+            for a in range(nn):
+                node = dofmap[c, a]
+                for i in range(gdim):
+                    xe[a, i] = x_np1[node, i]
+                    ve[a, i] = v_half[node, i]
+                    xm[a, i] = x_np1[node, i] - 0.5 * dt * v_half[node, i]
+            # Pass 1: velocity gradient on the mid-step configuration.
+            vol = 0.0
+            div = 0.0
+            for q in range(nq):
+                det = gradients(xm, dN[q], gdim, nn, dNdx) * sgn
+                for i in range(3):
+                    for k in range(3):
+                        L[q, i, k] = 0.0
+                for i in range(gdim):
+                    for k in range(gdim):
+                        t = 0.0
+                        for a in range(nn):
+                            t += ve[a, i] * dNdx[a, k]
+                        L[q, i, k] = t
+                w = wq[q] * det
                 if kinematics == AXISYMMETRIC:
                     r = 0.0
+                    vr = 0.0
                     for a in range(nn):
-                        r += N[q, a] * xe[a, 0]
+                        r += N[q, a] * xm[a, 0]
+                        vr += N[q, a] * ve[a, 0]
+                    L[q, 2, 2] = vr / r
                     w *= two_pi * r
-                    hoop = s[2] / r
-                    for a in range(nn):
-                        node = dofmap[c, a]
-                        f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + hoop * N[q, a])
-                        f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
+                wmid[q] = w
+                vol += w
+                div += w * (L[q, 0, 0] + L[q, 1, 1] + L[q, 2, 2])
+            div_avg = div / vol
+            le = characteristic_length(xe, cell_kind, nn)
+            c_m = params[m, P_WAVE_SPEED]
+            pq = bulk_viscosity(params[m, P_RHO], c_m, le, div_avg, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR])
+            # Pass 2: stress update and force on the end-of-step configuration.
+            for q in range(nq):
+                d0 = L[q, 0, 0]
+                d1 = L[q, 1, 1]
+                d2 = L[q, 2, 2]
+                if mean_dilatation:
+                    shift = (div_avg - (d0 + d1 + d2)) / 3.0
+                    d0 += shift
+                    d1 += shift
+                    d2 += shift
+                d = (d0, d1, d2, 0.5 * (L[q, 1, 2] + L[q, 2, 1]), 0.5 * (L[q, 0, 2] + L[q, 2, 0]),
+                     0.5 * (L[q, 0, 1] + L[q, 1, 0]))
+                spin = (0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]), 0.5 * (L[q, 0, 1] - L[q, 1, 0]))
+                s_n = (sigma[c, q, 0], sigma[c, q, 1], sigma[c, q, 2], sigma[c, q, 3], sigma[c, q, 4], sigma[c, q, 5])
+                s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0, elastic_only)
+                plastic_work += wmid[q] * wp
+                for k in range(6):
+                    sigma[c, q, k] = s_np1[k]
+                s, pd, pv = viscous_stress(params, m, s_np1, d, pq)
+                damping_power += wmid[q] * pd
+                viscosity_power += wmid[q] * pv
+                det = gradients(xe, dN[q], gdim, nn, dNdx) * sgn
+                if det <= 0.0:
+                    bad_cell = c
+                w = wq[q] * det
+                if gdim == 2:
+                    if kinematics == AXISYMMETRIC:
+                        r = 0.0
+                        for a in range(nn):
+                            r += N[q, a] * xe[a, 0]
+                        w *= two_pi * r
+                        hoop = s[2] / r
+                        for a in range(nn):
+                            node = dofmap[c, a]
+                            f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + hoop * N[q, a])
+                            f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
+                    else:
+                        w *= thickness
+                        for a in range(nn):
+                            node = dofmap[c, a]
+                            f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1])
+                            f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
                 else:
-                    w *= thickness
                     for a in range(nn):
                         node = dofmap[c, a]
-                        f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1])
-                        f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
-            else:
-                for a in range(nn):
-                    node = dofmap[c, a]
-                    f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + s[4] * dNdx[a, 2])
-                    f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1] + s[3] * dNdx[a, 2])
-                    f[node, 2] += w * (s[4] * dNdx[a, 0] + s[3] * dNdx[a, 1] + s[2] * dNdx[a, 2])
-        dtc = viscous_step(le, c_m, le, div_avg, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR], beta)
-        if dtc < dt_stable:
-            dt_stable = dtc
-            critical_cell = c
-    return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, bad_cell
+                        f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + s[4] * dNdx[a, 2])
+                        f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1] + s[3] * dNdx[a, 2])
+                        f[node, 2] += w * (s[4] * dNdx[a, 0] + s[3] * dNdx[a, 1] + s[2] * dNdx[a, 2])
+            dtc = viscous_step(le, c_m, le, div_avg, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR], beta)
+            if dtc < dt_stable:
+                dt_stable = dtc
+                critical_cell = c
+        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, bad_cell
+    return stress_divergence
+
+
+KERNELS = {flag: _kernel(flag) for flag in (True, False)}
+stress_divergence = KERNELS[False]          # the copy for any law (what the unit tests call)
+
+
+def stress_divergence_kernel(elastic_only: bool):
+    """``stress_divergence`` in its copy without law calls (``elastic_only``: every row elastic without
+    slots, ``materials.update.is_elastic_only``) or for any law."""
+    return KERNELS[bool(elastic_only)]

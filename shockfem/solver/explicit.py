@@ -132,7 +132,9 @@ class ExplicitSolver:
                                       if m.point_state else (1, 1, STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         # the one-point kernel's copy without law calls when every material is elastic
-        self._one_point = one_point.one_point_kernel(gdim, is_elastic_only(m.params)) if m.one_point else None
+        elastic_only = is_elastic_only(m.params)
+        self._one_point = one_point.one_point_kernel(gdim, elastic_only) if m.one_point else None
+        self._full = None if m.one_point else full_integration.stress_divergence_kernel(elastic_only)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         self.owned = np.zeros(len(self.x), dtype=bool)
         self.owned[:m.num_owned] = True
@@ -214,7 +216,7 @@ class ExplicitSolver:
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
                 self.f_int)
         else:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = full_integration.stress_divergence(
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = self._full(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
                 m.kinematics, m.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
                 self.sigma, self.f_int)

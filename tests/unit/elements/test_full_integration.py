@@ -55,8 +55,10 @@ def test_internal_force_matches_ufl_form(kinematics, cell):
     assert np.allclose(f.ravel(), b, rtol=1e-12, atol=1e-12 * np.abs(b).max())
 
 
-def test_rigid_rotation_rotates_stress_exactly():
-    """Objectivity: a rigid rotation by R over the step leaves sigma_np1 = R sigma_n R^T."""
+@pytest.mark.parametrize("elastic_only", [True, False])
+def test_rigid_rotation_rotates_stress_exactly(elastic_only):
+    """Objectivity: a rigid rotation by R over the step leaves sigma_np1 = R sigma_n R^T, in both copies
+    of the kernel (without law calls, and for any law)."""
     m = _mesh("3d", mesh.CellType.hexahedron)
     V, dofmap, X, wq, N, dN, kind = _arrays(m, "3d")
     theta, dt = 0.3, 1e-5
@@ -67,7 +69,8 @@ def test_rigid_rotation_rotates_stress_exactly():
     ncell, nq = len(dofmap), len(wq)
     s0 = np.array([100e6, -20e6, 5e6, 7e6, -3e6, 11e6])
     sigma = np.tile(s0, (ncell, nq, 1))
-    full_integration.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
+    full_integration.stress_divergence_kernel(elastic_only)(
+                              np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
                               ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
                               N, dN, wq, ec.THREE_D, 1.0, kind, True, _params(), NO_CURVES, NO_STATE, sigma,
                               np.zeros_like(X))
@@ -77,7 +80,8 @@ def test_rigid_rotation_rotates_stress_exactly():
     assert np.allclose(sigma, expected, rtol=0, atol=1e-6 * np.abs(s0).max())
 
 
-def test_uniform_stretch_gives_hooke_stress():
+@pytest.mark.parametrize("elastic_only", [True, False])
+def test_uniform_stretch_gives_hooke_stress(elastic_only):
     """A uniform velocity gradient over one step adds dt * C : d at every point."""
     m = _mesh("plane-strain", mesh.CellType.quadrilateral)
     V, dofmap, X, wq, N, dN, kind = _arrays(m, "plane-strain")
@@ -88,7 +92,8 @@ def test_uniform_stretch_gives_hooke_stress():
     ncell, nq = len(dofmap), len(wq)
     sigma = np.zeros((ncell, nq, 6))
     p = _params()
-    full_integration.stress_divergence(np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
+    full_integration.stress_divergence_kernel(elastic_only)(
+                              np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
                               ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
                               N, dN, wq, ec.PLANE_STRAIN, 1.0, kind, True, p, NO_CURVES, NO_STATE, sigma,
                               np.zeros_like(X))
