@@ -141,14 +141,14 @@ def main(argv=None) -> int:
 
 def _dispatch(args) -> int:
     if args.command == "check":
-        chain = _chain_raw(args)
-        if chain is not None:
+        from .amplifier.chain import is_chain
+        raw = _raw(args)
+        if is_chain(raw):
             from .amplifier.chain import resolve_chain
-            spec, scene, _ = resolve_chain(chain)
+            spec, scene, _ = resolve_chain(raw)
             print(f"{args.scene}: ok (chain of {len(scene.bodies)} bodies, {spec.architecture}, "
                   f"fidelity {spec.fidelity})")
             return EXIT_OK
-        raw = _raw(args)
         if _is_launcher_scene(raw):
             from .launcher.scene import resolve_design, resolve_launcher
             name, gun, _ = resolve_launcher(raw)
