@@ -33,7 +33,6 @@ from ..model import Model
 from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
 from ..elements import full_integration, one_point
-from ..elements.cells import AXISYMMETRIC
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
@@ -131,7 +130,7 @@ class ExplicitSolver:
         self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, STATE_SIZE)
                                       if m.point_state else (1, 1, STATE_SIZE))
         # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
-        # the one-point kernel's copy without law calls when every material is elastic
+        # the element kernels' copies without law calls when every material is elastic (elements/)
         elastic_only = is_elastic_only(m.params)
         self._one_point = one_point.one_point_kernel(gdim, elastic_only) if m.one_point else None
         self._full = None if m.one_point else full_integration.stress_divergence_kernel(elastic_only)
@@ -207,7 +206,7 @@ class ExplicitSolver:
         if m.one_point and m.gdim == 2:
             dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
                 m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
-                m.kinematics == AXISYMMETRIC, m.thickness, m.hourglass_form,
+                m.axisymmetric, m.thickness, m.hourglass_form,
                 m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
                 self.f_int)
         elif m.one_point:
