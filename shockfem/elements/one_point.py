@@ -334,8 +334,8 @@ def _hex_kernel(elastic_only: bool):
                                          (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
                                           sigma[c, 0, 5]), (d0, d1, d2, d3, d4, d5), (w23, w13, w12), dt, 0.0,
                                          elastic_only)
-            for k in range(6):
-                sigma[c, 0, k] = s_np1[k]
+            (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
+             sigma[c, 0, 5]) = s_np1
             # end-of-step configuration
             (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
                 j00, j01, j02, j10, j11, j12, j20, j21, j22)

@@ -22,8 +22,14 @@ def hooke(d, lam, mu):
 
 
 @njit(cache=True, fastmath=True)
+def elastic_step(s, d, lam, mu, dt):
+    """sigma + dt C : d, the elastic stress over one step in the rotated frame."""
+    c0, c1, c2, c3, c4, c5 = hooke(d, lam, mu)
+    return (s[0] + dt * c0, s[1] + dt * c1, s[2] + dt * c2, s[3] + dt * c3, s[4] + dt * c4, s[5] + dt * c5)
+
+
+@njit(cache=True, fastmath=True)
 def elastic_update(row, s, d, dt):
-    """The elastic law over one step in the rotated frame: sigma + dt C : d with the constants of the
-    parameter ``row``; no plastic work."""
-    c0, c1, c2, c3, c4, c5 = hooke(d, row[P_LAMBDA], row[P_MU])
-    return (s[0] + dt * c0, s[1] + dt * c1, s[2] + dt * c2, s[3] + dt * c3, s[4] + dt * c4, s[5] + dt * c5), 0.0
+    """The elastic law over one step (``elastic_step`` with the constants of the parameter ``row``); no
+    plastic work."""
+    return elastic_step(s, d, row[P_LAMBDA], row[P_MU], dt), 0.0
