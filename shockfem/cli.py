@@ -66,6 +66,26 @@ def _parser() -> argparse.ArgumentParser:
     a.add_argument("--aspect", type=float, default=1.0, help="length / diameter of the cylinders")
     a.add_argument("--json", help="write the design to this JSON file")
 
+    pg = sub.add_parser("programmer", help="size pulse programmers (crushable pad, orifice dashpot, split cone) "
+                                           "for a specified pulse (closed forms)")
+    pg.add_argument("--article", required=True, help="mass brought to rest, e.g. '12 lb'")
+    pg.add_argument("--shape", required=True, help="half-sine | terminal-peak sawtooth | trapezoid | rectangle")
+    pg.add_argument("--peak", required=True, help="peak acceleration, e.g. '10000 gee'")
+    pg.add_argument("--duration", required=True, help="pulse duration, e.g. '5 ms'")
+    pg.add_argument("--foam", default="aluminium_foam", help="library foam for the pad's crush stress and density")
+    pg.add_argument("--plateau", help="crush stress of the pad (default: the library foam's), e.g. '5 MPa'")
+    pg.add_argument("--densification", default=0.7, type=float,
+                    help="usable crush strain of the pad (default 0.7: foams densify near 70-75%%)")
+    pg.add_argument("--fluid-density", default="870 kg/m^3", help="dashpot liquid (default: hydraulic oil)")
+    pg.add_argument("--bulk-modulus", default="1.5 GPa", help="dashpot liquid's bulk modulus (default: oil)")
+    pg.add_argument("--discharge", default=0.7, type=float, help="orifice discharge coefficient Cd (sharp: 0.6-0.7)")
+    pg.add_argument("--max-pressure", default="70 MPa", help="highest dashpot pressure allowed")
+    pg.add_argument("--half-angle", default="7 deg", help="split cone half-angle")
+    pg.add_argument("--friction", default=0.1, type=float, help="cone-ring friction coefficient")
+    pg.add_argument("--ring", default="mild_steel", help="library metal of the clamp ring")
+    pg.add_argument("--elongation", default=0.2, type=float, help="usable hoop strain of a yielding ring")
+    pg.add_argument("--json", help="write the requirement and the concepts to this JSON file")
+
     ln = sub.add_parser("launcher", help="fire a gas gun described by a [launcher] scene; ASME sizing")
     ln.add_argument("scene")
     ln.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
@@ -200,6 +220,8 @@ def _dispatch(args) -> int:
         return _amplifier(args)
     if args.command == "launcher":
         return _launcher(args)
+    if args.command == "programmer":
+        return _programmer(args)
     if args.command == "study":
         if args.name == "amplifier":
             from .study.amplifier import run_study
@@ -309,6 +331,47 @@ def _amplifier(args) -> int:
         with open(args.json, "w") as fh:
             json.dump({**d.as_dict(), "first_pass": run.first_pass.tolist(), "final": run.final.tolist(),
                        "collisions": len(run.collisions)}, fh, indent=2, default=float)
+    return EXIT_OK
+
+
+def _programmer(args) -> int:
+    from .programmer.concepts import crushable_pad, orifice_dashpot, split_cone
+    from .programmer.report import format_report
+    from .programmer.requirement import SHAPES, requirement
+    from .scene.checker import Checker
+    from .scene.library import LIBRARY
+    from .units import to_si
+    ck = Checker()      # the options, checked like a scene's fields (every problem, exit 2)
+    o = {f"--{k.replace('_', '-')}": v for k, v in vars(args).items()}
+    q = {name: ck.quantity(o, name, "", dimension, positive=True)
+         for name, dimension in (("--article", "mass"), ("--peak", "acceleration"), ("--duration", "time"),
+                                 ("--fluid-density", "density"), ("--bulk-modulus", "pressure"),
+                                 ("--max-pressure", "pressure"), ("--half-angle", "angle"))}
+    shape = ck.choice(o, "--shape", "", SHAPES)
+    for name, low, high in (("--densification", 0.0, 1.0), ("--discharge", 0.0, 1.0), ("--elongation", 0.0, 1.0)):
+        ck.number(o, name, "", None, low, high, "a fraction", low_open=True)
+    if not 0.0 <= args.friction < 1.0:
+        ck.fail("--friction", f"must be in [0, 1), got {args.friction}")
+    foams = tuple(k for k, v in LIBRARY.items() if "crush_curve" in v)
+    metals = tuple(k for k, v in LIBRARY.items() if "yield_stress" in v)
+    ck.choice(o, "--foam", "", foams)
+    ck.choice(o, "--ring", "", metals)
+    plateau = ck.quantity(o, "--plateau", "", "pressure", positive=True) if args.plateau else None
+    ck.done()
+    req = requirement(shape, q["--peak"], q["--duration"], q["--article"])
+    foam, ring = LIBRARY[args.foam], LIBRARY[args.ring]
+    concepts = [
+        crushable_pad(req, plateau or to_si(foam["crush_curve"][0][1], "pressure"), args.densification,
+                      to_si(foam["density"], "density")),
+        # mineral oil's specific heat, about 1.9 kJ/(kg K)
+        orifice_dashpot(req, q["--fluid-density"], args.discharge, q["--bulk-modulus"], q["--max-pressure"], 1900.0),
+        split_cone(req, q["--half-angle"], args.friction, to_si(ring["yield_stress"], "pressure"),
+                   to_si(ring["youngs_modulus"], "pressure"), args.elongation, to_si(ring["density"], "density")),
+    ]
+    print(format_report(req, concepts))
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump({"requirement": req.as_dict(), "concepts": [c.as_dict() for c in concepts]}, fh, indent=2)
     return EXIT_OK
 
 

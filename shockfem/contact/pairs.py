@@ -24,9 +24,19 @@ from . import kernels
 from .surfaces import NodeExchange, Surface, build_surface
 
 
-def facet_stiffness(surface: Surface, scale: float) -> np.ndarray:
-    """LS-DYNA's penalty for solids, k = scale K A^2 / V, per facet (A its area, V its cell's volume)."""
-    return scale * surface.bulk * surface.area ** 2 / surface.volume
+def facet_stiffness(surface: Surface, scale: float, bulk: np.ndarray | float | None = None) -> np.ndarray:
+    """LS-DYNA's penalty for solids, k = scale K A^2 / V, per facet (A its area, V its cell's volume,
+    K the bulk modulus behind it unless ``bulk`` is given)."""
+    return scale * (surface.bulk if bulk is None else bulk) * surface.area ** 2 / surface.volume
+
+
+def master_stiffness(master: Surface, slave: Surface, scale: float, rigid: bool) -> np.ndarray:
+    """The penalty of the master facets a slave surface's nodes are pushed out of.  A rigid body has
+    no stiffness of its own (its modulus is a placeholder): its facets take the slave side's bulk
+    modulus, as a rigid wall takes the stiffness of the nodes it stops.  Otherwise a steel striker's
+    facets would hold a foam pad's light nodes with steel's stiffness, and their stable step would
+    fall a hundredfold."""
+    return facet_stiffness(master, scale, float(np.mean(slave.bulk)) if rigid else None)
 
 
 def node_stiffness(surface: Surface, facets: np.ndarray, nodes: np.ndarray, scale: float) -> np.ndarray:
@@ -133,8 +143,10 @@ class ContactPair:
             # a node is caught by a rigid surface up to a facet size behind it
             self.depth = float(sizes.max())
         else:
-            self.passes = [_Pass(self.nodes_a, compact[1], facet_stiffness(self.b, seg_scale)),
-                           _Pass(np.unique(compact[1]), compact[0], facet_stiffness(self.a, seg_scale))]
+            rigid = [model.bodies[s.body].rigid for s in (self.a, self.b)]
+            self.passes = [_Pass(self.nodes_a, compact[1], master_stiffness(self.b, self.a, seg_scale, rigid[1])),
+                           _Pass(np.unique(compact[1]), compact[0],
+                                 master_stiffness(self.a, self.b, seg_scale, rigid[0]))]
             # a node counts as penetrating only within `depth` of the surface (half the smallest facet
             # is a safe bound for a single step's travel); the search reaches a facet size beyond that
             self.depth = 0.5 * float(sizes.min())

@@ -41,6 +41,7 @@ import math
 
 from numba import njit
 
+from .curves import piecewise_linear, rate_factor
 from .elastic import elastic_update
 from .layout import (P_CURVE_POINTS, P_KINEMATIC, P_MU, P_RATE_D, P_RATE_FORM, P_RATE_Q, S_BACK, S_EPS,
                      S_RATE, VISCOPLASTIC, YIELD_SCALING)
@@ -50,27 +51,6 @@ RATE_FORMS = {"plastic-strain-rate": VISCOPLASTIC, "total-strain-rate": YIELD_SC
 
 _NEWTON_ITERATIONS = 60
 _TOLERANCE = 1e-12     # of the consistency residual, relative to q_trial
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def hardening(curve, npts, eps):
-    """sigma_iso(eps) and its slope on a piecewise-linear curve (eps_k, sigma_k), k < npts,
-    extended beyond the last point with the last slope (flat for a single point)."""
-    if npts == 1:
-        return curve[0, 1], 0.0
-    k = 0
-    while k < npts - 2 and eps > curve[k + 1, 0]:
-        k += 1
-    slope = (curve[k + 1, 1] - curve[k, 1]) / (curve[k + 1, 0] - curve[k, 0])
-    return curve[k, 1] + slope * (eps - curve[k, 0]), slope
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def rate_factor(rate, D, q):
-    """Cowper-Symonds 1 + (rate / D)^(1/q); 1 when D = 0 (rate independent)."""
-    if D <= 0.0 or rate <= 0.0:
-        return 1.0
-    return 1.0 + (rate / D) ** (1.0 / q)
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -100,7 +80,7 @@ def _flow_increment(q_trial, eps, stiffness, curve, npts, dt, D, q, viscoplastic
             de = y
             dde = 1.0
             factor = scale
-        s, h = hardening(curve, npts, eps + de)
+        s, h = piecewise_linear(curve, npts, eps + de)
         g = q_trial - stiffness * de - factor * s
         if abs(g) <= _TOLERANCE * q_trial:
             break
@@ -148,7 +128,7 @@ def radial_return(row, curve, point, s, d, dt):
         e0, e1, e2 = d0 - dm, d1 - dm, d2 - dm
         rate = math.sqrt(2.0 / 3.0 * (e0 * e0 + e1 * e1 + e2 * e2 + 2.0 * (d3 * d3 + d4 * d4 + d5 * d5)))
         scale = rate_factor(rate, D, qexp)
-    sy, _ = hardening(curve, npts, eps)
+    sy, _ = piecewise_linear(curve, npts, eps)
     if q_trial <= scale * sy:
         point[S_RATE] = 0.0
         return s, 0.0

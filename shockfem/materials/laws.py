@@ -5,7 +5,7 @@ A law is a compiled function of one material point over one step in the rotated 
     law(row, curve, point, sigma, d, dt) -> (sigma_np1, plastic work density [J/m^3])
 
 with ``row`` the material's parameter row (``params[m]``, columns ``layout.py``), ``curve`` its
-hardening curve, ``point`` the point's state (``state[c, p]``, updated in place), ``sigma`` the stress
+curve (hardening, crush), ``point`` the point's state (``state[c, p]``, updated in place), ``sigma`` the stress
 at t_n already turned with the material (``objective.py``) and ``d`` the strain rate of the step.  A
 law that needs no curve or state (elastic) takes ``(row, sigma, d, dt)``.  The laws are called
 functions, compiled once: ``law_update``, the dispatch, is compiled into the element kernels
@@ -22,8 +22,9 @@ from typing import Callable
 from numba import njit
 
 from .elastic import elastic_update
+from .foam import foam_update, pack_foam
 from .j2 import j2_update, pack_j2
-from .layout import ELASTIC, J2, P_LAW
+from .layout import ELASTIC, FOAM, J2, P_LAW
 
 
 @dataclass(frozen=True)
@@ -40,6 +41,8 @@ LAWS = {
     "elastic": Law(ELASTIC, "linear isotropic elasticity, Hooke's law in the objective frame (elastic.py)"),
     "j2": Law(J2, "J2 plasticity, radial return: bilinear or tabulated hardening, mixed isotropic/kinematic, "
                   "Cowper-Symonds rate factor (j2.py)", pack_j2),
+    "foam": Law(FOAM, "crushable foam, principal stresses capped at a crush stress of the volumetric strain, "
+                      "tension cutoff, Cowper-Symonds rate factor (foam.py, MAT_063-like)", pack_foam),
 }
 
 
@@ -48,4 +51,6 @@ def law_update(params, curves, m, state, c, p, s, d, dt):
     """The law of row ``m`` over one step in the rotated frame (see the module docstring)."""
     if params[m, P_LAW] == J2:
         return j2_update(params[m], curves[m], state[c, p], s, d, dt)
+    if params[m, P_LAW] == FOAM:
+        return foam_update(params[m], curves[m], state[c, p], s, d, dt)
     return elastic_update(params[m], s, d, dt)

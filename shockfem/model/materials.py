@@ -9,16 +9,12 @@ from ..materials.laws import LAWS
 from ..scene import Damping, Material
 
 
-def law_of(material: Material) -> str:
-    """The name in ``materials.laws.LAWS`` of the law a scene material follows."""
-    return "j2" if material.plasticity is not None else "elastic"
-
-
 def parameter_table(materials: list[Material], damping: list[Damping | None] | Damping | None,
                     bulk_viscosity: tuple[float, float] = (1.5, 0.06),
                     slot_widths: list[float] | None = None) -> tuple[np.ndarray, np.ndarray]:
     """(params, curves): params (rows, ``layout.NUM_PARAMS``); curves (rows, points, 2) holds each
-    J2 row's isotropic hardening curve (plastic strain, yield stress).
+    J2 row's isotropic hardening curve (plastic strain, yield stress) and each foam row's crush
+    curve (volumetric strain, crush stress).
 
     ``damping``: one for all rows or one per row.  The stiffness-proportional damping coefficient
     beta [s] and the bulk viscosity sit in the table because they act through the material:
@@ -28,7 +24,7 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
     per_row = damping if isinstance(damping, list) else [damping] * len(materials)
     betas = [d.coefficients()[1] if d else 0.0 for d in per_row]
     n = max(len(materials), 1)
-    points = max([len(m.plasticity.curve) for m in materials if m.plasticity] or [1])
+    points = max([len((m.plasticity or m.crush).curve) for m in materials if m.plasticity or m.crush] or [1])
     table = np.zeros((n, layout.NUM_PARAMS))
     curves = np.zeros((n, points, 2))
     for i, m in enumerate(materials):
@@ -40,8 +36,8 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
         row[layout.P_BETA] = betas[i]
         row[layout.P_Q_QUADRATIC], row[layout.P_Q_LINEAR] = bulk_viscosity
         row[layout.P_SLOT_WIDTH] = slot_widths[i] if slot_widths else 0.0
-        law = LAWS[law_of(m)]
+        law = LAWS[m.law]
         row[layout.P_LAW] = law.id
         if law.pack is not None:
-            law.pack(row, curves[i], m.plasticity)
+            law.pack(row, curves[i], m.plasticity or m.crush)
     return table, curves

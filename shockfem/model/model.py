@@ -222,7 +222,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                           for i in range(len(scene.bodies))])
 
     cell_sign = cell_orientation(dofmap, X0, dN)
-    plastic = any(scene.material_of(b).plasticity for b in scene.bodies if not b.rigid)
+    plastic = any(scene.material_of(b).law != "elastic" for b in scene.bodies if not b.rigid)
     model = Model(meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
                   mass, node_body, cell_body, cell_material, kernel_cells, params, curves,
                   kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,
@@ -306,8 +306,7 @@ def describe(model: Model, sc: Scene) -> str:
             ", mean dilatation" if cell in ("quadrilateral", "hexahedron") else "")
     for i, b in enumerate(sc.bodies):
         material = sc.material_of(b)
-        law = material.plasticity.model if material.plasticity else "linear elastic"
-        kind = "rigid body (no stiffness)" if b.rigid else f"{law}, updated Lagrangian, {element}"
+        kind = "rigid body (no stiffness)" if b.rigid else f"{material.model}, updated Lagrangian, {element}"
         lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
         if b.shape in PARTS:
             lines += [f"    approximation: {note}" for note in PARTS[b.shape].approximations(b.dims, model.gdim)]

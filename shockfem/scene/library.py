@@ -11,9 +11,30 @@ Values are typical, for design studies; use certified data for a real part.  Sou
 * [WG] M. L. Wilkins, M. W. Guinan, "Impact of cylinders on a rigid boundary", J. Appl. Phys.
   44 (1973) 1200: the Taylor-bar copper of the numerical benchmark (bilinear, rate independent);
 * [ASTM] minimum specified yield and tensile strengths of the named grade; the tangent modulus
-  is the straight line from yield to the tensile strength at the minimum elongation.
+  is the straight line from yield to the tensile strength at the minimum elongation;
+* [GA] L. J. Gibson, M. F. Ashby, *Cellular Solids*, 2nd ed., Cambridge University Press 1997,
+  open-cell scaling of a foam of relative density phi from its solid: modulus E_s phi^2, plastic
+  collapse (plateau) stress 0.3 sigma_ys phi^(3/2), densification strain 1 - 1.4 phi.  A foam's
+  crush curve here is that plateau to the densification strain and a steep rise after it (the
+  rise's shape is assumed: use a tested curve for a real programmer).
 """
 from __future__ import annotations
+
+
+def _foam(phi: float, rho_solid: float, E_solid: float, yield_solid: float, hardening: float) -> dict:
+    """A crushable foam of relative density ``phi`` scaled from its solid [GA]: plateau from volumetric
+    strain 0 to the densification strain (rising by ``hardening`` over it), then a rise to 40 times
+    the plateau stress by the strain halfway from densification to 1; the modulus E_s phi^2 is kept at
+    least the rise's slope (``scene/materials.py`` requires it)."""
+    plateau = 0.3 * yield_solid * phi ** 1.5
+    e_d = 1.0 - 1.4 * phi
+    e_top = 0.5 * (1.0 + e_d)
+    top = 40.0 * plateau
+    E = max(E_solid * phi ** 2, (top - plateau * hardening) / (e_top - e_d))
+    return {"density": f"{phi * rho_solid:.4g} kg/m^3", "youngs_modulus": f"{E / 1e6:.4g} MPa", "poisson_ratio": 0.0,
+            "crush_curve": [[0.0, f"{plateau / 1e6:.4g} MPa"], [round(e_d, 3), f"{plateau * hardening / 1e6:.4g} MPa"],
+                            [round(e_top, 3), f"{top / 1e6:.4g} MPa"]],
+            "tension_cutoff": f"{0.1 * plateau / 1e6:.3g} MPa"}
 
 
 def _power_law_curve(A: float, B: float, n: float) -> list[list[float]]:
@@ -71,5 +92,12 @@ LIBRARY: dict[str, dict] = {
         "density": "4510 kg/m^3", "youngs_modulus": "105 GPa", "poisson_ratio": 0.34,
         "yield_stress": "345 MPa", "tangent_modulus": "0.53 GPa",
         "cowper_symonds_D": "120 /s", "cowper_symonds_q": 9.0,
+    },
+    "aluminium_foam": {
+        "source": "open-cell aluminium foam of relative density 0.1 scaled from its solid [GA] (density 2700 kg/m^3, "
+                  "E 69 GPa, cell-wall yield 150 MPa assumed): plateau 1.42 MPa rising 20% to densification at 0.86 "
+                  "volumetric strain, then to 57 MPa at 0.93; modulus E_s phi^2 = 690 MPa raised to 789 MPa, the "
+                  "slope of that rise; tension cutoff 10% of the plateau; rate independent",
+        **_foam(0.1, 2700.0, 69e9, 150e6, 1.2),
     },
 }

@@ -1,13 +1,14 @@
-"""The [materials] tables: elastic constants, J2 plasticity with its hardening and rate law, or a
-library material by name."""
+"""The [materials] tables: elastic constants, J2 plasticity with its hardening and rate law, a
+crushable foam, or a library material by name."""
 from __future__ import annotations
 
 from .checker import Checker
-from .specs import Material, Plasticity, RATE_FORMS
+from .specs import Crush, Material, Plasticity, RATE_FORMS
 
-
-MATERIAL_FIELDS = ("library", "density", "youngs_modulus", "poisson_ratio", "yield_stress", "tangent_modulus",
-                   "isotropic_fraction", "hardening_curve", "cowper_symonds_D", "cowper_symonds_q", "rate_form")
+J2_FIELDS = ("yield_stress", "tangent_modulus", "isotropic_fraction", "hardening_curve", "rate_form")
+FOAM_FIELDS = ("crush_curve", "tension_cutoff")
+RATE_FIELDS = ("cowper_symonds_D", "cowper_symonds_q")
+MATERIAL_FIELDS = ("library", "density", "youngs_modulus", "poisson_ratio") + J2_FIELDS + FOAM_FIELDS + RATE_FIELDS
 
 
 def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
@@ -27,13 +28,20 @@ def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
             dropped = (("hardening_curve",) if any(k in m for k in bilinear)
                        else bilinear if "hardening_curve" in m else ())
             m = {**{k: v for k, v in entry.items() if k != "source" and k not in dropped}, **m}
+    foam = any(k in m for k in FOAM_FIELDS)
     rho = ck.quantity(m, "density", path, "density", positive=True)
     E = ck.quantity(m, "youngs_modulus", path, "pressure", positive=True)
-    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.3)
+    # a foam crushes without lateral expansion: 0 is its usual Poisson's ratio (MAT_063's PR)
+    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.0 if foam else 0.3)
     if not -1.0 < nu < 0.5:
         ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
-    plastic_fields = [k for k in MATERIAL_FIELDS[4:] if k in m]
-    if not plastic_fields:
+    if foam:
+        for k in J2_FIELDS:
+            if k in m:
+                ck.fail(f"{path}.{k}", "is a J2 plasticity field; a crushable foam (crush_curve) takes none: "
+                                       "remove it, or remove crush_curve and tension_cutoff for a metal")
+        return Material(name, rho, E, nu, None, source, crush=_read_crush(ck, m, path, E))
+    if not any(k in m for k in J2_FIELDS + RATE_FIELDS):
         return Material(name, rho, E, nu, None, source)
     if "hardening_curve" in m:
         for k in ("yield_stress", "tangent_modulus", "isotropic_fraction"):
@@ -64,13 +72,51 @@ def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
         kinematic = (1.0 - beta) * H
         model = (f"J2 plasticity, bilinear hardening (yield {sy / 1e6:.4g} MPa, tangent {Et / 1e6:.4g} MPa, "
                  f"isotropic fraction {beta:g}; MAT_003-like)")
-    D = ck.quantity(m, "cowper_symonds_D", path, "strain_rate", default=0.0, positive="cowper_symonds_D" in m)
-    q = ck.quantity(m, "cowper_symonds_q", path, "dimensionless", default=5.0 if D else 1.0, positive=True)
-    if ("cowper_symonds_q" in m) != ("cowper_symonds_D" in m):
-        ck.fail(f"{path}.{'cowper_symonds_D' if 'cowper_symonds_q' in m else 'cowper_symonds_q'}",
-                "missing: Cowper-Symonds rate effects need both D and q")
+    D, q = _rate_constants(ck, m, path)
     rate_form = ck.choice(m, "rate_form", path, RATE_FORMS, default=RATE_FORMS[0])
     if D:
         model += (f", Cowper-Symonds D = {D:g} /s, q = {q:g} on the "
                   f"{'plastic (VP=1)' if rate_form == RATE_FORMS[0] else 'total (VP=0)'} strain rate")
     return Material(name, rho, E, nu, Plasticity(curve, kinematic, D, q, rate_form, model), source)
+
+
+def _rate_constants(ck: Checker, m: dict, path: str) -> tuple[float, float]:
+    """Cowper-Symonds D [1/s] and q [-] (D = 0: no rate effect)."""
+    D = ck.quantity(m, "cowper_symonds_D", path, "strain_rate", default=0.0, positive="cowper_symonds_D" in m)
+    q = ck.quantity(m, "cowper_symonds_q", path, "dimensionless", default=5.0 if D else 1.0, positive=True)
+    if ("cowper_symonds_q" in m) != ("cowper_symonds_D" in m):
+        ck.fail(f"{path}.{'cowper_symonds_D' if 'cowper_symonds_q' in m else 'cowper_symonds_q'}",
+                "missing: Cowper-Symonds rate effects need both D and q")
+    return D, q
+
+
+def _read_crush(ck: Checker, m: dict, path: str, E: float) -> Crush:
+    """A crushable foam (MAT_063-like, ``materials/foam.py``): crush stress against volumetric strain,
+    tension cutoff, optional rate factor on the volumetric compression rate."""
+    if "crush_curve" not in m:
+        ck.fail(f"{path}.crush_curve", "missing: a crushable foam needs its crush stress against volumetric "
+                                       "strain, e.g. [[0, \"1 MPa\"], [0.7, \"1.2 MPa\"], [0.85, \"20 MPa\"]]")
+        curve = [(0.0, 1.0)]
+    else:
+        curve = ck.pairs(m, "crush_curve", path, ("volumetric strain", "stress"), ("dimensionless", "pressure"))
+    if curve and curve[0][0] != 0.0:
+        ck.fail(f"{path}.crush_curve", f"must start at volumetric strain 0 (the initial crush stress), got "
+                                       f"{curve[0][0]}")
+    if any(not 0.0 <= x < 1.0 for x, _ in curve):
+        ck.fail(f"{path}.crush_curve", "volumetric strains 1 - V/V0 must be in [0, 1)")
+    if any(y <= 0.0 for _, y in curve):
+        ck.fail(f"{path}.crush_curve", "crush stresses must be > 0")
+    slopes = [(y1 - y0) / (x1 - x0) for (x0, y0), (x1, y1) in zip(curve, curve[1:]) if x1 > x0]
+    if slopes and max(slopes) > E:
+        ck.fail(f"{path}.youngs_modulus", f"must be at least the crush curve's steepest slope, "
+                                          f"{max(slopes) / 1e6:.4g} MPa (the stress would lag behind the curve "
+                                          f"there), got {E / 1e6:.4g} MPa: raise it (a densified foam unloads that "
+                                          f"stiffly) or make the curve less steep")
+    tension = ck.quantity(m, "tension_cutoff", path, "pressure", default=0.0, nonnegative=True)
+    D, q = _rate_constants(ck, m, path)
+    curve = tuple(curve) or ((0.0, 1.0),)
+    model = (f"crushable foam, crush stress {curve[0][1] / 1e6:.4g} MPa at first, {len(curve)}-point curve of "
+             f"volumetric strain, tension cutoff {tension / 1e6:.4g} MPa (MAT_063-like)")
+    if D:
+        model += f", Cowper-Symonds D = {D:g} /s, q = {q:g} on the volumetric strain rate"
+    return Crush(curve, tension, D, q, model)

@@ -40,13 +40,35 @@ class Plasticity:
 
 
 @dataclass(frozen=True)
+class Crush:
+    """A crushable foam's crush behaviour (``materials/foam.py``, MAT_063-like)."""
+    curve: tuple[tuple[float, float], ...]   # crush stress (volumetric strain 1 - V/V0 [-], stress [Pa])
+    tension_cutoff: float                    # largest principal tensile stress [Pa]
+    rate_D: float                            # Cowper-Symonds D [1/s] on the volumetric rate; 0: none
+    rate_q: float                            # Cowper-Symonds q [-]
+    model: str                               # what ran, for the run log
+
+
+@dataclass(frozen=True)
 class Material:
     name: str
     rho: float            # density [kg/m^3]
     E: float              # Young's modulus [Pa]
     nu: float             # Poisson's ratio [-]
-    plasticity: Plasticity | None = None     # None: elastic
+    plasticity: Plasticity | None = None     # J2 plasticity; None with crush None: elastic
     source: str = ""                         # library entry and its references, if one was used
+    crush: Crush | None = None               # crushable foam instead of J2
+
+    @property
+    def law(self) -> str:
+        """The name in ``materials.laws.LAWS`` of the law this material follows."""
+        return "j2" if self.plasticity else "foam" if self.crush else "elastic"
+
+    @property
+    def model(self) -> str:
+        """The law with its constants, one line for the run log."""
+        inelastic = self.plasticity or self.crush
+        return inelastic.model if inelastic else "linear elastic"
 
     @property
     def lam(self) -> float:

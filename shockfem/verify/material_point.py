@@ -12,7 +12,7 @@ import time
 
 import numpy as np
 
-from ..materials.layout import S_BACK, S_EPS, S_RATE, STATE_SIZE
+from ..materials.layout import S_BACK, S_EPS, S_LOG_VOLUME, S_RATE, STATE_SIZE
 from ..materials.update import update_stress
 from ..model.materials import parameter_table
 from ..scene import resolve
@@ -38,6 +38,7 @@ class MaterialPoint:
         self.lam, self.mu = mat.lam, mat.mu
         self.sigma = np.zeros(6)
         self.state = np.zeros((1, 1, STATE_SIZE))
+        self.plastic_work = 0.0          # sum of the law's plastic work densities [J/m^3]
 
     def _update(self, d, w, dt, state):
         """The element kernels' material update at one point (no slots: radius 0)."""
@@ -59,12 +60,12 @@ class MaterialPoint:
             trial = d.copy()
             trial[free] = rates
             state = self.state.copy()
-            s, _ = self._update(trial, w, dt, state)
-            return s, state
+            s, work = self._update(trial, w, dt, state)
+            return s, state, work
 
         rates = -self.lam / (2 * (self.lam + self.mu)) * d[0] * np.ones(len(free))   # elastic guess
         for _ in range(iterations):
-            s, state = residual(rates)
+            s, state, work = residual(rates)
             if not free or np.abs(s[free]).max() <= 1e-9 * max(np.abs(s).max(), 1.0):
                 break
             h = 1e-7 * max(np.abs(d).max(), np.abs(rates).max(), 1.0)
@@ -78,6 +79,7 @@ class MaterialPoint:
             raise RuntimeError(f"material point: zero stress in {free} not reached, residual {s[free]}")
         d[free] = rates
         self.sigma, self.state = s, state
+        self.plastic_work += work
         return d
 
     @property
@@ -251,7 +253,75 @@ def objectivity(size, workdir):
     ]
 
 
+FOAM = {"density": 100.0, "youngs_modulus": 50e6, "crush_curve": [[0.0, 1e6], [0.5, 1.2e6], [0.8, 10e6]],
+        "tension_cutoff": 0.2e6}     # poisson_ratio 0 by default for a foam
+
+
+def crushable_foam(size, workdir):
+    """The crushable foam (``materials/foam.py``), uniaxial stress (nu = 0, lateral stresses free):
+
+    * compression at 10 /s to volumetric strain 0.75: the stress follows the crush curve at the
+      point's own volumetric strain 1 - exp(-strain) (largest error over the curve, after yield);
+    * unloading from there: the first step's slope is E, and the point stops at zero stress after
+      the elastic strain sigma / E;
+    * work: the work done on the point equals the elastic energy left plus the plastic work;
+    * tension: the stress stops at the tension cutoff;
+    * rate: with D = 100 /s, q = 2 at 400 /s the crush stress is Y (1 + (400/100)^(1/2)) = 3 Y."""
+    out = []
+    t0 = time.perf_counter()
+    mat = material(FOAM)
+    E = mat.E
+    curve = np.array(mat.crush.curve)
+    point = MaterialPoint(mat)
+    dt, rate = 1e-5, 10.0
+    work, errors = 0.0, []
+    strain = 0.0
+    while 1.0 - math.exp(-strain) < 0.75:
+        before = point.sigma[0]
+        point.step({0: -rate}, (1, 2), dt)
+        strain += rate * dt
+        work += 0.5 * (before + point.sigma[0]) * (-rate * dt)
+        eps_v = 1.0 - math.exp(point.state[0, 0, S_LOG_VOLUME])
+        if strain > 2 * curve[0, 1] / E:                     # past the elastic rise
+            errors.append(abs(-point.sigma[0] - np.interp(eps_v, curve[:, 0], curve[:, 1])) / curve[0, 1])
+    plastic = point.plastic_work
+    elastic = point.sigma[0] ** 2 / (2 * E)
+    peak = point.sigma[0]
+    before = point.sigma[0]
+    point.step({0: rate}, (1, 2), dt)
+    slope = (point.sigma[0] - before) / (rate * dt)
+    unload = 0.0
+    while point.sigma[0] < 0.0:
+        point.step({0: rate}, (1, 2), dt)
+        unload += rate * dt
+    wall = time.perf_counter() - t0
+    out += [
+        check("foam.point.crush_curve [-, abs]", 0.0, max(errors), 1e-9, wall, 1, absolute=True),
+        check("foam.point.unloading_modulus [Pa]", E, slope, 1e-9, wall, 1),
+        # the zero crossing falls within one step of strain of -sigma / E
+        check("foam.point.elastic_recovery [-]", -peak / E, unload, rate * dt / (-peak / E), wall, 1),
+        # the law's plastic work takes the end-of-step stress (first order in the step: 7e-5 here),
+        # the work done on the point the trapezoidal rule
+        check("foam.point.work_balance [J/m^3]", work, elastic + plastic, 2e-4, wall, 1),
+    ]
+    t0 = time.perf_counter()
+    point = MaterialPoint(mat)
+    for _ in range(1000):
+        point.step({0: rate}, (1, 2), dt)                    # 1% tension: 0.5 MPa elastic, cut at 0.2 MPa
+    out.append(check("foam.point.tension_cutoff [Pa]", FOAM["tension_cutoff"], point.sigma[0], 1e-9,
+                     time.perf_counter() - t0, 1))
+    t0 = time.perf_counter()
+    point = MaterialPoint(material({**FOAM, "cowper_symonds_D": "100 /s", "cowper_symonds_q": 2.0}))
+    fast = 400.0
+    for _ in range(500):
+        point.step({0: -fast}, (1, 2), 1e-6)                 # to 0.05 strain at 400 /s
+    eps_v = 1.0 - math.exp(point.state[0, 0, S_LOG_VOLUME])
+    expected = np.interp(eps_v, curve[:, 0], curve[:, 1]) * (1 + (fast / 100.0) ** 0.5)
+    out.append(check("foam.point.rate_factor [Pa]", expected, -point.sigma[0], 1e-9, time.perf_counter() - t0, 1))
+    return out
+
+
 def material_point(size, workdir):
     """All material-point checks (the size does not apply: one point)."""
     return (yield_and_hardening(size, workdir) + hardening_rules(size, workdir) + plane_strain_limit(size, workdir)
-            + cowper_symonds(size, workdir) + objectivity(size, workdir))
+            + cowper_symonds(size, workdir) + objectivity(size, workdir) + crushable_foam(size, workdir))

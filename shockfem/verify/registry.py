@@ -17,6 +17,7 @@ from .modal_cases import circular_plate, modal_rod, nafems_fv12
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .slotted_cases import slotted_ring
+from .programmer_cases import crushable_pad, programmer_sizing
 
 
 CASES = {
@@ -42,6 +43,8 @@ CASES = {
     "taylor_bar": taylor_bar,
     "taylor_bar_full": taylor_bar_full,
     "slotted_ring": slotted_ring,
+    "crushable_pad": crushable_pad,
+    "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,
     "srs_half_sine": srs_half_sine,

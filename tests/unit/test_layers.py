@@ -26,7 +26,7 @@ LAYERS = [
     {"output"},
     {"metrics"},
     {"runner"},
-    {"modal", "launcher", "amplifier"},
+    {"modal", "launcher", "amplifier", "programmer"},
     {"verify", "study", "bench"},
     {"api", "cli", "__main__", "__init__"},
 ]

@@ -196,3 +196,17 @@ def test_node_behind_a_concave_vertex_is_caught():
                                     np.array([0, 1]), x, np.zeros_like(x), np.ones(4), 0.0, 0.0, 0.0, 0.1,
                                     NO_FRICTION, f, np.zeros_like(x), np.zeros((1, 3)), g, np.zeros(1), np.zeros(4))
     assert active == 1 and g[0] < 0.0 and f[3, 1] > 0.0
+
+
+def test_rigid_master_facets_take_the_slave_sides_stiffness():
+    """A rigid body's modulus is a placeholder: against a foam its facets get the foam's bulk modulus
+    (the pad's light nodes would otherwise need a hundredfold shorter step); a deformable master keeps
+    its own (LS-DYNA's k = scale K A^2 / V)."""
+    from shockfem.contact.pairs import master_stiffness
+    from shockfem.contact.surfaces import Surface
+    one = np.ones(2)
+    steel = Surface("striker.bottom", 1, np.zeros((2, 2), dtype=np.int64), 2e-4 * one, 0.01 * one, 175e9 * one,
+                    1e-6 * one)
+    foam = Surface("pad.top", 0, np.zeros((2, 2), dtype=np.int64), 1e-4 * one, 0.01 * one, 50e6 * one, 1e-6 * one)
+    assert np.allclose(master_stiffness(steel, foam, 0.1, rigid=True), 0.1 * 50e6 * 4e-8 / 1e-6, rtol=1e-14)
+    assert np.allclose(master_stiffness(steel, foam, 0.1, rigid=False), 0.1 * 175e9 * 4e-8 / 1e-6, rtol=1e-14)
