@@ -56,7 +56,7 @@ def mesh_key(scene: Scene) -> str:
     desc = {"v": MESH_FORMAT_VERSION, "gmsh": gmsh.__version__, "kinematics": scene.kinematics,
             "element": scene.element,
             "bodies": [(b.name, b.shape, sorted(b.dims.items()), b.element_size, b.position,
-                        _file_stamp(b.mesh_file), sorted(b.regions.items()), b.refine)
+                        _file_stamp(b.mesh_file), sorted(b.regions.items()), b.refine, b.orientation)
                        for b in scene.bodies]}
     return hashlib.sha256(json.dumps(desc, sort_keys=True).encode()).hexdigest()[:16]
 
@@ -233,6 +233,10 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
                          f"set scene.element to match the mesh, or mesh the file with {element} cells")
     if body.shape == "mesh":
         coords = coords + np.array(list(body.position) + [0.0] * (3 - gdim))
+    if body.orientation is not None:
+        # turned about its position: x = p + R (X - p)
+        p = np.asarray(body.position, dtype=float)
+        coords = p + (coords - p) @ np.reshape(body.orientation, (3, 3)).T
     # only the nodes of cells (a construction point, such as an arc's centre, also gets a node)
     used = np.isin(node_tags, cells)
     node_tags, coords = node_tags[used], coords[used]

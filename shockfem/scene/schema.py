@@ -16,6 +16,7 @@ from ..parts.catalog import CAD_FILES, MESH_FILES, PARTS
 from .checker import Checker, SceneError
 from .contacts import read_contacts, read_springs
 from .materials import read_material
+from .orientation import read_orientation, turned
 from .shock import read_shock
 from .specs import (BC_TYPES, BOX_REGIONS, DAMPING_TYPES, ELEMENTS, FIELDS, HOURGLASS_FORMS, INTEGRATIONS,
                     KINEMATICS, SHAPES, Body, Boundary, Damping, Material, Outputs, Scene)
@@ -204,7 +205,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             ck.fail(f"{path}.name", f"duplicate body name {bname!r}")
         names.add(bname)
         shape = ck.choice(b, "shape", path, SHAPES)
-        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "rigid", "refine",
+        allowed = {"name", "material", "shape", "element_size", "position", "velocity", "spin", "orientation", "rigid",
+                   "refine",
                    "damping"}
         dims: dict[str, float] = {}
         mesh_file = None
@@ -269,6 +271,10 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         spin = ck.quantity(b, "spin", path, "angular_velocity", default=0.0)
         if spin and gdim != 3:
             ck.fail(f"{path}.spin", "an initial spin needs kinematics = '3d'")
+        orientation = read_orientation(ck, b, path, gdim)
+        if orientation is not None and not isinstance(b.get("velocity", []), list):
+            # a single speed is along the body's own axis, turned with it
+            vel = turned(orientation, vel)
         if kin == "axisymmetric":
             if pos[0] != 0.0:
                 ck.fail(f"{path}.position", "axisymmetric bodies sit on the axis: the r component must be 0")
@@ -280,7 +286,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             rigid = False
         own_damping = _body_damping(ck, b, path) if "damping" in b else None
         bodies.append(Body(bname, mat if mat in materials else "", shape, dims, h, pos, vel, spin,
-                           rigid, mesh_file, regions, refine, own_damping))
+                           rigid, mesh_file, regions, refine, own_damping, orientation))
 
     bodies = _fit_clamp_rings(ck, raw, bodies, gdim)
     body_regions = {b.name: _regions_of(b, gdim) if sound.get(b.name, True) else () for b in bodies}

@@ -129,6 +129,13 @@ class Body:
     regions: dict[str, int | tuple[int, ...]] = field(default_factory=dict)
     refine: tuple[tuple[str, float, float], ...] = ()       # (region, element size, distance) near faces
     damping: Damping | None = None   # its own stiffness-proportional damping (instead of the scene's beta)
+    # 3D: the rotation R (row-major) turning the body as drawn about its position; None: as drawn
+    orientation: tuple[float, ...] | None = None
+
+    @property
+    def axis(self) -> tuple[float, ...]:
+        """The body's own axis (the drawn z axis, turned by its orientation), 3D."""
+        return (0.0, 0.0, 1.0) if self.orientation is None else tuple(self.orientation[2::3])
 
 
 @dataclass(frozen=True)

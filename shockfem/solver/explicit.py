@@ -176,17 +176,16 @@ class ExplicitSolver:
             nodes = m.node_body == i
             self.v[nodes] = np.asarray(body.velocity)
             if body.spin and m.gdim == 3:
-                # Spin about the body's own z axis through its position (x, y).
+                # spin about the body's own axis (turned with it) through its position
                 rel = self.x[nodes] - np.asarray(body.position)
-                self.v[nodes, 0] += -body.spin * rel[:, 1]
-                self.v[nodes, 1] += body.spin * rel[:, 0]
+                self.v[nodes] += np.cross(body.spin * np.asarray(body.axis), rel)
         for k, (rb, rs) in enumerate(zip(m.rigid, self.rigid_states)):
             body = m.bodies[rb.index]
             rs.velocity = np.asarray(body.velocity, dtype=float)
             if m.gdim == 3 and body.spin:
-                omega = np.array([0.0, 0.0, body.spin])
+                omega = body.spin * np.asarray(body.axis)
                 rs.momentum_angular = rb.inertia0 @ omega
-                # rigid-body spin about the centre of mass axis parallel to z
+                # rigid-body spin about the axis through the centre of mass parallel to the body's own
                 self.v[rb.nodes] = rs.velocity + np.cross(omega, rb.rel0)
 
     # ---------------------------------------------------------------- phases

@@ -18,6 +18,7 @@ from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing
+from .orientation_cases import oriented_body
 
 
 CASES = {
@@ -43,6 +44,7 @@ CASES = {
     "taylor_bar": taylor_bar,
     "taylor_bar_full": taylor_bar_full,
     "slotted_ring": slotted_ring,
+    "oriented_body": oriented_body,
     "crushable_pad": crushable_pad,
     "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,

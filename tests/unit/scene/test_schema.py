@@ -213,3 +213,45 @@ def test_shock_section_problems_are_all_listed():
                      "shock.spec.peak: expected an acceleration",
                      "shock.spec.duration: missing"):
         assert expected in text
+
+
+def _oriented(orientation, velocity="-5 m/s", kinematics="3d"):
+    raw = base()
+    raw["scene"]["kinematics"] = kinematics
+    if kinematics == "3d":
+        raw["scene"]["element"] = "hex"
+    b = raw["bodies"][0]
+    b["position"] = [0, 0, 0] if kinematics == "3d" else [0, 0]
+    b["velocity"] = velocity
+    b["orientation"] = orientation
+    return raw
+
+
+def test_orientation_turns_the_body_and_a_single_speed_follows_its_axis():
+    """A turn of 90 degrees about x takes the body's axis z to -y; a single speed then points along it,
+    a vector stays in the scene's axes; direction = d gives the axis d itself."""
+    import numpy as np
+    b = resolve(_oriented({"axis": [1, 0, 0], "angle": "90 deg"})).bodies[0]
+    assert np.allclose(b.axis, (0.0, -1.0, 0.0), atol=1e-15)
+    assert np.allclose(b.velocity, (0.0, 5.0, 0.0), atol=1e-14)          # -5 m/s along -y
+    b = resolve(_oriented({"axis": [1, 0, 0], "angle": "90 deg"}, velocity=[0, 0, "-5 m/s"])).bodies[0]
+    assert b.velocity == (0.0, 0.0, -5.0)
+    b = resolve(_oriented({"direction": [1, 2, 2]})).bodies[0]
+    assert np.allclose(b.axis, (1 / 3, 2 / 3, 2 / 3), atol=1e-15)
+    assert np.allclose(np.reshape(b.orientation, (3, 3)) @ np.reshape(b.orientation, (3, 3)).T, np.eye(3), atol=1e-15)
+    assert resolve(_oriented({"direction": [0, 0, -2]})).bodies[0].axis == pytest.approx((0.0, 0.0, -1.0))
+
+
+@pytest.mark.parametrize("orientation, kinematics, field, words", [
+    ({"axis": [1, 0, 0], "angle": "10 deg"}, "axisymmetric", "orientation", "kinematics = '3d'"),
+    ({"axis": [0, 0, 0], "angle": "10 deg"}, "3d", "orientation.axis", "zero vector"),
+    ({"axis": [1, 0, 0]}, "3d", "orientation.angle", "missing"),
+    ({"axis": [1, 0, 0], "angle": "10 m"}, "3d", "orientation.angle", "expected an angle"),
+    ({"direction": [0, 0, 0]}, "3d", "orientation.direction", "zero vector"),
+    ({"direction": [0, 0, 1], "angle": "3 deg"}, "3d", "orientation", "not both"),
+    ({"yaw": "3 deg"}, "3d", "orientation.yaw", "unknown field"),
+    ("10 deg", "3d", "orientation", "must be a table"),
+])
+def test_bad_orientation_names_the_field(orientation, kinematics, field, words):
+    problems = _problems(_oriented(orientation, kinematics=kinematics, velocity=0.0))
+    assert any(p.startswith(f"bodies[0].{field}:") and words in p for p in problems), problems
