@@ -173,6 +173,8 @@ class ContactPair:
         self.intervals: list[list[float]] = []
         self.searches = 0
         self.initial_overlap = (0, 0.0)      # (nodes, deepest [m]) at t = 0
+        self._offset0 = None                 # the initial penetrations an interference ramp pushes out
+        self.preload = None                  # at the end of that ramp: force on a, pressure, area
         self.v_before = self.v_after = None  # body mean velocities around contact (for restitution)
 
     # --------------------------------------------------------------- search
@@ -211,6 +213,8 @@ class ContactPair:
         for p in self.passes:
             if isinstance(p, _RigidPass):
                 p.t = t
+        if self._offset0 is not None:
+            self._push_out_overlaps(t)
         if not self._boxes_apart():
             self._refresh()
             for p in self.passes:
@@ -224,11 +228,32 @@ class ContactPair:
         self.max_penetration = max(self.max_penetration, deepest)
         self.force_a = self.f[self.nodes_a].sum(axis=0)
         self.friction_a = self.ff[self.nodes_a].sum(axis=0)
+        if self._offset0 is not None and self.preload is None and t >= self.spec.interference_time:
+            self.preload = self._pressure()
         self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * self.v))
         self.friction_work += 0.5 * dt * float(np.sum((self._ff_old + self.ff) * self.v))
         self._f_old[:] = self.f
         self._ff_old[:] = self.ff
         return self._stable_step() if active else np.inf
+
+    def _push_out_overlaps(self, t: float):
+        """LS-DYNA's interference option: the penetration each node started with counts in full after
+        the interference time, growing smoothly (3 s^2 - 2 s^3 of s = t / T) from nothing, so that a
+        shrink fit settles into its preload instead of being struck by it."""
+        s = min(t / self.spec.interference_time, 1.0)
+        left = 1.0 - s * s * (3.0 - 2.0 * s)
+        for p, o0 in zip(self.passes, self._offset0):
+            np.maximum(p.offset, left * o0, out=p.offset)
+        if s >= 1.0 and self.preload is not None:
+            self._offset0 = None
+
+    def _pressure(self) -> dict:
+        """The normal force on surface a, its nodes' normal forces summed by magnitude over a's area
+        (a mean contact pressure; in axisymmetry the area is the swept one, 2 pi r per unit length)."""
+        load = float(np.linalg.norm(self.f[self.nodes_a], axis=1).sum())
+        area = float(self.a.area.sum())
+        return {"time": self.spec.interference_time, "force_on_a": self.force_a.tolist(), "normal_load": load,
+                "area": area, "mean_pressure": load / area}
 
     def _stable_step(self) -> float:
         """2 / omega of the active springs alone, omega^2 <= max_i stiff_i / m_i (Gershgorin), shortened
@@ -285,6 +310,8 @@ class ContactPair:
         nodes = sum(int((o < 0).sum()) for o in offsets)
         deepest = max(float(-o.min()) for o in offsets) if nodes else 0.0
         self.initial_overlap = (nodes, deepest)
+        if nodes and self.spec.interference_time > 0.0:
+            self._offset0 = [o.copy() for o in offsets]
         return self.initial_overlap
 
     def restitution(self) -> float | None:
@@ -315,4 +342,5 @@ class ContactPair:
                 "friction_work": self.friction_work, "max_penetration": self.max_penetration,
                 "intervals": self.intervals, "restitution": self.restitution(),
                 "initial_overlap": {"nodes": self.initial_overlap[0], "deepest": self.initial_overlap[1]},
+                "interference_preload": self.preload,
                 "searches": self.searches}

@@ -164,10 +164,14 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
     stages = stage_table(h, masses, contacts, axis, translation) if len(t) >= 2 else []
     result["stages"] = [s.as_dict() for s in stages]
     for s in stages:
-        lines.append(f"stage {s.pair}: {s.striker} {s.striker_before:.4g} -> {s.striker_after:.4g} m/s, "
-                     f"{s.struck} {s.struck_before:.4g} -> {s.struck_after:.4g} m/s over "
-                     f"{(s.end - s.start) * 1e6:.4g} us; restitution {s.restitution:.4f}, velocity ratio "
-                     f"{s.velocity_ratio:.4f}, {s.vibration_share:.1%} of the launch energy in vibration")
+        line = (f"stage {s.pair}: {s.striker} {s.striker_before:.4g} -> {s.striker_after:.4g} m/s, "
+                f"{s.struck} {s.struck_before:.4g} -> {s.struck_after:.4g} m/s over {(s.end - s.start) * 1e6:.4g} us")
+        if np.isfinite(s.restitution):
+            line += (f"; restitution {s.restitution:.4f}, velocity ratio {s.velocity_ratio:.4f}, "
+                     f"{s.vibration_share:.1%} of the launch energy in vibration")
+        else:
+            line += "; no closing speed (a contact from rest, such as a fit): no restitution"
+        lines.append(line)
     summary["shock"] = result
     with open(os.path.join(run_dir, "summary.json"), "w") as fh:
         json.dump(summary, fh, indent=2, default=float)

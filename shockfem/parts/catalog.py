@@ -409,7 +409,8 @@ PARTS: dict[str, Part] = {p.name: p for p in [
          _clamp_ring_profile,
          lambda d, g: math.pi * ((d["inner_radius"] + d["thickness"]) ** 2 - d["inner_radius"] ** 2) * d["length"],
          approximations=lambda d, g: [f"starts overlapping the body it fits by the interference "
-                                      f"{d['interference'] * 1e3:.3g} mm; contact pushes it out to the preload"]
+                                      f"{d['interference'] * 1e3:.3g} mm; a contact with an interference time "
+                                      f"pushes it out to the preload (without one the overlap is the contact's zero)"]
          if d["interference"] > 0 else []),
     Part("dashpot", "fluid dashpot fixture: a cylinder with a toroidal cavity (circular section) and, in 3D, an "
                     "orifice from the cavity to the top face",

@@ -69,7 +69,7 @@ def read_contacts(ck: Checker, raw: dict, body_regions: dict, kin: str) -> list[
     out = []
     for path, c in ck.entries(raw, "contact"):
         ck.unknown(c, ("name", "a", "b", "wall", "cylinder", "penalty", "penalty_scale", "damping", "friction",
-                       "friction_dynamic", "friction_decay"), path)
+                       "friction_dynamic", "friction_decay", "interference"), path)
         a = _surface_spec(ck, c, "a", path, body_regions)
         b = rigid = None
         if sum(k in c for k in ("b", "wall", "cylinder")) != 1:
@@ -89,8 +89,9 @@ def read_contacts(ck: Checker, raw: dict, body_regions: dict, kin: str) -> list[
         if mu_d > mu_s:
             ck.fail(f"{path}.friction_dynamic", f"must not exceed the static coefficient friction = {mu_s:g}")
         decay = ck.quantity(c, "friction_decay", path, "slowness", default=0.0, nonnegative=True)
+        interference = ck.quantity(c, "interference", path, "time", default=0.0, nonnegative=True)
         name = c.get("name", f"{a}-{b or (rigid.kind if rigid else '?')}")
-        out.append(Contact(str(name), a or "", b, rigid, penalty, scale, zeta, (mu_s, mu_d, decay)))
+        out.append(Contact(str(name), a or "", b, rigid, penalty, scale, zeta, (mu_s, mu_d, decay), interference))
     return out
 
 

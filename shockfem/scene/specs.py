@@ -179,6 +179,8 @@ class Contact:
     penalty_scale: float
     damping: float                   # fraction of critical (LS-DYNA VDC)
     friction: tuple[float, float, float] = (0.0, 0.0, 0.0)   # mu_static, mu_dynamic, decay [s/m]
+    # > 0: initial overlaps are pushed out over this time [s] (a shrink fit's preload); 0: they are the zero
+    interference_time: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -120,6 +120,7 @@ class ExplicitSolver:
         self.f_con = np.zeros_like(self.x)
         self.dt_contact = np.inf       # smallest stable step of the active contact springs
         self._said_contact_dt = False
+        self._said_preload: set[str] = set()
         self.log_messages: list[str] = []
         self.contacts = [ContactPair(m, c) for c in m.contacts]
         self.springs = [DiscreteSpring(m, c) for c in m.springs]
@@ -160,10 +161,16 @@ class ExplicitSolver:
         self._external_force(0.0)
         for pair in self.contacts:
             nodes, deepest = pair.start(self.x, self.v)
-            if nodes:
+            if nodes and pair.spec.interference_time > 0.0:
                 self.log_messages.append(
                     f"contact '{pair.name}': {nodes} nodes start inside the other surface (deepest "
-                    f"{deepest * 1e3:.4g} mm); each keeps its initial penetration as its zero")
+                    f"{deepest * 1e3:.4g} mm); the overlap is pushed out over {pair.spec.interference_time:.4g} s "
+                    f"(interference): a preload")
+            elif nodes:
+                self.log_messages.append(
+                    f"contact '{pair.name}': {nodes} nodes start inside the other surface (deepest "
+                    f"{deepest * 1e3:.4g} mm); each keeps its initial penetration as its zero (give the contact "
+                    f"an interference time to push it out as a preload)")
         self._contact_forces(0.0)
         self._acceleration()
         self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
@@ -251,6 +258,12 @@ class ExplicitSolver:
         for pair in self.contacts:
             limit = min(limit, pair.compute(self.x, self.v, dt, self.t))
             pair.add_forces(self.f_con)
+            if pair.preload is not None and pair.name not in self._said_preload:
+                self._said_preload.add(pair.name)
+                self.log_messages.append(
+                    f"t = {self.t:.6g} s: contact '{pair.name}' has pushed its initial overlap out: preload "
+                    f"{pair.preload['normal_load']:.5g} N, mean contact pressure "
+                    f"{pair.preload['mean_pressure'] / 1e6:.5g} MPa over {pair.preload['area']:.4g} m^2")
         for spring in self.springs:
             limit = min(limit, spring.compute(self.u, self.v, dt, self.f_con))
         if np.isfinite(limit) and not self._said_contact_dt:

@@ -167,3 +167,4 @@ def programmer_sizing(size, workdir):
         out.append(check(f"sizing.cone.alpha_{alpha}.mu_{mu:g}.restitution [-]", e, got, 0.0005 / e,
                          time.perf_counter() - t0, 0))
     return out
+

@@ -18,6 +18,7 @@ from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing
+from .split_cone_cases import cone_friction, shrink_fit
 from .orientation_cases import oriented_body
 
 
@@ -46,6 +47,8 @@ CASES = {
     "slotted_ring": slotted_ring,
     "oriented_body": oriented_body,
     "crushable_pad": crushable_pad,
+    "shrink_fit": shrink_fit,
+    "cone_friction": cone_friction,
     "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,

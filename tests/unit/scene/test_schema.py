@@ -126,7 +126,8 @@ def test_contact_friction_rigid_cylinder_and_spring_resolve_to_si():
 
 def test_contact_and_spring_problems_are_listed():
     raw = _two_bodies()
-    raw["contact"] = [{"a": "bar", "b": "anvil", "wall": {}, "friction": 0.2, "friction_dynamic": 0.5},
+    raw["contact"] = [{"a": "bar", "b": "anvil", "wall": {}, "friction": 0.2, "friction_dynamic": 0.5,
+                       "interference": "-200 us"},
                       {"a": "bar", "cylinder": {"radius": "-1 mm", "point": ["1 mm", "0 m"]}}]
     raw["spring"] = [{"a": "bar", "b": "bar.top"}, {"a": "bar", "b": "anvil", "stiffness": "1 kN/m",
                                                     "curve": [["1 mm", "1 N"], ["0 mm", "0 N"]]}]
@@ -134,6 +135,7 @@ def test_contact_and_spring_problems_are_listed():
     text = "\n".join(problems)
     assert "contact[0]: give exactly one of b" in text
     assert "contact[0].friction_dynamic: must not exceed" in text
+    assert "contact[0].interference: must be >= 0, got -200 us" in text
     assert "contact[1].cylinder.radius: must be > 0" in text
     assert "contact[1].cylinder: an axisymmetric cylinder is coaxial" in text
     assert "spring[0].b: a spring joins two different bodies" in text
