@@ -10,10 +10,10 @@
 """
 
 # law ids (``laws.LAWS`` names them)
-ELASTIC, J2, FOAM = 0, 1, 2
+ELASTIC, J2, FOAM, RUBBER = 0, 1, 2, 3
 
 # parameter columns
-P_LAW = 0              # the row's law: ELASTIC, J2 or FOAM
+P_LAW = 0              # the row's law: ELASTIC, J2, FOAM or RUBBER
 P_RHO = 1              # density [kg/m^3]
 P_LAMBDA = 2           # Lame's first parameter [Pa]
 P_MU = 3               # shear modulus [Pa]
@@ -28,6 +28,7 @@ P_Q_QUADRATIC = 11     # bulk viscosity Q1 (LS-DYNA default 1.5)
 P_Q_LINEAR = 12        # bulk viscosity Q2 (LS-DYNA default 0.06)
 P_SLOT_WIDTH = 13      # total width of a slotted ring's axial slots [m] (axisymmetric split cone); 0: a full ring
 P_TENSION_CUTOFF = 14  # largest principal tensile stress [Pa] (foam)
+P_C01 = 15             # Mooney-Rivlin C01 [Pa] (rubber; C10 = mu / 2 - C01)
 NUM_PARAMS = 16
 
 # rate forms of the Cowper-Symonds factor (P_RATE_FORM)
@@ -39,4 +40,5 @@ S_RATE = 1             # equivalent plastic strain rate of the last step [1/s]
 S_BACK = 2             # back stress, columns 2..7 in the stress order (11 22 33 23 13 12) [Pa]
 S_SLOT = 8             # how much of a slotted ring's slot width has closed [m]
 S_LOG_VOLUME = 9       # ln(V / V0), the integral of tr(d) dt (foam)
-STATE_SIZE = 10
+S_DEFORMATION = 10     # F - I, the deformation gradient less the identity, row-major, columns 10..18 (rubber)
+STATE_SIZE = 19

@@ -34,22 +34,22 @@ _SECANT_ITERATIONS = 30
 
 
 @njit(cache=True, fastmath=True)
-def _hoop_stress(params, curves, m, state, c, p, s, d, dt):
-    """The hoop stress after the step with strain rate ``d`` (the point's state left as it was)."""
+def _hoop_stress(params, curves, m, state, c, p, s, d, w, dt):
+    """The hoop stress after the step with strain rate ``d`` and spin ``w`` (the point's state left as it was)."""
     if params[m, P_LAW] == ELASTIC:                    # no state to keep
         return elastic_update(params[m], s, d, dt)[0][2]
     saved = state[c, p].copy()
-    r = law_update(params, curves, m, state, c, p, s, d, dt)[0]
+    r = law_update(params, curves, m, state, c, p, s, d, w, dt)[0]
     for k in range(STATE_SIZE):
         state[c, p, k] = saved[k]
     return r[2]
 
 
 @njit(cache=True, fastmath=True)
-def slotted_hoop_rate(params, curves, m, state, c, p, s, d, dt, r):
+def slotted_hoop_rate(params, curves, m, state, c, p, s, d, w, dt, r):
     """The hoop strain rate the metal of a slotted ring takes this step, given the ring's d[2].
 
-    s: the point's stress at the start of the step (rotated); d: its strain rate; r: its radius.
+    s: the point's stress at the start of the step (rotated); d, w: its strain rate and spin; r: its radius.
     Updates how much the slots have closed, ``state[c, p, S_SLOT]`` [m].
     """
     d0, d1, d2, d3, d4, d5 = d
@@ -61,18 +61,18 @@ def slotted_hoop_rate(params, curves, m, state, c, p, s, d, dt, r):
     stiffness = lam + 2.0 * mu
     if dt <= 0.0:                                      # the forces at t = 0: no step, rates only
         return d2 if closed >= width else -lam * (d0 + d1) / stiffness
-    if closed >= width and _hoop_stress(params, curves, m, state, c, p, s, d, dt) <= 0.0:
+    if closed >= width and _hoop_stress(params, curves, m, state, c, p, s, d, w, dt) <= 0.0:
         return d2                                      # closed, and staying in compression
     # open: the hoop rate of zero hoop stress (exact for an elastic material)
     x0 = -(s[2] / dt + lam * (d0 + d1)) / stiffness
     if not elastic:
-        f0 = _hoop_stress(params, curves, m, state, c, p, s, (d0, d1, x0, d3, d4, d5), dt)
+        f0 = _hoop_stress(params, curves, m, state, c, p, s, (d0, d1, x0, d3, d4, d5), w, dt)
         scale = abs(s[0]) + abs(s[1]) + abs(s[5]) + abs(s[3]) + abs(s[4]) + 1e-6 * mu
         x1 = x0 - f0 / (dt * stiffness)
         for _ in range(_SECANT_ITERATIONS):
             if abs(f0) <= 1e-10 * scale:
                 break
-            f1 = _hoop_stress(params, curves, m, state, c, p, s, (d0, d1, x1, d3, d4, d5), dt)
+            f1 = _hoop_stress(params, curves, m, state, c, p, s, (d0, d1, x1, d3, d4, d5), w, dt)
             if f1 == f0:
                 x0, f0 = x1, f1
                 break

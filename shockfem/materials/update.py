@@ -48,9 +48,9 @@ def update_stress(params, curves, m, state, c, p, s, d, w, dt, r, elastic_only):
         rotate_back_stress(state, c, p, q)
     if r > 0.0 and params[m, P_SLOT_WIDTH] > 0.0:
         # int64 indices whatever the kernel's, so that the called hoop law is compiled once
-        d = (d[0], d[1], slotted_hoop_rate(params, curves, int(m), state, int(c), int(p), s, d, dt, r), d[3], d[4],
-             d[5])
-    s, work = law_update(params, curves, m, state, c, p, s, d, dt)
+        d = (d[0], d[1], slotted_hoop_rate(params, curves, int(m), state, int(c), int(p), s, d, w, dt, r), d[3],
+             d[4], d[5])
+    s, work = law_update(params, curves, m, state, c, p, s, d, w, dt)
     return s, d, work
 
 

@@ -39,5 +39,5 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
         law = LAWS[m.law]
         row[layout.P_LAW] = law.id
         if law.pack is not None:
-            law.pack(row, curves[i], m.plasticity or m.crush)
+            law.pack(row, curves[i], m.plasticity or m.crush or m.rubber)
     return table, curves

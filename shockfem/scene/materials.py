@@ -3,12 +3,15 @@ crushable foam, or a library material by name."""
 from __future__ import annotations
 
 from .checker import Checker
-from .specs import Crush, Material, Plasticity, RATE_FORMS
+from .specs import Crush, Material, Plasticity, RATE_FORMS, Rubber
 
 J2_FIELDS = ("yield_stress", "tangent_modulus", "isotropic_fraction", "hardening_curve", "rate_form")
 FOAM_FIELDS = ("crush_curve", "tension_cutoff")
+RUBBER_FIELDS = ("hyperelastic", "c10", "c01")
+HYPERELASTIC = ("neo-hookean", "mooney-rivlin")
 RATE_FIELDS = ("cowper_symonds_D", "cowper_symonds_q")
-MATERIAL_FIELDS = ("library", "density", "youngs_modulus", "poisson_ratio") + J2_FIELDS + FOAM_FIELDS + RATE_FIELDS
+MATERIAL_FIELDS = (("library", "density", "youngs_modulus", "poisson_ratio") + J2_FIELDS + FOAM_FIELDS + RATE_FIELDS
+                   + RUBBER_FIELDS)
 
 
 def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
@@ -29,6 +32,8 @@ def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
                        else bilinear if "hardening_curve" in m else ())
             m = {**{k: v for k, v in entry.items() if k != "source" and k not in dropped}, **m}
     foam = any(k in m for k in FOAM_FIELDS)
+    if any(k in m for k in RUBBER_FIELDS):
+        return _read_rubber(ck, name, m, path, source)
     rho = ck.quantity(m, "density", path, "density", positive=True)
     E = ck.quantity(m, "youngs_modulus", path, "pressure", positive=True)
     # a foam crushes without lateral expansion: 0 is its usual Poisson's ratio (MAT_063's PR)
@@ -120,3 +125,38 @@ def _read_crush(ck: Checker, m: dict, path: str, E: float) -> Crush:
     if D:
         model += f", Cowper-Symonds D = {D:g} /s, q = {q:g} on the volumetric strain rate"
     return Crush(curve, tension, D, q, model)
+
+
+def _read_rubber(ck: Checker, name: str, m: dict, path: str, source: str) -> Material:
+    """A hyperelastic rubber (MAT_027-like, ``materials/rubber.py``): Neo-Hookean from youngs_modulus and
+    poisson_ratio, or Mooney-Rivlin from c10 and c01 (the modulus is then 4 (c10 + c01) (1 + nu))."""
+    kind = ck.choice(m, "hyperelastic", path, HYPERELASTIC, default="mooney-rivlin" if "c10" in m else "neo-hookean")
+    for k in J2_FIELDS + FOAM_FIELDS + RATE_FIELDS:
+        if k in m:
+            ck.fail(f"{path}.{k}", "is not a field of a hyperelastic rubber: remove it, or remove hyperelastic, "
+                                   "c10 and c01")
+    rho = ck.quantity(m, "density", path, "density", positive=True)
+    # a rubber is nearly incompressible; LS-DYNA's MAT_027 asks for 0.49 or more
+    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.495)
+    if not -1.0 < nu < 0.5:
+        ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
+        nu = 0.495
+    if kind == "neo-hookean":
+        for k in ("c10", "c01"):
+            if k in m:
+                ck.fail(f"{path}.{k}", "is a Mooney-Rivlin constant: a Neo-Hookean rubber takes youngs_modulus; "
+                                       "set hyperelastic = \"mooney-rivlin\" to give c10 and c01")
+        E = ck.quantity(m, "youngs_modulus", path, "pressure", positive=True)
+        c01 = 0.0
+        model = (f"Neo-Hookean rubber, shear modulus {E / (2 * (1 + nu)) / 1e6:.4g} MPa, Poisson's ratio {nu:g} "
+                 f"(MAT_027-like with C01 = 0)")
+    else:
+        if "youngs_modulus" in m:
+            ck.fail(f"{path}.youngs_modulus", "a Mooney-Rivlin rubber takes c10 and c01 (its modulus is "
+                                              "4 (c10 + c01) (1 + nu)); remove youngs_modulus")
+        c10 = ck.quantity(m, "c10", path, "pressure", positive=True)
+        c01 = ck.quantity(m, "c01", path, "pressure", default=0.0, nonnegative=True)
+        E = 4.0 * (c10 + c01) * (1.0 + nu)
+        model = (f"Mooney-Rivlin rubber, C10 = {c10 / 1e6:.4g} MPa, C01 = {c01 / 1e6:.4g} MPa, Poisson's ratio "
+                 f"{nu:g} (MAT_027-like)")
+    return Material(name, rho, E, nu, None, source, rubber=Rubber(c01, model))

@@ -50,6 +50,14 @@ class Crush:
 
 
 @dataclass(frozen=True)
+class Rubber:
+    """A Mooney-Rivlin rubber (``materials/rubber.py``, MAT_027-like; Neo-Hookean when c01 = 0): the
+    material's E and nu give mu = 2 (C10 + C01) and the bulk modulus."""
+    c01: float                               # C01 [Pa]
+    model: str                               # what ran, for the run log
+
+
+@dataclass(frozen=True)
 class Material:
     name: str
     rho: float            # density [kg/m^3]
@@ -58,17 +66,18 @@ class Material:
     plasticity: Plasticity | None = None     # J2 plasticity; None with crush None: elastic
     source: str = ""                         # library entry and its references, if one was used
     crush: Crush | None = None               # crushable foam instead of J2
+    rubber: Rubber | None = None             # hyperelastic rubber instead of Hooke's law
 
     @property
     def law(self) -> str:
         """The name in ``materials.laws.LAWS`` of the law this material follows."""
-        return "j2" if self.plasticity else "foam" if self.crush else "elastic"
+        return "j2" if self.plasticity else "foam" if self.crush else "rubber" if self.rubber else "elastic"
 
     @property
     def model(self) -> str:
         """The law with its constants, one line for the run log."""
-        inelastic = self.plasticity or self.crush
-        return inelastic.model if inelastic else "linear elastic"
+        special = self.plasticity or self.crush or self.rubber
+        return special.model if special else "linear elastic"
 
     @property
     def lam(self) -> float:

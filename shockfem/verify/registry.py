@@ -17,7 +17,7 @@ from .modal_cases import circular_plate, modal_rod, nafems_fv12
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .slotted_cases import slotted_ring
-from .programmer_cases import crushable_pad, programmer_sizing
+from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, shrink_fit
 from .orientation_cases import oriented_body
 
@@ -47,6 +47,7 @@ CASES = {
     "slotted_ring": slotted_ring,
     "oriented_body": oriented_body,
     "crushable_pad": crushable_pad,
+    "rubber_pad": rubber_pad,
     "shrink_fit": shrink_fit,
     "cone_friction": cone_friction,
     "programmer_sizing": programmer_sizing,

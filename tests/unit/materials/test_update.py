@@ -89,7 +89,8 @@ def test_perfect_plasticity_returns_to_the_yield_stress():
 def test_every_registered_law_runs_through_the_update(name):
     """Each law of the registry has a unique id, a material that selects it, and gives a finite stress."""
     fields = {"elastic": STEEL, "j2": {**STEEL, "yield_stress": 300e6},
-              "foam": {**STEEL, "crush_curve": [[0.0, 300e6]], "tension_cutoff": 300e6}}[name]
+              "foam": {**STEEL, "crush_curve": [[0.0, 300e6]], "tension_cutoff": 300e6},
+              "rubber": {**STEEL, "hyperelastic": "neo-hookean"}}[name]
     assert material(fields).law == name
     point = _point(fields)
     assert point[0][0, P_LAW] == LAWS[name].id
