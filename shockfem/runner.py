@@ -220,6 +220,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
                    "balance_error": e.balance_error},
         "models": describe(m, scene).splitlines(),
         "contacts": {p.name: p.summary() for p in solver.contacts},
+        "cavities": {c.name: c.summary() for c in solver.cavities},
         "springs": {s.name: s.summary() for s in solver.springs},
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],

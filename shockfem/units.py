@@ -25,6 +25,7 @@ DIMENSIONS = {
     "stiffness": "[mass] / [time] ** 2",
     "damping": "[mass] / [time]",
     "slowness": "[time] / [length]",
+    "area": "[length] ** 2",
     "volume": "[length] ** 3",
     "temperature": "[temperature]",
     "angle": "",
@@ -36,7 +37,7 @@ SI_UNITS = {
     "length": "m", "mass": "kg", "time": "s", "velocity": "m/s", "angular_velocity": "rad/s",
     "acceleration": "m/s**2", "force": "N", "pressure": "Pa", "density": "kg/m**3",
     "frequency": "Hz", "strain_rate": "1/s", "energy": "J", "stiffness": "N/m", "damping": "N*s/m", "slowness": "s/m",
-    "volume": "m**3", "temperature": "K", "angle": "rad",
+    "area": "m**2", "volume": "m**3", "temperature": "K", "angle": "rad",
     "dimensionless": "",
 }
 
@@ -108,7 +109,7 @@ def _example(dimension: str) -> str:
     return {"length": "25 mm", "mass": "12 lb", "time": "5 ms", "velocity": "1600 ft/s",
             "pressure": "2000 psi", "density": "7850 kg/m^3", "frequency": "5 kHz",
             "force": "10 kN", "acceleration": "10000 gee", "energy": "1 kJ",
-            "angular_velocity": "100 rad/s", "angle": "7 deg", "stiffness": "1e6 N/m", "damping": "100 N*s/m",
+            "angular_velocity": "100 rad/s", "angle": "7 deg", "area": "20 mm^2", "stiffness": "1e6 N/m", "damping": "100 N*s/m",
             "volume": "20 ft**3", "temperature": "293 K",
             "dimensionless": "0.3"}.get(dimension, "1")
 

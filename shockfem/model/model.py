@@ -96,6 +96,7 @@ class Model:
     bodies: tuple = ()                          # the scene's bodies: name, velocity, spin, position, rigid
     contacts: tuple = ()                        # the scene's contact specs
     springs: tuple = ()                         # the scene's discrete springs
+    cavities: tuple = ()                        # the scene's liquid-filled cavities (fluid dashpots)
     accelerometers: tuple = ()                  # the scene's shock accelerometers
     gravity: tuple | None = None                # [m/s^2]
     thickness: float = 1.0                      # plane-strain depth [m]
@@ -228,7 +229,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                   kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,
                   one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
                   hourglass_coefficient=scene.hourglass_coefficient, bodies=tuple(scene.bodies),
-                  contacts=tuple(scene.contacts), springs=tuple(scene.springs),
+                  contacts=tuple(scene.contacts), springs=tuple(scene.springs), cavities=tuple(scene.cavities),
                   accelerometers=tuple(scene.shock.accelerometers), gravity=scene.gravity,
                   thickness=scene.thickness, safety_factor=scene.safety_factor, plastic=plastic,
                   point_state=plastic or bool(slotted))
@@ -326,6 +327,16 @@ def describe(model: Model, sc: Scene) -> str:
         law = (f"tabulated curve of {len(sp.curve)} points" if sp.curve else f"k = {sp.stiffness:.4g} N/m")
         lines.append(f"  spring {sp.name}: {sp.a} <-> {sp.b}, {law}, c = {sp.damping:.4g} N s/m"
                      + (", compression only" if sp.compression_only else ""))
+    for cv in sc.cavities:
+        law = "linear" if cv.tait_exponent == 1.0 else f"Tait, n = {cv.tait_exponent:g}"
+        orifice = (f"fixed orifice {cv.orifice[0][1] * 1e6:.4g} mm^2" if len(cv.orifice) == 1
+                   else f"metering pin, {len(cv.orifice)}-point area table over {cv.orifice[-1][0] * 1e3:.4g} mm "
+                        f"of stroke")
+        lines.append(f"  cavity {cv.name}: liquid {cv.density:g} kg/m^3, K {cv.bulk_modulus / 1e9:.4g} GPa ({law}), "
+                     f"{cv.volume * 1e6:.4g} cm^3 at {cv.initial_pressure / 1e6:.4g} MPa, {orifice}, Cd {cv.discharge:g}; "
+                     f"walls {', '.join(cv.walls)} (the rest held still); lumped control volume: one pressure, "
+                     f"quasi-steady Bernoulli orifice capped at the sound speed, no liquid inertia or waves, no "
+                     f"cavitation below 0 gauge")
     if sc.gravity:
         lines.append(f"  gravity: {sc.gravity} m/s^2")
     if sc.damping:

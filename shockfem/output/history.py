@@ -42,6 +42,9 @@ class HistoryRecorder:
         for sp in m.springs:
             # the spring's force on its end a, as a vector (tension T along the unit a -> b)
             self.columns += [(f"spring.{sp.name}.force_{a}", "N") for a in axes]
+        for cv in m.cavities:
+            self.columns += [(f"cavity.{cv.name}.pressure", "Pa"), (f"cavity.{cv.name}.volume", "m^3"),
+                             (f"cavity.{cv.name}.outflow", "kg/s"), (f"cavity.{cv.name}.orifice_area", "m^2")]
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
@@ -60,6 +63,8 @@ class HistoryRecorder:
             row += list(pair.force_a) + list(pair.friction_a)
         for spring in s.springs:
             row += list(spring.tension * spring.direction)
+        for cavity in s.cavities:
+            row += [cavity.pressure, cavity.volume, cavity.outflow, cavity.orifice_area()]
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
 

@@ -10,7 +10,7 @@ PENALTIES = ("segment", "soft")
 CYLINDER_SIDES = ("outside", "inside")
 
 
-def _surface_spec(ck: Checker, c: dict, key: str, path: str, body_regions: dict) -> str | None:
+def surface_spec(ck: Checker, c: dict, key: str, path: str, body_regions: dict) -> str | None:
     """A "body" or "body.region" reference, checked against the scene's bodies."""
     spec = c.get(key)
     if not isinstance(spec, str):
@@ -70,13 +70,13 @@ def read_contacts(ck: Checker, raw: dict, body_regions: dict, kin: str) -> list[
     for path, c in ck.entries(raw, "contact"):
         ck.unknown(c, ("name", "a", "b", "wall", "cylinder", "penalty", "penalty_scale", "damping", "friction",
                        "friction_dynamic", "friction_decay", "interference"), path)
-        a = _surface_spec(ck, c, "a", path, body_regions)
+        a = surface_spec(ck, c, "a", path, body_regions)
         b = rigid = None
         if sum(k in c for k in ("b", "wall", "cylinder")) != 1:
             ck.fail(path, "give exactly one of b (a second surface), wall (a rigid plane) or cylinder "
                           "(a rigid cylinder)")
         elif "b" in c:
-            b = _surface_spec(ck, c, "b", path, body_regions)
+            b = surface_spec(ck, c, "b", path, body_regions)
             if a and b and a.partition(".")[0] == b.partition(".")[0]:
                 ck.fail(f"{path}.b", "self-contact of a body is not supported; give two different bodies")
         else:
@@ -100,8 +100,8 @@ def read_springs(ck: Checker, raw: dict, body_regions: dict, gdim: int) -> list[
     out = []
     for i, (path, c) in enumerate(ck.entries(raw, "spring")):
         ck.unknown(c, ("name", "a", "b", "direction", "stiffness", "curve", "damping", "compression_only"), path)
-        a = _surface_spec(ck, c, "a", path, body_regions)
-        b = _surface_spec(ck, c, "b", path, body_regions)
+        a = surface_spec(ck, c, "a", path, body_regions)
+        b = surface_spec(ck, c, "b", path, body_regions)
         if a and b and a.partition(".")[0] == b.partition(".")[0]:
             ck.fail(f"{path}.b", "a spring joins two different bodies")
         direction = _unit_vector(ck, c, "direction", path, gdim, [0.0] * (gdim - 1) + [1.0]) \

@@ -14,6 +14,7 @@ from typing import Any
 
 from ..parts.catalog import CAD_FILES, MESH_FILES, PARTS
 from .checker import Checker, SceneError
+from .cavities import read_cavities
 from .contacts import read_contacts, read_springs
 from .materials import read_material
 from .orientation import read_orientation, turned
@@ -148,8 +149,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     import os
 
     ck = Checker()
-    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "damping", "outputs",
-                     "shock"), "")
+    ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "cavity", "damping",
+                     "outputs", "shock"), "")
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity",
@@ -324,6 +325,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
 
     contacts = read_contacts(ck, raw, body_regions, kin)
     springs = read_springs(ck, raw, body_regions, gdim)
+    cavities = read_cavities(ck, raw, body_regions)
 
     damping = _damping(ck, raw, "damping", DAMPING_TYPES, "rayleigh") if "damping" in raw else None
 
@@ -343,7 +345,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
-                 gravity if any(gravity) else (), bulk_viscosity, shock)
+                 gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities))
 
 
 def to_plain(scene: Scene) -> dict[str, Any]:

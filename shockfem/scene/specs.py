@@ -193,6 +193,22 @@ class Contact:
 
 
 @dataclass(frozen=True)
+class Cavity:
+    """A liquid-filled cavity discharging through an orifice (``fluid/cavity.py``): a control volume
+    bounded by body surfaces, the rest of its walls held still."""
+    name: str
+    walls: tuple[str, ...]           # "body.region" surfaces that bound the liquid (their normals face it)
+    volume: float                    # initial liquid volume [m^3]
+    density: float                   # liquid density at zero gauge pressure [kg/m^3]
+    bulk_modulus: float              # K [Pa] at zero gauge pressure
+    tait_exponent: float             # n of p = K/n ((rho/rho0)^n - 1); 1: linear
+    discharge: float                 # orifice discharge coefficient Cd [-]
+    orifice: tuple[tuple[float, float], ...]    # (stroke [m], area [m^2]); one pair: a fixed orifice
+    piston_area: float               # displaced volume / piston_area = stroke [m^2]; 0 for a fixed orifice
+    initial_pressure: float = 0.0    # gauge [Pa] (a pre-charged cavity)
+
+
+@dataclass(frozen=True)
 class Spring:
     """A discrete spring and dashpot between two bodies (or named regions of them), acting along
     ``direction`` on the mass-weighted mean motion of each side (LS-DYNA's *ELEMENT_DISCRETE
@@ -271,6 +287,7 @@ class Scene:
     gravity: tuple[float, ...] = ()              # [m/s^2]; empty or zero: none
     bulk_viscosity: tuple[float, float] = (1.5, 0.06)   # (Q1 quadratic, Q2 linear), LS-DYNA's defaults
     shock: Shock = Shock()
+    cavities: tuple[Cavity, ...] = ()
 
     @property
     def gdim(self) -> int:

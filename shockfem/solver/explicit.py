@@ -32,6 +32,7 @@ from ..errors import UnstableRun
 from ..model import Model
 from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
+from ..fluid.cavity import LiquidCavity
 from ..elements import full_integration, one_point
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
@@ -52,8 +53,8 @@ class Energies:
     hourglass: float = 0.0         # work of the hourglass forces (one-point elements)
     plastic: float = 0.0           # plastic work int sigma : d eps_p dV
     bulk_viscosity: float = 0.0    # dissipated by the artificial bulk viscosity
-    contact: float = 0.0           # taken up by contact (penalty, contact damping, friction) and
-                                   # discrete springs = -their work on the bodies
+    contact: float = 0.0           # taken up by contact (penalty, contact damping, friction), discrete
+                                   # springs and liquid cavities = -their work on the bodies
     external: float = 0.0          # work of loads and prescribed velocities
     initial: float = 0.0           # kinetic energy at t = 0
     peak: float = 0.0              # largest energy in play so far (the balance reference)
@@ -124,6 +125,7 @@ class ExplicitSolver:
         self.log_messages: list[str] = []
         self.contacts = [ContactPair(m, c) for c in m.contacts]
         self.springs = [DiscreteSpring(m, c) for c in m.springs]
+        self.cavities = [LiquidCavity(m, c) for c in m.cavities]
         self.f_gravity = (m.mass[:, None] * np.asarray(m.gravity)[None, :] if m.gravity
                           else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
@@ -250,8 +252,8 @@ class ExplicitSolver:
             flat[load.dofs] += load.value(t) * load.shares
 
     def _contact_forces(self, dt: float):
-        """Contact and discrete-spring forces at t_{n+1} into f_con (v is v_{n+1/2})."""
-        if not self.contacts and not self.springs:
+        """Contact, discrete-spring and liquid-cavity forces at t_{n+1} into f_con (v is v_{n+1/2})."""
+        if not self.contacts and not self.springs and not self.cavities:
             return
         self.f_con[:] = 0.0
         limit = np.inf
@@ -266,12 +268,15 @@ class ExplicitSolver:
                     f"{pair.preload['mean_pressure'] / 1e6:.5g} MPa over {pair.preload['area']:.4g} m^2")
         for spring in self.springs:
             limit = min(limit, spring.compute(self.u, self.v, dt, self.f_con))
+        for cavity in self.cavities:
+            limit = min(limit, cavity.compute(self.x, self.v, dt))
+            cavity.add_forces(self.f_con)
         if np.isfinite(limit) and not self._said_contact_dt:
             self._said_contact_dt = True
             combined = 1.0 / np.sqrt(1.0 / self.dt_stable ** 2 + 1.0 / limit ** 2)
-            self.log_messages.append(f"t = {self.t:.6g} s: contact and discrete springs lower the stable step "
-                                     f"from {self.dt_stable:.4g} s to {combined:.4g} s while they act (before "
-                                     f"the safety factor)")
+            self.log_messages.append(f"t = {self.t:.6g} s: contact, discrete springs and liquids lower the stable "
+                                     f"step from {self.dt_stable:.4g} s to {combined:.4g} s while they act "
+                                     f"(before the safety factor)")
         self.dt_contact = limit
 
     def _acceleration(self):

@@ -21,7 +21,7 @@ LAYERS = [
     {"scene"},
     {"geometry"},
     {"model"},
-    {"contact"},
+    {"contact", "fluid"},
     {"solver"},
     {"output"},
     {"metrics"},

@@ -257,3 +257,22 @@ def test_orientation_turns_the_body_and_a_single_speed_follows_its_axis():
 def test_bad_orientation_names_the_field(orientation, kinematics, field, words):
     problems = _problems(_oriented(orientation, kinematics=kinematics, velocity=0.0))
     assert any(p.startswith(f"bodies[0].{field}:") and words in p for p in problems), problems
+
+
+def test_cavity_resolves_and_its_problems_are_listed():
+    raw = base()
+    raw["cavity"] = [{"name": "oil", "walls": ["bar.bottom"], "volume": "25 cm^3", "initial_pressure": "1 MPa",
+                      "liquid": {"density": "870 kg/m^3", "bulk_modulus": "1.5 GPa"},
+                      "orifice": {"area_curve": [["0 mm", "300 mm^2"], ["5 mm", "0 mm^2"]],
+                                  "piston_area": "12 cm^2"}}]
+    c = resolve(raw).cavities[0]
+    assert c.volume == pytest.approx(25e-6) and c.initial_pressure == 1e6 and c.tait_exponent == 1.0
+    assert c.orifice == ((0.0, 3e-4), (5e-3, 0.0)) and c.piston_area == pytest.approx(12e-4)
+    assert c.discharge == 0.7
+    raw["cavity"] = [{"walls": ["bar.nose"], "volume": "-1 cm^3", "liquid": {"density": "870 kg/m^3"},
+                      "orifice": {"area": "1 mm^2", "area_curve": [[0, 1]], "discharge": 1.5}, "colour": "red"}]
+    text = "\n".join(_problems(raw))
+    for expected in ("cavity[0].walls: body 'bar' has regions", "cavity[0].volume: must be > 0",
+                     "cavity[0].liquid.bulk_modulus: missing", "cavity[0].orifice: give area (a fixed orifice) or",
+                     "cavity[0].orifice.discharge: must be < 1.0, got 1.5", "cavity[0].colour: unknown field"):
+        assert expected in text, text
