@@ -17,7 +17,8 @@ outward normals face the liquid; the cavity's other walls are held still):
                                                         on the current geometry (a follower load)
 
 with a the orifice area: fixed, or a table of the stroke (displaced volume / piston area: a
-metering pin).  The liquid's energy is the work the walls do on it, split into what it stores
+metering pin).  A cavity given no volume is closed by its walls, and its volume is taken from their current
+positions every step (divergence theorem).  The liquid's energy is the work the walls do on it, split into what it stores
 (the compression energy of M at rho) and what the orifice throttles, the integral of p mdot / rho
 (the jet's kinetic energy, turned to heat downstream).  The walls' nodes see the liquid as a spring
 of stiffness K A^2 / V (a rigid wall: its body's mass), which bounds the stable step.
@@ -61,10 +62,16 @@ class LiquidCavity:
         self.rigid = np.isin(body, [rb.index for rb in model.rigid])
         self.f = np.zeros((len(self.global_nodes), self.gdim))
         self._f_old = np.zeros_like(self.f)
-        self.volume = spec.volume
+        # a cavity closed by its walls (no volume given) takes its volume from them, every step
+        self.enclosed = spec.volume <= 0.0
+        self.volume = self.enclosed_volume(self.exchange.gather(model.X0)) if self.enclosed else spec.volume
+        if self.volume <= 0.0:
+            raise ModelError(f"cavity '{spec.name}': its walls enclose no volume ({self.volume:.4g} m^3): with no "
+                             f"volume given they must close the cavity, their outward normals facing the liquid")
+        self.initial_volume = self.volume
         # a pre-charged cavity holds the mass that gives its initial pressure: (1 + n p0 / K)^(1/n) rho0 V
         n, K = spec.tait_exponent, spec.bulk_modulus
-        self.mass_liquid = spec.density * (1.0 + n * spec.initial_pressure / K) ** (1.0 / n) * spec.volume
+        self.mass_liquid = spec.density * (1.0 + n * spec.initial_pressure / K) ** (1.0 / n) * self.volume
         self.initial_stored = self.stored_energy()
         self.pressure = 0.0
         self.outflow = 0.0               # mass rate out [kg/s]
@@ -102,7 +109,7 @@ class LiquidCavity:
         return self.mass_liquid * e
 
     def stroke(self) -> float:
-        return (self.spec.volume - self.volume) / self.spec.piston_area if self.spec.piston_area else 0.0
+        return (self.initial_volume - self.volume) / self.spec.piston_area if self.spec.piston_area else 0.0
 
     def orifice_area(self) -> float:
         if len(self._area) == 1:
@@ -138,6 +145,16 @@ class LiquidCavity:
         return 0.5 * (low + high)
 
     # ---------------------------------------------------------------- geometry
+    def enclosed_volume(self, x: np.ndarray) -> float:
+        """The volume the walls close, by the divergence theorem with the liquid's outward normals -S:
+        V = -sum of (x_f . S_f) / d in 3D (d = 3) and plane strain (d = 2), V = -sum of z_f S_z,f in
+        axisymmetry (the field (0, z), whose divergence is 1); x_f the facet's centroid."""
+        S = self._area_vectors(x)
+        centre = x[self.facets].mean(axis=1)
+        if self.axisymmetric:
+            return -float(np.dot(centre[:, 1], S[:, 1]))
+        return -float(np.einsum("ij,ij->", centre, S)) / self.gdim
+
     def _area_vectors(self, x: np.ndarray) -> np.ndarray:
         """Outward area vector of each wall facet on the current geometry (out of its body: into the liquid)."""
         p = x[self.facets]
@@ -160,8 +177,11 @@ class LiquidCavity:
         nn = self.facets.shape[1]
         if dt > 0.0:
             v_facet = v[self.facets].mean(axis=1)
-            # the outward normals face the liquid: walls moving along them shrink it
-            self.volume -= dt * float(np.einsum("ij,ij->", v_facet, S))
+            if self.enclosed:
+                self.volume = self.enclosed_volume(x)
+            else:
+                # the outward normals face the liquid: walls moving along them shrink it
+                self.volume -= dt * float(np.einsum("ij,ij->", v_facet, S))
             taken = self._mass_out(dt)
             self.mass_liquid -= taken
             self.out_mass += taken
@@ -198,7 +218,7 @@ class LiquidCavity:
         self.exchange.add_to(self.f, f)
 
     def summary(self) -> dict:
-        return {"walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.spec.volume,
+        return {"walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": -self.work, "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled}

@@ -22,7 +22,8 @@ def read_cavities(ck: Checker, raw: dict, body_regions: dict) -> list[Cavity]:
             ck.fail(f"{path}.walls", "must name the surfaces that bound the liquid, e.g. ['piston.bottom']")
             walls = []
         specs = [surface_spec(ck, {"walls": w}, "walls", path, body_regions) for w in walls]
-        volume = ck.quantity(c, "volume", path, "volume", positive=True)
+        # no volume: the walls close the cavity and give it (fluid/cavity.py)
+        volume = ck.quantity(c, "volume", path, "volume", default=0.0, positive="volume" in c)
         liquid = ck.table(c, "liquid", f"{path}.liquid")
         lp = f"{path}.liquid"
         ck.unknown(liquid, LIQUID_FIELDS, lp)

@@ -198,7 +198,7 @@ class Cavity:
     bounded by body surfaces, the rest of its walls held still."""
     name: str
     walls: tuple[str, ...]           # "body.region" surfaces that bound the liquid (their normals face it)
-    volume: float                    # initial liquid volume [m^3]
+    volume: float                    # initial liquid volume [m^3]; 0: the walls close the cavity and give it
     density: float                   # liquid density at zero gauge pressure [kg/m^3]
     bulk_modulus: float              # K [Pa] at zero gauge pressure
     tait_exponent: float             # n of p = K/n ((rho/rho0)^n - 1); 1: linear
