@@ -17,6 +17,7 @@ slides steadily (a faster push makes it stick and slip on the way out).
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 
@@ -124,3 +125,82 @@ def cone_friction(size, workdir):
                 check(f"{tag}.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
                       absolute=True)]
     return out
+
+
+CONE = {"half_angle": 7.0, "friction": 0.1, "outer_radius": 0.04, "length": 0.04, "exit_radius": 0.02,
+        "plug_length": 0.02, "plug_bottom": 0.01, "gap": 2e-6, "push": 2e-4, "push_time": 4e-4}
+
+
+def _plug_mesh(path, r_bottom, r_top, height, h):
+    """A frustum plug's axisymmetric section, meshed by gmsh into quads: regions side (1), bottom (2),
+    top (3), axis (4)."""
+    import gmsh
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("plug")
+        geo = gmsh.model.geo
+        p = [geo.addPoint(0, 0, 0, h), geo.addPoint(r_bottom, 0, 0, h), geo.addPoint(r_top, height, 0, h),
+             geo.addPoint(0, height, 0, h)]
+        lines = [geo.addLine(p[0], p[1]), geo.addLine(p[1], p[2]), geo.addLine(p[2], p[3]), geo.addLine(p[3], p[0])]
+        surface = geo.addPlaneSurface([geo.addCurveLoop(lines)])
+        geo.mesh.setRecombine(2, surface)
+        geo.synchronize()
+        for tag, line in ((1, lines[1]), (2, lines[0]), (3, lines[2]), (4, lines[3])):
+            gmsh.model.addPhysicalGroup(1, [line], tag)
+        gmsh.model.addPhysicalGroup(2, [surface], 10)
+        gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 1)
+        gmsh.model.mesh.generate(2)
+        gmsh.write(path)
+    finally:
+        gmsh.finalize()
+
+
+def cone_push(size, workdir):
+    """A steel conical plug (axisymmetric, a gmsh frustum) pushed 0.2 mm into the 7 degree conical
+    bore of an elastic steel ring (friction 0.1; the ring stands on a frictionless base) over 0.4 ms,
+    twelve periods of the ring's breathing, then drawn back: the ring pushes back on the plug with
+    axial over radial force tan(alpha + phi) while it slides in and tan(alpha - phi) while it slides
+    out (5%, the issue's bound)."""
+    c = CONE
+    alpha, mu = math.radians(c["half_angle"]), c["friction"]
+    phi = math.atan(mu)
+    h = 0.001 * SIZES[size]
+    entry = c["exit_radius"] + c["length"] * math.tan(alpha)
+    z0, hp = c["plug_bottom"], c["plug_length"]
+    r_b = c["exit_radius"] + z0 * math.tan(alpha) - c["gap"]
+    r_t = r_b + hp * math.tan(alpha)
+    os.makedirs(workdir, exist_ok=True)
+    mesh = os.path.join(workdir, f"cone_plug_{size}.msh")
+    _plug_mesh(mesh, r_b, r_t, hp, h)
+    T, v = c["push_time"], c["push"] / c["push_time"]
+    push = [[0.0, 0.0], [0.05 * T, -v], [0.95 * T, -v], [1.05 * T, v], [1.95 * T, v], [2 * T, 0.0]]
+    stiff = dict(STEEL)
+    raw = {"scene": {"name": "cone_push", "kinematics": "axisymmetric", "end_time": 2 * T},
+           "materials": {"steel": dict(STEEL), "stiff": stiff},
+           "bodies": [{"name": "cone", "material": "steel", "shape": "split_cone", "outer_radius": c["outer_radius"],
+                       "length": c["length"], "entry_radius": entry, "exit_radius": c["exit_radius"], "segments": 1,
+                       "element_size": h},
+                      {"name": "plug", "material": "stiff", "shape": "mesh", "file": mesh,
+                       "regions": {"side": 1, "bottom": 2, "top": 3, "axis": 4}, "position": [0.0, z0]}],
+           "boundary": [{"region": "cone.bottom", "type": "velocity", "direction": "z", "value": 0.0},
+                        {"region": "plug.top", "type": "velocity", "direction": "z", "history": push}],
+           "contact": [{"name": "wedge", "a": "plug.side", "b": "cone.bore", "friction": mu, "penalty_scale": 10.0}],
+           "damping": {"ratio": 0.05, "frequency": "20 kHz"},
+           "outputs": {"field_interval": 2 * T, "history_interval": T / 100}}
+    rows = []
+
+    def probe(s):
+        pair = s.contacts[0]
+        F = pair.force_a + pair.friction_a                    # the ring's push on the plug
+        rows.append((s.t, F[0], F[1]))
+    solver, wall = solve(raw, cache_dir=workdir, probe=probe)
+    t, fr, fz = np.array(rows).T
+    load = (t > 0.3 * T) & (t < 0.9 * T)
+    unload = (t > 1.3 * T) & (t < 1.9 * T)
+    ratio_in = float(fz[load].sum() / -fr[load].sum())
+    ratio_out = float(fz[unload].sum() / -fr[unload].sum())
+    n = element_count(solver)
+    return [check("cone_push.loading_ratio [-]", math.tan(alpha + phi), ratio_in, 0.05, wall, n),
+            check("cone_push.unloading_ratio [-]", math.tan(alpha - phi), ratio_out, 0.05, wall, n),
+            check("cone_push.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n, absolute=True)]
