@@ -5,6 +5,7 @@ Everything inside shockfem is SI (m, kg, s, N, Pa, J); bare numbers in a scene a
 from __future__ import annotations
 
 import functools
+import math
 
 import pint
 
@@ -87,6 +88,15 @@ def to_si(value, dimension: str) -> float:
     """
     if isinstance(value, bool):
         raise UnitError(f"expected {_a(dimension)}, got {value!r}")
+    v = _parse(value, dimension)
+    if not math.isfinite(v):              # "nan m", "1e400 m", float("inf"): no input value
+        words = "number" if dimension == "dimensionless" else dimension.replace("_", " ")
+        raise UnitError(f"expected a finite {words}, got {value!r}")
+    return v
+
+
+def _parse(value, dimension: str) -> float:
+    """The SI value of a bare number or a string with a unit (``to_si``)."""
     if isinstance(value, (int, float)):
         return float(value)
     if not isinstance(value, str):

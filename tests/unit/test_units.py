@@ -37,3 +37,10 @@ def test_report_factors_agree_with_the_input_units():
                                     ("1 ft", "length", units.FT), ("1 in", "length", units.IN),
                                     ("1 psi", "pressure", units.PSI)):
         assert to_si(text, dimension) == pytest.approx(factor, rel=1e-14), text
+
+
+@pytest.mark.parametrize("value", ["nan m", "inf m", "1e400 m", float("nan"), float("inf"), -float("inf")])
+def test_nan_and_infinity_are_refused(value):
+    """Every scene field goes through to_si, so a NaN or an infinity is refused with its field named."""
+    with pytest.raises(UnitError, match="expected a finite length"):
+        to_si(value, "length")

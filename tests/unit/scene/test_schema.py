@@ -276,3 +276,18 @@ def test_cavity_resolves_and_its_problems_are_listed():
                      "cavity[0].liquid.bulk_modulus: missing", "cavity[0].orifice: give area (a fixed orifice) or",
                      "cavity[0].orifice.discharge: must be < 1.0, got 1.5", "cavity[0].colour: unknown field"):
         assert expected in text, text
+
+
+def test_nan_and_infinity_in_the_new_fields_are_named():
+    """A NaN or an infinity is refused like any bad value (units.to_si), with its field named."""
+    raw = _oriented({"axis": [1, 0, "nan"], "angle": "inf deg"}, velocity=0.0)
+    raw["contact"] = [{"a": "bar", "wall": {"point": [0, 0, 0], "normal": [0, 0, 1]}, "interference": "nan us"}]
+    raw["cavity"] = [{"walls": ["bar.bottom"], "volume": "inf m^3", "liquid": {"density": "870 kg/m^3",
+                      "bulk_modulus": "nan GPa"}, "orifice": {"area": "1 mm^2"}}]
+    raw["materials"]["steel"].update({"crush_curve": [[0, "1 MPa"]], "tension_cutoff": "inf MPa"})
+    text = "\n".join(_problems(raw))
+    for field, words in (("bodies[0].orientation.axis[2]", "finite number"), ("bodies[0].orientation.angle", "finite angle"),
+                         ("contact[0].interference", "finite time"), ("cavity[0].volume", "finite volume"),
+                         ("cavity[0].liquid.bulk_modulus", "finite pressure"),
+                         ("materials.steel.tension_cutoff", "finite pressure")):
+        assert f"{field}: expected a {words}" in text, text
