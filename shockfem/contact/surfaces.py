@@ -63,18 +63,25 @@ def cell_volumes(model: Model, cells: np.ndarray) -> np.ndarray:
     return np.abs(np.linalg.det(e)).sum(axis=1) / 6.0
 
 
+def area_vectors(model: Model, p: np.ndarray) -> np.ndarray:
+    """Area vectors of facets whose node coordinates ``p`` (facets, nodes, gdim) run in outward order:
+    along the outward normal, as long as the facet's area (2D: its length times 2 pi r at its middle
+    in axisymmetry, or the thickness)."""
+    if model.gdim == 2:
+        t = p[:, 1] - p[:, 0]
+        return np.stack([t[:, 1], -t[:, 0]], axis=1) * _weight(model, p[..., 0].mean(axis=1))[:, None]
+    if p.shape[1] == 3:
+        return 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    return 0.5 * np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1])
+
+
 def _facet_geometry(model: Model, facets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Reference area and longest edge of facets given by local node numbers."""
     p = model.X0[facets]
-    edges = np.linalg.norm(np.roll(p, -1, axis=1) - p, axis=2)
+    area = np.linalg.norm(area_vectors(model, p), axis=1)
     if model.gdim == 2:
-        length = np.linalg.norm(p[:, 1] - p[:, 0], axis=1)
-        return length * _weight(model, p[..., 0].mean(axis=1)), length
-    if facets.shape[1] == 3:
-        area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
-    else:
-        area = 0.5 * np.linalg.norm(np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1]), axis=1)
-    return area, edges.max(axis=1)
+        return area, np.linalg.norm(p[:, 1] - p[:, 0], axis=1)
+    return area, np.linalg.norm(np.roll(p, -1, axis=1) - p, axis=2).max(axis=1)
 
 
 def _boundary_facets(model: Model, spec: str) -> tuple[int, np.ndarray]:

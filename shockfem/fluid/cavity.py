@@ -29,7 +29,7 @@ import math
 
 import numpy as np
 
-from ..contact.surfaces import NodeExchange, build_surface
+from ..contact.surfaces import NodeExchange, area_vectors, build_surface
 from ..errors import ModelError
 from ..model import Model
 from ..scene.specs import Cavity
@@ -52,7 +52,6 @@ class LiquidCavity:
         self.facets = np.searchsorted(self.global_nodes, np.concatenate(facets))
         self.gdim = model.gdim
         self.axisymmetric = model.axisymmetric
-        self.thickness = model.thickness
         # per compact node: its body, and the mass that moves with it (a rigid body moves whole)
         body = self.exchange.gather(model.node_body[:, None].astype(float))[:, 0].astype(int)
         mass = self.exchange.gather(model.mass[:, None])[:, 0]
@@ -157,15 +156,7 @@ class LiquidCavity:
 
     def _area_vectors(self, x: np.ndarray) -> np.ndarray:
         """Outward area vector of each wall facet on the current geometry (out of its body: into the liquid)."""
-        p = x[self.facets]
-        if self.gdim == 2:
-            t = p[:, 1] - p[:, 0]
-            S = np.stack([t[:, 1], -t[:, 0]], axis=1)
-            weight = 2.0 * math.pi * p[:, :, 0].mean(axis=1) if self.axisymmetric else self.thickness
-            return S * np.reshape(weight, (-1, 1)) if self.axisymmetric else S * weight
-        if p.shape[1] == 3:
-            return 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-        return 0.5 * np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1])
+        return area_vectors(self.model, x[self.facets])
 
     # ---------------------------------------------------------------- step
     def compute(self, x_local: np.ndarray, v_local: np.ndarray, dt: float) -> float:
@@ -176,12 +167,11 @@ class LiquidCavity:
         S = self._area_vectors(x)
         nn = self.facets.shape[1]
         if dt > 0.0:
-            v_facet = v[self.facets].mean(axis=1)
             if self.enclosed:
                 self.volume = self.enclosed_volume(x)
             else:
                 # the outward normals face the liquid: walls moving along them shrink it
-                self.volume -= dt * float(np.einsum("ij,ij->", v_facet, S))
+                self.volume -= dt * float(np.einsum("ij,ij->", v[self.facets].mean(axis=1), S))
             taken = self._mass_out(dt)
             self.mass_liquid -= taken
             self.out_mass += taken
