@@ -37,9 +37,7 @@ def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
     rho = ck.quantity(m, "density", path, "density", positive=True)
     E = ck.quantity(m, "youngs_modulus", path, "pressure", positive=True)
     # a foam crushes without lateral expansion: 0 is its usual Poisson's ratio (MAT_063's PR)
-    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.0 if foam else 0.3)
-    if not -1.0 < nu < 0.5:
-        ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
+    nu = _poisson_ratio(ck, m, path, 0.0 if foam else 0.3)
     if foam:
         for k in J2_FIELDS:
             if k in m:
@@ -83,6 +81,15 @@ def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
         model += (f", Cowper-Symonds D = {D:g} /s, q = {q:g} on the "
                   f"{'plastic (VP=1)' if rate_form == RATE_FORMS[0] else 'total (VP=0)'} strain rate")
     return Material(name, rho, E, nu, Plasticity(curve, kinematic, D, q, rate_form, model), source)
+
+
+def _poisson_ratio(ck: Checker, m: dict, path: str, default: float) -> float:
+    """Poisson's ratio in (-1, 0.5); ``default`` when absent (and after a problem, to read on)."""
+    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=default)
+    if not -1.0 < nu < 0.5:
+        ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
+        return default
+    return nu
 
 
 def _rate_constants(ck: Checker, m: dict, path: str) -> tuple[float, float]:
@@ -137,10 +144,7 @@ def _read_rubber(ck: Checker, name: str, m: dict, path: str, source: str) -> Mat
                                    "c10 and c01")
     rho = ck.quantity(m, "density", path, "density", positive=True)
     # a rubber is nearly incompressible; LS-DYNA's MAT_027 asks for 0.49 or more
-    nu = ck.quantity(m, "poisson_ratio", path, "dimensionless", default=0.495)
-    if not -1.0 < nu < 0.5:
-        ck.fail(f"{path}.poisson_ratio", f"must be in (-1, 0.5), got {nu}")
-        nu = 0.495
+    nu = _poisson_ratio(ck, m, path, 0.495)
     if kind == "neo-hookean":
         for k in ("c10", "c01"):
             if k in m:
