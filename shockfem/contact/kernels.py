@@ -23,7 +23,9 @@ Every active spring adds to ``stiff`` the absolute row sums of its stiffness mat
 shape-function weights at the master: 2 k w_i against a facet, k against a rigid surface;
 doubled with friction, whose tangential spring has the same k): the pair turns them into the
 Gershgorin bound of the contact's highest frequency, max_i stiff_i / m_i >= omega^2, which
-stays right when many slaves lean on one master node.
+stays right when many slaves lean on one master node.  A node still in front of the surface but
+closing on it fast enough to cross within two steps adds its spring too (``_arriving``), so that
+the step in which it touches is already short enough for it.
 
 Master facets are segments (2 nodes, 2D), triangles (3) or bilinear quadrilaterals (4), their
 nodes ordered so that the normal points out of the body.  Normal forces go to ``f``,
@@ -198,32 +200,51 @@ def _forget(ft, i):
     ft[i, 0] = ft[i, 1] = ft[i, 2] = 0.0
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def _add_rows(stiff, s, master, w, k, has_friction):
+    """Add a spring's absolute stiffness row sums to ``stiff``: k (1 + sum w) at the slave s,
+    k w_q (1 + sum w) at the master nodes; doubled with friction (a tangential spring of the same k)."""
+    weight_sum = 0.0
+    for q in range(master.shape[0]):
+        weight_sum += w[q]
+    row = (2.0 if has_friction else 1.0) * (1.0 + weight_sum) * k
+    stiff[s] += row
+    for q in range(master.shape[0]):
+        stiff[master[q]] += row * w[q]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _arriving(g, g_dot, dt):
+    """A node still outside (g >= 0) that closes fast enough to cross the surface within two steps.
+    Its spring counts in the stable step already: the solver takes each step at the limit of the
+    springs it found at the end of the last one, so a spring that appears unannounced is first
+    integrated, at full penalty, with a step that may be too long for it.  Once is harmless, but
+    a part that chatters against another (a split cone's free segment on its clamp ring) meets
+    it every bounce and gains energy each time."""
+    return g + 2.0 * dt * g_dot < 0.0
+
+
 @njit(cache=True, fastmath=True)
 def _respond(i, s, g, n, rel, m_eff, k, master, w, zeta, soft_scale, dt, friction, f, ff, ft, gap, offset,
              stiff):
-    """Penalty and friction response of slave i (node s) found at gap g (-depth < g < 0 checked by
-    the caller) along the unit normal n, with velocity ``rel`` relative to the contact point and
+    """Penalty and friction response of slave i (node s) found at gap g (|g| < depth checked by the
+    caller) along the unit normal n, with velocity ``rel`` relative to the contact point and
     effective mass m_eff.  The reaction goes to the ``master`` nodes with weights ``w`` (none for a
-    rigid surface).  Returns 1 if the spring is active, else 0."""
+    rigid surface).  A node in front (g >= 0) takes no force; its spring counts in ``stiff`` if it
+    is arriving.  Returns 1 if the spring is active, else 0."""
     gdim = f.shape[1]
     nm = master.shape[0]
     gap[i] = g
     g = _beyond_initial(g, offset, i)
+    g_dot = rel[0] * n[0] + rel[1] * n[1] + rel[2] * n[2]
+    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
     if g >= 0.0:
         _forget(ft, i)
+        if _arriving(g, g_dot, dt):
+            _add_rows(stiff, s, master, w, _spring(k, -1.0, 0.0, m_eff, 0.0, soft_scale, dt)[1], has_friction)
         return 0
-    g_dot = rel[0] * n[0] + rel[1] * n[1] + rel[2] * n[2]
     fn, k = _spring(k, g, g_dot, m_eff, zeta, soft_scale, dt)
-    # row sums of the spring's stiffness matrix: k (1 + sum w) at the slave, k w_q (1 + sum w) at the
-    # master nodes; doubled with friction (a tangential spring of the same k)
-    has_friction = friction[MU_S] > 0.0 or friction[MU_D] > 0.0
-    weight_sum = 0.0
-    for q in range(nm):
-        weight_sum += w[q]
-    row = (2.0 if has_friction else 1.0) * (1.0 + weight_sum) * k
-    stiff[s] += row
-    for q in range(nm):
-        stiff[master[q]] += row * w[q]
+    _add_rows(stiff, s, master, w, k, has_friction)
     if fn <= 0.0:
         _forget(ft, i)
         return 1
@@ -269,6 +290,8 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
         near_within = False          # some facet takes the node's projection and is near it
         beyond = -1                  # fallback: the shallowest penetration just beyond a facet edge
         beyond_g = -1e300
+        ahead = -1                   # not in: the nearest facet the node is in front of
+        ahead_g = 1e300
         for jj in range(cand_ptr[i], cand_ptr[i + 1]):
             j = cand_seg[jj]
             mine = False
@@ -285,10 +308,14 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
                 # belongs to the face it just crossed, not to the one it is deep behind)
                 if g < 0.0 and g > best_g:
                     best, best_g = j, g
+                elif g >= 0.0 and g < ahead_g:
+                    ahead, ahead_g = j, g
             elif outside < _REACH_BEYOND_EDGE and g < 0.0 and g > beyond_g:
                 beyond, beyond_g = j, g
         if best < 0 and not near_within and beyond >= 0:
             best, best_g = beyond, beyond_g
+        if best < 0 and ahead >= 0:
+            best, best_g = ahead, ahead_g     # _respond counts its spring if it is arriving
         if best < 0:
             offset[i] = 0.0
             _forget(ft, i)
@@ -343,7 +370,7 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
                 n[d] = sign * n[d] / dist if dist > 0.0 else 0.0
             g = sign * (dist - radius)
         gap[i] = 0.0
-        if g >= 0.0 or g <= -depth:
+        if g >= depth or g <= -depth:
             offset[i] = 0.0
             _forget(ft, i)
             continue

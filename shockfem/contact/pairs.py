@@ -234,7 +234,7 @@ class ContactPair:
         self.friction_work += 0.5 * dt * float(np.sum((self._ff_old + self.ff) * self.v))
         self._f_old[:] = self.f
         self._ff_old[:] = self.ff
-        return self._stable_step() if active else np.inf
+        return self._stable_step() if self.stiff.any() else np.inf     # active or arriving springs
 
     def _push_out_overlaps(self, t: float):
         """LS-DYNA's interference option: the penetration each node started with counts in full after

@@ -43,6 +43,17 @@ def test_separated_node_feels_nothing_and_contact_never_pulls():
     assert active == 1 and not f.any()
 
 
+def test_arriving_node_counts_its_spring_in_the_stable_step_but_takes_no_force():
+    """A node 1 um in front of the segment closing at 1 m/s: with dt = 1 us it crosses within two
+    steps, so its spring's row sums (2 k w_i, as if active) bound the next step (docs/theory.md);
+    at 0.4 m/s it does not, and counts nothing.  Either way no force and not active."""
+    f, g, active, stiff, _ = _one_node_on_segment(1e-6, v_close=1.0, dt=1e-6)
+    assert active == 0 and not f.any()
+    assert stiff == pytest.approx([2e6 * 0.25, 2e6 * 0.75, 2e6])
+    f, g, active, stiff, _ = _one_node_on_segment(1e-6, v_close=0.4, dt=1e-6)
+    assert active == 0 and not f.any() and not stiff.any()
+
+
 def test_penalty_spring_stores_the_work_done_on_it():
     """Pushing a node in quasi-statically from g = 0 to -d stores k d^2 / 2."""
     k, d, n = 1e6, 1e-4, 2000
