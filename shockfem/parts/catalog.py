@@ -214,6 +214,12 @@ def _clamp_ring_profile(d):
                           "length": d["length"]})
 
 
+def _cone_plug_profile(d):
+    rb, rt, L = d["bottom_radius"], d["top_radius"], d["length"]
+    return Profile([Line((0.0, 0.0), (rb, 0.0), "bottom"), Line((rb, 0.0), (rt, L), "side"),
+                    Line((rt, L), (0.0, L), "top"), Line((0.0, L), (0.0, 0.0), "axis")])
+
+
 # ---------------------------------------------------------------------------- dashpot
 
 def _circle(rc, zc, a, region):
@@ -412,6 +418,13 @@ PARTS: dict[str, Part] = {p.name: p for p in [
                                       f"{d['interference'] * 1e3:.3g} mm; a contact with an interference time "
                                       f"pushes it out to the preload (without one the overlap is the contact's zero)"]
          if d["interference"] > 0 else []),
+    Part("cone_plug", "tapered plug (or a test article's tapered adapter) that a split cone grips: a frustum "
+                      "whose side has the cone's half-angle when atan((top_radius - bottom_radius) / length) "
+                      "matches it",
+         (P("bottom_radius", "radius at z = 0"), P("top_radius", "radius at z = length"), P("length", "length")),
+         _cone_plug_profile,
+         lambda d, g: math.pi * d["length"] * (d["bottom_radius"] ** 2 + d["bottom_radius"] * d["top_radius"]
+                                               + d["top_radius"] ** 2) / 3),
     Part("dashpot", "fluid dashpot fixture: a cylinder with a toroidal cavity (circular section) and, in 3D, an "
                     "orifice from the cavity to the top face",
          (P("outer_radius", "outer radius"), P("length", "length"),

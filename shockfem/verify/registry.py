@@ -18,7 +18,7 @@ from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
-from .split_cone_cases import cone_friction, cone_push, shrink_fit
+from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
 from .dashpot_cases import fluid_dashpot
 from .orientation_cases import oriented_body
 
@@ -52,6 +52,7 @@ CASES = {
     "shrink_fit": shrink_fit,
     "cone_friction": cone_friction,
     "cone_push": cone_push,
+    "cone_rebound": cone_rebound,
     "fluid_dashpot": fluid_dashpot,
     "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,
