@@ -100,4 +100,12 @@ LIBRARY: dict[str, dict] = {
                   "slope of that rise; tension cutoff 10% of the plateau; rate independent",
         **_foam(0.1, 2700.0, 69e9, 150e6, 1.2),
     },
+    "polyurethane_foam": {
+        "source": "rigid polyurethane foam of relative density 0.2 (240 kg/m^3, about 15 lb/ft^3) scaled from its "
+                  "solid [GA] (density 1200 kg/m^3, E 1.6 GPa, yield 127 MPa assumed, rigid polymer values): plateau "
+                  "3.41 MPa rising 10% to densification at 0.72 volumetric strain, then to 136 MPa at 0.86; modulus "
+                  "E_s phi^2 = 64 MPa raised to 947 MPa, the slope of that rise; tension cutoff 10% of the plateau; "
+                  "rate independent (the open-cell scaling, without the closed cells' face and gas terms)",
+        **_foam(0.2, 1200.0, 1.6e9, 127e6, 1.1),
+    },
 }

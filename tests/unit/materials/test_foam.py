@@ -77,7 +77,10 @@ def test_bad_foam_fields_are_named(fields, field):
     assert f"materials.m.{field}" in str(e.value)
 
 
-def test_library_foam_resolves_with_its_source():
-    mat = material({"library": "aluminium_foam"})
+@pytest.mark.parametrize("entry, phi, solid_yield", [("aluminium_foam", 0.1, 150e6), ("polyurethane_foam", 0.2, 127e6)])
+def test_library_foam_resolves_with_its_source(entry, phi, solid_yield):
+    """The plateau is Gibson-Ashby's open-cell 0.3 sigma_ys phi^1.5 of the solid the source names."""
+    mat = material({"library": entry})
     assert mat.law == "foam" and mat.nu == 0.0 and "Gibson" not in mat.source and "[GA]" in mat.source
-    assert mat.crush.curve[0][1] == pytest.approx(0.3 * 150e6 * 0.1 ** 1.5, rel=1e-3)
+    assert mat.crush.curve[0][1] == pytest.approx(0.3 * solid_yield * phi ** 1.5, rel=1e-3)
+    assert f"{mat.crush.curve[0][1] / 1e6:.3g} MPa" in mat.source
