@@ -46,7 +46,10 @@ def foam_update(row, curve, point, s, d, dt):
     trd = d[0] + d[1] + d[2]
     point[S_LOG_VOLUME] += trd * dt
     eps_v = 1.0 - math.exp(point[S_LOG_VOLUME])
-    crush, _ = piecewise_linear(curve, int(row[P_CURVE_POINTS]), eps_v)
+    # a stretched point (eps_V < 0: a ring flung outward) keeps the curve's first crush stress: the
+    # plateau's slope carried backward would take it to zero and below, and a negative crush stress
+    # caps the principal stresses the wrong way round (negative plastic work: energy created)
+    crush, _ = piecewise_linear(curve, int(row[P_CURVE_POINTS]), max(eps_v, curve[0, 0]))
     crush *= rate_factor(-trd, row[P_RATE_D], row[P_RATE_Q])
     tension = min(row[P_TENSION_CUTOFF], crush)
     (l0, l1, l2), v = principal_stresses(trial)

@@ -84,3 +84,19 @@ def test_library_foam_resolves_with_its_source(entry, phi, solid_yield):
     assert mat.law == "foam" and mat.nu == 0.0 and "Gibson" not in mat.source and "[GA]" in mat.source
     assert mat.crush.curve[0][1] == pytest.approx(0.3 * solid_yield * phi ** 1.5, rel=1e-3)
     assert f"{mat.crush.curve[0][1] / 1e6:.3g} MPa" in mat.source
+
+
+def test_stretched_foam_keeps_its_tension_cutoff_and_never_gives_back_plastic_work():
+    """Triaxial stretching to 4.5 times the volume (volumetric strain -3.5, a ring flung outward): the
+    curve's plateau slope carried backward would put the crush stress at 1 + 0.4 (-3.5) = -0.4 MPa,
+    and a negative crush stress caps the principal stresses the wrong way round (the fixture study's
+    pad made 277 MJ of negative plastic work out of an 11 MJ impact).  The crush stress holds the
+    curve's first value: every principal stress stays at the 0.2 MPa cutoff, plastic work only grows."""
+    point = MaterialPoint(material(FOAM))
+    before = 0.0
+    for _ in range(500):
+        point.step({0: 100.0, 1: 100.0, 2: 100.0}, (), 1e-5)
+        assert point.plastic_work >= before
+        before = point.plastic_work
+    assert 1.0 - math.exp(point.state[0, 0, S_LOG_VOLUME]) == pytest.approx(1.0 - math.exp(1.5), rel=1e-9)
+    assert np.allclose(point.sigma[:3], FOAM["tension_cutoff"], rtol=1e-12) and not point.sigma[3:].any()
