@@ -608,6 +608,4 @@ def run_study(size: str = "default", out_dir: str = "results/amplifier", echo=pr
     cylinders_vs_plates(rep, d, size, out_dir)
     echo("6/6 interfaces that keep the design elastic (pads; rigid, 1d, axisymmetric)")
     elastic_interfaces(rep, d, size, out_dir)
-    rep.text(f"Study wall time {time.perf_counter() - t0:.0f} s.")
-    echo(f"report: {os.path.join(out_dir, 'report.md')}")
-    return os.path.join(out_dir, "report.md")
+    return rep.finish(t0, echo)

@@ -298,6 +298,4 @@ def run_study(size: str = "default", out_dir: str = "results/launcher", echo=pri
     payload_machines(rep, cfg)
     echo("5/5 gun and chain in one run")
     coupled(rep, designs, cfg, out_dir)
-    rep.text(f"Study wall time {time.perf_counter() - t0:.0f} s.")
-    echo(f"report: {os.path.join(out_dir, 'report.md')}")
-    return os.path.join(out_dir, "report.md")
+    return rep.finish(t0, echo)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import time
 
 from ..output.figures import save
 
@@ -62,6 +63,16 @@ class Report:
             save(fig, self.path(filename))
         self.lines += [f"![{caption}]({filename})", "", f"*{caption}*", ""]
         self.write()
+
+    def finish(self, started: float, echo=print) -> str:
+        """Close a study: its wall time since ``started`` (``time.perf_counter()``) in the report and in
+        ``results.json`` (``wall_time_s``); echo and return the report's path."""
+        wall = time.perf_counter() - started
+        self.value("wall_time_s", wall)
+        self.text(f"Study wall time {wall:.0f} s.")
+        path = self.path("report.md")
+        echo(f"report: {path}")
+        return path
 
     def path(self, name: str) -> str:
         return os.path.join(self.out_dir, name)

@@ -1,6 +1,7 @@
 """The studies at smoke size: every section written, figures real, and the numbers checked from
 ``results.json`` (the report's tables, unformatted), not from the Markdown."""
 import json
+import math
 import os
 import subprocess
 import sys
@@ -80,3 +81,34 @@ def test_launcher_study_smoke(tmp_path):
     (rigid,) = _rows(results, "gun_and_chain", fidelity="rigid")
     assert rigid["muzzle [ft/s]"] == pytest.approx(325, rel=2e-3)
     assert rigid["test article [ft/s]"] == pytest.approx(1600, rel=2e-3) and rigid["gain"] == pytest.approx(4.923, abs=1e-3)
+
+
+def test_fixture_study_smoke(tmp_path):
+    """The fixture study's closed forms exactly (fixtures.md's table for 10,000 g, 5 ms), the striker
+    that gives a payload the rectangle's velocity change through a programmer that keeps them
+    together, V = dV (1 + m / M), and every concept run completed with its energy balance within 1%."""
+    results, report = _study("fixture", tmp_path / "fixture")
+    for section in ("## 1. What 10,000 g for 5 ms means", "## 2. What it asks of the machine",
+                    "## 3. The concepts as finite-element runs"):
+        assert section in report
+    A, T, m = 10_000 * 9.80665, 5e-3, 12 * 0.45359237
+    closed = {"rectangle": (A * T, A * T ** 2 / 2), "half-sine": (2 * A * T / math.pi, A * T ** 2 / math.pi),
+              "terminal-peak sawtooth": (A * T / 2, A * T ** 2 / 3)}
+    for shape, (dv, stroke) in closed.items():
+        (row,) = _rows(results, "specification", article="12", shape=shape)
+        assert row["velocity change [m/s]"] == pytest.approx(dv, rel=1e-12)
+        assert row["stroke [m]"] == pytest.approx(stroke, rel=1e-9)
+        assert row["peak force [MN]"] == pytest.approx(m * A / 1e6, rel=1e-12)
+        assert row["energy [MJ]"] == pytest.approx(0.5 * m * dv * dv / 1e6, rel=1e-12)
+    assert results["values"]["shape_meeting_white_paper"] == "rectangle"
+    for ratio in (2.0, 10.0):
+        (row,) = _rows(results, "striking_mass", payload="12", striker=ratio)
+        assert row["striker speed [m/s]"] == pytest.approx(A * T * (1 + 1 / ratio), rel=1e-9)
+    runs = [dict(zip(t["columns"], r)) for name, t in results["tables"].items() if name.startswith("concepts_")
+            for r in t["rows"]]
+    assert len(runs) >= 2
+    for r in runs:
+        assert r["status"] == "completed" and abs(r["energy balance [-]"]) < 0.01, r["concept"]
+    for png in os.listdir(tmp_path / "fixture"):
+        if png.endswith(".png"):
+            assert (tmp_path / "fixture" / png).stat().st_size > 10_000

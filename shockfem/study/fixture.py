@@ -1,0 +1,345 @@
+"""The fixture study (the white paper's task 2): ``shockfem study fixture``.
+
+From a striking mass to the pulse on the unit under test.  Sections, each a table and where useful
+a figure in ``report.md`` (numbers also in ``results.json``):
+
+1. What the specification means: for articles of 10, 12, 50 and 100 lb, the velocity change,
+   stroke, force and energy of each pulse shape at 10,000 g for 5 ms (``programmer.requirement``);
+   which shape gives the white paper's "delta-V ~ 500 m/s".
+2. What it asks of the machine: the striking mass and speed that give the payload (article and
+   fixture) that velocity change through a programmer that stops them together (the amplifier's
+   rigid collision law), and the energy the programmer must take up; the launched chain that
+   delivers that striking mass from the white paper's 300 ft/s first stage (``amplifier.gain``).
+3. The concepts as finite-element runs, striking mass -> programmer -> fixture -> article (the
+   catalogue's ogive penetrator at 12 lb), each sized by ``programmer.concepts`` (the starting point
+   ``shockfem programmer`` gives): the article's pulse against the specification's band, the
+   fixture's mass, the stroke used, the energy taken up and the apparent restitution, the peak
+   stresses against yield, and what each run cost.
+
+Sizes: ``smoke`` (under a minute, for tests: coarse meshes), ``default``.
+"""
+from __future__ import annotations
+
+import math
+import os
+import time
+from dataclasses import dataclass
+from typing import Callable
+
+from scipy.optimize import brentq
+
+from ..amplifier.gain import collide, design
+from ..api import load_scene, run
+from ..errors import UnstableRun
+from ..output.figures import pyplot
+from ..parts.catalog import PARTS
+from ..programmer.concepts import crushable_pad
+from ..programmer.requirement import SHAPES, requirement
+from ..scene.library import LIBRARY
+from ..units import FT, G0, LB, to_si
+from .report import Report
+
+PEAK, DURATION = 10_000 * G0, 5e-3          # the specification: 10,000 g for 5 ms
+ARTICLES_LB = (10.0, 12.0, 50.0, 100.0)
+ARTICLE_LB = 12.0                            # the article of the finite-element runs
+WHITE_PAPER_DV = 1650 * FT                   # "a delta V of 1650 fps (~500 m/s)"
+# the article: the catalogue's solid ogive penetrator of 60 mm calibre, its length set by its mass
+ARTICLE = {"library": "steel_4340", "radius": 0.030, "crh": 3.0, "meplat_radius": 0.003}
+# striking mass over payload for the runs: heavy enough that the payload's velocity change costs the
+# striker only a tenth of its speed
+STRIKER_RATIO = 10.0
+STRIKER_RATIOS = (2.0, 5.0, 10.0, 20.0)
+CHAIN_LAUNCH = 300 * FT                      # the white paper's first-stage speed
+CHAIN_RESTITUTION = 0.9
+CHAIN_MASSES = 5
+# crushable concept: the foam, and the spreader plate that carries its crush stress onto the article's
+# base.  The plate must itself reach 10,000 g on the foam's stress: its areal mass w leaves
+# sigma_p - w A for the article, so a steel plate thicker than sigma_p / (rho A) (4.4 mm on this
+# foam) cannot be driven at all.  The runs take a stiff sandwich spreader of 10 kg/m^2 as rigid.
+FOAM = "polyurethane_foam"
+SPREADER = {"areal_mass": 10.0, "thickness": 0.02}
+SIZES = {
+    "smoke": {"h_article": 0.006, "h_carrier": 0.012, "h_pad": 0.03, "end_margin": 1.3},
+    "default": {"h_article": 0.003, "h_carrier": 0.006, "h_pad": 0.012, "end_margin": 1.3},
+}
+
+
+# ------------------------------------------------------------------------------------------------ 1
+@dataclass
+class Context:
+    """What the sections share: the size's settings, where runs go, the progress echo, and the pulse
+    shape section 1 finds the specification needs."""
+    cfg: dict
+    out_dir: str
+    echo: Callable
+    shape: str = "rectangle"
+
+
+def specification(rep: Report, ctx: Context):
+    """The specification's velocity change, stroke, force and energy per article and shape; sets
+    ``ctx.shape`` to the shape that gives the white paper's velocity change."""
+    rep.heading("1. What 10,000 g for 5 ms means")
+    rows = []
+    for lb in ARTICLES_LB:
+        for shape in SHAPES:
+            r = requirement(shape, PEAK, DURATION, lb * LB)
+            rows.append([f"{lb:g}", shape, r.velocity_change, r.stroke, r.force / 1e6, r.energy / 1e6])
+    rep.table("specification", ["article [lb]", "shape", "velocity change [m/s]", "stroke [m]", "peak force [MN]",
+                                "energy [MJ]"], rows, ["{}", "{}", "{:.1f}", "{:.3f}", "{:.4g}", "{:.4g}"])
+    dv = {shape: requirement(shape, PEAK, DURATION, 1.0).velocity_change for shape in SHAPES}
+    meets = min(dv, key=lambda s: abs(dv[s] - WHITE_PAPER_DV))
+    rep.value("white_paper_velocity_change_m_s", WHITE_PAPER_DV)
+    rep.value("shape_meeting_white_paper", meets)
+    rep.text(f"The stroke is the relative travel that brings the relative velocity to zero, the pulse's first "
+             f"moment (no rebound). The white paper's \"delta V of 1650 fps (~500 m/s)\" ({WHITE_PAPER_DV:.1f} m/s) "
+             f"is given only by the {meets} ({dv[meets]:.1f} m/s); a half-sine of the same peak and duration gives "
+             f"{dv['half-sine']:.1f} m/s and a sawtooth {dv['terminal-peak sawtooth']:.1f} m/s. The rest of the "
+             f"study designs for the {meets}: {requirement(meets, PEAK, DURATION, 1.0).stroke:.3f} m of stroke "
+             "whatever the article weighs.")
+    ctx.shape = meets
+
+
+# ------------------------------------------------------------------------------------------------ 2
+def striker_speed(payload: float, striker: float, dv: float, e: float = 0.0) -> float:
+    """The striking speed that gives a payload at rest the velocity change ``dv`` (the rigid collision
+    law of the amplifier, restitution ``e``: 0 for a programmer that stops the two together)."""
+    return brentq(lambda v: collide(striker, v, payload, 0.0, e)[1] - dv, 0.0, 100.0 * dv)
+
+
+def machine(rep: Report, ctx: Context):
+    """The striking mass and speed the specification asks of the machine, and the chain that delivers it."""
+    rep.heading("2. What it asks of the machine")
+    dv = requirement(ctx.shape, PEAK, DURATION, 1.0).velocity_change
+    rows = []
+    for lb in ARTICLES_LB:
+        for ratio in STRIKER_RATIOS:
+            payload = lb * LB
+            M = ratio * payload
+            V = striker_speed(payload, M, dv)
+            v_after = collide(M, V, payload, 0.0, 0.0)[0]
+            absorbed = 0.5 * M * V * V - 0.5 * (M + payload) * v_after ** 2
+            rows.append([f"{lb:g}", ratio, M / LB, V, V / FT, absorbed / 1e6])
+    rep.table("striking_mass", ["payload [lb]", "striker / payload [-]", "striker [lb]", "striker speed [m/s]",
+                                "striker speed [ft/s]", "programmer energy [MJ]"], rows,
+              ["{}", "{:g}", "{:.4g}", "{:.1f}", "{:.0f}", "{:.4g}"])
+    rep.text(f"The payload is the article and whatever moves with it (the fixture): its velocity change of "
+             f"{dv:.1f} m/s comes from a striking mass M at V through a programmer that leaves the two together "
+             "(restitution 0): V = dV (1 + m / M). The programmer takes up the relative kinetic energy, "
+             "m M / (m + M) V^2 / 2, more than the payload's own energy at dV by the factor (1 + m / M) - and "
+             "a striker of the payload's own mass doubles it.")
+    # the launched chain that brings that striking mass to its speed (its last mass is the striker)
+    payload = ARTICLE_LB * LB
+    M = STRIKER_RATIO * payload
+    V = striker_speed(payload, M, dv)
+    try:
+        d = design("launched-chain", M, V, CHAIN_LAUNCH, CHAIN_RESTITUTION, CHAIN_MASSES)
+        rep.value("chain_masses_lb", [m / LB for m in d.masses])
+        rep.text(f"For the {ARTICLE_LB:g} lb article with a striker of {STRIKER_RATIO:g} times it ({M / LB:.0f} lb "
+                 f"at {V:.1f} m/s, {V / FT:.0f} ft/s), a launched chain of {CHAIN_MASSES} masses at e = "
+                 f"{CHAIN_RESTITUTION:g} from {CHAIN_LAUNCH / FT:.0f} ft/s needs masses of "
+                 + ", ".join(f"{m / LB:.0f}" for m in d.masses) + " lb (the last is the striker; "
+                 "`docs/amplifier.md`).")
+    except ValueError as exc:
+        rep.text(f"No {CHAIN_MASSES}-mass chain at e = {CHAIN_RESTITUTION:g} from {CHAIN_LAUNCH / FT:.0f} ft/s "
+                 f"reaches {V:.1f} m/s with a {M / LB:.0f} lb striker: {exc}")
+
+
+# ------------------------------------------------------------------------------------------------ 3
+def article_length(radius: float, crh: float, mass: float, density: float) -> float:
+    """The length of the catalogue's solid ogive penetrator of ``radius`` that weighs ``mass``."""
+    part = PARTS["projectile"]
+
+    def volume(length):
+        return part.volume({"radius": radius, "length": length, "crh": crh, "meplat_radius": ARTICLE["meplat_radius"],
+                            "cavity_radius": 0.0, "cavity_length": 0.0, "base_thickness": 0.0}, 3)
+    nose = radius * math.sqrt(4 * crh - 1)                   # a tangent ogive's length
+    return brentq(lambda L: volume(L) * density - mass, 1.01 * nose, 100 * radius)
+
+
+def _shock(name: str, shape: str) -> dict:
+    peak = f"{PEAK / G0:.0f} gee"
+    spec_shape = "trapezoid" if shape == "rectangle" else shape
+    return {"test_articles": [name], "axis": "z", "cfc": 1000,
+            "spec": {"shape": spec_shape, "peak": peak, "duration": f"{DURATION * 1e3:g} ms"}}
+
+
+def crushable_design(shape: str) -> dict:
+    """The foam pad for the specification's force on the article and the spreader together (the
+    spreader's area is the pad's: A = m A_g / (sigma_p - w A_g)), its thickness for the relative
+    stroke against a striker of ``STRIKER_RATIO`` times the payload, by the closed forms of
+    ``programmer.concepts.crushable_pad`` and ``fixtures.md``."""
+    foam = LIBRARY[FOAM]
+    plateau = to_si(foam["crush_curve"][0][1], "pressure")
+    densification = float(foam["crush_curve"][1][0])
+    rho_foam = to_si(foam["density"], "density")
+    m_article = ARTICLE_LB * LB
+    w = SPREADER["areal_mass"]
+    area = m_article * PEAK / (plateau - w * PEAK)
+    m_spreader = w * area
+    req = requirement(shape, PEAK, DURATION, m_article + m_spreader)
+    alone = crushable_pad(requirement(shape, PEAK, DURATION, m_article), plateau, densification, rho_foam)
+    payload = m_article + m_spreader
+    M = STRIKER_RATIO * payload
+    V = striker_speed(payload, M, req.velocity_change)
+    reduced = payload * M / (payload + M)
+    stroke = reduced * V * V / (2 * plateau * area)          # the relative stroke of striker and payload
+    thickness = stroke / densification
+    return {"plateau": plateau, "densification": densification, "area": area, "radius": math.sqrt(area / math.pi),
+            "pad_thickness": thickness, "pad_mass": rho_foam * area * thickness, "spreader_mass": m_spreader,
+            "article_mass": m_article, "striker_mass": M, "striker_speed": V, "stroke_design": stroke,
+            "steel_plate_limit": plateau / (to_si(LIBRARY["high_strength_steel"]["density"], "density") * PEAK),
+            "article_alone_area": dict((label, value) for label, value, _ in alone.sizes)["area"]}
+
+
+def crushable_scene(d: dict, pad_on: str, shape: str, cfg: dict) -> dict:
+    """Striker -> foam pad -> spreader -> article (nose down, its base under the spreader), all moving
+    down (-z).  ``pad_on`` = "fixture": the pad rests on the spreader and the striker meets its far
+    face; "striker": the pad rides on the striker's face and meets the spreader."""
+    m_article = d["article_mass"]
+    L_article = article_length(ARTICLE["radius"], ARTICLE["crh"], m_article,
+                               to_si(LIBRARY[ARTICLE["library"]]["density"], "density"))
+    R, t_s, L_striker = d["radius"], SPREADER["thickness"], 0.1
+    gap = 0.002
+    z_spreader = L_article
+    z_pad = z_spreader + t_s + (gap if pad_on == "striker" else 0.0)
+    z_striker = z_pad + d["pad_thickness"] + (gap if pad_on == "fixture" else 0.0)
+    V = d["striker_speed"]
+    end = cfg["end_margin"] * DURATION
+    pad_contact = ({"name": "strike", "a": "striker.bottom", "b": "pad.top", "penalty_scale": 1.0}
+                   if pad_on == "fixture" else
+                   {"name": "strike", "a": "pad.bottom", "b": "spreader.top", "penalty_scale": 1.0})
+    held = ({"name": "pad_on_spreader", "a": "pad.bottom", "b": "spreader.top", "penalty_scale": 1.0}
+            if pad_on == "fixture" else
+            {"name": "pad_on_striker", "a": "striker.bottom", "b": "pad.top", "penalty_scale": 1.0})
+    return {"scene": {"name": f"fixture_crushable_on_{pad_on}", "kinematics": "axisymmetric", "end_time": end},
+            "materials": {"article_steel": {"library": ARTICLE["library"]}, "foam": {"library": FOAM},
+                          "spreader": {"density": d["spreader_mass"] / (math.pi * R * R * t_s),
+                                       "youngs_modulus": 70e9, "poisson_ratio": 0.3},
+                          "striker": {"density": d["striker_mass"] / (math.pi * R * R * L_striker),
+                                      "youngs_modulus": 210e9, "poisson_ratio": 0.3}},
+            "bodies": [
+                {"name": "article", "material": "article_steel", "shape": "projectile", "radius": ARTICLE["radius"],
+                 "length": L_article, "crh": ARTICLE["crh"], "meplat_radius": ARTICLE["meplat_radius"],
+                 "element_size": cfg["h_article"],
+                 "refine": [{"region": "nose", "size": cfg["h_article"] / 2, "distance": 4 * cfg["h_article"]}]},
+                {"name": "spreader", "material": "spreader", "shape": "plate", "radius": R, "thickness": t_s,
+                 "position": [0.0, z_spreader], "rigid": True, "element_size": cfg["h_pad"]},
+                {"name": "pad", "material": "foam", "shape": "cylinder", "radius": R, "length": d["pad_thickness"],
+                 "position": [0.0, z_pad], "element_size": cfg["h_pad"],
+                 "velocity": -V if pad_on == "striker" else 0.0},
+                {"name": "striker", "material": "striker", "shape": "cylinder", "radius": R, "length": L_striker,
+                 "position": [0.0, z_striker], "velocity": -V, "rigid": True, "element_size": cfg["h_pad"]}],
+            "contact": [pad_contact, held,
+                        {"name": "seat", "a": "spreader.bottom", "b": "article.base", "penalty_scale": 1.0}],
+            "shock": _shock("article", shape),
+            "outputs": {"field_interval": end / 20, "history_interval": 1e-5}}
+
+
+def _run_concept(name: str, raw: dict, out_dir: str, echo) -> tuple[object, float, str]:
+    """Run a concept's scene into ``out_dir/name``; returns (run or None, wall time, status)."""
+    t0 = time.perf_counter()
+    path = os.path.join(out_dir, name)
+    try:
+        result = run(load_scene(raw), path)
+        status = result.status
+    except UnstableRun as exc:
+        echo(f"  {name}: unstable: {exc}")
+        return None, time.perf_counter() - t0, "unstable"
+    return result, time.perf_counter() - t0, status
+
+
+def concepts(rep: Report, ctx: Context):
+    """Each concept sized by its closed form and run: the crushable pad, on the fixture and on the striker."""
+    rep.heading("3. The concepts as finite-element runs")
+    shape, cfg, out_dir, echo = ctx.shape, ctx.cfg, ctx.out_dir, ctx.echo
+    d = crushable_design(shape)
+    rep.value("crushable_design", d)
+    rep.text(f"**Crushable pad** ({FOAM}, plateau {d['plateau'] / 1e6:.3g} MPa). The pad must push the article "
+             f"through a spreader, and the spreader must itself reach 10,000 g on the foam's stress: a plate of "
+             f"areal mass w leaves sigma_p - w A_g for the article, so a steel plate thicker than "
+             f"{d['steel_plate_limit'] * 1e3:.1f} mm cannot be driven at all, and a steel plate this thin cannot "
+             f"carry the article's reaction. The runs take a stiff sandwich spreader of {SPREADER['areal_mass']:g} "
+             f"kg/m^2 as rigid (its bending left out): area m A_g / (sigma_p - w A_g) = {d['area']:.4f} m^2 (radius "
+             f"{d['radius'] * 1e3:.0f} mm; the article alone would need {d['article_alone_area']:.4f} m^2, `shockfem programmer`'s sizing), spreader "
+             f"{d['spreader_mass']:.2f} kg. With a striker of {STRIKER_RATIO:g} times the payload "
+             f"({d['striker_mass']:.0f} kg at {d['striker_speed']:.1f} m/s) the relative stroke is "
+             f"{d['stroke_design']:.3f} m: a pad {d['pad_thickness']:.3f} m thick at densification "
+             f"{d['densification']:g}, weighing {d['pad_mass']:.1f} kg. The closed form leaves out the pad's own "
+             "inertia and the crush front's momentum (rho v^2 / eps_d at the face the foam meets at speed); "
+             "the runs have both, with the pad on the fixture (the striker meets its far face) and on the "
+             "striker (it meets the spreader).")
+    rows = []
+    for pad_on in ("fixture", "striker"):
+        echo(f"  crushable pad on the {pad_on}")
+        raw = crushable_scene(d, pad_on, shape, cfg)
+        result, wall, status = _run_concept(f"crushable_on_{pad_on}", raw, out_dir, echo)
+        fixture = ["spreader", "pad"] if pad_on == "fixture" else ["spreader"]
+        rows.append(_concept_row(f"crushable, pad on the {pad_on}", result, wall, status, d, fixture))
+        if result is not None:
+            _pulse_figure(rep, result, f"crushable, pad on the {pad_on}")
+    _concept_table(rep, "crushable", rows)
+
+
+CONCEPT_HEADER = ["concept", "status", "fixture mass [kg]", "peak [g]", "duration [ms]", "velocity change [m/s]",
+                  "shape", "band", "worst excess [-]", "apparent restitution [-]", "energy taken up [MJ]",
+                  "article von Mises / yield [-]", "energy balance [-]", "elements", "wall [s]"]
+CONCEPT_FORMATS = ["{}", "{}", "{:.2f}", "{:.0f}", "{:.3f}", "{:.1f}", "{}", "{}", "{:.3f}", "{:.3f}", "{:.4g}",
+                   "{:.3f}", "{:.1e}", "{}", "{:.1f}"]
+
+
+def _concept_row(concept: str, result, wall: float, status: str, d: dict, fixture_bodies: list[str]) -> list:
+    """One concept run's line: the article's pulse against the band, the fixture's mass, the energy
+    the programmer took up, the striker's apparent restitution on the payload, the article's peak
+    stress over its yield, the energy balance and the cost."""
+    if result is None:
+        return [concept, status] + [float("nan")] * (len(CONCEPT_HEADER) - 4) + [0, wall]
+    s = result.summary
+    channel = s["shock"]["channels"]["article"]
+    pulse, tol = channel["pulse"], channel["tolerance"]
+    bodies = s["bodies"]
+    V = d["striker_speed"]
+    v_striker = -bodies["striker"]["velocity_final"][-1]
+    v_article = -bodies["article"]["velocity_final"][-1]
+    e = s["energy"]
+    yield_article = to_si(LIBRARY[ARTICLE["library"]]["hardening_curve"][0][1], "pressure")
+    return [concept, s["status"], sum(bodies[b]["mass"] for b in fixture_bodies), pulse["peak_g"],
+            pulse["duration"] * 1e3, pulse["velocity_change"], channel["shape"]["classified"],
+            "pass" if tol["passed"] else "fail", tol["worst_excess"], (v_article - v_striker) / V,
+            (e["initial_total"] - e["kinetic"]) / 1e6, bodies["article"]["max_von_mises"] / yield_article,
+            e["balance_error"], s["elements"], wall]
+
+
+def _concept_table(rep: Report, name: str, rows: list[list]):
+    rep.table(f"concepts_{name}", CONCEPT_HEADER, rows, CONCEPT_FORMATS)
+
+
+def _pulse_figure(rep: Report, result, concept: str):
+    plt = pyplot()
+    h = result.history
+    t = h["time"]
+    fig, ax = plt.subplots(figsize=(7, 3.5))
+    a = h["article.a_z"] / G0
+    ax.plot(t * 1e3, -a, label="article (unfiltered)")
+    ax.axhline(PEAK / G0, color="k", lw=0.8, ls="--", label="10,000 g")
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("acceleration [g]")
+    ax.legend()
+    name = "pulse_" + "".join(c if c.isalnum() else "_" for c in concept).strip("_") + ".png"
+    rep.figure(name, f"{concept}: the article's acceleration (rigid-body mean, along the push)", fig)
+
+
+SECTIONS = (("what the specification means", specification), ("what it asks of the machine", machine),
+            ("the concepts as finite-element runs", concepts))
+
+
+def run_study(size: str = "default", out_dir: str = "results/fixture", echo=print) -> str:
+    """Run the study's sections in order into ``out_dir``; returns the report's path."""
+    started = time.perf_counter()
+    rep = Report(out_dir, "Fixture study (white paper task 2)")
+    rep.text(f"`shockfem study fixture --size {size}`; every number below was computed by this run. The closed "
+             "forms: `../shared/references/fixtures.md`, `docs/programmers.md`; the study: `docs/fixture.md`.")
+    ctx = Context(SIZES[size], out_dir, echo)
+    for k, (title, section) in enumerate(SECTIONS, 1):
+        echo(f"{k}/{len(SECTIONS)} {title}")
+        section(rep, ctx)
+    return rep.finish(started, echo)
