@@ -235,7 +235,7 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
         coords = coords + np.array(list(body.position) + [0.0] * (3 - gdim))
     if body.orientation is not None:
         # turned about its position: x = p + R (X - p)
-        p = np.asarray(body.position, dtype=float)
+        p = np.array(list(body.position) + [0.0] * (3 - gdim))
         coords = p + (coords - p) @ np.reshape(body.orientation, (3, 3)).T
     # only the nodes of cells (a construction point, such as an arc's centre, also gets a node)
     used = np.isin(node_tags, cells)

@@ -1,7 +1,10 @@
-"""A body's orientation in 3D: the rotation that turns it, as drawn (its own axis along z), about its
-``position``.  A scene gives it as ``orientation = {axis = [x, y, z], angle = "10 deg"}`` (a turn by
-the angle about the axis, right-handed) or ``orientation = {direction = [x, y, z]}`` (the body's own z
-axis along the direction, by the smallest turn).  The rotation is a 3x3 matrix R, x = p + R (X - p).
+"""A body's orientation: the rotation that turns it, as drawn (its own axis along z), about its
+``position``.  In 3D a scene gives it as ``orientation = {axis = [x, y, z], angle = "10 deg"}`` (a
+turn by the angle about the axis, right-handed) or ``orientation = {direction = [x, y, z]}`` (the
+body's own z axis along the direction, by the smallest turn).  In 2D (axisymmetric, plane strain)
+the only turn that keeps a body on the scene's axis is end over end, ``{direction = [0, -1]}``: a
+half turn about the radial axis, which takes (r, z) to (r, 2 z_p - z) (a projectile standing on its
+base instead of its nose).  The rotation is a 3x3 matrix R, x = p + R (X - p).
 """
 from __future__ import annotations
 
@@ -47,8 +50,7 @@ def read_orientation(ck: Checker, b: dict, path: str, gdim: int) -> tuple[float,
     at = f"{path}.orientation"
     o = b["orientation"]
     if gdim != 3:
-        ck.fail(at, "turning a body needs kinematics = '3d' (axisymmetric and plane-strain bodies keep their axis)")
-        return None
+        return _end_over_end(ck, o, at)
     if not isinstance(o, dict):
         ck.fail(at, "must be a table: {axis = [x, y, z], angle = \"10 deg\"} or {direction = [x, y, z]}")
         return None
@@ -68,3 +70,18 @@ def read_orientation(ck: Checker, b: dict, path: str, gdim: int) -> tuple[float,
         ck.fail(f"{at}.axis", "missing or the zero vector: give the axis to turn about, e.g. [1, 0, 0]")
         return None
     return tuple(axis_angle(axis, angle).ravel())
+
+
+def _end_over_end(ck: Checker, o, at: str) -> tuple[float, ...] | None:
+    """A 2D body's orientation: as drawn ({direction = [0, 1]}) or end over end ({direction = [0, -1]},
+    the half turn about the radial axis); any other turn would take it off the scene's axis."""
+    words = ("in 2D a body keeps its axis and can only be turned end over end: orientation = {direction = "
+             "[0, -1]} (any other turn needs kinematics = '3d')")
+    if not isinstance(o, dict) or set(o) != {"direction"}:
+        ck.fail(at, words)
+        return None
+    d = ck.vector(o, "direction", at, "dimensionless", 2, (0.0, 1.0))
+    if d[0] != 0.0 or d[1] == 0.0:
+        ck.fail(f"{at}.direction", words + f", got {list(d)}")
+        return None
+    return None if d[1] > 0 else tuple(axis_angle([1.0, 0.0, 0.0], math.pi).ravel())

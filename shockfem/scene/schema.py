@@ -275,7 +275,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         orientation = read_orientation(ck, b, path, gdim)
         if orientation is not None and not isinstance(b.get("velocity", []), list):
             # a single speed is along the body's own axis, turned with it
-            vel = turned(orientation, vel)
+            vel = turned(orientation, list(vel) + [0.0] * (3 - gdim))[:gdim]
         if kin == "axisymmetric":
             if pos[0] != 0.0:
                 ck.fail(f"{path}.position", "axisymmetric bodies sit on the axis: the r component must be 0")

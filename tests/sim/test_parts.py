@@ -250,3 +250,36 @@ def test_a_turned_body_is_meshed_turned():
                                    - rel[:, :, None] * rel[:, None, :])).sum(axis=0)
     axis = np.linalg.eigh(inertia)[1][:, 0]                     # the smallest moment
     assert abs(axis @ R[:, 2]) == pytest.approx(1.0, abs=1e-9)
+
+
+def test_a_2d_body_turned_end_over_end_lands_as_its_mirror_image():
+    """Axisymmetric, orientation = {direction = [0, -1]}: a 4340 penetrator turned end over end about its
+    position p is its drawn mesh mirrored, z -> 2 p_z - z, node for node (round-off), its single speed
+    turned with it; falling base first at 5 m/s onto a rigid floor it rebounds as the drawn body does
+    flying base first up onto a rigid ceiling, its mirror image (round-off)."""
+    import numpy as np
+    from shockfem.verify.scenes import solve
+    p, L, gap = 0.201, 0.2, 1e-4
+
+    def scene(flipped):
+        body = {"name": "p", "material": "s", "shape": "projectile", "radius": 0.03, "length": L, "crh": 3.0,
+                "meplat_radius": 0.003, "element_size": 0.006,
+                "refine": [{"region": "nose", "size": 0.003, "distance": 0.024}],
+                "position": [0.0, p], "velocity": "5 m/s"}
+        if flipped:
+            body["orientation"] = {"direction": [0, -1]}
+            wall = {"point": [0.0, p - L - gap], "normal": [0.0, 1.0]}      # a floor under the base
+        else:
+            wall = {"point": [0.0, p + L + gap], "normal": [0.0, -1.0]}     # a ceiling over it
+        return {"scene": {"name": "flip", "kinematics": "axisymmetric", "end_time": 1.6e-4},
+                "materials": {"s": {"library": "steel_4340"}}, "bodies": [body],
+                "contact": [{"name": "wall", "a": "p.base", "wall": wall, "penalty_scale": 1.0}],
+                "outputs": {"field_interval": 1.6e-4, "history_interval": 1e-6}}
+    x, v, pair = {}, {}, {}
+    for flipped in (False, True):
+        solver, _ = solve(scene(flipped))
+        x[flipped], v[flipped], pair[flipped] = solver.model.X0, solver.body_means()[0][0], solver.contacts[0]
+    mirrored = x[False] * np.array([1.0, -1.0]) + np.array([0.0, 2 * p])
+    assert np.abs(x[True] - mirrored).max() < 1e-15
+    assert v[True][1] == pytest.approx(-v[False][1], rel=1e-9) and v[False][1] < -4.0   # rebounded
+    assert pair[True].intervals[0][0] == pytest.approx(pair[False].intervals[0][0], rel=1e-9)

@@ -244,8 +244,20 @@ def test_orientation_turns_the_body_and_a_single_speed_follows_its_axis():
     assert resolve(_oriented({"direction": [0, 0, -2]})).bodies[0].axis == pytest.approx((0.0, 0.0, -1.0))
 
 
+def test_a_2d_body_turns_end_over_end_and_its_single_speed_with_it():
+    """In 2D the one turn that keeps a body on the axis: {direction = [0, -1]}, a half turn about the
+    radial axis (its matrix takes z to -z); [0, 1] is the body as drawn."""
+    import numpy as np
+    b = resolve(_oriented({"direction": [0, -1]}, kinematics="axisymmetric")).bodies[0]
+    assert np.allclose(np.reshape(b.orientation, (3, 3)), np.diag([1.0, -1.0, -1.0]), atol=1e-15)
+    assert b.velocity == pytest.approx((0.0, 5.0))                          # -5 m/s along the turned axis
+    assert resolve(_oriented({"direction": [0, 2]}, kinematics="axisymmetric")).bodies[0].orientation is None
+
+
 @pytest.mark.parametrize("orientation, kinematics, field, words", [
     ({"axis": [1, 0, 0], "angle": "10 deg"}, "axisymmetric", "orientation", "kinematics = '3d'"),
+    ({"direction": [1, 0]}, "axisymmetric", "orientation.direction", "end over end"),
+    ({"direction": [0, 0, -1]}, "plane-strain", "orientation.direction", "needs 2 components"),
     ({"axis": [0, 0, 0], "angle": "10 deg"}, "3d", "orientation.axis", "zero vector"),
     ({"axis": [1, 0, 0]}, "3d", "orientation.angle", "missing"),
     ({"axis": [1, 0, 0], "angle": "10 m"}, "3d", "orientation.angle", "expected an angle"),
