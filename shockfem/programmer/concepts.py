@@ -69,6 +69,20 @@ def crushable_pad(req: Requirement, plateau: float, densification: float, densit
     return c
 
 
+def least_throttling_pressure(speed: float, density: float, discharge: float) -> float:
+    """The pressure a piston at ``speed`` makes with the orifice as large as the piston itself,
+    rho V^2 / (2 Cd^2): no orifice throttles it to less (fixtures.md)."""
+    return density * speed ** 2 / (2.0 * discharge ** 2)
+
+
+def metering_pin_area(stroke: float, piston_area: float, force: float, mass: float, speed: float, density: float,
+                      discharge: float) -> float:
+    """The orifice area that holds a constant ``force`` on a ``mass`` met at ``speed``, at ``stroke`` [m]:
+    (A^(3/2) / Cd) sqrt(rho / (2F)) sqrt(V^2 - 2 F x / m) (fixtures.md; incompressible, quasi-steady)."""
+    return (piston_area ** 1.5 / discharge * math.sqrt(density / (2.0 * force))
+            * math.sqrt(max(speed ** 2 - 2.0 * force * stroke / mass, 0.0)))
+
+
 def orifice_dashpot(req: Requirement, fluid_density: float, discharge: float, bulk_modulus: float,
                     max_pressure: float, heat_capacity: float) -> Concept:
     """A piston pushing liquid through an orifice, sized at ``max_pressure`` [Pa] (the smallest piston):
@@ -78,7 +92,7 @@ def orifice_dashpot(req: Requirement, fluid_density: float, discharge: float, bu
     V0 = req.velocity_change
     c = Concept("orifice dashpot", f"incompressible quasi-steady orifice law, Cd = {discharge:g}, liquid "
                                    f"{fluid_density:g} kg/m^3; compressibility, friction and seal leakage left out")
-    p_min = fluid_density * V0 ** 2 / (2.0 * discharge ** 2)
+    p_min = least_throttling_pressure(V0, fluid_density, discharge)
     sound = math.sqrt(bulk_modulus / fluid_density)
     mach = V0 / sound
     c.sizes += [("least pressure that can throttle", p_min, "Pa"), ("piston Mach number in the liquid", mach, "-"),
@@ -93,8 +107,7 @@ def orifice_dashpot(req: Requirement, fluid_density: float, discharge: float, bu
     stroke = constant_force_stroke(req)
 
     def pin_area(x):
-        return A ** 1.5 / discharge * math.sqrt(fluid_density / (2.0 * F)) * math.sqrt(max(V0 ** 2 - 2.0 * F * x / m,
-                                                                                              0.0))
+        return metering_pin_area(x, A, F, m, V0, fluid_density, discharge)
     c.sizes += [("piston area", A, "m^2"), ("piston diameter", _circle_diameter(A), "m"),
                 ("stroke (constant force)", stroke, "m")]
     for frac in (0.0, 0.25, 0.5, 0.75, 0.95):

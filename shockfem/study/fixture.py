@@ -20,21 +20,25 @@ Sizes: ``smoke`` (under a minute, for tests: coarse meshes), ``default``.
 """
 from __future__ import annotations
 
+import json
 import math
 import os
 import time
 from dataclasses import dataclass
 from typing import Callable
 
+import numpy as np
 from scipy.optimize import brentq
 
 from ..amplifier.gain import collide, design
-from ..api import load_scene, run
 from ..errors import UnstableRun
 from ..output.figures import pyplot
+from ..output.history import read_history
 from ..parts.catalog import PARTS
-from ..programmer.concepts import crushable_pad
+from ..programmer.concepts import crushable_pad, least_throttling_pressure, metering_pin_area
 from ..programmer.requirement import SHAPES, requirement
+from ..runner import run_scene
+from ..scene import resolve
 from ..scene.library import LIBRARY
 from ..units import FT, G0, LB, to_si
 from .report import Report
@@ -57,7 +61,13 @@ CHAIN_MASSES = 5
 # sigma_p - w A for the article, so a steel plate thicker than sigma_p / (rho A) (4.4 mm on this
 # foam) cannot be driven at all.  The runs take a stiff sandwich spreader of 10 kg/m^2 as rigid.
 FOAM = "polyurethane_foam"
+CARRIER_STEEL = "high_strength_steel"           # the fixtures' metal parts
 SPREADER = {"areal_mass": 10.0, "thickness": 0.02}
+# dashpot concept: the housing and its liquid ride on the striker (a fixture carrying the stroke would
+# need a member longer than the stroke to reach 10,000 g itself: rho L A_g is 1.15 GPa for 1.5 m of
+# steel); the article and a light piston enter its bore, which the article's calibre sets.
+OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
+DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
 SIZES = {
     "smoke": {"h_article": 0.006, "h_carrier": 0.012, "h_pad": 0.03, "end_margin": 1.3},
     "default": {"h_article": 0.003, "h_carrier": 0.006, "h_pad": 0.012, "end_margin": 1.3},
@@ -187,7 +197,7 @@ def crushable_design(shape: str) -> dict:
     return {"plateau": plateau, "densification": densification, "area": area, "radius": math.sqrt(area / math.pi),
             "pad_thickness": thickness, "pad_mass": rho_foam * area * thickness, "spreader_mass": m_spreader,
             "article_mass": m_article, "striker_mass": M, "striker_speed": V, "stroke_design": stroke,
-            "steel_plate_limit": plateau / (to_si(LIBRARY["high_strength_steel"]["density"], "density") * PEAK),
+            "steel_plate_limit": plateau / (to_si(LIBRARY[CARRIER_STEEL]["density"], "density") * PEAK),
             "article_alone_area": dict((label, value) for label, value, _ in alone.sizes)["area"]}
 
 
@@ -235,17 +245,93 @@ def crushable_scene(d: dict, pad_on: str, shape: str, cfg: dict) -> dict:
             "outputs": {"field_interval": end / 20, "history_interval": 1e-5}}
 
 
-def _run_concept(name: str, raw: dict, out_dir: str, echo) -> tuple[object, float, str]:
-    """Run a concept's scene into ``out_dir/name``; returns (run or None, wall time, status)."""
+def dashpot_design(shape: str) -> dict:
+    """The fluid dashpot for the specification: a bore just wider than the article, a piston the article
+    stands on, the metering pin that holds the force m A_g on article and piston over the relative stroke
+    against a striker of ``STRIKER_RATIO`` times the payload (``programmer.concepts.metering_pin_area``
+    with the reduced mass), its opening never wider than the bore."""
+    m_article = ARTICLE_LB * LB
+    r_bore = ARTICLE["radius"] + DASHPOT["clearance"]
+    area = math.pi * r_bore ** 2
+    m_piston = to_si(LIBRARY[CARRIER_STEEL]["density"], "density") * area * DASHPOT["piston_thickness"]
+    payload = m_article + m_piston
+    req = requirement(shape, PEAK, DURATION, payload)
+    M = STRIKER_RATIO * payload
+    V = striker_speed(payload, M, req.velocity_change)
+    reduced = payload * M / (payload + M)
+    force = payload * PEAK
+    stroke = reduced * V * V / (2 * force)
+    rho, cd = OIL["density"], OIL["discharge"]
+    strokes = np.linspace(0.0, stroke, DASHPOT["pin_points"])
+    pin = [min(metering_pin_area(x, area, force, reduced, V, rho, cd), area) for x in strokes]
+    p_least = least_throttling_pressure(V, rho, cd)
+    return {"bore_radius": r_bore, "piston_area": area, "piston_mass": m_piston, "article_mass": m_article,
+            "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
+            "least_pressure": p_least, "initial_overshoot": p_least * area / force - 1.0, "stroke_design": stroke,
+            "column": DASHPOT["column_over_stroke"] * stroke, "pin": [[float(x), float(a)] for x, a in zip(strokes, pin)],
+            "liquid_mass": rho * area * DASHPOT["column_over_stroke"] * stroke}
+
+
+def dashpot_scene(d: dict, shape: str, cfg: dict) -> dict:
+    """Striker-borne housing (rigid, its bore full of oil) moving up (+z) onto a piston that carries the
+    article, turned end over end to stand on its base; the liquid between the bore's floor and the piston
+    throttles through the metering pin."""
+    L_article = article_length(ARTICLE["radius"], ARTICLE["crh"], d["article_mass"],
+                               to_si(LIBRARY[ARTICLE["library"]]["density"], "density"))
+    floor, t_p, column = 0.05, DASHPOT["piston_thickness"], d["column"]
+    z_piston = floor + column
+    z_article = z_piston + t_p + L_article               # its position: the nose end, turned end over end
+    depth = column + t_p + L_article + 0.02
+    R_h = 2.0 * d["bore_radius"]
+    housing_volume = math.pi * (R_h ** 2 * (floor + depth) - d["bore_radius"] ** 2 * depth)
+    end = cfg["end_margin"] * DURATION
+    h = cfg["h_article"]
+    return {"scene": {"name": "fixture_dashpot", "kinematics": "axisymmetric", "end_time": end},
+            "materials": {"article_steel": {"library": ARTICLE["library"]}, "steel": {"library": CARRIER_STEEL},
+                          "striker": {"density": d["striker_mass"] / housing_volume, "youngs_modulus": 210e9,
+                                      "poisson_ratio": 0.3}},
+            "bodies": [
+                {"name": "housing", "material": "striker", "shape": "carrier", "radius": R_h, "length": floor + depth,
+                 "seat_radius": d["bore_radius"], "seat_depth": depth, "velocity": d["striker_speed"], "rigid": True,
+                 "element_size": cfg["h_pad"]},
+                {"name": "piston", "material": "steel", "shape": "cylinder", "radius": d["bore_radius"], "length": t_p,
+                 "position": [0.0, z_piston], "element_size": h},
+                {"name": "article", "material": "article_steel", "shape": "projectile", "radius": ARTICLE["radius"],
+                 "length": L_article, "crh": ARTICLE["crh"], "meplat_radius": ARTICLE["meplat_radius"],
+                 "position": [0.0, z_article], "orientation": {"direction": [0, -1]}, "element_size": h,
+                 "refine": [{"region": "nose", "size": h / 2, "distance": 4 * h}]}],
+            "cavity": [{"name": "oil", "walls": ["housing.seat_floor", "piston.bottom"],
+                        "volume": d["piston_area"] * column,
+                        "liquid": {"density": OIL["density"], "bulk_modulus": OIL["bulk_modulus"]},
+                        "orifice": {"area_curve": d["pin"], "piston_area": d["piston_area"],
+                                    "discharge": OIL["discharge"]}}],
+            "contact": [{"name": "seat", "a": "piston.top", "b": "article.base", "penalty_scale": 1.0}],
+            "shock": _shock("article", shape),
+            "outputs": {"field_interval": end / 20, "history_interval": 1e-5}}
+
+
+@dataclass(frozen=True)
+class ConceptRun:
+    """A concept's finished run, read back from its run directory."""
+    path: str
+    summary: dict                 # summary.json
+    history: dict                 # history.csv columns by name (SI)
+
+
+def _run_concept(name: str, raw: dict, out_dir: str, echo) -> tuple[ConceptRun | None, float, str]:
+    """Run a concept's scene into ``out_dir/name`` (the run directory of ``shockfem run``: XDMF fields,
+    histories, summary); returns (the run or None, wall time, status)."""
     t0 = time.perf_counter()
     path = os.path.join(out_dir, name)
     try:
-        result = run(load_scene(raw), path)
-        status = result.status
+        run_scene(resolve(raw), path, progress=False, quiet=True)
     except UnstableRun as exc:
         echo(f"  {name}: unstable: {exc}")
         return None, time.perf_counter() - t0, "unstable"
-    return result, time.perf_counter() - t0, status
+    with open(os.path.join(path, "summary.json")) as fh:
+        summary = json.load(fh)
+    result = ConceptRun(path, summary, read_history(os.path.join(path, "history.csv"))[0])
+    return result, time.perf_counter() - t0, summary["status"]
 
 
 def concepts(rep: Report, ctx: Context):
@@ -279,6 +365,38 @@ def concepts(rep: Report, ctx: Context):
             _pulse_figure(rep, result, f"crushable, pad on the {pad_on}")
     _concept_table(rep, "crushable", rows)
 
+    d = dashpot_design(shape)
+    rep.value("dashpot_design", {k: v for k, v in d.items() if k != "pin"})
+    rep.text(f"**Fluid dashpot.** The stroke must ride on the striker: a fixture member as long as the stroke "
+             f"would itself need rho L A_g of stress to reach 10,000 g (1.15 GPa for 1.5 m of steel). So the striker "
+             f"carries a housing whose bore, {d['bore_radius'] * 1e3:.0f} mm in radius (the article's calibre and a "
+             f"{DASHPOT['clearance'] * 1e3:g} mm clearance), holds {d['liquid_mass']:.1f} kg of oil (K "
+             f"{OIL['bulk_modulus'] / 1e9:g} GPa, Cd {OIL['discharge']:g}); the article, turned end over end, stands "
+             f"on a {DASHPOT['piston_thickness'] * 1e3:g} mm piston ({d['piston_mass']:.2f} kg) at the liquid's top "
+             f"and enters the bore as the housing closes. Holding m A_g = {d['force'] / 1e6:.4g} MN on the "
+             f"{d['piston_area'] * 1e4:.2f} cm^2 piston takes {d['design_pressure'] / 1e6:.0f} MPa; but at the "
+             f"striker's {d['striker_speed']:.1f} m/s no orifice throttles below rho V^2 / (2 Cd^2) = "
+             f"{d['least_pressure'] / 1e6:.0f} MPa: by the incompressible law the pulse would start "
+             f"{d['initial_overshoot']:.0%} over the peak. The metering pin (`shockfem programmer`'s closed form with the reduced mass of striker and "
+             f"payload, {DASHPOT['pin_points']} points over the {d['stroke_design']:.3f} m relative stroke) opens no "
+             f"wider than the bore; the liquid column is {d['column']:.3f} m ({DASHPOT['column_over_stroke']:g} "
+             "times the stroke: the oil compresses by p / K before it flows).")
+    echo("  fluid dashpot")
+    result, wall, status = _run_concept("dashpot", dashpot_scene(d, shape, cfg), out_dir, echo)
+    rows = [_concept_row("fluid dashpot, metering pin", result, wall, status, d, ["piston"], striker="housing")]
+    if result is not None:
+        _pulse_figure(rep, result, "fluid dashpot")
+        oil = result.summary["cavities"]["oil"]
+        pulse = result.summary["shock"]["channels"]["article"]["pulse"]
+        rep.value("dashpot_peak_pressure_Pa", oil["max_pressure"])
+        rep.text(f"The run: the oil does not jump to {d['least_pressure'] / 1e6:.0f} MPa; compressible, it is a spring "
+                 f"K A^2 / V that the striker first winds up, and the pressure rises over "
+                 f"{pulse['rise_time'] * 1e3:.2f} ms to {oil['max_pressure'] / 1e6:.0f} MPa, so the pulse is rounded "
+                 f"({result.summary['shock']['channels']['article']['shape']['classified']}) rather than initial-peak. "
+                 f"The orifice throttled {oil['energy_throttled'] / 1e6:.3f} MJ of the {oil['energy_taken'] / 1e6:.3f} "
+                 f"MJ the liquid took; {oil['mass_out']:.2f} kg of oil left through it.")
+    _concept_table(rep, "dashpot", rows)
+
 
 CONCEPT_HEADER = ["concept", "status", "fixture mass [kg]", "peak [g]", "duration [ms]", "velocity change [m/s]",
                   "shape", "band", "worst excess [-]", "apparent restitution [-]", "energy taken up [MJ]",
@@ -287,7 +405,8 @@ CONCEPT_FORMATS = ["{}", "{}", "{:.2f}", "{:.0f}", "{:.3f}", "{:.1f}", "{}", "{}
                    "{:.3f}", "{:.1e}", "{}", "{:.1f}"]
 
 
-def _concept_row(concept: str, result, wall: float, status: str, d: dict, fixture_bodies: list[str]) -> list:
+def _concept_row(concept: str, result, wall: float, status: str, d: dict, fixture_bodies: list[str],
+                 striker: str = "striker") -> list:
     """One concept run's line: the article's pulse against the band, the fixture's mass, the energy
     the programmer took up, the striker's apparent restitution on the payload, the article's peak
     stress over its yield, the energy balance and the cost."""
@@ -297,13 +416,15 @@ def _concept_row(concept: str, result, wall: float, status: str, d: dict, fixtur
     channel = s["shock"]["channels"]["article"]
     pulse, tol = channel["pulse"], channel["tolerance"]
     bodies = s["bodies"]
+    # speeds along the push, whichever way the scene points it
+    sense = math.copysign(1.0, bodies[striker]["velocity_final"][-1] or 1.0)
     V = d["striker_speed"]
-    v_striker = -bodies["striker"]["velocity_final"][-1]
-    v_article = -bodies["article"]["velocity_final"][-1]
+    v_striker = sense * bodies[striker]["velocity_final"][-1]
+    v_article = sense * bodies["article"]["velocity_final"][-1]
     e = s["energy"]
     yield_article = to_si(LIBRARY[ARTICLE["library"]]["hardening_curve"][0][1], "pressure")
     return [concept, s["status"], sum(bodies[b]["mass"] for b in fixture_bodies), pulse["peak_g"],
-            pulse["duration"] * 1e3, pulse["velocity_change"], channel["shape"]["classified"],
+            pulse["duration"] * 1e3, pulse["sign"] * pulse["velocity_change"], channel["shape"]["classified"],
             "pass" if tol["passed"] else "fail", tol["worst_excess"], (v_article - v_striker) / V,
             (e["initial_total"] - e["kinetic"]) / 1e6, bodies["article"]["max_von_mises"] / yield_article,
             e["balance_error"], s["elements"], wall]
@@ -318,8 +439,8 @@ def _pulse_figure(rep: Report, result, concept: str):
     h = result.history
     t = h["time"]
     fig, ax = plt.subplots(figsize=(7, 3.5))
-    a = h["article.a_z"] / G0
-    ax.plot(t * 1e3, -a, label="article (unfiltered)")
+    sign = result.summary["shock"]["channels"]["article"]["pulse"]["sign"]      # along the push
+    ax.plot(t * 1e3, sign * h["article.a_z"] / G0, label="article (unfiltered)")
     ax.axhline(PEAK / G0, color="k", lw=0.8, ls="--", label="10,000 g")
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("acceleration [g]")
