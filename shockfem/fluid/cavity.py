@@ -6,13 +6,9 @@ outward normals face the liquid; the cavity's other walls are held still):
     dV/dt    = -sum over wall facets of v_f . S_f       S_f the facet's outward area vector (2 pi r ds
                                                         in axisymmetry), v_f its mean velocity
     M        : the liquid's mass, less what the orifice has let out;  rho = M / V
-    p        = K / n ((rho / rho0)^n - 1)               gauge pressure, Tait's law (n = 1: linear, the
-                                                        bulk modulus K at rest); never below 0 (the
-                                                        liquid cavitates rather than pulls)
-    mdot     = Cd a rho u,  u = min(sqrt(2 p / rho), c) the orifice jet (Bernoulli, quasi-steady,
-                                                        into a space at zero gauge pressure), held at
-                                                        the liquid's sound speed c = sqrt(dp/drho);
-                                                        taken at the step's end (backward Euler)
+    p        = K / n ((rho / rho0)^n - 1)               gauge pressure, Tait's law (``liquid.py``)
+    mdot     = Cd a rho min(sqrt(2 p / rho), c)         the orifice jet (``liquid.py``), taken at the
+                                                        step's end (backward Euler)
     f        = -p S_f / (nodes per facet) on each wall node: the liquid pushes the walls away from it,
                                                         on the current geometry (a follower load)
 
@@ -33,6 +29,7 @@ from ..contact.surfaces import NodeExchange, area_vectors, build_surface
 from ..errors import ModelError
 from ..model import Model
 from ..scene.specs import Cavity
+from . import liquid
 
 
 class LiquidCavity:
@@ -86,26 +83,15 @@ class LiquidCavity:
         return self.mass_liquid / (self.spec.density * self.volume)
 
     def pressure_of(self, ratio: float) -> float:
-        n, K = self.spec.tait_exponent, self.spec.bulk_modulus
-        return max(0.0, K / n * (ratio ** n - 1.0))
+        return liquid.pressure(ratio, self.spec.bulk_modulus, self.spec.tait_exponent)
 
     def sound_speed(self, ratio: float) -> float:
-        """c = sqrt(dp/drho) = sqrt(K (rho/rho0)^(n-1) / rho0)."""
-        n, K = self.spec.tait_exponent, self.spec.bulk_modulus
-        return math.sqrt(K * ratio ** (n - 1.0) / self.spec.density)
+        return liquid.sound_speed(ratio, self.spec.bulk_modulus, self.spec.tait_exponent, self.spec.density)
 
     def stored_energy(self) -> float:
-        """The compression energy of the liquid in the cavity, M int p / rho^2 drho from rho0 [J]."""
-        n, K, rho0 = self.spec.tait_exponent, self.spec.bulk_modulus, self.spec.density
-        r = self.density_ratio()
-        if r <= 1.0:
-            return 0.0
-        # int_1^r K/n (s^n - 1) / (rho0 s^2) ds
-        if abs(n - 1.0) < 1e-12:
-            e = K / rho0 * (math.log(r) + 1.0 / r - 1.0)
-        else:
-            e = K / (n * rho0) * ((r ** (n - 1.0) - 1.0) / (n - 1.0) + 1.0 / r - 1.0)
-        return self.mass_liquid * e
+        """The compression energy of the liquid in the cavity [J]."""
+        return self.mass_liquid * liquid.compression_energy(self.density_ratio(), self.spec.bulk_modulus,
+                                                            self.spec.tait_exponent, self.spec.density)
 
     def stroke(self) -> float:
         return (self.initial_volume - self.volume) / self.spec.piston_area if self.spec.piston_area else 0.0
@@ -117,13 +103,9 @@ class LiquidCavity:
 
     def _mass_flow(self, mass: float) -> float:
         """The orifice's mass rate [kg/s] with ``mass`` of liquid in the current volume."""
-        ratio = mass / (self.spec.density * self.volume)
-        p = self.pressure_of(ratio)
-        if p <= 0.0:
-            return 0.0
-        rho = self.spec.density * ratio
-        jet = min(math.sqrt(2.0 * p / rho), self.sound_speed(ratio))
-        return self.spec.discharge * self.orifice_area() * rho * jet
+        return liquid.orifice_mass_flow(mass / (self.spec.density * self.volume), self.orifice_area(),
+                                        self.spec.discharge, self.spec.bulk_modulus, self.spec.tait_exponent,
+                                        self.spec.density)
 
     def _mass_out(self, dt: float) -> float:
         """The mass m the orifice lets out over the step, at the pressure it leaves behind (backward

@@ -86,7 +86,9 @@ def test_launcher_study_smoke(tmp_path):
 def test_fixture_study_smoke(tmp_path):
     """The fixture study's closed forms exactly (fixtures.md's table for 10,000 g, 5 ms), the striker
     that gives a payload the rectangle's velocity change through a programmer that keeps them
-    together, V = dV (1 + m / M), and every concept run completed with its energy balance within 1%."""
+    together, V = dV (1 + m / M), every concept run completed with its energy balance within 1%, the
+    lumped dashpot against its finite-element run, and the iterated dashpot inside the band in finite
+    elements."""
     results, report = _study("fixture", tmp_path / "fixture")
     for section in ("## 1. What 10,000 g for 5 ms means", "## 2. What it asks of the machine",
                     "## 3. The concepts as finite-element runs"):
@@ -109,6 +111,15 @@ def test_fixture_study_smoke(tmp_path):
     assert len(runs) >= 2
     for r in runs:
         assert r["status"] == "completed" and abs(r["energy balance [-]"]) < 0.01, r["concept"]
+    # section 4: the lumped dashpot agrees with the finite-element run of the same design (its liquid is the
+    # cavity's, lumped; the bodies' elasticity is what differs): peak and velocity change within 1%
+    lumped, fe = (dict(zip(results["tables"]["dashpot_lumped_vs_fe"]["columns"], r))
+                  for r in results["tables"]["dashpot_lumped_vs_fe"]["rows"])
+    for key in ("peak [g]", "velocity change [m/s]", "duration [ms]"):
+        assert fe[key] == pytest.approx(lumped[key], rel=0.01), key
+    # the design iterated on the lumped model, confirmed by finite elements: inside the band
+    (design,) = _rows(results, "dashpot_design", model="finite elements, the iterated design")
+    assert design["status"] == "completed" and design["band"] == "pass" and design["energy balance [-]"] < 0.01
     for png in os.listdir(tmp_path / "fixture"):
         if png.endswith(".png"):
             assert (tmp_path / "fixture" / png).stat().st_size > 10_000

@@ -1,0 +1,40 @@
+"""The laws of a compressible liquid and its orifice, shared by the finite-element cavity
+(``cavity.py``) and the lumped dashpot (``programmer/lumped_dashpot.py``).
+
+    p    = K / n ((rho / rho0)^n - 1)         gauge pressure, Tait's law (n = 1: linear, the bulk
+                                              modulus K at rest); never below 0 (the liquid cavitates
+                                              rather than pulls)
+    c    = sqrt(dp / drho) = sqrt(K (rho / rho0)^(n - 1) / rho0)
+    mdot = Cd a rho min(sqrt(2 p / rho), c)   the orifice jet (Bernoulli, quasi-steady, into a space
+                                              at zero gauge pressure), held at the sound speed
+"""
+from __future__ import annotations
+
+import math
+
+
+def pressure(ratio: float, K: float, n: float) -> float:
+    """Gauge pressure at the density ratio rho / rho0."""
+    return max(0.0, K / n * (ratio ** n - 1.0))
+
+
+def sound_speed(ratio: float, K: float, n: float, rho0: float) -> float:
+    return math.sqrt(K * ratio ** (n - 1.0) / rho0)
+
+
+def orifice_mass_flow(ratio: float, area: float, discharge: float, K: float, n: float, rho0: float) -> float:
+    """The orifice's mass rate [kg/s] from liquid at the density ratio ``ratio``."""
+    p = pressure(ratio, K, n)
+    if p <= 0.0:
+        return 0.0
+    rho = rho0 * ratio
+    return discharge * area * rho * min(math.sqrt(2.0 * p / rho), sound_speed(ratio, K, n, rho0))
+
+
+def compression_energy(ratio: float, K: float, n: float, rho0: float) -> float:
+    """The compression energy per unit mass of liquid at ``ratio``, int p / rho^2 drho from rho0 [J/kg]."""
+    if ratio <= 1.0:
+        return 0.0
+    if abs(n - 1.0) < 1e-12:
+        return K / rho0 * (math.log(ratio) + 1.0 / ratio - 1.0)
+    return K / (n * rho0) * ((ratio ** (n - 1.0) - 1.0) / (n - 1.0) + 1.0 / ratio - 1.0)
