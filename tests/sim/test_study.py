@@ -120,6 +120,11 @@ def test_fixture_study_smoke(tmp_path):
     # the design iterated on the lumped model, confirmed by finite elements: inside the band
     (design,) = _rows(results, "dashpot_design", model="finite elements, the iterated design")
     assert design["status"] == "completed" and design["band"] == "pass" and design["energy balance [-]"] < 0.01
+    # section 5: the chosen design at two meshes; its pulse is the lumped liquid's, the same to 1e-3
+    meshes = [dict(zip(results["tables"]["speed_against_error"]["columns"], r))
+              for r in results["tables"]["speed_against_error"]["rows"]]
+    assert len(meshes) == 2 and all(r["status"] == "completed" for r in meshes)
+    assert meshes[0]["peak [g]"] == pytest.approx(meshes[1]["peak [g]"], rel=1e-3)
     for png in os.listdir(tmp_path / "fixture"):
         if png.endswith(".png"):
             assert (tmp_path / "fixture" / png).stat().st_size > 10_000
