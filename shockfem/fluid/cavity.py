@@ -85,9 +85,6 @@ class LiquidCavity:
     def pressure_of(self, ratio: float) -> float:
         return liquid.pressure(ratio, self.spec.bulk_modulus, self.spec.tait_exponent)
 
-    def sound_speed(self, ratio: float) -> float:
-        return liquid.sound_speed(ratio, self.spec.bulk_modulus, self.spec.tait_exponent, self.spec.density)
-
     def stored_energy(self) -> float:
         """The compression energy of the liquid in the cavity [J]."""
         return self.mass_liquid * liquid.compression_energy(self.density_ratio(), self.spec.bulk_modulus,

@@ -17,18 +17,25 @@ def _grid(meshed):
     return grid
 
 
+def _framed(plotter, grid, dim: int, cut: bool):
+    """Point the camera: 2D face on; 3D from above one side, the mesh cut open along two half planes
+    through the axis (the quarter x > 0, y < 0 removed, whole cells, so the element edges show on the
+    cut) to show bores and cavities.  Returns the grid to draw."""
+    if dim == 3 and cut:
+        grid = grid.clip_box(bounds=(0, 1e3, -1e3, 0, -1e3, 1e3), invert=True, crinkle=True)
+        plotter.camera_position = [(1.0, -1.6, 0.9), (0, 0, 0), (0, 0, 1)]
+    else:
+        plotter.camera_position = "xy"
+    return grid
+
+
 def render_mesh(meshed, path: str, title: str = "", cut: bool = True):
     """A PNG of the mesh with its element edges, coloured by body; 3D meshes are cut open along
     two half planes through the axis (a quarter removed) to show bores and cavities."""
     pv = pyvista()
     grid = _grid(meshed)
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
-    if meshed.mesh.geometry.dim == 3 and cut:
-        # remove the quarter x > 0, y < 0 (whole cells, so the element edges show on the cut)
-        grid = grid.clip_box(bounds=(0, 1e3, -1e3, 0, -1e3, 1e3), invert=True, crinkle=True)
-        plotter.camera_position = [(1.0, -1.6, 0.9), (0, 0, 0), (0, 0, 1)]
-    else:
-        plotter.camera_position = "xy"
+    grid = _framed(plotter, grid, meshed.mesh.geometry.dim, cut)
     plotter.add_mesh(grid, scalars="body", show_edges=True, cmap="Pastel1", show_scalar_bar=False,
                      edge_color="#333333", line_width=0.5)
     if title:
@@ -60,11 +67,7 @@ def render_state(solver, path: str, field: str = "von_mises", title: str = "", c
     if bodies is not None:
         grid = grid.extract_cells(np.flatnonzero(np.isin(m.cell_body[:grid.n_cells], bodies)))
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
-    if mesh.geometry.dim == 3 and cut:
-        grid = grid.clip_box(bounds=(0, 1e3, -1e3, 0, -1e3, 1e3), invert=True, crinkle=True)
-        plotter.camera_position = [(1.0, -1.6, 0.9), (0, 0, 0), (0, 0, 1)]
-    else:
-        plotter.camera_position = "xy"
+    grid = _framed(plotter, grid, mesh.geometry.dim, cut)
     # no scalar bar: VTK's (9.x wheels) lays out its tick labels through std::regex, which aborts the
     # process here (std::bad_alloc in vtk::is_printf_format); the colour range is written instead
     shown = grid.cell_data[label]

@@ -31,6 +31,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize
 
 from ..amplifier.gain import collide, design
+from ..amplifier.interfaces import reduced_mass
 from ..errors import ModelError, UnstableRun
 from ..output.figures import pyplot
 from ..output.history import read_history
@@ -176,11 +177,14 @@ def article_length(radius: float, crh: float, mass: float, density: float) -> fl
     return brentq(lambda L: volume(L) * density - mass, 1.01 * nose, 100 * radius)
 
 
+def _spec_shape(shape: str) -> str:
+    """The shape the shock metrics check against: a rectangle as MIL-STD-810's trapezoid (10% ramps)."""
+    return "trapezoid" if shape == "rectangle" else shape
+
+
 def _shock(name: str, shape: str) -> dict:
-    peak = f"{PEAK / G0:.0f} gee"
-    spec_shape = "trapezoid" if shape == "rectangle" else shape
     return {"test_articles": [name], "axis": "z", "cfc": 1000,
-            "spec": {"shape": spec_shape, "peak": peak, "duration": f"{DURATION * 1e3:g} ms"}}
+            "spec": {"shape": _spec_shape(shape), "peak": f"{PEAK / G0:.0f} gee", "duration": f"{DURATION * 1e3:g} ms"}}
 
 
 def crushable_design(shape: str) -> dict:
@@ -201,7 +205,7 @@ def crushable_design(shape: str) -> dict:
     payload = m_article + m_spreader
     M = STRIKER_RATIO * payload
     V = striker_speed(payload, M, req.velocity_change)
-    reduced = payload * M / (payload + M)
+    reduced = reduced_mass(payload, M)
     stroke = reduced * V * V / (2 * plateau * area)          # the relative stroke of striker and payload
     thickness = stroke / densification
     return {"plateau": plateau, "densification": densification, "area": area, "radius": math.sqrt(area / math.pi),
@@ -277,7 +281,7 @@ def dashpot_design(shape: str, handles=DASHPOT_START) -> dict:
     req = requirement(shape, PEAK, DURATION, payload)
     M = STRIKER_RATIO * payload
     V = speed_factor * striker_speed(payload, M, req.velocity_change)
-    reduced = payload * M / (payload + M)
+    reduced = reduced_mass(payload, M)
     force = force_factor * payload * PEAK
     stroke = reduced * V * V / (2 * force)
     rho, cd = OIL["density"], OIL["discharge"]
@@ -314,8 +318,7 @@ def band_of(t: np.ndarray, a: np.ndarray, shape: str, margin: float = 0.0):
 
 def _placed_ideal(t, a, pulse, shape: str):
     """The specified pulse (the rectangle as MIL-STD-810's trapezoid) placed on a measured one."""
-    spec_shape = "trapezoid" if shape == "rectangle" else shape
-    return shapes.place(shapes.specified(spec_shape, PEAK, DURATION), t, pulse.sign * a, pulse)
+    return shapes.place(shapes.specified(_spec_shape(shape), PEAK, DURATION), t, pulse.sign * a, pulse)
 
 
 def lumped_end_time() -> float:

@@ -83,10 +83,7 @@ def sealed_cavity(size, workdir, kinematics="axisymmetric"):
     p0 = 5e6
     K = OIL["bulk_modulus"] * (1 + p0 / OIL["bulk_modulus"])
     # the hex piston is a polygon: its face area and mass fall short of the circle's by the same ratio
-    A, M = _area(), _piston_mass()
-    if kinematics == "3d":
-        ratio = _meshed_mass(size, workdir) / M
-        A, M = A * ratio, M * ratio
+    A, M = _piston(size, workdir, kinematics)
     omega = math.sqrt(K * A * A / (V0 * M))
     period = 2 * math.pi / omega
     solver, wall, (t, v, a, p) = _run(_scene("sealed_cavity", size, 2.2 * period, v0, {"area": 0.0}, p0, A,
@@ -103,6 +100,16 @@ def sealed_cavity(size, workdir, kinematics="axisymmetric"):
                   absolute=True)]
 
 
+def _piston(size, workdir, kinematics):
+    """The piston's face area and mass as meshed: the circle's, or in 3D the hex piston's polygon,
+    whose face and mass fall short of the circle's by the same ratio."""
+    A, M = _area(), _piston_mass()
+    if kinematics == "3d":
+        ratio = _meshed_mass(size, workdir) / M
+        A, M = A * ratio, M * ratio
+    return A, M
+
+
 def _meshed_mass(size, workdir):
     """The 3D hex piston's mass as meshed."""
     from ..geometry import build_mesh
@@ -115,10 +122,8 @@ def _meshed_mass(size, workdir):
 
 def fixed_orifice(size, workdir, kinematics="axisymmetric"):
     """A fixed orifice: a(t) = a0 / (1 + a0 t / V0)^2 (module docstring)."""
-    V0, A, M, cd = 5.0, _area(), _piston_mass(), 0.7
-    if kinematics == "3d":          # the hex piston's polygon: its face and mass short of the circle's alike
-        ratio = _meshed_mass(size, workdir) / M
-        A, M = A * ratio, M * ratio
+    V0, cd = 5.0, 0.7
+    A, M = _piston(size, workdir, kinematics)
     a_orifice = A / 5
     rho = OIL["density"]
     k = rho * A ** 3 / (2 * cd * cd * a_orifice ** 2)
@@ -166,10 +171,8 @@ def lumped_fixed_orifice(size, workdir):
 
 def metering_pin(size, workdir, kinematics="axisymmetric"):
     """A metering pin sized for a constant force gives a flat pulse (module docstring)."""
-    V0, A, M, cd, rho = 10.0, _area(), _piston_mass(), 0.7, OIL["density"]
-    if kinematics == "3d":
-        ratio = _meshed_mass(size, workdir) / M
-        A, M = A * ratio, M * ratio
+    V0, cd, rho = 10.0, 0.7, OIL["density"]
+    A, M = _piston(size, workdir, kinematics)
     F = 2000.0            # 1.6 MPa over the piston
     stroke = M * V0 ** 2 / (2 * F)
     # 200 strokes: the area falls as the root of the stroke left, which a coarse table misses near
