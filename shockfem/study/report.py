@@ -42,8 +42,8 @@ class Report:
             self.lines += [p, ""]
         self.write()
 
-    def heading(self, title: str):
-        self.lines += [f"## {title}", ""]
+    def heading(self, title: str, level: int = 2):
+        self.lines += [f"{'#' * level} {title}", ""]
 
     def table(self, name: str, header: list[str], rows: list[list], formats: list[str] | None = None):
         """A table in the report, and its unformatted rows under ``name`` in ``results.json``."""

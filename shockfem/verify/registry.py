@@ -21,6 +21,7 @@ from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
 from .dashpot_cases import fluid_dashpot
 from .orientation_cases import oriented_body
+from .penetration_cases import forrestal
 
 
 CASES = {
@@ -54,6 +55,7 @@ CASES = {
     "cone_push": cone_push,
     "cone_rebound": cone_rebound,
     "fluid_dashpot": fluid_dashpot,
+    "forrestal": forrestal,
     "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,

@@ -26,7 +26,7 @@ LAYERS = [
     {"output"},
     {"metrics"},
     {"runner"},
-    {"modal", "launcher", "amplifier", "programmer"},
+    {"modal", "launcher", "amplifier", "programmer", "penetration"},
     {"verify", "study", "bench"},
     {"api", "cli", "__main__", "__init__"},
 ]
