@@ -39,21 +39,27 @@ def master_stiffness(master: Surface, slave: Surface, scale: float, rigid: bool)
     return facet_stiffness(master, scale, float(np.mean(slave.bulk)) if rigid else None)
 
 
+def _node_sum(facets: np.ndarray, nodes: np.ndarray, per_facet: np.ndarray) -> np.ndarray:
+    """Per surface node (``nodes``, sorted, numbering as ``facets``): the sum of ``per_facet`` over the
+    facets it belongs to."""
+    out = np.zeros(len(nodes))
+    np.add.at(out, np.searchsorted(nodes, facets.ravel()), np.repeat(per_facet, facets.shape[1]))
+    return out
+
+
+def node_areas(surface: Surface, facets: np.ndarray, nodes: np.ndarray) -> np.ndarray:
+    """Each surface node's share of the area of its facets (in axisymmetry the swept area)."""
+    return _node_sum(facets, nodes, surface.area / facets.shape[1])
+
+
 def node_stiffness(surface: Surface, facets: np.ndarray, nodes: np.ndarray, scale: float) -> np.ndarray:
     """Per surface node (``nodes``, sorted, numbering as ``facets``): k = scale K A_i^2 / V_i with
     A_i its share of the area of its facets, and K and V_i the means over the cells of those facets
     (for a node against a rigid surface)."""
-    per_node = facets.shape[1]
-    node = np.searchsorted(nodes, facets.ravel())
-
-    def node_sum(per_facet):
-        out = np.zeros(len(nodes))
-        np.add.at(out, node, np.repeat(per_facet, per_node))
-        return out
-    count = node_sum(np.ones(len(facets)))
-    A = node_sum(surface.area / per_node)
-    K = node_sum(surface.bulk) / count
-    V = node_sum(surface.volume) / count
+    count = _node_sum(facets, nodes, np.ones(len(facets)))
+    A = node_areas(surface, facets, nodes)
+    K = _node_sum(facets, nodes, surface.bulk) / count
+    V = _node_sum(facets, nodes, surface.volume) / count
     return scale * K * A ** 2 / V
 
 
@@ -132,6 +138,7 @@ class ContactPair:
         self.exchange = NodeExchange(model, self.global_nodes)
         compact = [np.searchsorted(self.global_nodes, s.facets) for s in surfaces]
         self.nodes_a = np.unique(compact[0])
+        self.area_a = node_areas(self.a, compact[0], self.nodes_a)      # for contact pressures on a
         self.mass = self.exchange.gather(model.mass[:, None])[:, 0]
         seg_scale = 0.1 if spec.penalty == "soft" else spec.penalty_scale
         self.soft_scale = spec.penalty_scale if spec.penalty == "soft" else 0.0
@@ -168,6 +175,8 @@ class ContactPair:
         self.friction_a = np.zeros(gdim)     # current friction force on surface a [N]
         self.max_force = 0.0
         self.max_friction = 0.0
+        self.max_pressure = 0.0              # the largest node pressure on a, |f_i| / A_i [Pa]
+        self.pressure_at_max_force = 0.0     # the mean pressure over a's loaded area then [Pa]
         self.max_penetration = 0.0
         self.active = 0
         self.intervals: list[list[float]] = []
@@ -270,7 +279,13 @@ class ContactPair:
         """After a step ending at t: impulse, peak forces, open/closed intervals, restitution velocities.
         Collective when contact opens or closes (``body_velocities`` reduces over ranks)."""
         self.impulse += dt * (self.force_a + self.friction_a)
-        self.max_force = max(self.max_force, float(np.linalg.norm(self.force_a)))
+        force = float(np.linalg.norm(self.force_a))
+        if self.active > 0:
+            load = np.linalg.norm(self.f[self.nodes_a], axis=1)
+            self.max_pressure = max(self.max_pressure, float(np.max(load / self.area_a)))
+            if force > self.max_force:
+                self.pressure_at_max_force = float(load.sum() / self.area_a[load > 0].sum())
+        self.max_force = max(self.max_force, force)
         self.max_friction = max(self.max_friction, float(np.linalg.norm(self.friction_a)))
         closed = self.active > 0
         if closed and (not self.intervals or self.intervals[-1][1] is not None):
@@ -338,6 +353,7 @@ class ContactPair:
                              "decay": self.spec.friction[2]},
                 "impulse_on_a": self.impulse.tolist(), "max_normal_force": self.max_force,
                 "max_friction_force": self.max_friction,
+                "max_pressure": self.max_pressure, "pressure_at_max_force": self.pressure_at_max_force,
                 "contact_energy": -(self.work + self.friction_work),
                 "friction_work": self.friction_work, "max_penetration": self.max_penetration,
                 "intervals": self.intervals, "restitution": self.restitution(),

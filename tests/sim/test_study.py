@@ -87,8 +87,9 @@ def test_fixture_study_smoke(tmp_path):
     """The fixture study's closed forms exactly (fixtures.md's table for 10,000 g, 5 ms), the striker
     that gives a payload the rectangle's velocity change through a programmer that keeps them
     together, V = dV (1 + m / M), every concept run (two crushable pads, the dashpot, the split cone)
-    completed with its energy balance within 1%, the lumped dashpot against its finite-element run,
-    the iterated dashpot inside the band in finite elements and the same pulse at two meshes, and the
+    completed with its energy balance within 1% and the nose pressure only where the nose is touched, the
+    lumped dashpot against its finite-element run, the iterated dashpot inside the band in finite
+    elements and the same pulse at two meshes, the lightest design in the band chosen, and the
     3D runs of the yawed strike: completed, balanced, and a lateral acceleration at 0 degrees that is
     round-off beside the one at 5."""
     results, report = _study("fixture", tmp_path / "fixture")
@@ -112,9 +113,12 @@ def test_fixture_study_smoke(tmp_path):
         assert row["striker speed [m/s]"] == pytest.approx(A * T * (1 + 1 / ratio), rel=1e-9)
     runs = _rows(results, "concepts")
     assert [r["concept"] for r in runs] == ["crushable, pad on the fixture", "crushable, pad on the striker",
-                                            "fluid dashpot, metering pin", "split cone, clamp ring"]
+                                            "fluid dashpot, metering pin", "split cone, clamp ring",
+                                            "dashpot with nose seat"]
     for r in runs:
         assert r["status"] == "completed" and abs(r["energy balance [-]"]) < 0.01, r["concept"]
+        # only the seat touches the nose; its pressure is read from the nose contact, not assumed
+        assert (r["nose pressure [MPa]"] > 0) == (r["concept"] == "dashpot with nose seat"), r["concept"]
     # section 4: the lumped dashpot agrees with the finite-element run of the same design (its liquid is the
     # cavity's, lumped; the bodies' elasticity is what differs): peak and velocity change within 1%
     lumped, fe = _rows(results, "dashpot_lumped_vs_fe")
@@ -123,6 +127,14 @@ def test_fixture_study_smoke(tmp_path):
     # the design iterated on the lumped model, confirmed by finite elements: inside the band
     (design,) = _rows(results, "dashpot_design", model="finite elements, the iterated design")
     assert design["status"] == "completed" and design["band"] == "pass" and design["energy balance [-]"] < 0.01
+    (seated,) = _rows(results, "seated_design", model="finite elements, the iterated design")
+    assert seated["status"] == "completed" and seated["energy balance [-]"] < 0.01
+    # the choice: the lightest fixture inside the band
+    choice = _rows(results, "choice")
+    passing = [r for r in choice if r["band"] == "pass"]
+    lightest = min(passing, key=lambda r: r["fixture mass [kg]"])
+    chosen = {"the dashpot": "dashpot", "the dashpot with the nose seat": "seated"}[lightest["design"]]
+    assert results["values"]["chosen_design"] == chosen
     # section 5: the chosen design at two axisymmetric meshes (its pulse is the lumped liquid's, the same to
     # 1e-3) and in 3D (at smoke size only the pulse's first 0.5 ms: run, not compared)
     meshes = _rows(results, "speed_against_error")
