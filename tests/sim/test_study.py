@@ -94,7 +94,7 @@ def test_fixture_study_smoke(tmp_path):
     round-off beside the one at 5."""
     results, report = _study("fixture", tmp_path / "fixture")
     for section in ("## 1. What 10,000 g for 5 ms means", "## 2. What it asks of the machine",
-                    "## 3. The concepts as finite-element runs", "### 3.4 The concepts side by side",
+                    "## 3. The concepts as finite-element runs", "### 3.5 The concepts side by side",
                     "## 4. Designing to the specification", "## 5. Speed against error",
                     "## 6. Tail-slap initiation"):
         assert section in report
