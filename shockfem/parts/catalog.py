@@ -280,7 +280,7 @@ def _meplat(d):
     return d["meplat_radius"] or d["radius"] / 20
 
 
-def _ogive(d):
+def ogive(d):
     """Tangent ogive of the projectile truncated at the meplat: (ogive radius rho, nose length)."""
     R = d["radius"]
     rho = d["crh"] * 2 * R
@@ -289,7 +289,7 @@ def _ogive(d):
 
 def _projectile_profile(d):
     R, L = d["radius"], d["length"]
-    rho, ln = _ogive(d)
+    rho, ln = ogive(d)
     chain = [Line((0.0, 0.0), (_meplat(d), 0.0), "nose"), Arc((_meplat(d), 0.0), (R, ln), (R - rho, ln), "nose"),
              Line((R, ln), (R, L), "shank"), Line((R, L), (0.0, L), "base")]
     rc, lc = d["cavity_radius"], d["cavity_length"]
@@ -309,7 +309,7 @@ def _nose_volume(d):
     """pi * integral of r(z)^2 over the ogive, r = sqrt(rho^2 - s^2) - (rho - R), s = ln - z from 0
     at the shank to ln at the meplat."""
     R = d["radius"]
-    rho, ln = _ogive(d)
+    rho, ln = ogive(d)
     k = rho - R
     circle_area = 0.5 * (ln * math.sqrt(rho * rho - ln * ln) + rho * rho * math.asin(ln / rho))
     return math.pi * ((rho * rho + k * k) * ln - ln ** 3 / 3 - 2 * k * circle_area)
@@ -317,7 +317,7 @@ def _nose_volume(d):
 
 def _projectile_volume(d, gdim):
     R, L = d["radius"], d["length"]
-    _, ln = _ogive(d)
+    _, ln = ogive(d)
     v = _nose_volume(d) + math.pi * R * R * (L - ln)
     if d["cavity_radius"] and d["cavity_length"]:
         v -= math.pi * d["cavity_radius"] ** 2 * d["cavity_length"]
@@ -331,7 +331,7 @@ def _projectile_check(d):
         return [("crh", f"a tangent ogive needs crh >= 0.5 (0.5 is a hemisphere), got {d['crh']:g}")]
     if _meplat(d) >= R:
         return [("meplat_radius", f"must be smaller than the radius {R:g} m, got {_meplat(d):g} m")]
-    rho, ln = _ogive(d)
+    rho, ln = ogive(d)
     if ln >= L:
         out.append(("length", f"the ogive nose alone is {ln:g} m long; length must exceed it, got {L:g} m"))
     rc, lc, tb = d["cavity_radius"], d["cavity_length"], d["base_thickness"]

@@ -32,14 +32,21 @@ def tunnel_force(radius: float, fc: float, density: float, speed: float, crh: fl
     return math.pi * radius * radius * resisting_stress(fc, density, speed, crh)
 
 
+def tunnel_entry_speed_squared(mass: float, radius: float, fc: float, density: float, speed: float,
+                               crh: float) -> float:
+    """V1^2 = (m Vs^2 - 4 pi a^3 S f'c) / (m + 4 pi a^3 N rho): the square of the speed leaving the
+    crater (4a deep, the force rising linearly with depth) for the tunnel; <= 0 if it stops in it."""
+    S, N = strength_factor(fc), nose_factor(crh)
+    a3 = radius ** 3
+    return (mass * speed ** 2 - 4 * math.pi * a3 * S * fc) / (mass + 4 * math.pi * a3 * N * density)
+
+
 def depth(mass: float, radius: float, fc: float, density: float, speed: float, crh: float) -> float:
-    """The depth of penetration [m] of a rigid projectile striking at ``speed``: the crater (4a, the
-    force rising linearly with depth) and the tunnel,
-    P = m / (2 pi a^2 rho N) ln(1 + N rho V1^2 / (S f'c)) + 4a,
-    V1^2 = (m Vs^2 - 4 pi a^3 S f'c) / (m + 4 pi a^3 N rho) the speed entering the tunnel."""
+    """The depth of penetration [m] of a rigid projectile striking at ``speed``: the crater and the
+    tunnel, P = m / (2 pi a^2 rho N) ln(1 + N rho V1^2 / (S f'c)) + 4a."""
     S, N = strength_factor(fc), nose_factor(crh)
     a = radius
-    v1_squared = (mass * speed ** 2 - 4 * math.pi * a ** 3 * S * fc) / (mass + 4 * math.pi * a ** 3 * N * density)
+    v1_squared = tunnel_entry_speed_squared(mass, radius, fc, density, speed, crh)
     if v1_squared <= 0:
         raise ValueError(f"the projectile stops in the crater at {speed:g} m/s: the tunnel law does not apply")
     return mass / (2 * math.pi * a * a * density * N) * math.log(1 + N * density * v1_squared / (S * fc)) + 4 * a

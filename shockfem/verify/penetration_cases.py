@@ -14,7 +14,7 @@ import time
 
 from scipy.integrate import solve_ivp
 
-from ..penetration.forrestal import depth, nose_factor, strength_factor, tunnel_force
+from ..penetration.forrestal import depth, tunnel_entry_speed_squared, tunnel_force
 from .checks import check
 
 SHOT = {"mass": 0.906, "radius": 0.0269 / 2, "crh": 2.0, "fc": 35.2e6, "density": 2300.0, "speed": 277.0}
@@ -32,9 +32,7 @@ def forrestal(size, workdir):
     # the tunnel: m V dV/dz = -F(V) integrated from V1 (the crater's exit speed) to rest
     t0 = time.perf_counter()
     a, m = s["radius"], s["mass"]
-    S, N = strength_factor(s["fc"]), nose_factor(s["crh"])
-    v1 = math.sqrt((m * s["speed"] ** 2 - 4 * math.pi * a ** 3 * S * s["fc"])
-                   / (m + 4 * math.pi * a ** 3 * N * s["density"]))
+    v1 = math.sqrt(tunnel_entry_speed_squared(m, a, s["fc"], s["density"], s["speed"], s["crh"]))
 
     def slowing(z, y):            # y = V^2 / 2: d(V^2/2)/dz = -F(V) / m
         return [-tunnel_force(a, s["fc"], s["density"], math.sqrt(max(2 * y[0], 0.0)), s["crh"]) / m]
