@@ -231,6 +231,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "models": describe(m, scene).splitlines(),
         "contacts": {p.name: p.summary() for p in solver.contacts},
         "cavities": {c.name: c.summary() for c in solver.cavities},
+        "penetration": solver.target.summary() if solver.target is not None else None,
         "springs": {s.name: s.summary() for s in solver.springs},
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],

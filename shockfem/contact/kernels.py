@@ -39,7 +39,7 @@ import numpy as np
 from numba import njit
 
 # rigid surface kinds (node_to_rigid)
-PLANE, CYLINDER = 0, 1
+PLANE, CYLINDER, TUNNEL = 0, 1, 2
 # friction coefficients: [mu_static, mu_dynamic, decay [s/m]]
 MU_S, MU_D, DECAY = 0, 1, 2
 _TOL = 1e-6        # parametric tolerance: a node on the edge between two facets belongs to both
@@ -342,7 +342,8 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
     """Slave nodes against a rigid surface moving at ``velocity``: a plane (kind PLANE) through
     ``point`` with unit normal ``direction`` toward the allowed side, or a cylinder (kind CYLINDER)
     of ``radius`` about the axis through ``point`` along the unit ``direction`` (a zero direction
-    in 2D makes it the circle about ``point``), the nodes staying ``inside`` or outside it.
+    in 2D makes it the circle about ``point``), the nodes staying ``inside`` or outside it, or a
+    tunnel (kind TUNNEL): that cylinder from ``point`` on along ``direction`` only, nodes inside.
     Returns the number of active slaves (``stiff`` as in ``node_to_facets``)."""
     gdim = x.shape[1]
     n = np.zeros(3)
@@ -369,6 +370,8 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
             for d in range(gdim):
                 n[d] = sign * n[d] / dist if dist > 0.0 else 0.0
             g = sign * (dist - radius)
+            if kind == TUNNEL and along < 0.0:
+                g = depth             # not yet in the tunnel: out of reach
         gap[i] = 0.0
         if g >= depth or g <= -depth:
             offset[i] = 0.0

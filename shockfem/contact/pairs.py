@@ -96,7 +96,7 @@ class _RigidPass:
         gdim = model.gdim
         self.slaves = slaves
         self.stiffness = stiffness
-        self.kind = kernels.PLANE if r.kind == "plane" else kernels.CYLINDER
+        self.kind = {"plane": kernels.PLANE, "cylinder": kernels.CYLINDER, "tunnel": kernels.TUNNEL}[r.kind]
         self.point = np.array(r.point, dtype=float)
         self.direction = np.array(r.direction, dtype=float)
         self.radius = r.radius
@@ -112,8 +112,10 @@ class _RigidPass:
         p = x[self.slaves] - (self.point + self.t * self.velocity)
         if self.kind == kernels.PLANE:
             return p @ self.direction
-        dist = np.linalg.norm(p - np.outer(p @ self.direction, self.direction), axis=1)
-        return self.radius - dist if self.inside else dist - self.radius
+        along = p @ self.direction
+        dist = np.linalg.norm(p - np.outer(along, self.direction), axis=1)
+        gap = self.radius - dist if self.inside else dist - self.radius
+        return np.where(along >= 0.0, gap, np.inf) if self.kind == kernels.TUNNEL else gap
 
     def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         return kernels.node_to_rigid(self.slaves, self.stiffness, self.kind, self.point + self.t * self.velocity,

@@ -183,12 +183,33 @@ def _import_cad(body, gdim: int, element: str):
     return entities, {name: list(tags) for name, tags in body.regions.items()}
 
 
+def _even_curves():
+    """gmsh's full-quad recombination halves every curve's segments (it meshes at twice the size and
+    splits each quadrangle in four) and refuses a curve with an odd count ("1D mesh cannot be divided
+    by 2").  Mesh the curves and give each odd one a segment more."""
+    import gmsh
+    gmsh.model.mesh.generate(1)
+    for _, curve in gmsh.model.getEntities(1):
+        segments = sum(len(e) for e in gmsh.model.mesh.getElements(1, curve)[1])
+        if segments % 2:
+            gmsh.model.mesh.setTransfiniteCurve(curve, segments + 2)
+    gmsh.model.mesh.clear()
+
+
 def _generate(body, gdim: int, element: str):
     """gmsh's mesh of the current model; its failures become a ModelError naming the body."""
     import gmsh
     try:
         gmsh.model.mesh.generate(gdim)
     except Exception as e:                   # gmsh raises a bare Exception with its own message
+        if element == "quad" and "divided by 2" in str(e):
+            gmsh.model.mesh.clear()
+            try:
+                _even_curves()
+                gmsh.model.mesh.generate(gdim)
+                return
+            except Exception:
+                pass
         raise ModelError(f"body {body.name}: gmsh cannot mesh it with {element} elements of "
                          f"{body.element_size * 1e3:.3g} mm ({e}); try a smaller element_size, or another "
                          "scene.element") from None

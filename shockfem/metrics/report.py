@@ -160,7 +160,10 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
     masses = {b: summary["bodies"][b]["mass"] for b in summary["bodies"]}
     contacts = [{"name": c["name"], "a": c["a"], "b": c["b"],
                  "wall_velocity": c["rigid"]["velocity"][labels.index(axis)] if c.get("rigid") else 0.0}
-                for c in scene["contacts"]]
+                for c in scene["contacts"]
+                # an impact meets a plane or another body; a cylinder or a tunnel guides a body along the
+                # axis, and its contact is no stage of a chain
+                if not (c.get("rigid") and c["rigid"]["kind"] in ("cylinder", "tunnel"))]
     stages = stage_table(h, masses, contacts, axis, translation) if len(t) >= 2 else []
     result["stages"] = [s.as_dict() for s in stages]
     for s in stages:

@@ -97,6 +97,7 @@ class Model:
     contacts: tuple = ()                        # the scene's contact specs
     springs: tuple = ()                         # the scene's discrete springs
     cavities: tuple = ()                        # the scene's liquid-filled cavities (fluid dashpots)
+    penetration: object = None                  # the scene's concrete target (a Penetration), if any
     accelerometers: tuple = ()                  # the scene's shock accelerometers
     gravity: tuple | None = None                # [m/s^2]
     thickness: float = 1.0                      # plane-strain depth [m]
@@ -230,6 +231,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                   one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
                   hourglass_coefficient=scene.hourglass_coefficient, bodies=tuple(scene.bodies),
                   contacts=tuple(scene.contacts), springs=tuple(scene.springs), cavities=tuple(scene.cavities),
+                  penetration=scene.penetration,
                   accelerometers=tuple(scene.shock.accelerometers), gravity=scene.gravity,
                   thickness=scene.thickness, safety_factor=scene.safety_factor, plastic=plastic,
                   point_state=plastic or bool(slotted))
@@ -337,6 +339,18 @@ def describe(model: Model, sc: Scene) -> str:
                      f"walls {', '.join(cv.walls)} (the rest held still); lumped control volume: one pressure, "
                      f"quasi-steady Bernoulli orifice capped at the sound speed, no liquid inertia or waves, no "
                      f"cavitation below 0 gauge")
+    if sc.penetration:
+        pn = sc.penetration
+        S = (f"S = {pn.strength_factor:.4g}" if pn.strength_factor else "S from Forrestal's fit 82.6 (f'c/MPa)^-0.544")
+        crater = (f"{pn.crater_depth * 1e3:.4g} mm" if pn.crater_depth >= 0 else "two calibres (4a)")
+        lines.append(f"  penetration of {pn.nose}: concrete f'c {pn.compressive_strength / 1e6:.4g} MPa, "
+                     f"{pn.density:g} kg/m^3, {S}; normal stress S f'c + rho v_n^2 on the advancing facets beyond "
+                     f"the face (Forrestal's spherical cavity expansion), crater {crater} with the force rising "
+                     f"linearly with depth; "
+                     + (f"friction torque mu F a / 2, mu = {pn.friction:g}; " if pn.friction else "no friction; ")
+                     + ("a rigid tunnel behind the nose" if pn.tunnel else "no tunnel")
+                     + ". Left out: the target's own deformation, free surfaces, scabbing and perforation, "
+                       "sliding friction along the nose")
     if sc.gravity:
         lines.append(f"  gravity: {sc.gravity} m/s^2")
     if sc.damping:

@@ -45,6 +45,12 @@ class HistoryRecorder:
         for cv in m.cavities:
             self.columns += [(f"cavity.{cv.name}.pressure", "Pa"), (f"cavity.{cv.name}.volume", "m^3"),
                              (f"cavity.{cv.name}.outflow", "kg/s"), (f"cavity.{cv.name}.orifice_area", "m^2")]
+        if m.penetration:
+            self.columns += [("penetration.depth", "m")]
+            self.columns += [(f"penetration.force_{a}", "N") for a in axes]
+            self.columns += [("penetration.axial_force", "N"), ("penetration.target_work", "J")]
+            if m.gdim == 3:
+                self.columns += [("penetration.spin", "rad/s"), ("penetration.torque", "N m")]
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
@@ -65,6 +71,11 @@ class HistoryRecorder:
             row += list(spring.tension * spring.direction)
         for cavity in s.cavities:
             row += [cavity.pressure, cavity.volume, cavity.outflow, cavity.orifice_area()]
+        if s.target is not None:
+            tg = s.target
+            row += [tg.depth] + list(tg.force) + [tg.axial_force, -tg.work]
+            if s.model.gdim == 3:
+                row += [tg.spin, tg.torque]
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
 

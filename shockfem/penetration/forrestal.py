@@ -1,24 +1,17 @@
-"""Forrestal's concrete-penetration law (Forrestal et al. 1994; the form checked against Li & Chen 2003).
+"""Forrestal's concrete-penetration law for a rigid projectile (Forrestal et al. 1994; the form checked
+against Li & Chen 2003): the white paper's engineering model.
 
-Beyond a crater about two calibres deep the target resists an ogive-nosed projectile of radius a with
-an axial force F = pi a^2 (S f'c + N rho V^2): a strength term (S, a constant of the unconfined
-strength f'c) and an inertial term (N, a constant of the nose's shape).  Here are the law's pieces
-and its closed-form depth of penetration; ``shockfem verify forrestal`` checks the depth against the
-published data point.
+Beyond a crater two calibres (4a) deep the target resists an ogive-nosed projectile of radius a with
+an axial force F = pi a^2 (S f'c + N rho V^2); in the crater the force rises linearly with depth.  The
+law's pieces (S, N, the crater) are ``target/concrete.py``'s, where the finite-element load applies
+them facet by facet; here are the rigid body's axial force and its closed-form depth of penetration.
+``shockfem verify forrestal`` checks the depth against the published data point.
 """
 from __future__ import annotations
 
 import math
 
-
-def strength_factor(fc: float) -> float:
-    """S = 82.6 (f'c / 1 MPa)^-0.544, f'c the unconfined compressive strength [Pa]."""
-    return 82.6 * (fc / 1e6) ** -0.544
-
-
-def nose_factor(crh: float) -> float:
-    """N = (8 psi - 1) / (24 psi^2) of a tangent ogive of ``crh`` calibre-radius-head psi."""
-    return (8 * crh - 1) / (24 * crh * crh)
+from ..target.concrete import crater_law, nose_factor, strength_factor
 
 
 def resisting_stress(fc: float, density: float, speed: float, crh: float) -> float:
@@ -34,19 +27,39 @@ def tunnel_force(radius: float, fc: float, density: float, speed: float, crh: fl
 
 def tunnel_entry_speed_squared(mass: float, radius: float, fc: float, density: float, speed: float,
                                crh: float) -> float:
-    """V1^2 = (m Vs^2 - 4 pi a^3 S f'c) / (m + 4 pi a^3 N rho): the square of the speed leaving the
-    crater (4a deep, the force rising linearly with depth) for the tunnel; <= 0 if it stops in it."""
-    S, N = strength_factor(fc), nose_factor(crh)
-    a3 = radius ** 3
-    return (mass * speed ** 2 - 4 * math.pi * a3 * S * fc) / (mass + 4 * math.pi * a3 * N * density)
+    """V1^2, the square of the speed leaving Forrestal's crater (4a deep) for the tunnel; <= 0 if the
+    projectile stops in it."""
+    return crater_law(mass, radius, strength_factor(fc) * fc, density, nose_factor(crh), speed, 4 * radius)[1]
 
 
 def depth(mass: float, radius: float, fc: float, density: float, speed: float, crh: float) -> float:
-    """The depth of penetration [m] of a rigid projectile striking at ``speed``: the crater and the
-    tunnel, P = m / (2 pi a^2 rho N) ln(1 + N rho V1^2 / (S f'c)) + 4a."""
-    S, N = strength_factor(fc), nose_factor(crh)
+    """The depth of penetration [m] of a rigid ogive of ``crh`` striking at ``speed`` (Forrestal's S)."""
+    return depth_of(mass, radius, strength_factor(fc) * fc, density, nose_factor(crh), speed, 4 * radius)
+
+
+def depth_of(mass: float, radius: float, strength: float, density: float, nose: float, speed: float,
+             crater: float) -> float:
+    """The depth of penetration [m] of a rigid projectile of nose factor ``nose`` (N) striking at ``speed``
+    a target of ``strength`` S f'c [Pa] whose crater is ``crater`` (k) deep: P = m / (2 pi a^2 rho N)
+    ln(1 + N rho V1^2 / (S f'c)) + k (Forrestal's k = 4a)."""
     a = radius
-    v1_squared = tunnel_entry_speed_squared(mass, radius, fc, density, speed, crh)
+    v1_squared = crater_law(mass, a, strength, density, nose, speed, crater)[1]
     if v1_squared <= 0:
         raise ValueError(f"the projectile stops in the crater at {speed:g} m/s: the tunnel law does not apply")
-    return mass / (2 * math.pi * a * a * density * N) * math.log(1 + N * density * v1_squared / (S * fc)) + 4 * a
+    return mass / (2 * math.pi * a * a * density * nose) * math.log(1 + nose * density * v1_squared / strength) + crater
+
+
+def speed_at_depth(z: float, mass: float, radius: float, strength: float, density: float, nose: float,
+                   speed: float, crater: float) -> float:
+    """The rigid projectile's speed [m/s] when its nose is ``z`` deep: in the crater (z < k, F = c z)
+    V^2 = Vs^2 - c z^2 / m; in the tunnel m V dV/dz = -pi a^2 (S f'c + N rho V^2) integrates to
+    V^2 = (V1^2 + S f'c / (N rho)) exp(-2 pi a^2 N rho (z - k) / m) - S f'c / (N rho).  0 once stopped.
+    ``strength`` is S f'c [Pa], ``nose`` N, ``crater`` k (Forrestal's 4a)."""
+    a = radius
+    c, v1_squared = crater_law(mass, a, strength, density, nose, speed, crater)
+    if z <= crater:
+        v2 = speed * speed - c * z * z / mass
+    else:
+        k = strength / (nose * density)
+        v2 = (v1_squared + k) * math.exp(-2 * math.pi * a * a * nose * density * (z - crater) / mass) - k
+    return math.sqrt(max(v2, 0.0))

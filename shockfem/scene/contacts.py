@@ -24,7 +24,7 @@ def surface_spec(ck: Checker, c: dict, key: str, path: str, body_regions: dict) 
     return spec
 
 
-def _unit_vector(ck: Checker, d: dict, key: str, path: str, gdim: int, default) -> tuple:
+def unit_vector(ck: Checker, d: dict, key: str, path: str, gdim: int, default) -> tuple:
     v = ck.vector(d, key, path, "dimensionless", gdim, default)
     norm = sum(x * x for x in v) ** 0.5
     if norm == 0:
@@ -42,7 +42,7 @@ def _rigid_surface(ck: Checker, c: dict, path: str, kin: str) -> RigidSurface:
         w = ck.table(c, "wall", p)
         ck.unknown(w, ("point", "normal", "velocity"), p)
         point = ck.vector(w, "point", p, "length", gdim, zero)
-        normal = _unit_vector(ck, w, "normal", p, gdim, zero[:-1] + [1.0])
+        normal = unit_vector(ck, w, "normal", p, gdim, zero[:-1] + [1.0])
         vel = ck.vector(w, "velocity", p, "velocity", gdim, zero)
         return RigidSurface("plane", point, normal, vel)
     p = f"{path}.cylinder"
@@ -54,7 +54,7 @@ def _rigid_surface(ck: Checker, c: dict, path: str, kin: str) -> RigidSurface:
     side = ck.choice(cyl, "side", p, CYLINDER_SIDES, default="outside")
     vel = ck.vector(cyl, "velocity", p, "velocity", gdim, zero)
     if kin == "3d":
-        axis = _unit_vector(ck, cyl, "axis", p, 3, [0.0, 0.0, 1.0])
+        axis = unit_vector(ck, cyl, "axis", p, 3, [0.0, 0.0, 1.0])
     elif kin == "axisymmetric":
         axis = (0.0, 1.0)                 # coaxial with the bodies
         if point[0] != 0.0 or vel[0] != 0.0:
@@ -104,7 +104,7 @@ def read_springs(ck: Checker, raw: dict, body_regions: dict, gdim: int) -> list[
         b = surface_spec(ck, c, "b", path, body_regions)
         if a and b and a.partition(".")[0] == b.partition(".")[0]:
             ck.fail(f"{path}.b", "a spring joins two different bodies")
-        direction = _unit_vector(ck, c, "direction", path, gdim, [0.0] * (gdim - 1) + [1.0]) \
+        direction = unit_vector(ck, c, "direction", path, gdim, [0.0] * (gdim - 1) + [1.0]) \
             if "direction" in c else None
         stiffness = ck.quantity(c, "stiffness", path, "stiffness", default=0.0, nonnegative=True)
         curve: list[tuple[float, float]] = []

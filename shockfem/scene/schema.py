@@ -15,6 +15,7 @@ from typing import Any
 from ..parts.catalog import CAD_FILES, MESH_FILES, PARTS
 from .checker import Checker, SceneError
 from .cavities import read_cavities
+from .penetration import read_penetration
 from .contacts import read_contacts, read_springs
 from .materials import read_material
 from .orientation import read_orientation, turned
@@ -150,7 +151,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
 
     ck = Checker()
     ck.unknown(raw, ("scene", "materials", "bodies", "boundary", "contact", "spring", "cavity", "damping",
-                     "outputs", "shock"), "")
+                     "outputs", "shock", "penetration"), "")
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity",
@@ -326,6 +327,9 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     contacts = read_contacts(ck, raw, body_regions, kin)
     springs = read_springs(ck, raw, body_regions, gdim)
     cavities = read_cavities(ck, raw, body_regions)
+    penetration, tunnel = read_penetration(ck, raw, body_regions, bodies, kin)
+    if tunnel is not None:
+        contacts.append(tunnel)
 
     damping = _damping(ck, raw, "damping", DAMPING_TYPES, "rayleigh") if "damping" in raw else None
 
@@ -345,7 +349,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
-                 gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities))
+                 gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities), penetration)
 
 
 def to_plain(scene: Scene) -> dict[str, Any]:

@@ -163,8 +163,10 @@ class RigidSurface:
     ``cylinder``: of ``radius`` about the axis through ``point`` along the unit ``direction``
     (axisymmetric: the symmetry axis; plane strain: zero, the cylinder is the circle about
     ``point``); bodies stay ``inside`` or outside it.
+    ``tunnel``: a cylinder that begins at ``point`` and runs along ``direction`` only (the hole a
+    penetrator has made behind its nose, ``[penetration]``); bodies stay inside it.
     """
-    kind: str                        # plane | cylinder
+    kind: str                        # plane | cylinder | tunnel
     point: tuple[float, ...]
     direction: tuple[float, ...]
     velocity: tuple[float, ...]      # [m/s], constant
@@ -174,6 +176,9 @@ class RigidSurface:
     def describe(self) -> str:
         if self.kind == "plane":
             return f"rigid plane through {self.point} m, normal {self.direction}"
+        if self.kind == "tunnel":
+            return (f"rigid tunnel of radius {self.radius:g} m from {self.point} m along {self.direction} "
+                    f"(inside)")
         side = "inside" if self.inside else "outside"
         return f"rigid cylinder of radius {self.radius:g} m about {self.point} m ({side})"
 
@@ -206,6 +211,23 @@ class Cavity:
     orifice: tuple[tuple[float, float], ...]    # (stroke [m], area [m^2]); one pair: a fixed orifice
     piston_area: float               # displaced volume / piston_area = stroke [m^2]; 0 for a fixed orifice
     initial_pressure: float = 0.0    # gauge [Pa] (a pre-charged cavity)
+
+
+@dataclass(frozen=True)
+class Penetration:
+    """A concrete target penetrated nose first (``target/penetration.py``): Forrestal's cavity-expansion
+    pressure on the projectile's nose facets beyond the target's face, a crater over the first
+    ``crater_depth``, and a rigid tunnel (a contact of its own, ``tunnel``) behind the nose."""
+    nose: str                        # "body.region": the wetted surface (the ogive and its meplat)
+    point: tuple[float, ...]         # a point of the target's face [m]
+    normal: tuple[float, ...]        # the face's unit normal, out of the target (toward the projectile)
+    compressive_strength: float      # f'c [Pa]
+    density: float                   # rho [kg/m^3]
+    strength_factor: float           # S [-]; 0: Forrestal's fit 82.6 (f'c / MPa)^-0.544
+    crater_depth: float              # [m]; -1: Forrestal's 4a (two calibres, a from the nose's area)
+    carried: tuple[str, ...]         # bodies moving with the projectile (their mass sets the crater law)
+    friction: float                  # mu of the resisting torque mu F a / 2 about the axis (3D)
+    tunnel: str = ""                 # the name of the tunnel's contact; "" if none
 
 
 @dataclass(frozen=True)
@@ -288,6 +310,7 @@ class Scene:
     bulk_viscosity: tuple[float, float] = (1.5, 0.06)   # (Q1 quadratic, Q2 linear), LS-DYNA's defaults
     shock: Shock = Shock()
     cavities: tuple[Cavity, ...] = ()
+    penetration: Penetration | None = None
 
     @property
     def gdim(self) -> int:

@@ -33,6 +33,7 @@ from ..model import Model
 from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
 from ..fluid.cavity import LiquidCavity
+from ..target.penetration import ConcreteTarget
 from ..elements import full_integration, one_point
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
@@ -54,7 +55,8 @@ class Energies:
     plastic: float = 0.0           # plastic work int sigma : d eps_p dV
     bulk_viscosity: float = 0.0    # dissipated by the artificial bulk viscosity
     contact: float = 0.0           # taken up by contact (penalty, contact damping, friction), discrete
-                                   # springs and liquid cavities = -their work on the bodies
+                                   # springs, liquid cavities and a penetrated target = -their work on
+                                   # the bodies
     external: float = 0.0          # work of loads and prescribed velocities
     initial: float = 0.0           # kinetic energy at t = 0
     peak: float = 0.0              # largest energy in play so far (the balance reference)
@@ -88,6 +90,8 @@ class RigidState:
     velocity: np.ndarray
     momentum_angular: np.ndarray = field(default_factory=lambda: np.zeros(3))
     rotation: np.ndarray = field(default_factory=lambda: np.eye(3))
+    force: np.ndarray = field(default_factory=lambda: np.zeros(3))    # resultant at t_n [N]
+    torque: np.ndarray = field(default_factory=lambda: np.zeros(3))   # about the centre, 3D [N m]
 
 
 @dataclass
@@ -126,6 +130,7 @@ class ExplicitSolver:
         self.contacts = [ContactPair(m, c) for c in m.contacts]
         self.springs = [DiscreteSpring(m, c) for c in m.springs]
         self.cavities = [LiquidCavity(m, c) for c in m.cavities]
+        self.target = ConcreteTarget(m, m.penetration) if m.penetration else None
         self.f_gravity = (m.mass[:, None] * np.asarray(m.gravity)[None, :] if m.gravity
                           else None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
@@ -141,6 +146,10 @@ class ExplicitSolver:
         self.owned = np.zeros(len(self.x), dtype=bool)
         self.owned[:m.num_owned] = True
         self.inv_mass = np.where(m.mass > 0, 1.0 / np.where(m.mass > 0, m.mass, 1.0), 0.0)
+        # the nodal kinetic energy leaves rigid bodies out: theirs is their own (``_rigid_loads``)
+        self.kinetic_mass = m.mass.copy()
+        for rb in m.rigid:
+            self.kinetic_mass[rb.nodes] = 0.0
         self._constrained_dofs = (np.unique(np.concatenate([c.dofs for c in m.constraints]))
                                   if m.constraints else np.zeros(0, dtype=np.int64))
         self.constrained = np.zeros(self.x.shape, dtype=np.bool_)
@@ -175,6 +184,7 @@ class ExplicitSolver:
                     f"an interference time to push it out as a preload)")
         self._contact_forces(0.0)
         self._acceleration()
+        self._rigid_loads(0.0)
         self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
         self.energy.peak = self.energy.initial
 
@@ -252,8 +262,8 @@ class ExplicitSolver:
             flat[load.dofs] += load.value(t) * load.shares
 
     def _contact_forces(self, dt: float):
-        """Contact, discrete-spring and liquid-cavity forces at t_{n+1} into f_con (v is v_{n+1/2})."""
-        if not self.contacts and not self.springs and not self.cavities:
+        """Contact, discrete-spring, liquid-cavity and target forces at t_{n+1} into f_con (v is v_{n+1/2})."""
+        if not self.contacts and not self.springs and not self.cavities and self.target is None:
             return
         self.f_con[:] = 0.0
         limit = np.inf
@@ -271,6 +281,9 @@ class ExplicitSolver:
         for cavity in self.cavities:
             limit = min(limit, cavity.compute(self.x, self.v, dt))
             cavity.add_forces(self.f_con)
+        if self.target is not None:
+            limit = min(limit, self.target.compute(self.x, self.v, dt, self.t))
+            self.target.add_forces(self.f_con)
         if np.isfinite(limit) and not self._said_contact_dt:
             self._said_contact_dt = True
             combined = 1.0 / np.sqrt(1.0 / self.dt_stable ** 2 + 1.0 / limit ** 2)
@@ -359,13 +372,15 @@ class ExplicitSolver:
 
         # acceleration a_{n+1}, second halves of the work increments, kinetic energy
         w_int2, w_ext2, w_con2, kinetic, bad = nodal.finish_step(
-            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.inv_mass, m.mass, self.constrained, dt,
-            m.num_owned)
+            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.inv_mass, self.kinetic_mass, self.constrained,
+            dt, m.num_owned)
         if self.parallel:
             w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic = self.comm.allreduce(
                 np.array([w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic]), op=MPI.SUM)
             bad = self.comm.allreduce(bad, op=MPI.MAX)
         self._check_finite(bad)
+        if m.rigid:
+            kinetic += self._rigid_loads(dt)
         e.damping += dt * damping_power
         e.hourglass += dt * hourglass_power
         e.bulk_viscosity += dt * viscosity_power
@@ -385,17 +400,12 @@ class ExplicitSolver:
         self.times.total += t3 - t0
 
     def _advance_rigid(self, rb, rs: RigidState, dt: float, dt_avg: float):
+        """Move a rigid body by its resultant force and torque at t_n (``_rigid_loads``)."""
         m = self.model
-        force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
-        F = self._sum(force[rb.owned].sum(axis=0))
-        if m.axisymmetric:
-            F[0] = 0.0       # a ring's radial forces cancel: an axisymmetric rigid body moves along z
-        rs.velocity = rs.velocity + dt_avg * F / rb.mass
+        rs.velocity = rs.velocity + dt_avg * rs.force / rb.mass
         center_new = rs.center + dt * rs.velocity
         if m.gdim == 3:
-            arm = self.x[rb.nodes] - rs.center
-            T = self._sum(np.cross(arm[rb.owned], force[rb.owned]).sum(axis=0))
-            rs.momentum_angular = rs.momentum_angular + dt_avg * T
+            rs.momentum_angular = rs.momentum_angular + dt_avg * rs.torque
             inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
             omega = np.linalg.solve(inertia, rs.momentum_angular) if rb.mass > 0 else np.zeros(3)
             rs.rotation = rotation_of_angular_velocity(omega, dt) @ rs.rotation
@@ -404,6 +414,29 @@ class ExplicitSolver:
             x_new = self.x[rb.nodes] + dt * rs.velocity
         self.v[rb.nodes] = (x_new - self.x[rb.nodes]) / dt
         rs.center = center_new
+
+    def _rigid_loads(self, dt: float) -> float:
+        """The resultant force (and torque, 3D) on every rigid body at t_{n+1}, kept for its next
+        advance, and the bodies' kinetic energy at t_{n+1}: 1/2 M |v_c|^2 (+ 1/2 omega . L), with
+        v_c = v_c,n+1/2 + dt/2 F / M and L likewise.  The nodes' own f / m would miss it: a load spread
+        unevenly over a rigid surface (a nose in a target) gives each node a different acceleration,
+        so those nodes are left out of the nodal sum.  Collective; the same value on every rank."""
+        m = self.model
+        kinetic = 0.0
+        for rb, rs in zip(m.rigid, self.rigid_states):
+            force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
+            rs.force = self._sum(force[rb.owned].sum(axis=0))
+            if m.axisymmetric:
+                rs.force[0] = 0.0   # a ring's radial forces cancel: an axisymmetric rigid body moves along z
+            v_c = rs.velocity + 0.5 * dt * rs.force / rb.mass
+            kinetic += 0.5 * rb.mass * float(v_c @ v_c)
+            if m.gdim == 3:
+                arm = self.x[rb.nodes] - rs.center
+                rs.torque = self._sum(np.cross(arm[rb.owned], force[rb.owned]).sum(axis=0))
+                momentum = rs.momentum_angular + 0.5 * dt * rs.torque
+                inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
+                kinetic += 0.5 * float(np.linalg.solve(inertia, momentum) @ momentum) if rb.mass > 0 else 0.0
+        return kinetic
 
     def steps(self, end_time: float):
         """Yield a ``Step`` after every step until ``end_time``; stop with a diagnosis if the

@@ -21,7 +21,8 @@ from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
 from .dashpot_cases import fluid_dashpot
 from .orientation_cases import oriented_body
-from .penetration_cases import forrestal
+from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
+                                penetration_yaw)
 
 
 CASES = {
@@ -56,6 +57,10 @@ CASES = {
     "cone_rebound": cone_rebound,
     "fluid_dashpot": fluid_dashpot,
     "forrestal": forrestal,
+    "penetration_rigid": penetration_rigid,
+    "penetration_wave": penetration_wave,
+    "penetration_spin": penetration_spin,
+    "penetration_yaw": penetration_yaw,
     "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,

@@ -21,7 +21,7 @@ LAYERS = [
     {"scene"},
     {"geometry"},
     {"model"},
-    {"contact", "fluid"},
+    {"contact", "fluid", "target"},
     {"solver"},
     {"output"},
     {"metrics"},

@@ -178,6 +178,16 @@ def test_nodes_inside_a_rigid_tube_are_pushed_back_toward_the_axis():
     assert f[0] == pytest.approx([-1e7 * d / np.sqrt(2), -1e7 * d / np.sqrt(2), 0.0]) and not f[1].any()
 
 
+def test_a_tunnel_holds_only_what_has_passed_its_mouth():
+    """A tunnel of radius 1 from the origin along -z (a penetrator's hole): a node 1e-5 outside it at
+    z = -2 is pushed back toward the axis; the same node at z = +2, not yet at the mouth, is free."""
+    d = 1e-5
+    x = [[1 + d, 0.0, -2.0], [1 + d, 0.0, 2.0]]
+    f, g, active = _rigid(kernels.TUNNEL, x, [0.0, 0.0, -1.0], [0.0, 0.0, 0.0], radius=1.0, inside=True)
+    assert active == 1 and g[0] == pytest.approx(-d)
+    assert f[0] == pytest.approx([-1e7 * d, 0.0, 0.0]) and not f[1].any()
+
+
 def test_nodes_outside_a_rigid_cylinder_and_the_axisymmetric_and_plane_forms():
     d = 1e-5
     # outside a 3D cylinder along x through (0, 0, 1): a node at distance 0.5 - d is pushed away

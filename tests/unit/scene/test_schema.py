@@ -303,3 +303,38 @@ def test_nan_and_infinity_in_the_new_fields_are_named():
                          ("cavity[0].liquid.bulk_modulus", "finite pressure"),
                          ("materials.steel.tension_cutoff", "finite pressure")):
         assert f"{field}: expected a {words}" in text, text
+
+
+def _penetrator():
+    raw = base()
+    raw["bodies"][0].update({"shape": "projectile", "radius": "13.45 mm", "length": "218 mm", "crh": 2.0,
+                             "meplat_radius": "0.5 mm"})
+    raw["penetration"] = {"nose": "bar.nose", "face": {"point": [0, 0], "normal": [0, 1]},
+                          "compressive_strength": "5 ksi", "density": "2300 kg/m^3", "friction": 0.4}
+    return raw
+
+
+def test_penetration_resolves_and_adds_its_tunnel():
+    """[penetration]: units to SI, Forrestal's defaults (S from the fit: 0; crater 4a: -1), and the tunnel
+    as a contact of its own along the projectile's path, of the body's radius."""
+    s = resolve(_penetrator())
+    p = s.penetration
+    assert p.nose == "bar.nose" and p.compressive_strength == pytest.approx(5000 * 6894.757, rel=1e-6)
+    assert p.strength_factor == 0.0 and p.crater_depth == -1.0 and p.friction == 0.4
+    tunnel = next(c for c in s.contacts if c.name == p.tunnel)
+    assert tunnel.a == "bar" and tunnel.rigid.kind == "tunnel" and tunnel.rigid.inside
+    assert tunnel.rigid.radius == pytest.approx(0.01345) and tunnel.rigid.direction == (0.0, -1.0)
+
+
+def test_penetration_problems_are_listed():
+    raw = _penetrator()
+    raw["penetration"].update({"nose": "bar.fin", "compressive_strength": "-3 MPa", "carries": ["ghost"],
+                               "face": {"point": ["1 mm", 0], "normal": [0, 1]}, "tunnel": "yes", "colour": 1})
+    text = "\n".join(_problems(raw))
+    expected = ("nose: body 'bar' has regions", "compressive_strength: must be > 0", "carries: must list other bodies",
+                "face: an axisymmetric target's face is square to the axis", "tunnel: must be true or false",
+                "colour: unknown field")
+    assert [e for e in expected if f"penetration.{e}" not in text] == []
+    raw = _penetrator()
+    raw["scene"]["kinematics"] = "plane-strain"
+    assert any("needs kinematics = 'axisymmetric'" in p for p in _problems(raw))

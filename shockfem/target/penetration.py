@@ -1,0 +1,199 @@
+"""A concrete target as a load on the projectile's nose: the ``[penetration]`` of a scene.
+
+Each step, on the nose facets' current positions and velocities (``target/concrete.py`` for the law):
+
+    z          = the depth of the nose's deepest node below the target's face (the tip)
+    crater     z < k (k = ``crater_depth``, Forrestal's 4a): every nose facet carries
+               sigma_n = (S f'c + rho (V1 cos)^2) z / k, cos = v_n / |v| the facet's direction cosine,
+               so that a rigid nose feels Forrestal's F = c z exactly (c and V1 from the strike speed
+               and the mass of the projectile and what it carries, fixed when the tip reaches the face)
+    tunnel     z >= k: sigma_n = S f'c + rho v_n^2 on the advancing facets, times the share of each
+               facet beyond the face (from its nodes' depths; all of the nose once it is in)
+    force      -sigma_n S_f / (nodes per facet) on each facet node, S_f the outward area vector on the
+               current geometry (a follower load: a yawed or bending nose gets its lateral load)
+    torque     3D, mu > 0: T = mu F a / 2 about the nose's axis against its spin (the white paper's
+               friction torque), as forces along e x r on the loaded nodes, weighted by their load
+
+a is the nose's radius from its own area (|sum of S_f| = pi a^2), its axis the direction of that sum,
+and the law's nose factor is the mesh's own, N = sum of A_f (n_f . e)^3 / (pi a^2) (the ogive's
+(8 psi - 1) / (24 psi^2) as the mesh resolves it).  The work of the target on the projectile is
+integrated by the trapezoidal rule; the solver counts it with contact (``energy.contact``).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from mpi4py import MPI
+
+from ..contact.surfaces import NodeExchange, area_vectors, build_surface
+from ..errors import ModelError
+from ..model import Model
+from ..scene.specs import Penetration
+from .concrete import crater_law, normal_stress, strength_factor
+
+# Below this spin [rad/s] the friction torque fades out linearly, so that it stops the spin instead of
+# reversing it every step.
+SPIN_AT_REST = 1e-2
+
+
+class ConcreteTarget:
+    def __init__(self, model: Model, spec: Penetration):
+        self.spec = spec
+        self.model = model
+        surface = build_surface(model, spec.nose)
+        if not len(surface.facets):
+            raise ModelError(f"penetration: the nose surface '{spec.nose}' has no facets")
+        self.global_nodes = np.unique(surface.facets)
+        self.exchange = NodeExchange(model, self.global_nodes)
+        self.facets = np.searchsorted(self.global_nodes, surface.facets)
+        self.gdim = model.gdim
+        self.point = np.array(spec.point, dtype=float)
+        self.normal = np.array(spec.normal, dtype=float)
+        self.strength = (spec.strength_factor or strength_factor(spec.compressive_strength)) \
+            * spec.compressive_strength                                                   # S f'c [Pa]
+        x0 = self.exchange.gather(model.X0)
+        self.radius, axis = self._nose_axis(area_vectors(model, x0[self.facets]))
+        self.nose_factor = self._nose_factor(area_vectors(model, x0[self.facets]), axis)
+        self.crater_depth = spec.crater_depth if spec.crater_depth >= 0 else 4.0 * self.radius
+        names = model.body_names
+        self.projectile = [names.index(spec.nose.partition(".")[0])] + [names.index(b) for b in spec.carried]
+        self.mass = float(sum(model.body_mass[i] for i in self.projectile))
+        self.node_mass = self.exchange.gather(model.mass[:, None])[:, 0]
+        # a rigid nose has no elements to set the step: the load's own resolution does (below)
+        self.rigid_nose = model.bodies[self.projectile[0]].rigid
+        self.facet_size = float(surface.size.min())
+        self.f = np.zeros((len(self.global_nodes), self.gdim))
+        self._f_old = np.zeros_like(self.f)
+        self.depth = 0.0                 # the tip's depth below the face [m] (negative before it arrives)
+        self.max_depth = 0.0
+        self.force = np.zeros(self.gdim)  # resultant of the target's pressure on the nose [N]
+        self.axial_force = 0.0           # its component against the nose's axis [N]
+        self.max_axial_force = 0.0
+        self.torque = 0.0                # friction torque about the axis [N m]
+        self.spin = 0.0                  # the nose's spin about its axis [rad/s]
+        self.work = 0.0                  # work of the target on the projectile [J]
+        self.strike_speed = None         # the projectile's speed when its tip reaches the face [m/s]
+        self.strike_time = None
+        self.crater_stiffness = 0.0      # Forrestal's c [N/m]
+        self.tunnel_entry_speed = None   # V1 [m/s] (the crater law's)
+        self.tunnel_time = None          # when the tip passed the crater's depth [s]
+
+    # ---------------------------------------------------------------- geometry
+    def _nose_axis(self, S: np.ndarray) -> tuple[float, np.ndarray]:
+        """(radius a, unit axis e) of the nose from its area vectors: their sum is pi a^2 e (the nose
+        closed by its base disc has none); axisymmetric: along the axis, the radial parts being rings."""
+        total = S.sum(axis=0)
+        if self.model.axisymmetric:
+            total[0] = 0.0
+        area = float(np.linalg.norm(total))
+        if area <= 0.0:
+            raise ModelError(f"penetration: the nose surface '{self.spec.nose}' has no frontal area")
+        return math.sqrt(area / math.pi), total / area
+
+    def _nose_factor(self, S: np.ndarray, axis: np.ndarray) -> float:
+        """N = sum of A_f (n_f . e)^3 over the facets facing forward, / (pi a^2)."""
+        A = np.linalg.norm(S, axis=1)
+        cos = np.clip(S @ axis / np.where(A > 0, A, 1.0), 0.0, None)
+        return float(np.sum(A * cos ** 3) / (math.pi * self.radius ** 2))
+
+    def _projectile_speed(self, v_local: np.ndarray) -> float:
+        """|mass-weighted mean velocity| of the projectile and what it carries.  Collective."""
+        m = self.model
+        owned = np.zeros(len(m.mass), dtype=bool)
+        owned[:m.num_owned] = True
+        sel = owned & np.isin(m.node_body, self.projectile)
+        momentum = (m.mass[sel, None] * v_local[sel]).sum(axis=0)
+        if m.comm.size > 1:
+            momentum = m.comm.allreduce(momentum, op=MPI.SUM)
+        return float(np.linalg.norm(momentum)) / self.mass
+
+    # ---------------------------------------------------------------- step
+    def compute(self, x_local: np.ndarray, v_local: np.ndarray, dt: float, t: float) -> float:
+        """The target's forces on the nose at t_n+1 (``v`` is v_n+1/2).  Returns the load's step limit:
+        none on a deformable nose (its velocity term is a damping far below the nodes' critical); on a
+        rigid one, which has no elements to set the step, the time to travel half a facet at the strike
+        speed, so that the facets enter the target over several steps each.  Collective."""
+        x = self.exchange.gather(x_local)
+        v = self.exchange.gather(v_local)
+        depth = (self.point - x) @ self.normal            # each nose node's depth below the face
+        self.depth = float(depth.max())
+        self.max_depth = max(self.max_depth, self.depth)
+        self.f[:] = 0.0
+        if self.depth > 0.0 and self.strike_speed is None:
+            self._strike(v_local, t)
+        S = area_vectors(self.model, x[self.facets])
+        A = np.linalg.norm(S, axis=1)
+        n = S / np.where(A > 0, A, 1.0)[:, None]
+        vf = v[self.facets].mean(axis=1)
+        vn = np.einsum("ij,ij->i", vf, n)
+        if self.depth <= 0.0:
+            p = np.zeros(len(A))
+        elif self.depth < self.crater_depth:
+            # the crater: the tunnel law at V1 over the whole nose, scaled with depth (F = c z)
+            speed = np.linalg.norm(vf, axis=1)
+            cos = vn / np.where(speed > 0, speed, 1.0)
+            p = normal_stress(self.strength, self.spec.density, self.tunnel_entry_speed * cos) \
+                * (self.depth / self.crater_depth)
+        else:
+            if self.tunnel_time is None:
+                self.tunnel_time = t
+            d = depth[self.facets]
+            inside = np.clip(d, 0.0, None).sum(axis=1) / np.maximum(np.abs(d).sum(axis=1), 1e-300)
+            p = normal_stress(self.strength, self.spec.density, vn) * inside
+        nn = self.facets.shape[1]
+        share = -p[:, None] * S / nn
+        for k in range(nn):
+            np.add.at(self.f, self.facets[:, k], share)
+        self.force = share.sum(axis=0) * nn
+        axis = self._nose_axis(S)[1] if p.any() else None
+        self.axial_force = float(-self.force @ axis) if axis is not None else 0.0
+        self.max_axial_force = max(self.max_axial_force, self.axial_force)
+        if self.gdim == 3 and self.spec.friction > 0.0 and axis is not None:
+            self._friction_torque(x, v, axis)
+        self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * v))
+        self._f_old[:] = self.f
+        if not self.rigid_nose:
+            return np.inf
+        # at the strike speed, not the current one: the last metres per second before it stops need
+        # steps as short as the first
+        speed = max(float(np.sqrt((v ** 2).sum(axis=1)).max()), self.strike_speed or 0.0)
+        return 0.5 * self.facet_size / speed if speed > 0.0 else np.inf
+
+    def _strike(self, v_local: np.ndarray, t: float):
+        """The tip reaches the face: fix the crater law from the projectile's speed and mass."""
+        self.strike_speed = self._projectile_speed(v_local)
+        self.strike_time = t
+        if self.crater_depth > 0.0:
+            self.crater_stiffness, v1_squared = crater_law(
+                self.mass, self.radius, self.strength, self.spec.density, self.nose_factor, self.strike_speed,
+                self.crater_depth)
+            self.tunnel_entry_speed = math.sqrt(max(v1_squared, 0.0))
+        else:
+            self.tunnel_entry_speed = self.strike_speed
+
+    def _friction_torque(self, x: np.ndarray, v: np.ndarray, axis: np.ndarray):
+        """T = mu F a / 2 against the nose's spin, as forces w_i T (e x r_i) / sum w_j |r_j|^2 on the
+        nodes (w their load, r their arm square to the axis): the torque about the axis is exactly T."""
+        w = np.linalg.norm(self.f, axis=1)
+        arm = x - x.mean(axis=0)
+        arm -= np.outer(arm @ axis, axis)
+        m = self.node_mass
+        self.spin = float(np.sum(m * (np.cross(arm, v) @ axis)) / max(np.sum(m * (arm ** 2).sum(axis=1)), 1e-300))
+        self.torque = self.spec.friction * self.axial_force * self.radius / 2.0
+        lever = float(np.sum(w * (arm ** 2).sum(axis=1)))
+        if lever <= 0.0 or self.torque <= 0.0:
+            return
+        fade = float(np.clip(self.spin / SPIN_AT_REST, -1.0, 1.0))
+        self.f -= fade * self.torque * w[:, None] * np.cross(axis, arm) / lever
+
+    def add_forces(self, f: np.ndarray):
+        self.exchange.add_to(self.f, f)
+
+    def summary(self) -> dict:
+        return {"nose": self.spec.nose, "radius": self.radius, "nose_factor": self.nose_factor,
+                "strength": self.strength, "crater_depth": self.crater_depth, "mass": self.mass,
+                "strike_speed": self.strike_speed, "strike_time": self.strike_time,
+                "crater_stiffness": self.crater_stiffness, "tunnel_entry_speed": self.tunnel_entry_speed,
+                "tunnel_time": self.tunnel_time, "depth": self.depth, "max_depth": self.max_depth,
+                "max_axial_force": self.max_axial_force, "target_work": -self.work}
