@@ -96,7 +96,7 @@ def _parser() -> argparse.ArgumentParser:
                     help="with the design, trade curves at N points: weight against pressure, length against bore")
 
     st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
-    st.add_argument("name", choices=("amplifier", "launcher", "fixture"))
+    st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration"))
     st.add_argument("--size", choices=("smoke", "default"), default="default")
     st.add_argument("--out", help="results directory (default: results/<name>)")
 
@@ -227,8 +227,10 @@ def _dispatch(args) -> int:
             from .study.amplifier import run_study
         elif args.name == "launcher":
             from .study.launcher import run_study
-        else:
+        elif args.name == "fixture":
             from .study.fixture import run_study
+        else:
+            from .study.penetration import run_study
         run_study(args.size, args.out or os.path.join("results", args.name))
         return EXIT_OK
     if args.command == "verify":

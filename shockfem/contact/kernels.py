@@ -40,6 +40,7 @@ from numba import njit
 
 # rigid surface kinds (node_to_rigid)
 PLANE, CYLINDER, TUNNEL = 0, 1, 2
+NOT_ENTERED = -1e300          # a tunnel node's entry gap before it reaches the mouth
 # friction coefficients: [mu_static, mu_dynamic, decay [s/m]]
 MU_S, MU_D, DECAY = 0, 1, 2
 _TOL = 1e-6        # parametric tolerance: a node on the edge between two facets belongs to both
@@ -343,12 +344,15 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
     ``point`` with unit normal ``direction`` toward the allowed side, or a cylinder (kind CYLINDER)
     of ``radius`` about the axis through ``point`` along the unit ``direction`` (a zero direction
     in 2D makes it the circle about ``point``), the nodes staying ``inside`` or outside it, or a
-    tunnel (kind TUNNEL): that cylinder from ``point`` on along ``direction`` only, nodes inside.
+    tunnel (kind TUNNEL): that cylinder from ``point`` on along ``direction`` only, nodes inside, each
+    node's wall where it entered (a node entering outside the radius, as the tail of a yawed body
+    does, is held from going further out, not pushed in: the hole is as wide as it found it).
     Returns the number of active slaves (``stiff`` as in ``node_to_facets``)."""
     gdim = x.shape[1]
     n = np.zeros(3)
     rel = np.zeros(3)
     no_master = np.zeros(0, dtype=slaves.dtype)     # a rigid surface takes no reaction
+    free = np.zeros(slaves.shape[0])                # a tunnel's nodes: no initial penetration to release
     active = 0
     for i in range(slaves.shape[0]):
         s = slaves[i]
@@ -370,8 +374,27 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
             for d in range(gdim):
                 n[d] = sign * n[d] / dist if dist > 0.0 else 0.0
             g = sign * (dist - radius)
-            if kind == TUNNEL and along < 0.0:
-                g = depth             # not yet in the tunnel: out of reach
+            if kind == TUNNEL:
+                if along < 0.0:
+                    # not yet in: its wall will be where it enters (``offset`` holds that entry gap)
+                    offset[i] = NOT_ENTERED
+                    gap[i] = 0.0
+                    _forget(ft, i)
+                    continue
+                if offset[i] == NOT_ENTERED:
+                    offset[i] = min(g, 0.0)
+                # the hole is as wide as the node found it, and stays so (no release as it moves in)
+                g -= offset[i]
+                free[i] = 0.0
+                if g >= depth:
+                    gap[i] = 0.0
+                    _forget(ft, i)
+                    continue
+                for d in range(gdim):
+                    rel[d] = v[s, d] - velocity[d]
+                active += _respond(i, s, g, n, rel, mass[s], node_stiffness[i], no_master, n, zeta, soft_scale,
+                                   dt, friction, f, ff, ft, gap, free, stiff)
+                continue
         gap[i] = 0.0
         if g >= depth or g <= -depth:
             offset[i] = 0.0

@@ -15,6 +15,7 @@ import numpy as np
 
 from mpi4py import MPI
 
+from ..errors import ModelError
 from ..solver.explicit import ExplicitSolver
 
 
@@ -31,8 +32,8 @@ class HistoryRecorder:
         for b in m.bodies:
             self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
             self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
-        self.meters = [_place_accelerometer(solver, am) for am in m.accelerometers]
-        self.notes = [note for _, _, note in self.meters]
+        self.meters = [_Meter(solver, am) for am in m.accelerometers]
+        self.notes = [meter.note for meter in self.meters]
         for am in m.accelerometers:
             self.columns += [(f"accelerometer.{am.name}.v_{a}", "m/s") for a in axes]
         for c in m.contacts:
@@ -62,9 +63,8 @@ class HistoryRecorder:
         row = [s.t]
         for vb, ab in zip(v, a):
             row += list(vb) + list(ab)
-        for node, owner, _ in self.meters:
-            vn = s.v[node] + 0.5 * s.dt * s.a[node] if s.comm.rank == owner else np.zeros(s.model.gdim)
-            row += list(s.comm.allreduce(vn, op=MPI.SUM) if s.parallel else vn)
+        for meter in self.meters:
+            row += list(meter.velocity())
         for pair in s.contacts:
             row += list(pair.force_a) + list(pair.friction_a)
         for spring in s.springs:
@@ -100,24 +100,53 @@ class HistoryRecorder:
             w.writerows(data.tolist())
 
 
-def _place_accelerometer(solver: ExplicitSolver, meter) -> tuple[int, int, str]:
-    """(local node, owning rank, note): the owned node of the accelerometer's body nearest to its point."""
-    m = solver.model
-    body = m.body_names.index(meter.body)
-    candidates = np.flatnonzero(solver.owned & (m.node_body == body))
-    point = np.asarray(meter.point)
-    if len(candidates):
-        d = np.linalg.norm(m.X0[candidates] - point, axis=1)
-        best = int(candidates[np.argmin(d)])
-        local = (float(d.min()), solver.comm.rank)
-    else:
-        best, local = -1, (np.inf, solver.comm.rank)
-    distance, owner = solver.comm.allreduce(local, op=MPI.MINLOC) if solver.parallel else local
-    where = m.X0[best] if solver.comm.rank == owner else np.zeros(m.gdim)
-    where = solver.comm.allreduce(where, op=MPI.SUM) if solver.parallel else where
-    note = (f"accelerometer {meter.name}: node of {meter.body} at {np.array2string(where, precision=5)} m, "
-            f"{distance:.3g} m from the requested point")
-    return best, owner, note
+class _Meter:
+    """An accelerometer's reading: the velocity of one node (on the rank that owns it), or the
+    mass-weighted mean velocity of a section's nodes."""
+
+    def __init__(self, solver: ExplicitSolver, meter):
+        m = solver.model
+        self.solver = solver
+        body = m.body_names.index(meter.body)
+        point = np.asarray(meter.point)
+        mine = solver.owned & (m.node_body == body)
+        if meter.section > 0.0:
+            axis = np.asarray(m.bodies[body].axis)[:m.gdim] if m.gdim == 3 else np.eye(2)[1]
+            self.nodes = np.flatnonzero(mine & (np.abs((m.X0 - point) @ axis) <= 0.5 * meter.section))
+            self.mass = m.mass[self.nodes]
+            total, count = (solver.comm.allreduce(np.array([self.mass.sum(), len(self.nodes)]), op=MPI.SUM)
+                            if solver.parallel else (self.mass.sum(), len(self.nodes)))
+            if count == 0:
+                raise ModelError(f"accelerometer {meter.name}: no node of {meter.body} within "
+                                 f"{meter.section / 2:.3g} m of the section through {meter.point}: widen its section")
+            self.mass = self.mass / total
+            self.owner = -1
+            self.note = (f"accelerometer {meter.name}: mean of {int(count)} nodes of {meter.body} in the "
+                         f"{meter.section:.3g} m section through {np.array2string(point, precision=5)} m")
+            return
+        candidates = np.flatnonzero(mine)
+        if len(candidates):
+            d = np.linalg.norm(m.X0[candidates] - point, axis=1)
+            best = int(candidates[np.argmin(d)])
+            local = (float(d.min()), solver.comm.rank)
+        else:
+            best, local = -1, (np.inf, solver.comm.rank)
+        distance, self.owner = solver.comm.allreduce(local, op=MPI.MINLOC) if solver.parallel else local
+        where = m.X0[best] if solver.comm.rank == self.owner else np.zeros(m.gdim)
+        where = solver.comm.allreduce(where, op=MPI.SUM) if solver.parallel else where
+        self.nodes = np.array([best])
+        self.note = (f"accelerometer {meter.name}: node of {meter.body} at {np.array2string(where, precision=5)} m, "
+                     f"{distance:.3g} m from the requested point")
+
+    def velocity(self) -> np.ndarray:
+        """Its velocity at t_n (v_n-1/2 + dt/2 a_n), on every rank.  Collective."""
+        s = self.solver
+        v = s.v[self.nodes] + 0.5 * s.dt * s.a[self.nodes]
+        if self.owner == -1:
+            local = (self.mass[:, None] * v).sum(axis=0)
+        else:
+            local = v[0] if s.comm.rank == self.owner else np.zeros(s.model.gdim)
+        return s.comm.allreduce(local, op=MPI.SUM) if s.parallel else local
 
 
 def read_history(path: str) -> tuple[dict[str, np.ndarray], dict[str, str]]:

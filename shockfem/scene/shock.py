@@ -54,7 +54,7 @@ def read_shock(ck: Checker, raw: dict, body_regions: dict, kin: str, end_time: f
         ppo = 12
     meters = []
     names = set()
-    fields = ("name", "body", "at")
+    fields = ("name", "body", "at", "section")
     for path, m in ck.entries(d, "accelerometers", "shock.accelerometers", fields):
         ck.unknown(m, fields, path)
         name = m.get("name")
@@ -68,7 +68,8 @@ def read_shock(ck: Checker, raw: dict, body_regions: dict, kin: str, end_time: f
         if "at" not in m:
             ck.fail(f"{path}.at", f"missing (the point, {gdim} coordinates with units)")
         at = ck.vector(m, "at", path, "length", gdim, [0.0] * gdim)
-        meters.append(Accelerometer(name, str(body), at))
+        section = ck.quantity(m, "section", path, "length", default=0.0, positive="section" in m)
+        meters.append(Accelerometer(name, str(body), at, section))
     spec = None
     if "spec" in d:
         sp = ck.table(d, "spec", "shock.spec")

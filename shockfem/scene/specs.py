@@ -258,10 +258,14 @@ PULSE_SHAPES = ("half-sine", "terminal-peak sawtooth", "trapezoid")
 
 @dataclass(frozen=True)
 class Accelerometer:
-    """Acceleration at a point: the node of ``body`` nearest to ``point`` (scene coordinates at t = 0)."""
+    """Acceleration at a point: the node of ``body`` nearest to ``point`` (scene coordinates at t = 0);
+    with a ``section`` thickness, the mass-weighted mean of the body's nodes in the slab that thick
+    through the point, square to the body's axis (a cross-section's motion: a spinning or ringing
+    section's own circulation averages out)."""
     name: str
     body: str
     point: tuple[float, ...]
+    section: float = 0.0             # [m]; 0: the nearest node
 
 
 @dataclass(frozen=True)

@@ -82,3 +82,17 @@ class Report:
             fh.write("\n".join(self.lines) + "\n")
         with open(os.path.join(self.out_dir, "results.json"), "w") as fh:
             json.dump(self.results, fh, indent=1)
+
+
+def run_sections(out_dir: str, title: str, intro: str, sections, ctx, echo=print) -> str:
+    """A study of ``sections`` ((title, function(report, ctx)), in order) into ``out_dir``: its report
+    opened with ``intro``, each section echoed as it starts, the wall time at the end; returns the
+    report's path."""
+    started = time.perf_counter()
+    rep = Report(out_dir, title)
+    rep.text(intro)
+    for k, (name, section) in enumerate(sections, 1):
+        echo(f"{k}/{len(sections)} {name}")
+        section(rep, ctx)
+    return rep.finish(started, echo)
+

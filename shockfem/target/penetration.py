@@ -174,9 +174,13 @@ class ConcreteTarget:
 
     def _friction_torque(self, x: np.ndarray, v: np.ndarray, axis: np.ndarray):
         """T = mu F a / 2 against the nose's spin, as forces w_i T (e x r_i) / sum w_j |r_j|^2 on the
-        nodes (w their load, r their arm square to the axis): the torque about the axis is exactly T."""
+        nodes (w their load, r their arm square to the axis through the load's centre, sum w_i r_i = 0):
+        their moment about the axis is exactly T and their resultant exactly zero (an uneven mesh would
+        otherwise push the nose sideways)."""
         w = np.linalg.norm(self.f, axis=1)
-        arm = x - x.mean(axis=0)
+        if w.sum() <= 0.0:
+            return
+        arm = x - (w[:, None] * x).sum(axis=0) / w.sum()
         arm -= np.outer(arm @ axis, axis)
         m = self.node_mass
         self.spin = float(np.sum(m * (np.cross(arm, v) @ axis)) / max(np.sum(m * (arm ** 2).sum(axis=1)), 1e-300))

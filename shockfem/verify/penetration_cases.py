@@ -20,7 +20,8 @@ finite-element load that applies it on a nose (``target/``, a scene's ``[penetra
   falls at mu F a / (2 J).
 * ``penetration_yaw``: a rigid ogive (3D) yawed 5 deg to its velocity, its nose wholly in the target:
   the load's force and moment about the tip against the integral of the normal stress over the exact
-  nose surface (its advancing side only).
+  nose surface (its advancing side only); and the same nose unyawed but spinning, with the friction
+  torque: on its uneven tetrahedra the torque's forces must still have no resultant.
 """
 from __future__ import annotations
 
@@ -264,12 +265,19 @@ def penetration_yaw(size, workdir):
     loads = []
 
     def probe(sv):
-        if not loads:
+        if sv.step == 0:               # the load on the nose as placed, before any step
             tg = sv.target
             x = tg.exchange.gather(sv.x)
-            loads.append((tg.force.copy(), np.cross(x - np.array([0.0, 0.0, tip]), tg.f).sum(axis=0)))
+            loads.append((tg.force.copy(), np.cross(x - np.array([0.0, 0.0, tip]), tg.f).sum(axis=0),
+                          tg.f.sum(axis=0) - tg.force, tg.torque))
     solver, wall = solve(raw, cache_dir=workdir, probe=probe)
-    force, moment = loads[0]
+    force, moment = loads[0][:2]
+    body = raw["bodies"][0]
+    body.pop("orientation")
+    body["spin"] = 600.0
+    raw["penetration"]["friction"] = 0.4
+    solve(raw, cache_dir=workdir, probe=probe)
+    _, _, spinning, torque = loads[1]
     turn = axis_angle([1.0, 0.0, 0.0], YAW)
     f_body, m_body = _exact_nose_load(turn.T @ np.array([0.0, 0.0, -V]))
     f_exact, m_exact = turn @ f_body, turn @ m_body
@@ -278,6 +286,10 @@ def penetration_yaw(size, workdir):
         check("penetration_yaw.axial_force [N]", f_exact[2], force[2], 0.01, wall, n),
         check("penetration_yaw.lateral_force [N]", f_exact[1], force[1], 0.015, wall, n),
         check("penetration_yaw.moment_about_tip [N m]", m_exact[0], moment[0], 0.015, wall, n),
+        # the friction torque's forces on uneven facets: their moment T, their resultant nothing (relative
+        # to T / a, the size of their forces)
+        check("penetration_yaw.torque_forces_resultant [-, abs, of T / a]", 0.0,
+              float(np.hypot(*spinning[:2])) / (torque / d["radius"]), 1e-9, wall, n, absolute=True),
         check("penetration_yaw.zero_yaw_axial_force [N]",
               math.pi * d["radius"] ** 2 * (strength_factor(SHOT["fc"]) * SHOT["fc"]
                                             + nose_factor(SHOT["crh"]) * SHOT["density"] * V * V),

@@ -149,3 +149,36 @@ def test_fixture_study_smoke(tmp_path):
     for png in os.listdir(tmp_path / "fixture"):
         if png.endswith(".png"):
             assert (tmp_path / "fixture" / png).stat().st_size > 10_000
+
+
+def test_penetration_study_smoke(tmp_path):
+    """The penetration study at smoke size (the events cut at 12% of their stopping time, past the crater
+    at the strike speed): the shots completed and balanced, their peak axial force and deceleration those
+    of Forrestal's law with the mesh's nose factor at the crater's exit speed (force within 1%, the
+    elastic body's CFC 1000 deceleration within 3%); the screening design D = ABC run in full with its
+    centre point, its aliases named, and the stronger concrete's effect on the deceleration positive and
+    significant by Lenth's test."""
+    from shockfem.target.concrete import crater_law, strength_factor
+    results, report = _study("penetration", tmp_path / "penetration")
+    for section in ("## 1. The white paper's shot", "## 2. Screening design"):
+        assert section in report
+    m, a, rho, V = 12 * 0.45359237, 0.030, 2300.0, 1600 * 0.3048
+    for row in _rows(results, "shot"):
+        assert row["status"] == "completed" and row["energy balance [-]"] < 1e-4
+        fc, N = row["f'c [MPa]"] * 1e6, row["mesh nose factor N [-]"]
+        strength = strength_factor(fc) * fc
+        v1_squared = crater_law(m, a, strength, rho, N, V, 4 * a)[1]
+        force = math.pi * a * a * (strength + N * rho * v1_squared)
+        assert row["peak axial force [MN]"] * 1e6 == pytest.approx(force, rel=0.01)
+        assert row["peak deceleration, FE CFC 1000 [g]"] == pytest.approx(force / m / 9.80665, rel=0.03)
+    runs = _rows(results, "doe_runs")
+    assert len(runs) == 9 and all(r["status"] == "completed" and r["energy balance [-]"] < 1e-4 for r in runs)
+    for r in runs[:8]:
+        assert r["D"] == r["A"] * r["B"] * r["C"]
+    assert runs[8]["A"] == runs[8]["B"] == runs[8]["C"] == runs[8]["D"] == 0
+    effects = results["tables"]["doe_effects"]
+    assert "effect AC = BD" in effects["columns"]
+    (deceleration,) = _rows(results, "doe_effects", response="peak deceleration [g]")
+    assert deceleration["effect B"] > deceleration["Lenth margin (95%)"] > 0
+    assert os.path.getsize(tmp_path / "penetration" / "doe.png") > 10_000
+    assert os.path.exists(tmp_path / "penetration" / "doe_run2" / "fields.xdmf")

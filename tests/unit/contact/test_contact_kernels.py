@@ -150,8 +150,9 @@ def test_bilinear_projection_on_a_warped_face():
     assert outside == 0.0 and abs(g) < 1e-12 and w == pytest.approx(N)
 
 
-def _rigid(kind, x, direction, point, radius=0.0, inside=False, k=1e7, velocity=None):
+def _rigid(kind, x, direction, point, radius=0.0, inside=False, k=1e7, velocity=None, offset=None):
     x = np.asarray(x, dtype=float)
+    offset = np.zeros(len(x)) if offset is None else offset
     v = np.zeros_like(x)
     f = np.zeros_like(x)
     g = np.zeros(len(x))
@@ -159,7 +160,7 @@ def _rigid(kind, x, direction, point, radius=0.0, inside=False, k=1e7, velocity=
     active = kernels.node_to_rigid(np.arange(len(x)), np.full(len(x), k), kind, np.asarray(point, dtype=float),
                                    np.asarray(direction, dtype=float), radius, inside, vel, x, v,
                                    np.ones(len(x)), 0.0, 0.0, 0.0, 0.1, NO_FRICTION, f, np.zeros_like(x),
-                                   np.zeros((len(x), 3)), g, np.zeros(len(x)), np.zeros(len(x)))
+                                   np.zeros((len(x), 3)), g, offset, np.zeros(len(x)))
     return f, g, active
 
 
@@ -183,9 +184,26 @@ def test_a_tunnel_holds_only_what_has_passed_its_mouth():
     z = -2 is pushed back toward the axis; the same node at z = +2, not yet at the mouth, is free."""
     d = 1e-5
     x = [[1 + d, 0.0, -2.0], [1 + d, 0.0, 2.0]]
-    f, g, active = _rigid(kernels.TUNNEL, x, [0.0, 0.0, -1.0], [0.0, 0.0, 0.0], radius=1.0, inside=True)
+    f, g, active = _rigid(kernels.TUNNEL, x, [0.0, 0.0, -1.0], [0.0, 0.0, 0.0], radius=1.0, inside=True,
+                          offset=np.zeros(2))
     assert active == 1 and g[0] == pytest.approx(-d)
     assert f[0] == pytest.approx([-1e7 * d, 0.0, 0.0]) and not f[1].any()
+
+
+def test_a_node_entering_a_tunnel_outside_it_is_held_where_it_entered():
+    """A yawed tail crosses the mouth 0.1 outside the radius: no push inward at entry (its wall is where
+    it entered); moved a further 1e-5 out it is pushed back by k 1e-5; moved in, its wall stays."""
+    d = 1e-5
+    offset = np.full(1, kernels.NOT_ENTERED)
+    f, g, _ = _rigid(kernels.TUNNEL, [[1.1, 0.0, -0.5]], [0.0, 0.0, -1.0], [0.0, 0.0, 0.0], radius=1.0, inside=True,
+                     offset=offset)
+    assert not f.any() and offset[0] == pytest.approx(-0.1)
+    f, g, _ = _rigid(kernels.TUNNEL, [[1.1 + d, 0.0, -0.6]], [0.0, 0.0, -1.0], [0.0, 0.0, 0.0], radius=1.0,
+                     inside=True, offset=offset)
+    assert f[0] == pytest.approx([-1e7 * d, 0.0, 0.0])
+    _rigid(kernels.TUNNEL, [[1.0, 0.0, -0.7]], [0.0, 0.0, -1.0], [0.0, 0.0, 0.0], radius=1.0, inside=True,
+           offset=offset)
+    assert offset[0] == pytest.approx(-0.1)
 
 
 def test_nodes_outside_a_rigid_cylinder_and_the_axisymmetric_and_plane_forms():

@@ -1,0 +1,41 @@
+"""A slender body's bending, read from the motion of evenly spaced stations on its axis.
+
+The stations (accelerometers of a scene, base k = 0 to nose tip k = n - 1, n odd, spacing L / (n - 1))
+record their velocities; integrated, their lateral displacements u_k (one component, or a vector of the
+components square to the axis) give:
+
+* the tail's flexural deflection: the base's displacement from the forebody's line, the line through
+  the nose tip and the mid-length station carried to the base, u_0 - (2 u_mid - u_tip);
+* the bending stress E R kappa (Euler-Bernoulli, outer fibre at radius R), kappa the axis's curvature
+  (u_{k-1} - 2 u_k + u_{k+1}) / spacing^2 at the interior stations of the base half (the shank).
+
+A measure of the bending mode: blind to local stresses at contacts, which the von Mises field has.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+
+def station_travel(t: np.ndarray, velocities: np.ndarray) -> np.ndarray:
+    """The stations' displacements from their recorded velocities (stations, samples[, components]),
+    integrated by the trapezoidal rule from zero."""
+    v = np.asarray(velocities, dtype=float)
+    dt = np.diff(t).reshape((1, -1) + (1,) * (v.ndim - 2))
+    steps = 0.5 * (v[:, 1:] + v[:, :-1]) * dt
+    return np.concatenate([np.zeros_like(v[:, :1]), np.cumsum(steps, axis=1)], axis=1)
+
+
+def tail_flexure(u: np.ndarray, length: float, radius: float, modulus: float) -> tuple[np.ndarray, np.ndarray]:
+    """(tail deflection, bending stress) over the samples from the stations' lateral displacements u
+    (stations, samples[, components]); vectors give their magnitudes."""
+    n = u.shape[0]
+    if n < 3 or n % 2 == 0:
+        raise ValueError(f"tail flexure needs an odd number of stations (>= 3), got {n}")
+    mid = (n - 1) // 2
+    spacing = length / (n - 1)
+    deflection = u[0] - (2 * u[mid] - u[-1])
+    curvature = np.array([(u[k - 1] - 2 * u[k] + u[k + 1]) / spacing ** 2 for k in range(1, mid + 1)])
+    if u.ndim == 3:
+        deflection = np.linalg.norm(deflection, axis=-1)
+        curvature = np.linalg.norm(curvature, axis=-1)
+    return deflection, modulus * radius * np.abs(curvature).max(axis=0)

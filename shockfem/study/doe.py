@@ -1,0 +1,80 @@
+"""Two-level designs of experiments: the fractional factorial, its effects, their aliases and Lenth's
+test of which matter.
+
+A 2^(k-p) design runs every combination of k - p base factors at coded levels -1 / +1 and sets each
+of the p others to a product of base columns (its generator, e.g. D = ABC); that confounds effects:
+with I = ABCD, A is aliased with BCD and AB with CD (a resolution IV design keeps main effects clear of
+two-factor interactions, which are aliased in pairs).  An effect is the mean response at +1 less the
+mean at -1, twice the coded regression coefficient.  A deterministic simulation repeats itself
+exactly, so replicated centre points give no error estimate (their spread is zero) but one tells
+curvature: the centre's response against the factorial runs' mean.  Significance then comes from
+Lenth (1989): the pseudo standard error PSE = 1.5 median(|c| : |c| < 2.5 s0), s0 = 1.5 median |c|, of
+the m effects, and the margin of error t(0.975, m / 3) PSE.
+"""
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+from scipy import stats
+
+
+def fractional_factorial(base: int, generators: dict[int, tuple[int, ...]]) -> np.ndarray:
+    """Coded levels (runs, factors) of the 2^(base) full factorial in standard order (the first factor
+    alternating fastest), with a column for each generated factor: ``generators`` maps its index to the
+    base columns whose product sets it (D = ABC: {3: (0, 1, 2)})."""
+    runs = np.array([[1 if (r >> j) & 1 else -1 for j in range(base)] for r in range(2 ** base)], dtype=float)
+    columns = [runs[:, j] for j in range(base)]
+    for index in sorted(generators):
+        if index != len(columns):
+            raise ValueError("generated factors follow the base factors, in order")
+        columns.append(np.prod(runs[:, list(generators[index])], axis=1))
+    return np.column_stack(columns)
+
+
+def effect_columns(design: np.ndarray, names: str) -> dict[str, np.ndarray]:
+    """The main-effect and two-factor-interaction columns of a design, each distinct column once and
+    named by every effect it carries ("AC = BD"): the columns a saturated model can estimate."""
+    out: dict[str, np.ndarray] = {}
+    labels: dict[bytes, list[str]] = {}
+    terms = [(n,) for n in range(design.shape[1])] + list(itertools.combinations(range(design.shape[1]), 2))
+    for term in terms:
+        column = np.prod(design[:, list(term)], axis=1)
+        key = column.tobytes()
+        label = "".join(names[i] for i in term)
+        if key in labels:
+            labels[key].append(label)
+        elif (-column).tobytes() in labels:
+            labels[(-column).tobytes()].append(f"-{label}")
+        else:
+            labels[key] = [label]
+            out[key] = column
+    return {" = ".join(labels[key]): column for key, column in out.items()}
+
+
+def effects(columns: dict[str, np.ndarray], response: np.ndarray) -> dict[str, float]:
+    """Each column's effect: the mean response where it is +1 less the mean where it is -1."""
+    y = np.asarray(response, dtype=float)
+    return {name: float(y[c > 0].mean() - y[c < 0].mean()) for name, c in columns.items()}
+
+
+def lenth(values) -> tuple[float, float]:
+    """(PSE, margin of error at 95%) of a set of effects (Lenth 1989)."""
+    c = np.abs(np.asarray(list(values), dtype=float))
+    s0 = 1.5 * float(np.median(c))
+    trimmed = c[c < 2.5 * s0]
+    pse = 1.5 * float(np.median(trimmed)) if len(trimmed) else s0
+    return pse, float(stats.t.ppf(0.975, len(c) / 3.0)) * pse
+
+
+def physical_coefficients(coded: dict[str, float], intercept: float, centres: list[float],
+                          half_ranges: list[float], names: str) -> tuple[float, dict[str, float]]:
+    """The main-effect model y = b0 + sum b_i x_i (x_i coded) in physical units X_i = centre_i +
+    half_i x_i: y = c0 + sum c_i X_i with c_i = b_i / half_i and c0 = b0 - sum c_i centre_i."""
+    slopes = {n: coded[n] / h for n, h in zip(names, half_ranges)}
+    return intercept - sum(slopes[n] * c for n, c in zip(names, centres)), slopes
+
+
+def significant(value: float, margin: float) -> bool:
+    return math.isfinite(margin) and abs(value) > margin

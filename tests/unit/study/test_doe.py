@@ -1,0 +1,28 @@
+"""study.doe: the 2^(4-1) design, its aliases, effects and Lenth's margin."""
+import numpy as np
+import pytest
+
+from shockfem.study.doe import effect_columns, effects, fractional_factorial, lenth, physical_coefficients
+
+
+def test_half_fraction_with_d_equal_abc_aliases_two_factor_interactions_in_pairs():
+    X = fractional_factorial(3, {3: (0, 1, 2)})
+    assert X.shape == (8, 4) and (X[:, 3] == X[:, 0] * X[:, 1] * X[:, 2]).all()
+    assert (X.T @ X == 8 * np.eye(4)).all()                       # orthogonal main effects
+    columns = effect_columns(X, "ABCD")
+    assert set(columns) == {"A", "B", "C", "D", "AB = CD", "AC = BD", "AD = BC"}
+
+
+def test_effects_recover_a_linear_model_and_lenth_flags_the_large_ones():
+    """y = 10 + 3 A - 2 C + 0.5 AB (coded) plus small noise: effects are twice the coefficients,
+    and Lenth's margin separates A and C from the rest."""
+    X = fractional_factorial(3, {3: (0, 1, 2)})
+    noise = np.array([0.01, -0.02, 0.015, 0.0, -0.01, 0.02, -0.015, 0.005])
+    y = 10 + 3 * X[:, 0] - 2 * X[:, 2] + 0.5 * X[:, 0] * X[:, 1] + noise
+    e = effects(effect_columns(X, "ABCD"), y)
+    assert e["A"] == pytest.approx(6.0, abs=0.05) and e["C"] == pytest.approx(-4.0, abs=0.05)
+    assert e["AB = CD"] == pytest.approx(1.0, abs=0.05)
+    pse, margin = lenth(e.values())
+    assert abs(e["A"]) > margin and abs(e["C"]) > margin and abs(e["B"]) < margin
+    c0, slopes = physical_coefficients({"A": 3.0, "B": 0.0}, 10.0, [2.0, 50.0], [2.0, 25.0], "AB")
+    assert slopes["A"] == 1.5 and c0 == pytest.approx(10.0 - 3.0)
