@@ -113,13 +113,16 @@ class _Meter:
         if meter.section > 0.0:
             axis = np.asarray(m.bodies[body].axis)[:m.gdim] if m.gdim == 3 else np.eye(2)[1]
             self.nodes = np.flatnonzero(mine & (np.abs((m.X0 - point) @ axis) <= 0.5 * meter.section))
-            self.mass = m.mass[self.nodes]
-            total, count = (solver.comm.allreduce(np.array([self.mass.sum(), len(self.nodes)]), op=MPI.SUM)
-                            if solver.parallel else (self.mass.sum(), len(self.nodes)))
+            count = solver.comm.allreduce(len(self.nodes), op=MPI.SUM) if solver.parallel else len(self.nodes)
             if count == 0:
                 raise ModelError(f"accelerometer {meter.name}: no node of {meter.body} within "
                                  f"{meter.section / 2:.3g} m of the section through {meter.point}: widen its section")
-            self.mass = self.mass / total
+            if m.gdim == 3:
+                self.mass = self._centred_weights(solver, m.mass[self.nodes], m.X0[self.nodes] - point, axis)
+            else:           # 2D: no spin; a section's mean is its mass-weighted mean
+                total = m.mass[self.nodes].sum()
+                total = solver.comm.allreduce(total, op=MPI.SUM) if solver.parallel else total
+                self.mass = m.mass[self.nodes] / total
             self.owner = -1
             self.note = (f"accelerometer {meter.name}: mean of {int(count)} nodes of {meter.body} in the "
                          f"{meter.section:.3g} m section through {np.array2string(point, precision=5)} m")
@@ -137,6 +140,24 @@ class _Meter:
         self.nodes = np.array([best])
         self.note = (f"accelerometer {meter.name}: node of {meter.body} at {np.array2string(where, precision=5)} m, "
                      f"{distance:.3g} m from the requested point")
+
+    @staticmethod
+    def _centred_weights(solver, mass, arm, axis):
+        """Weights w_i = m_i (1 + l . r_i) / sum, r_i the nodes' arms square to the axis, l chosen so that
+        sum w_i r_i = 0: the weighted section is centred on the axis, so a spin of the section about the
+        axis adds nothing to its mean velocity (the plain mass centroid of a meshed slab sits a little off
+        it and would circle).  Collective."""
+        arm = arm - np.outer(arm @ axis, axis)
+        moment = mass @ arm                                     # sum m_i r_i
+        second = (mass[:, None] * arm).T @ arm                  # sum m_i r_i r_i^T
+        if solver.parallel:
+            moment = solver.comm.allreduce(moment, op=MPI.SUM)
+            second = solver.comm.allreduce(second, op=MPI.SUM)
+        # the plane square to the axis: second is singular along the axis, so solve in its range
+        lam = -np.linalg.pinv(second, rcond=1e-12) @ moment
+        w = mass * (1.0 + arm @ lam)
+        total = solver.comm.allreduce(w.sum(), op=MPI.SUM) if solver.parallel else w.sum()
+        return w / total
 
     def velocity(self) -> np.ndarray:
         """Its velocity at t_n (v_n-1/2 + dt/2 a_n), on every rank.  Collective."""

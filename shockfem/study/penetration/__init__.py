@@ -10,6 +10,9 @@ the nose of the fixture study's 12 lb article (``target/``, ``docs/penetration.m
    strength, spin and velocity, plus a centre point, each run in 3D with the tunnel and the friction
    torque: the tail's flexural deflection, the bending stress, the peak deceleration and the depth,
    their effects, aliases, Lenth's test and the regression; the sensitivity of bending to spin.
+3. Dynamic stress amplification: half-sine force pulses on the nose, axisymmetric, the peak stress at
+   the nose-shank section over the quasi-static stress, against the pulse's duration over the article's
+   first axial and bending periods (``modal``), beside the first axial mode alone (the shock spectrum).
 
 Sizes: ``smoke`` (coarse meshes, the events cut short: for tests), ``default``.
 """
@@ -18,10 +21,12 @@ from __future__ import annotations
 
 from ..report import run_sections
 from .common import SIZES, Context
+from .amplification import amplification
 from .experiments import screening
 from .white_paper import white_paper_shot
 
-SECTIONS = (("the white paper's shot", white_paper_shot), ("screening design", screening))
+SECTIONS = (("the white paper's shot", white_paper_shot), ("screening design", screening),
+            ("dynamic stress amplification", amplification))
 
 
 def run_study(size: str = "default", out_dir: str = "results/penetration", echo=print) -> str:

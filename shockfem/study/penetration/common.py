@@ -12,8 +12,8 @@ from ...penetration.forrestal import depth_of, speed_at_depth
 from ...scene.library import LIBRARY
 from ...scene.orientation import axis_angle
 from ...target.concrete import nose_factor, strength_factor
-from ...units import FT, to_si
-from ..fixture.common import ARTICLE, article_dims, article_length
+from ...units import FT, LB, to_si
+from ..fixture.common import ARTICLE, ARTICLE_LB, article_dims, article_length
 
 SPEED = 1600 * FT                       # the white paper's impact speed, 487.7 m/s
 KSI = to_si("1 ksi", "pressure")
@@ -21,6 +21,7 @@ TARGETS = {"5 ksi": 5 * KSI, "10 ksi": 10 * KSI}     # the white paper's concret
 DENSITY = 2300.0                         # the concrete's [kg/m^3]
 FRICTION = 0.4                           # the white paper's mu of the resisting torque mu F a / 2
 STATIONS = 5                             # points on the axis, base (0) to nose tip (4), for its bending
+END_MARGIN = 1.2                         # runs go on this share of the closed form's stopping time
 # the white paper's projectile is elastic: the run's 4340 keeps its E, nu and rho, and the stresses are
 # read against its yield
 MATERIAL = {k: LIBRARY[ARTICLE["library"]][k] for k in ("density", "youngs_modulus", "poisson_ratio")}
@@ -28,9 +29,12 @@ MATERIAL = {k: LIBRARY[ARTICLE["library"]][k] for k in ("density", "youngs_modul
 SIZES = {
     # element sizes of the projectile (axisymmetric quads, 3D tetrahedra), the centre points of the
     # design (one: a simulation repeats itself), the history's sampling, and the share of each event run
-    # (smoke: past the crater, 4a at the strike speed is 0.05 of the stopping time)
-    "smoke": {"h_axi": 0.006, "h_3d": 0.02, "centre_points": 1, "history": 1e-5, "end_fraction": 0.12},
-    "default": {"h_axi": 0.003, "h_3d": 0.01, "centre_points": 1, "history": 5e-6, "end_fraction": 1.0},
+    # (smoke: ``event_end`` keeps it past the crater), and the force pulses' durations over the article's
+    # first axial period (section 3)
+    "smoke": {"h_axi": 0.006, "h_3d": 0.02, "centre_points": 1, "history": 1e-5, "end_fraction": 0.12,
+              "duration_ratios": (0.5, 1.0, 4.0)},
+    "default": {"h_axi": 0.003, "h_3d": 0.01, "centre_points": 1, "history": 5e-6, "end_fraction": 1.0,
+                "duration_ratios": (0.25, 0.5, 0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 8.0)},
 }
 
 
@@ -43,9 +47,7 @@ class Context:
 
 
 def projectile_mass() -> float:
-    """The 12 lb article's mass as meshed from the catalogue [kg] (its length is set for 12 lb)."""
-    from ..fixture.common import ARTICLE_LB
-    from ...units import LB
+    """The article's mass [kg] (12 lb: its length is set for it, ``article_length``)."""
     return ARTICLE_LB * LB
 
 
@@ -64,6 +66,13 @@ def closed_form(fc: float, speed: float) -> dict:
     v1 = speed_at_depth(4 * a, m, a, strength, DENSITY, N, speed, 4 * a)
     peak = math.pi * a * a * (strength + N * DENSITY * v1 * v1) / m
     return {"depth": P, "v1": v1, "duration": stop, "peak": peak, "z": z, "v": v, "strength": strength, "N": N}
+
+
+def event_end(fc: float, speed: float, cfg: dict) -> float:
+    """How long a shot runs: past the closed form's stopping time by END_MARGIN, or the size's share of that
+    (smoke), but never short of twice the crater's transit 4a / V, so that the tunnel's force is reached."""
+    full = END_MARGIN * closed_form(fc, speed)["duration"]
+    return max(full * cfg.get("end_fraction", 1.0), 2 * 4 * ARTICLE["radius"] / speed)
 
 
 def shot_scene(name: str, kinematics: str, h: float, fc: float, speed: float, end_time: float,

@@ -13,8 +13,7 @@ from ..cases import run_case
 from ..doe import effect_columns, effects, fractional_factorial, lenth, physical_coefficients, significant
 from ..fixture.common import ARTICLE, article_length, yield_stress
 from ..report import Report
-from .common import KSI, MATERIAL, STATIONS, Context, closed_form, shot_scene
-from .white_paper import END_MARGIN
+from .common import KSI, MATERIAL, STATIONS, Context, event_end, shot_scene
 
 # (name, letter, low, high, unit shown, SI per unit shown)
 FACTORS = (("yaw", "A", 0.0, 4.0, "deg", 1.0), ("f'c", "B", 5.0, 10.0, "ksi", KSI),
@@ -61,7 +60,7 @@ def screening(rep: Report, ctx: Context):
     rows, results = [], []
     for k, (x, lv) in enumerate(zip(coded, levels)):
         yaw, fc, spin, speed = (v * f[5] for v, f in zip(lv, FACTORS))
-        end = END_MARGIN * closed_form(fc, speed)["duration"] * ctx.cfg.get("end_fraction", 1.0)
+        end = event_end(fc, speed, ctx.cfg)
         name = f"doe_run{k + 1}" if k < 8 else f"doe_centre{k - 7}"
         ctx.echo(f"  {name}: yaw {lv[0]:g} deg, f'c {lv[1]:g} ksi, spin {lv[2]:g} rev/s, {lv[3]:g} ft/s")
         raw = shot_scene(name, "3d", ctx.cfg["h_3d"], fc, speed, end, ctx.cfg["history"], yaw, spin)

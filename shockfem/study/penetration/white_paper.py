@@ -11,10 +11,7 @@ from ..cases import run_case
 from ..fixture.common import ARTICLE, DURATION, PEAK, yield_stress
 from ..report import Report
 from ...penetration.forrestal import depth_of
-from .common import DENSITY, SPEED, TARGETS, Context, closed_form, shot_scene
-
-END_MARGIN = 1.2                 # runs go on this share of the closed form's stopping time
-
+from .common import DENSITY, SPEED, TARGETS, Context, closed_form, event_end, shot_scene
 
 def white_paper_shot(rep: Report, ctx: Context):
     rep.heading("1. The white paper's shot: 12 lb at 1600 ft/s into concrete")
@@ -22,7 +19,7 @@ def white_paper_shot(rep: Report, ctx: Context):
     for name, fc in TARGETS.items():
         cf = closed_form(fc, SPEED)
         raw = shot_scene(f"shot_{name.replace(' ', '')}", "axisymmetric", ctx.cfg["h_axi"], fc, SPEED,
-                         END_MARGIN * cf["duration"] * ctx.cfg.get("end_fraction", 1.0), ctx.cfg["history"])
+                         event_end(fc, SPEED, ctx.cfg), ctx.cfg["history"])
         fe, wall, status = run_case(raw["scene"]["name"], raw, ctx.out_dir, ctx.echo)
         if fe is None:
             rows.append([name, fc / 1e6, status] + [float("nan")] * 14)
