@@ -70,7 +70,7 @@ class ConcreteTarget:
         self.force = np.zeros(self.gdim)  # resultant of the target's pressure on the nose [N]
         self.axial_force = 0.0           # its component against the nose's axis [N]
         self.max_axial_force = 0.0
-        self.torque = 0.0                # friction torque about the axis [N m]
+        self.torque = 0.0                # friction torque applied about the axis [N m]
         self.spin = 0.0                  # the nose's spin about its axis [rad/s]
         self.work = 0.0                  # work of the target on the projectile [J]
         self.strike_speed = None         # the projectile's speed when its tip reaches the face [m/s]
@@ -184,12 +184,13 @@ class ConcreteTarget:
         arm -= np.outer(arm @ axis, axis)
         m = self.node_mass
         self.spin = float(np.sum(m * (np.cross(arm, v) @ axis)) / max(np.sum(m * (arm ** 2).sum(axis=1)), 1e-300))
-        self.torque = self.spec.friction * self.axial_force * self.radius / 2.0
         lever = float(np.sum(w * (arm ** 2).sum(axis=1)))
+        fade = float(np.clip(self.spin / SPIN_AT_REST, -1.0, 1.0))
+        # the torque applied: mu F a / 2 while the nose spins, none once it has stopped
+        self.torque = abs(fade) * self.spec.friction * self.axial_force * self.radius / 2.0
         if lever <= 0.0 or self.torque <= 0.0:
             return
-        fade = float(np.clip(self.spin / SPIN_AT_REST, -1.0, 1.0))
-        self.f -= fade * self.torque * w[:, None] * np.cross(axis, arm) / lever
+        self.f -= np.sign(fade) * self.torque * w[:, None] * np.cross(axis, arm) / lever
 
     def add_forces(self, f: np.ndarray):
         self.exchange.add_to(self.f, f)

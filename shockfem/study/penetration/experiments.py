@@ -119,8 +119,10 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
     e_d, margin_d, flagged_d = verdicts["deflection"]
     spin_bending = rep.value("spin_effect_on_bending_mpa", e_b["C"])
     rep.value("spin_effect_on_deflection_mm", e_d["C"])
-    shear = max(r["shear"] for r in runs)
+    spinning = [r for r, x in zip(runs, coded) if x[2] > 0]
+    shear = max(r["shear"] for r in spinning)
     bending = max(r["bending"] for r in runs)
+    yield_mpa = yield_stress(ARTICLE["library"]) / 1e6
     rep.text(
         "Design: 2^(4-1) with D = ABC (I = ABCD, resolution IV): main effects are clear of two-factor interactions "
         "but the interactions are aliased in pairs, AB = CD, AC = BD, AD = BC; so the yaw x spin column (AC) is the "
@@ -132,18 +134,19 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
         f"Spin against bending: the spin's effect on the bending stress is {spin_bending:+.3g} MPa over 0 -> "
         f"{FACTORS[2][3]:g} rev/s (Lenth margin {margin_b:.3g} MPa: "
         f"{'significant' if 'C' in flagged_b else 'not significant'}); on the tail deflection {e_d['C']:+.3g} mm "
-        f"(margin {margin_d:.3g} mm: {'significant' if 'C' in flagged_d else 'not significant'}). The friction "
-        f"torque mu F a / 2 puts at most {shear:.0f} MPa of torsional shear on the nose's section (2T / pi a^3, "
-        f"the torque taken whole there) against bending stresses up to {bending:.0f} MPa: "
-        + ("spin matters to the bending and a test should spin the article."
-           if "C" in flagged_b or "C" in flagged_d else
-           "spin does not measurably change the bending, so the test need not spin the article; whether torsion "
-           "must be part of the test is then the torsional shear's size against the bending's, the column above.")
+        f"(margin {margin_d:.3g} mm: {'significant' if 'C' in flagged_d else 'not significant'}): "
+        + ("spin matters to the bending. " if "C" in flagged_b or "C" in flagged_d else
+           "spin does not measurably change the bending. ")
+        + f"Torsion is another matter: the friction torque mu F a / 2, which acts while the article spins, puts up "
+        f"to {shear:.0f} MPa of torsional shear on the nose's section (2T / pi a^3, the torque taken whole there; "
+        f"sqrt(3) tau = {math.sqrt(3) * shear:.0f} MPa of von Mises, {math.sqrt(3) * shear / yield_mpa:.2f} of the "
+        f"4340's yield), against bending stresses up to {bending:.0f} MPa in the yawed runs and none without spin: "
+        "a test that leaves out spin leaves out that torsion, not the bending."
         + f" At zero yaw nothing bends a body of revolution: the unyawed runs read at most "
         f"{max(f[0] for f in spun):.3g} mm and {max(f[1] for f in spun):.3g} MPa with spin "
         f"({max(f[0] for f in floor if f[2] < 0):.3g} mm, {max(f[1] for f in floor if f[2] < 0):.3g} MPa without): "
-        "the measure's floor (a tetrahedral mesh is not quite balanced and a section's centroid not quite on the "
-        "axis, so a spinning one circles), and part of any spin effect above is that floor.")
+        "the measure's floor (the stations are cross-sections centred on the axis; a tetrahedral mesh is still "
+        "not quite a body of revolution), below which no effect above means anything.")
 
 
 def _doe_figure(rep: Report, runs: list[dict], levels: list[list[float]]):
