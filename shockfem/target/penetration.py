@@ -11,8 +11,8 @@ Each step, on the nose facets' current positions and velocities (``target/concre
                facet beyond the face (from its nodes' depths; all of the nose once it is in)
     force      -sigma_n S_f / (nodes per facet) on each facet node, S_f the outward area vector on the
                current geometry (a follower load: a yawed or bending nose gets its lateral load)
-    torque     3D, mu > 0: T = mu F a / 2 about the nose's axis against its spin (the white paper's
-               friction torque), as forces along e x r on the loaded nodes, weighted by their load
+    torque     3D, mu > 0: T = mu F a / 2 about the nose's axis against the projectile's spin (the white
+               paper's friction torque), as forces along e x r on the loaded nodes, weighted by their load
 
 a is the nose's radius from its own area (|sum of S_f| = pi a^2), its axis the direction of that sum,
 and the law's nose factor is the mesh's own, N = sum of A_f (n_f . e)^3 / (pi a^2) (the ogive's
@@ -32,9 +32,11 @@ from ..model import Model
 from ..scene.specs import Penetration
 from .concrete import crater_law, normal_stress, strength_factor
 
-# Below this spin [rad/s] the friction torque fades out linearly, so that it stops the spin instead of
-# reversing it every step.
-SPIN_AT_REST = 1e-2
+# Below this sliding speed of the nose's surface on the target, a omega [m/s], the friction torque fades out
+# linearly (Coulomb friction regularised, as explicit codes do): it stops a spin instead of reversing it
+# every step, and the tiny twist an unspun body picks up from its faceted nose is not met by the full mu F a / 2
+# flipping sign each step.
+SLIP_AT_REST = 0.1
 
 
 class ConcreteTarget:
@@ -59,7 +61,6 @@ class ConcreteTarget:
         names = model.body_names
         self.projectile = [names.index(spec.nose.partition(".")[0])] + [names.index(b) for b in spec.carried]
         self.mass = float(sum(model.body_mass[i] for i in self.projectile))
-        self.node_mass = self.exchange.gather(model.mass[:, None])[:, 0]
         # a rigid nose has no elements to set the step: the load's own resolution does (below)
         self.rigid_nose = model.bodies[self.projectile[0]].rigid
         self.facet_size = float(surface.size.min())
@@ -71,7 +72,7 @@ class ConcreteTarget:
         self.axial_force = 0.0           # its component against the nose's axis [N]
         self.max_axial_force = 0.0
         self.torque = 0.0                # friction torque applied about the axis [N m]
-        self.spin = 0.0                  # the nose's spin about its axis [rad/s]
+        self.spin = 0.0                  # the projectile's spin about its axis [rad/s] (while loaded)
         self.work = 0.0                  # work of the target on the projectile [J]
         self.strike_speed = None         # the projectile's speed when its tip reaches the face [m/s]
         self.strike_time = None
@@ -149,8 +150,11 @@ class ConcreteTarget:
         axis = self._nose_axis(S)[1] if p.any() else None
         self.axial_force = float(-self.force @ axis) if axis is not None else 0.0
         self.max_axial_force = max(self.max_axial_force, self.axial_force)
-        if self.gdim == 3 and self.spec.friction > 0.0 and axis is not None:
-            self._friction_torque(x, v, axis)
+        if self.gdim == 3 and self.spec.friction > 0.0:
+            if axis is not None:
+                self._friction_torque(x, x_local, v_local, axis)
+            else:
+                self.torque = 0.0
         self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * v))
         self._f_old[:] = self.f
         if not self.rigid_nose:
@@ -172,20 +176,39 @@ class ConcreteTarget:
         else:
             self.tunnel_entry_speed = self.strike_speed
 
-    def _friction_torque(self, x: np.ndarray, v: np.ndarray, axis: np.ndarray):
-        """T = mu F a / 2 against the nose's spin, as forces w_i T (e x r_i) / sum w_j |r_j|^2 on the
-        nodes (w their load, r their arm square to the axis through the load's centre, sum w_i r_i = 0):
-        their moment about the axis is exactly T and their resultant exactly zero (an uneven mesh would
-        otherwise push the nose sideways)."""
+    def _projectile_spin(self, x_local: np.ndarray, v_local: np.ndarray, axis: np.ndarray) -> float:
+        """The projectile's spin about ``axis`` [rad/s]: its angular momentum about the axis through its
+        centre of mass over its polar moment, L / J (the whole body's: a nose's own nodes also twist and
+        ring, and an unspun body's would read that as spin).  Collective."""
+        m = self.model
+        owned = np.zeros(len(m.mass), dtype=bool)
+        owned[:m.num_owned] = True
+        sel = owned & np.isin(m.node_body, self.projectile)
+        mass, x, v = m.mass[sel], x_local[sel], v_local[sel]
+        sums = np.concatenate([[mass.sum()], mass @ x, mass @ v])
+        if m.comm.size > 1:
+            sums = m.comm.allreduce(sums, op=MPI.SUM)
+        centre, mean_v = sums[1:4] / sums[0], sums[4:7] / sums[0]
+        arm = x - centre
+        arm -= np.outer(arm @ axis, axis)
+        lj = np.array([float(mass @ (np.cross(arm, v - mean_v) @ axis)), float(mass @ (arm ** 2).sum(axis=1))])
+        if m.comm.size > 1:
+            lj = m.comm.allreduce(lj, op=MPI.SUM)
+        return lj[0] / max(lj[1], 1e-300)
+
+    def _friction_torque(self, x: np.ndarray, x_local: np.ndarray, v_local: np.ndarray, axis: np.ndarray):
+        """T = mu F a / 2 against the projectile's spin, as forces w_i T (e x r_i) / sum w_j |r_j|^2 on
+        the nose's nodes (w their load, r their arm square to the axis through the load's centre,
+        sum w_i r_i = 0): their moment about the axis is exactly T and their resultant exactly zero (an
+        uneven mesh would otherwise push the nose sideways).  Collective."""
+        self.spin = self._projectile_spin(x_local, v_local, axis)
         w = np.linalg.norm(self.f, axis=1)
         if w.sum() <= 0.0:
             return
         arm = x - (w[:, None] * x).sum(axis=0) / w.sum()
         arm -= np.outer(arm @ axis, axis)
-        m = self.node_mass
-        self.spin = float(np.sum(m * (np.cross(arm, v) @ axis)) / max(np.sum(m * (arm ** 2).sum(axis=1)), 1e-300))
         lever = float(np.sum(w * (arm ** 2).sum(axis=1)))
-        fade = float(np.clip(self.spin / SPIN_AT_REST, -1.0, 1.0))
+        fade = float(np.clip(self.spin * self.radius / SLIP_AT_REST, -1.0, 1.0))
         # the torque applied: mu F a / 2 while the nose spins, none once it has stopped
         self.torque = abs(fade) * self.spec.friction * self.axial_force * self.radius / 2.0
         if lever <= 0.0 or self.torque <= 0.0:

@@ -115,11 +115,18 @@ def amplification(rep: Report, ctx: Context):
         f"{DURATION / T_axial:.0f} axial periods, quasi-static for the article's axial modes, and "
         f"{DURATION / T_bending:.0f} bending periods. Bending amplification (a lateral force pulse in 3D) is not "
         "run here."
-        + "".join(f" The {name} shot's force rises over the crater in "
-                  f"{(fe.summary['penetration']['tunnel_time'] - fe.summary['penetration']['strike_time']) * 1e3:.3f} ms, "
-                  f"{(fe.summary['penetration']['tunnel_time'] - fe.summary['penetration']['strike_time']) / T_axial:.1f}"
-                  " axial periods."
-                  for name, (fe, _) in ctx.shots.items() if fe.summary["penetration"]["tunnel_time"] is not None))
+        + "".join(f" The {name} shot's force rises over the crater in {rise * 1e3:.3f} ms, {rise / T_axial:.1f} "
+                  "axial periods." for name, rise in _crater_rises(ctx).items()))
+
+
+def _crater_rises(ctx: Context) -> dict:
+    """Section 1's shots: the time their force took to rise over the crater, strike to tunnel [s]."""
+    out = {}
+    for name, (fe, _) in ctx.shots.items():
+        pen = fe.summary["penetration"]
+        if pen["tunnel_time"] is not None:
+            out[name] = pen["tunnel_time"] - pen["strike_time"]
+    return out
 
 
 def _figure(rep: Report, ratios, dafs, sdofs):

@@ -41,8 +41,8 @@ def white_paper_shot(rep: Report, ctx: Context):
                        "stopping time, closed form [ms]", "pulse duration (10%), FE [ms]", "velocity change [m/s]",
                        "mesh nose factor N [-]", "peak axial force [MN]", "peak von Mises [MPa]",
                        "von Mises / yield [-]", "energy balance [-]", "wall [s]"], rows,
-              ["{}", "{:.1f}", "{}", "{:.3f}", "{:.3f}", "{:.3f}", "{:.0f}", "{:.0f}", "{:.2f}", "{:.2f}", "{:.1f}", "{:.4f}",
-               "{:.3f}", "{:.0f}", "{:.2f}", "{:.1e}", "{:.1f}"])
+              ["{}", "{:.1f}", "{}", "{:.3f}", "{:.3f}", "{:.3f}", "{:.0f}", "{:.0f}", "{:.2f}", "{:.2f}", "{:.1f}",
+               "{:.4f}", "{:.3f}", "{:.0f}", "{:.2f}", "{:.1e}", "{:.1f}"])
     if ctx.shots:
         _shot_figure(rep, ctx)
     done = [r for r in rows if r[2] == "completed"]
