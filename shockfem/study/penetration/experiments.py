@@ -119,8 +119,8 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
     e_d, margin_d, flagged_d = verdicts["deflection"]
     spin_bending = rep.value("spin_effect_on_bending_mpa", e_b["C"])
     rep.value("spin_effect_on_deflection_mm", e_d["C"])
-    spinning = [r for r, x in zip(runs, coded) if x[2] > 0]
-    shear = max(r["shear"] for r in spinning)
+    shear = max(r["shear"] for r, x in zip(runs, coded) if x[2] > 0)
+    rolled = max(r["shear"] for r, x in zip(runs, coded) if x[2] < 0)       # unspun: what the yaw sets rolling
     bending = max(r["bending"] for r in runs)
     yield_mpa = yield_stress(ARTICLE["library"]) / 1e6
     rep.text(
@@ -140,8 +140,9 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
         + f"Torsion is another matter: the friction torque mu F a / 2, which acts while the article spins, puts up "
         f"to {shear:.0f} MPa of torsional shear on the nose's section (2T / pi a^3, the torque taken whole there; "
         f"sqrt(3) tau = {math.sqrt(3) * shear:.0f} MPa of von Mises, {math.sqrt(3) * shear / yield_mpa:.2f} of the "
-        f"4340's yield), against bending stresses up to {bending:.0f} MPa in the yawed runs and none without spin: "
-        "a test that leaves out spin leaves out that torsion, not the bending."
+        f"4340's yield), against bending stresses up to {bending:.0f} MPa; unspun, up to {rolled:.0f} MPa (a yawed "
+        "article is set rolling about its axis, and friction resists that too): a test that leaves out spin leaves "
+        "out most of that torsion, not the bending."
         + f" At zero yaw nothing bends a body of revolution: the unyawed runs read at most "
         f"{max(f[0] for f in spun):.3g} mm and {max(f[1] for f in spun):.3g} MPa with spin "
         f"({max(f[0] for f in floor if f[2] < 0):.3g} mm, {max(f[1] for f in floor if f[2] < 0):.3g} MPa without): "

@@ -77,7 +77,7 @@ def _shot_figure(rep: Report, ctx: Context):
     for name, (fe, cf) in ctx.shots.items():
         h = fe.history
         t = h["time"]
-        a = -cfc_filter(h["projectile.a_z"], float(t[1] - t[0]), 1000) / G0
+        a = cfc_filter(h["projectile.a_z"], float(t[1] - t[0]), 1000) / G0      # along +z: the deceleration
         line, = axes[0].plot(t * 1e3, a, label=f"{name}, FE (CFC 1000)")
         depth = h["penetration.depth"]
         axes[1].plot(np.maximum(depth, 0.0), -h["projectile.v_z"], color=line.get_color(), label=f"{name}, FE")
