@@ -54,13 +54,16 @@ class ConcreteTarget:
         self.normal = np.array(spec.normal, dtype=float)
         self.strength = (spec.strength_factor or strength_factor(spec.compressive_strength)) \
             * spec.compressive_strength                                                   # S f'c [Pa]
-        x0 = self.exchange.gather(model.X0)
-        self.radius, axis = self._nose_axis(area_vectors(model, x0[self.facets]))
-        self.nose_factor = self._nose_factor(area_vectors(model, x0[self.facets]), axis)
+        S0 = area_vectors(model, self.exchange.gather(model.X0)[self.facets])
+        self.radius, axis = self._nose_axis(S0)
+        self.nose_factor = self._nose_factor(S0, axis)
         self.crater_depth = spec.crater_depth if spec.crater_depth >= 0 else 4.0 * self.radius
         names = model.body_names
         self.projectile = [names.index(spec.nose.partition(".")[0])] + [names.index(b) for b in spec.carried]
         self.mass = float(sum(model.body_mass[i] for i in self.projectile))
+        # this rank's owned nodes of the projectile and what it carries (for its speed and spin)
+        owned = np.arange(len(model.mass)) < model.num_owned
+        self.projectile_nodes = np.flatnonzero(owned & np.isin(model.node_body, self.projectile))
         # a rigid nose has no elements to set the step: the load's own resolution does (below)
         self.rigid_nose = model.bodies[self.projectile[0]].rigid
         self.facet_size = float(surface.size.min())
@@ -101,9 +104,7 @@ class ConcreteTarget:
     def _projectile_speed(self, v_local: np.ndarray) -> float:
         """|mass-weighted mean velocity| of the projectile and what it carries.  Collective."""
         m = self.model
-        owned = np.zeros(len(m.mass), dtype=bool)
-        owned[:m.num_owned] = True
-        sel = owned & np.isin(m.node_body, self.projectile)
+        sel = self.projectile_nodes
         momentum = (m.mass[sel, None] * v_local[sel]).sum(axis=0)
         if m.comm.size > 1:
             momentum = m.comm.allreduce(momentum, op=MPI.SUM)
@@ -181,9 +182,7 @@ class ConcreteTarget:
         centre of mass over its polar moment, L / J (the whole body's: a nose's own nodes also twist and
         ring, and an unspun body's would read that as spin).  Collective."""
         m = self.model
-        owned = np.zeros(len(m.mass), dtype=bool)
-        owned[:m.num_owned] = True
-        sel = owned & np.isin(m.node_body, self.projectile)
+        sel = self.projectile_nodes
         mass, x, v = m.mass[sel], x_local[sel], v_local[sel]
         sums = np.concatenate([[mass.sum()], mass @ x, mass @ v])
         if m.comm.size > 1:
