@@ -151,6 +151,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
             write_final_shape(rd.file("final_shape.xdmf"), solver)
         history.write(rd.file("history.h5"), rd.file("history.csv"))
         summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
+        summary["sections"] = {sec.name: sec.summary() for sec in history.sections}
         rd.write_json("summary.json", summary)
         if comm.rank == 0 and len(history.rows) > 1:
             plot_histories(out_dir, [b.name for b in scene.bodies])

@@ -39,3 +39,33 @@ def tail_flexure(u: np.ndarray, length: float, radius: float, modulus: float) ->
         deflection = np.linalg.norm(deflection, axis=-1)
         curvature = np.linalg.norm(curvature, axis=-1)
     return deflection, modulus * radius * np.abs(curvature).max(axis=0)
+
+
+def inertia_relief_moment(along: np.ndarray, lateral: np.ndarray, mass: np.ndarray, force: float, at: float,
+                          cuts: np.ndarray) -> np.ndarray:
+    """The bending moment [N m] a lateral force puts across the sections of a free body accelerating
+    rigidly under it (the quasi-static bending, d'Alembert), at the axial positions ``cuts``.
+
+    The body is point masses ``mass`` at ``along`` (axial coordinate) and ``lateral`` (offset along the
+    force); the force acts at axial position ``at``.  The rigid body accelerates at a = F / m + alpha
+    (xi - c) square to the axis and turns at alpha = F (at - c) / J, J = sum m ((xi - c)^2 + y^2) about
+    its centre of mass (c, y_c), y = lateral - y_c, so a point's axial acceleration is -alpha y.  The
+    moment at a cut is that of the d'Alembert forces on the side the force is not on:
+
+        M(x) = | sum over that side of m [(xi - x) a(xi) + alpha y^2] |
+
+    (a slice's own rotary inertia is the alpha y^2 term; a uniform bar without it gives F x^2 (L - x) / L^2
+    from its free end).
+    """
+    along, mass = np.asarray(along, dtype=float), np.asarray(mass, dtype=float)
+    m = mass.sum()
+    c = mass @ along / m
+    y = np.asarray(lateral, dtype=float) - mass @ lateral / m
+    J = mass @ ((along - c) ** 2 + y ** 2)
+    alpha = force * (at - c) / J
+    a = force / m + alpha * (along - c)
+    out = np.zeros(len(cuts))
+    for k, x in enumerate(cuts):
+        side = along < x if at >= x else along > x
+        out[k] = abs(np.sum(mass[side] * ((along[side] - x) * a[side] + alpha * y[side] ** 2)))
+    return out

@@ -39,10 +39,11 @@ def one_point(cell: str, integration: str) -> bool:
     return integration == "reduced" and cell in ("quadrilateral", "hexahedron")
 
 
-def quadrature(cell: str, kinematics: str, integration: str = "full"):
-    """Points, weights, shape functions N (nq, nn) and reference gradients dN (nq, nn, tdim)."""
+def quadrature(cell: str, kinematics: str, integration: str = "full", degree: int = 0):
+    """Points, weights, shape functions N (nq, nn) and reference gradients dN (nq, nn, tdim) of the
+    solver's rule, or of a rule exact to ``degree``."""
     ct = BASIX_CELLS[cell]
-    points, weights = basix.make_quadrature(ct, quadrature_degree(cell, kinematics, integration))
+    points, weights = basix.make_quadrature(ct, degree or quadrature_degree(cell, kinematics, integration))
     element = basix.create_element(basix.ElementFamily.P, ct, 1)
     tab = element.tabulate(1, points)
     N = np.ascontiguousarray(tab[0, :, :, 0])

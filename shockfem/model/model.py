@@ -64,7 +64,7 @@ class Load(_History):
 class Model:
     """What the solver, contact and outputs need of a scene, on the mesh: arrays per node and cell,
     material rows, constraints and loads, and the few scene entries they read (bodies, contacts,
-    springs, accelerometers, gravity, plane-strain thickness, safety factor).  Not the scene itself:
+    springs, accelerometers, stress sections, gravity, plane-strain thickness, safety factor).  Not the scene itself:
     what reaches the time loop is listed here."""
     meshed: MeshedScene
     V: object                                  # P1 vector function space
@@ -99,6 +99,7 @@ class Model:
     cavities: tuple = ()                        # the scene's liquid-filled cavities (fluid dashpots)
     penetration: object = None                  # the scene's concrete target (a Penetration), if any
     accelerometers: tuple = ()                  # the scene's shock accelerometers
+    sections: tuple = ()                        # the scene's stress sections along slender bodies
     gravity: tuple | None = None                # [m/s^2]
     thickness: float = 1.0                      # plane-strain depth [m]
     safety_factor: float = 0.9                  # of the stable step
@@ -232,7 +233,8 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                   hourglass_coefficient=scene.hourglass_coefficient, bodies=tuple(scene.bodies),
                   contacts=tuple(scene.contacts), springs=tuple(scene.springs), cavities=tuple(scene.cavities),
                   penetration=scene.penetration,
-                  accelerometers=tuple(scene.shock.accelerometers), gravity=scene.gravity,
+                  accelerometers=tuple(scene.shock.accelerometers),
+                  sections=tuple(scene.outputs.sections), gravity=scene.gravity,
                   thickness=scene.thickness, safety_factor=scene.safety_factor, plastic=plastic,
                   point_state=plastic or bool(slotted))
     model.rigid = [_rigid_body(model, i) for i in rigid_ids]

@@ -1,5 +1,5 @@
 """Time histories: per-body mean velocity and acceleration, accelerometer velocities, contact
-forces, energies; HDF5 and CSV.
+forces, stresses along slender bodies (``sections``), energies; HDF5 and CSV.
 
 Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes.
 Accelerometers record the *velocity* of their node: the shock metrics take acceleration as
@@ -17,6 +17,7 @@ from mpi4py import MPI
 
 from ..errors import ModelError
 from ..solver.explicit import ExplicitSolver
+from .sections import SectionStresses
 
 
 ENERGY_COLUMNS = ("kinetic", "internal", "plastic", "damping", "hourglass", "bulk_viscosity", "contact",
@@ -52,6 +53,12 @@ class HistoryRecorder:
             self.columns += [("penetration.axial_force", "N"), ("penetration.target_work", "J")]
             if m.gdim == 3:
                 self.columns += [("penetration.spin", "rad/s"), ("penetration.torque", "N m")]
+        self.sections = [SectionStresses(solver, cuts) for cuts in m.sections]
+        for sec in self.sections:
+            self.columns += sec.columns()
+            self.notes.append(f"stress sections of {sec.name}: {sec.count} slabs of "
+                              f"{sec.positions[0] * 2:.4g} m along its axis, axial and bending stress "
+                              f"(plane fit over each section)")
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
@@ -76,6 +83,8 @@ class HistoryRecorder:
             row += [tg.depth] + list(tg.force) + [tg.axial_force, -tg.work]
             if s.model.gdim == 3:
                 row += [tg.spin, tg.torque]
+        for sec in self.sections:
+            row += sec.record()
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
 

@@ -21,7 +21,7 @@ from .materials import read_material
 from .orientation import read_orientation, turned
 from .shock import read_shock
 from .specs import (BC_TYPES, BOX_REGIONS, DAMPING_TYPES, ELEMENTS, FIELDS, HOURGLASS_FORMS, INTEGRATIONS,
-                    KINEMATICS, SHAPES, Body, Boundary, Damping, Material, Outputs, Scene)
+                    KINEMATICS, SHAPES, Body, Boundary, Damping, Material, Outputs, Scene, SectionCuts)
 
 
 def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[str], bool]:
@@ -334,14 +334,14 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     damping = _damping(ck, raw, "damping", DAMPING_TYPES, "rayleigh") if "damping" in raw else None
 
     o = ck.table(raw, "outputs", "outputs", required=False)
-    ck.unknown(o, ("fields", "field_interval", "history_interval"), "outputs")
+    ck.unknown(o, ("fields", "field_interval", "history_interval", "sections"), "outputs")
     fields = o.get("fields", list(FIELDS))
     if not isinstance(fields, list) or any(f not in FIELDS for f in fields):
         ck.fail("outputs.fields", f"must be a list drawn from {', '.join(FIELDS)}, got {fields!r}")
         fields = list(FIELDS)
     fi = ck.quantity(o, "field_interval", "outputs", "time", default=end_time / 10, positive=True)
     hi = ck.quantity(o, "history_interval", "outputs", "time", default=0.0, nonnegative=True)
-    outputs = Outputs(tuple(fields), fi, hi)
+    outputs = Outputs(tuple(fields), fi, hi, _section_cuts(ck, o, bodies))
     shock = read_shock(ck, raw, body_regions, kin, end_time)
 
     if ck.problems:
@@ -350,6 +350,26 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
                  gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities), penetration)
+
+
+def _section_cuts(ck: Checker, o: dict, bodies) -> tuple[SectionCuts, ...]:
+    """``outputs.sections = [{body = "bar", count = 21}]``: stress along slender deformable bodies."""
+    deformable = [b.name for b in bodies if not b.rigid]
+    cuts = []
+    for path, c in ck.entries(o, "sections", "outputs.sections", ("body", "count")):
+        ck.unknown(c, ("body", "count"), path)
+        body = c.get("body")
+        if body not in deformable:
+            ck.fail(f"{path}.body", f"must name a deformable body (a rigid one has no stress; deformable: "
+                                    f"{', '.join(deformable) or 'none'}), got {body!r}")
+        count = c.get("count", 21)
+        if not isinstance(count, int) or isinstance(count, bool) or not 2 <= count <= 1000:
+            ck.fail(f"{path}.count", f"must be a whole number of cuts in [2, 1000], got {count!r}")
+            count = 21
+        if any(cut.body == body for cut in cuts):
+            ck.fail(f"{path}.body", f"{body!r} already has its sections: one entry per body")
+        cuts.append(SectionCuts(str(body), count))
+    return tuple(cuts)
 
 
 def to_plain(scene: Scene) -> dict[str, Any]:

@@ -246,10 +246,20 @@ class Spring:
 
 
 @dataclass(frozen=True)
+class SectionCuts:
+    """The axial and bending stress along a slender deformable body: its length along its axis cut
+    into ``count`` equal slabs, in each the axial stress fitted as a plane over the section (its mean
+    the axial stress, its slope times the outer radius the bending stress)."""
+    body: str
+    count: int
+
+
+@dataclass(frozen=True)
 class Outputs:
     fields: tuple[str, ...]
     field_interval: float
     history_interval: float
+    sections: tuple[SectionCuts, ...] = ()
 
 
 CFC_CLASSES = (60, 180, 600, 1000)       # SAE J211-1 channel frequency classes [Hz]

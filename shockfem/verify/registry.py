@@ -23,6 +23,7 @@ from .dashpot_cases import fluid_dashpot
 from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
                                 penetration_yaw)
+from .section_cases import section_stress
 
 
 CASES = {
@@ -61,6 +62,7 @@ CASES = {
     "penetration_wave": penetration_wave,
     "penetration_spin": penetration_spin,
     "penetration_yaw": penetration_yaw,
+    "section_stress": section_stress,
     "programmer_sizing": programmer_sizing,
     "taylor_bar_3d": taylor_bar_3d,
     "cfc_filter": cfc_filter,

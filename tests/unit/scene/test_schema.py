@@ -338,3 +338,22 @@ def test_penetration_problems_are_listed():
     raw = _penetrator()
     raw["scene"]["kinematics"] = "plane-strain"
     assert any("needs kinematics = 'axisymmetric'" in p for p in _problems(raw))
+
+
+def test_stress_sections_resolve_and_their_problems_are_listed():
+    """outputs.sections: a deformable body and a whole count of cuts (default 21); a rigid or unknown
+    body, a bad count and a second entry for one body are each named."""
+    raw = base()
+    raw["outputs"] = {"sections": [{"body": "bar"}]}
+    cuts = resolve(raw).outputs.sections
+    assert len(cuts) == 1 and cuts[0].body == "bar" and cuts[0].count == 21
+    raw["outputs"] = {"sections": [{"body": "bar", "count": 1.5}, {"body": "bar", "count": 4}, {"body": "ghost"},
+                                   {"body": "bar", "slabs": 3}]}
+    text = "\n".join(_problems(raw))
+    expected = ("sections[0].count: must be a whole number", "sections[1].body: 'bar' already has its sections",
+                "sections[2].body: must name a deformable body", "sections[3].slabs: unknown field")
+    assert [e for e in expected if f"outputs.{e}" not in text] == [], text
+    raw = base()
+    raw["bodies"][0]["rigid"] = True
+    raw["outputs"] = {"sections": [{"body": "bar"}]}
+    assert any("a rigid one has no stress" in p for p in _problems(raw))
