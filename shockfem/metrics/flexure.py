@@ -1,4 +1,5 @@
-"""A slender body's bending, read from the motion of evenly spaced stations on its axis.
+"""A slender body's bending, read from the motion of evenly spaced stations on its axis, and the
+quasi-static (inertia relief) loads of its sections under a force on a free body.
 
 The stations (accelerometers of a scene, base k = 0 to nose tip k = n - 1, n odd, spacing L / (n - 1))
 record their velocities; integrated, their lateral displacements u_k (one component, or a vector of the
@@ -69,3 +70,12 @@ def inertia_relief_moment(along: np.ndarray, lateral: np.ndarray, mass: np.ndarr
         side = along < x if at >= x else along > x
         out[k] = abs(np.sum(mass[side] * ((along[side] - x) * a[side] + alpha * y[side] ** 2)))
     return out
+
+
+def axial_inertia_relief(slab_mass: np.ndarray, force: float) -> np.ndarray:
+    """The axial force [N] across the middle of each of a free body's slabs (low end first) as it
+    decelerates rigidly under ``force`` on its low end: the force less the inertia of what lies ahead
+    of the section, F (mass behind it) / (whole mass)."""
+    m = np.asarray(slab_mass, dtype=float)
+    behind = np.cumsum(m[::-1])[::-1] - 0.5 * m
+    return force * behind / m.sum()

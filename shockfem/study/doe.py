@@ -7,7 +7,8 @@ with I = ABCD, A is aliased with BCD and AB with CD (a resolution IV design keep
 two-factor interactions, which are aliased in pairs).  An effect is the mean response at +1 less the
 mean at -1, twice the coded regression coefficient.  A deterministic simulation repeats itself
 exactly, so replicated centre points give no error estimate (their spread is zero) but one tells
-curvature: the centre's response against the factorial runs' mean.  Significance then comes from
+curvature: the centre's response against the factorial runs' mean.  Folding the design over on a factor
+(its sign reversed in a second half) frees that factor's interactions from their aliases.  Significance then comes from
 Lenth (1989): the pseudo standard error PSE = 1.5 median(|c| : |c| < 2.5 s0), s0 = 1.5 median |c|, of
 the m effects, and the margin of error t(0.975, m / 3) PSE.
 """
@@ -33,12 +34,23 @@ def fractional_factorial(base: int, generators: dict[int, tuple[int, ...]]) -> n
     return np.column_stack(columns)
 
 
-def effect_columns(design: np.ndarray, names: str) -> dict[str, np.ndarray]:
-    """The main-effect and two-factor-interaction columns of a design, each distinct column once and
-    named by every effect it carries ("AC = BD"): the columns a saturated model can estimate."""
+def fold_over(design: np.ndarray, factor: int) -> np.ndarray:
+    """The fold-over half of a fractional factorial on one factor: the same runs with that factor's
+    sign reversed (D = -ABC for D = ABC).  Together with the first half it separates that factor and
+    every interaction with it from their aliases; on a 2^(4-1) design folded on D the two halves are
+    the full 2^4."""
+    folded = np.array(design, dtype=float)
+    folded[:, factor] *= -1
+    return folded
+
+
+def effect_columns(design: np.ndarray, names: str, order: int = 2) -> dict[str, np.ndarray]:
+    """The columns of the effects up to ``order`` factors (main effects and two-factor interactions by
+    default), each distinct column once and named by every effect it carries ("AC = BD"): the columns a
+    saturated model can estimate."""
     out: dict[str, np.ndarray] = {}
     labels: dict[bytes, list[str]] = {}
-    terms = [(n,) for n in range(design.shape[1])] + list(itertools.combinations(range(design.shape[1]), 2))
+    terms = [t for k in range(1, order + 1) for t in itertools.combinations(range(design.shape[1]), k)]
     for term in terms:
         column = np.prod(design[:, list(term)], axis=1)
         key = column.tobytes()

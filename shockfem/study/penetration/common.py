@@ -1,5 +1,6 @@
-"""What the penetration study's sections share: the projectile (the fixture study's 12 lb article), the
-targets, the run sizes, the scene of a shot and the closed form it is compared with."""
+"""What the penetration study's sections share: the projectile (the fixture study's 12 lb article, solid,
+or cased with a payload), the targets, the run sizes, the scene of a shot and the closed form it is
+compared with."""
 from __future__ import annotations
 
 import math
@@ -7,7 +8,9 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
+from scipy.optimize import brentq
 
+from ...parts.catalog import PARTS, ogive
 from ...penetration.forrestal import depth_of, speed_at_depth
 from ...scene.library import LIBRARY
 from ...scene.orientation import axis_angle
@@ -26,15 +29,24 @@ END_MARGIN = 1.2                         # runs go on this share of the closed f
 # read against its yield
 MATERIAL = {k: LIBRARY[ARTICLE["library"]][k] for k in ("density", "youngs_modulus", "poisson_ratio")}
 
+# the cased article: the same outer ogive with a cavity in its shank holding an aluminium payload, its
+# length set so that case and payload weigh the solid article's 12 lb (the same shot for Forrestal)
+CASE = {"wall": 0.012, "base_thickness": 0.015, "cavity_start": 0.010, "clearance": 0.001, "gap": 1e-4,
+        "payload": "aluminium_6061_t6"}
+
 SIZES = {
-    # element sizes of the projectile (axisymmetric quads, 3D tetrahedra), the centre points of the
-    # design (one: a simulation repeats itself), the history's sampling, and the share of each event run
-    # (smoke: ``event_end`` keeps it past the crater), and the force pulses' durations over the article's
-    # first axial period (section 3)
-    "smoke": {"h_axi": 0.006, "h_3d": 0.02, "centre_points": 1, "history": 1e-5, "end_fraction": 0.12,
-              "duration_ratios": (0.5, 1.0, 4.0)},
-    "default": {"h_axi": 0.003, "h_3d": 0.01, "centre_points": 1, "history": 5e-6, "end_fraction": 1.0,
-                "duration_ratios": (0.25, 0.5, 0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 8.0)},
+    # element sizes of the projectile (axisymmetric quads, 3D tetrahedra), the slabs its stress along the
+    # body is read on (``outputs.sections``), the centre points of the design (one: a simulation repeats
+    # itself), its fold-over half, the history's sampling, the share of each event run (smoke:
+    # ``event_end`` keeps it past the crater), and the force pulses' durations over the article's first
+    # axial and bending periods (section 3)
+    "smoke": {"h_axi": 0.006, "h_3d": 0.02, "sections": 9, "centre_points": 1, "fold_over": False,
+              "history": 1e-5, "end_fraction": 0.12, "duration_ratios": (0.5, 1.0, 4.0),
+              "bending_ratios": (0.5, 4.0)},
+    "default": {"h_axi": 0.003, "h_3d": 0.01, "sections": 21, "centre_points": 1, "fold_over": True,
+                "history": 5e-6, "end_fraction": 1.0,
+                "duration_ratios": (0.25, 0.5, 0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 8.0),
+                "bending_ratios": (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)},
 }
 
 
@@ -76,10 +88,12 @@ def event_end(fc: float, speed: float, cfg: dict) -> float:
 
 
 def shot_scene(name: str, kinematics: str, h: float, fc: float, speed: float, end_time: float,
-               history: float, yaw_deg: float = 0.0, spin: float = 0.0, friction: float = FRICTION) -> dict:
+               history: float, yaw_deg: float = 0.0, spin: float = 0.0, friction: float = FRICTION,
+               sections: int = 21) -> dict:
     """The article nose first at ``speed`` into concrete of strength ``fc``: the tip 0.1 mm above the
     face, yawed ``yaw_deg`` (the axis turned about x, the velocity along -z), spinning ``spin`` [rad/s]
-    about its axis; stations on its axis record its bending."""
+    about its axis; stations on its axis record its bending, and ``sections`` slabs along it its axial
+    and bending stress."""
     L = article_length()
     dims = {k: v for k, v in article_dims(L).items() if k in ("radius", "length", "crh", "meplat_radius")}
     three_d = kinematics == "3d"
@@ -106,4 +120,55 @@ def shot_scene(name: str, kinematics: str, h: float, fc: float, speed: float, en
                             "compressive_strength": fc, "density": DENSITY,
                             "friction": friction if three_d else 0.0},
             "shock": {"test_articles": ["projectile"], "axis": "z", "cfc": 1000, "accelerometers": stations},
-            "outputs": {"history_interval": history, "field_interval": end_time / 10}}
+            "outputs": {"history_interval": history, "field_interval": end_time / 10,
+                        "sections": [{"body": "projectile", "count": sections}]}}
+
+
+def cased_article() -> dict:
+    """The cased article's dimensions: the projectile part with its cavity (starting ``cavity_start``
+    behind the nose, ``wall`` thick, closed by ``base_thickness``) and the payload cylinder in it (the
+    cavity less ``clearance`` on the radius and at its top, ``gap`` above its floor), the length at which
+    the two weigh the solid article's mass."""
+    R = ARTICLE["radius"]
+    _, nose = ogive(article_dims())
+    steel = to_si(LIBRARY[ARTICLE["library"]]["density"], "density")
+    fill = to_si(LIBRARY[CASE["payload"]]["density"], "density")
+    rc, z0 = R - CASE["wall"], nose + CASE["cavity_start"]
+
+    def dims(L):
+        lc = L - CASE["base_thickness"] - z0
+        case = {**article_dims(L), "cavity_radius": rc, "cavity_length": lc, "base_thickness": CASE["base_thickness"]}
+        payload = {"radius": rc - CASE["clearance"], "length": lc - CASE["clearance"] - CASE["gap"],
+                   "floor": z0 + CASE["gap"]}
+        return case, payload
+
+    def mass(L):
+        case, payload = dims(L)
+        return (PARTS["projectile"].volume(case, 3) * steel
+                + math.pi * payload["radius"] ** 2 * payload["length"] * fill)
+    L = brentq(lambda L: mass(L) - projectile_mass(), z0 + CASE["base_thickness"] + 0.02, 20 * R)
+    case, payload = dims(L)
+    return {"case": case, "payload": payload, "length": L, "payload_mass": math.pi * payload["radius"] ** 2
+            * payload["length"] * fill, "case_mass": projectile_mass() - math.pi * payload["radius"] ** 2
+            * payload["length"] * fill}
+
+
+def cased_shot_scene(name: str, h: float, fc: float, speed: float, end_time: float, history: float,
+                     sections: int) -> dict:
+    """The cased article with its payload (``cased_article``), axisymmetric, nose first into concrete:
+    the payload rides in the cavity (contact), and the crater law takes both masses (``carries``)."""
+    c = cased_article()
+    raw = shot_scene(name, "axisymmetric", h, fc, speed, end_time, history, sections=sections)
+    body = raw["bodies"][0]
+    body.update({k: c["case"][k] for k in ("length", "cavity_radius", "cavity_length", "base_thickness")})
+    p = c["payload"]
+    tip = body["position"]
+    raw["materials"]["payload"] = {"library": CASE["payload"]}
+    raw["bodies"].append({"name": "payload", "material": "payload", "shape": "cylinder", "radius": p["radius"],
+                          "length": p["length"], "element_size": h, "position": [0.0, tip[1] + p["floor"]],
+                          "velocity": list(body["velocity"])})
+    raw["contact"] = [{"name": "payload_in_cavity", "a": "payload", "b": "projectile.cavity"}]
+    raw["penetration"]["carries"] = ["payload"]
+    raw["shock"]["test_articles"] = ["projectile", "payload"]
+    raw["shock"]["accelerometers"] = []
+    return raw

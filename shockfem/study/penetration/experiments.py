@@ -1,5 +1,7 @@
 """Section 2: the white paper's screening design, a 2^(4-1) resolution IV fractional factorial (D = ABC)
-on yaw, concrete strength, spin and impact velocity, plus a centre point, each run in 3D."""
+on yaw, concrete strength, spin and impact velocity, plus a centre point, each run in 3D; at default size
+its fold-over half too (D = -ABC), which with the first makes the full 2^4 and frees the two-factor
+interactions from their aliases."""
 from __future__ import annotations
 
 import math
@@ -10,8 +12,9 @@ from ...output.figures import pyplot
 from ...metrics.flexure import station_travel, tail_flexure
 from ...units import FT, to_si
 from ..cases import run_case
-from ..doe import effect_columns, effects, fractional_factorial, lenth, physical_coefficients, significant
-from ..fixture.common import ARTICLE, article_length, yield_stress
+from ..doe import effect_columns, effects, fold_over, fractional_factorial, lenth, physical_coefficients, significant
+from ...parts.catalog import ogive
+from ..fixture.common import ARTICLE, article_dims, article_length, yield_stress
 from ..report import Report
 from .common import KSI, MATERIAL, STATIONS, Context, event_end, shot_scene
 
@@ -23,21 +26,27 @@ RESPONSES = (("tail deflection [mm]", "deflection"), ("bending stress [MPa]", "b
              ("peak deceleration [g]", "deceleration"), ("depth [m]", "depth"))
 
 
-def design_runs(centre_points: int) -> tuple[np.ndarray, list[list[float]]]:
-    """The coded design (8 runs of D = ABC, then the centre points) and each run's levels in the units
-    shown."""
-    coded = fractional_factorial(3, {3: (0, 1, 2)})
-    coded = np.vstack([coded, np.zeros((centre_points, 4))])
+def design_runs(centre_points: int, fold: bool) -> tuple[np.ndarray, list[str], list[list[float]]]:
+    """The coded design (8 runs of D = ABC, the fold-over's 8 of D = -ABC if ``fold``, then the centre
+    points), the runs' names and each run's levels in the units shown."""
+    half = fractional_factorial(3, {3: (0, 1, 2)})
+    blocks = [half] + ([fold_over(half, 3)] if fold else []) + [np.zeros((centre_points, 4))]
+    coded = np.vstack(blocks)
+    names = ([f"doe_run{k + 1}" for k in range(8)] + ([f"doe_fold{k + 1}" for k in range(8)] if fold else [])
+             + [f"doe_centre{k + 1}" for k in range(centre_points)])
     levels = [[0.5 * (lo + hi) + 0.5 * (hi - lo) * x for x, (_, _, lo, hi, _, _) in zip(row, FACTORS)]
               for row in coded]
-    return coded, levels
+    return coded, names, levels
 
 
 def responses(fe, length: float) -> dict:
-    """What a run answers: the tail's flexural deflection and the bending stress (``metrics.flexure``
-    on the stations' lateral x-y motion), the axial deceleration's peak (rigid-body mean, CFC 1000), the
-    depth, the friction torque, the tunnel's lateral push (tail slap)."""
+    """What a run answers: the tail's flexural deflection (``metrics.flexure`` on the stations' lateral
+    x-y motion), the bending stress along the body (the sections' outer fibre, ``outputs.sections``;
+    beside it the bending the stations' curvature reads), the axial deceleration's peak (rigid-body
+    mean, CFC 1000), the depth, the friction torque, the tunnel's lateral push (tail slap)."""
     h, s = fe.history, fe.summary
+    along = s["sections"]["projectile"]
+    peak_slab = int(np.argmax(along["max_bending"]))
     t = h["time"]
     lateral = np.stack([np.column_stack([h[f"accelerometer.station{k}.v_{ax}"] for ax in "xy"])
                         for k in range(STATIONS)])
@@ -45,7 +54,9 @@ def responses(fe, length: float) -> dict:
                                        to_si(MATERIAL["youngs_modulus"], "pressure"))
     push = np.hypot(h["contact.penetration.tunnel.normal_x"], h["contact.penetration.tunnel.normal_y"])
     torque = float(np.max(h["penetration.torque"]))
-    return {"deflection": float(deflection.max()) * 1e3, "bending": float(bending.max()) / 1e6,
+    return {"deflection": float(deflection.max()) * 1e3, "bending": max(along["max_bending"]) / 1e6,
+            "bending_at": along["position"][peak_slab], "curvature_bending": float(bending.max()) / 1e6,
+            "axial_compression": -min(along["max_axial_compression"]) / 1e6, "along": along,
             "deceleration": s["shock"]["channels"]["projectile"]["pulse"]["peak_g"],
             "depth": s["penetration"]["max_depth"], "torque": torque,
             "shear": 2 * torque / (math.pi * ARTICLE["radius"] ** 3) / 1e6, "tunnel_push": float(push.max()) / 1e3,
@@ -55,33 +66,44 @@ def responses(fe, length: float) -> dict:
 
 def screening(rep: Report, ctx: Context):
     rep.heading("2. Screening design: yaw, concrete strength, spin and velocity")
-    coded, levels = design_runs(ctx.cfg["centre_points"])
+    fold = ctx.cfg["fold_over"]
+    coded, names, levels = design_runs(ctx.cfg["centre_points"], fold)
     length = article_length()
     rows, results = [], []
-    for k, (x, lv) in enumerate(zip(coded, levels)):
+    for name, x, lv in zip(names, coded, levels):
         yaw, fc, spin, speed = (v * f[5] for v, f in zip(lv, FACTORS))
         end = event_end(fc, speed, ctx.cfg)
-        name = f"doe_run{k + 1}" if k < 8 else f"doe_centre{k - 7}"
-        ctx.echo(f"  {name}: yaw {lv[0]:g} deg, f'c {lv[1]:g} ksi, spin {lv[2]:g} rev/s, {lv[3]:g} ft/s")
-        raw = shot_scene(name, "3d", ctx.cfg["h_3d"], fc, speed, end, ctx.cfg["history"], yaw, spin)
+        ctx.echo(f"  {name}: {_label(lv)}")
+        raw = shot_scene(name, "3d", ctx.cfg["h_3d"], fc, speed, end, ctx.cfg["history"], yaw, spin,
+                         sections=ctx.cfg["sections"])
         fe, wall, status = run_case(name, raw, ctx.out_dir, ctx.echo)
         r = responses(fe, length) if fe is not None else None
         results.append(r)
         rows.append([name] + [int(c) for c in x] + lv + [status]
-                    + ([r["deflection"], r["bending"], r["deceleration"], r["depth"], r["shear"], r["tunnel_push"],
-                        r["von_mises"], fe.summary["energy"]["balance_error"]] if r else [float("nan")] * 8) + [wall])
+                    + ([r["deflection"], r["bending"], r["bending_at"], r["curvature_bending"],
+                        r["axial_compression"], r["deceleration"], r["depth"], r["shear"], r["tunnel_push"],
+                        r["von_mises"], fe.summary["energy"]["balance_error"]] if r else [float("nan")] * 11)
+                    + [wall])
     rep.table("doe_runs", ["run"] + list(LETTERS) + [f"{f[0]} [{f[4]}]" for f in FACTORS]
-              + ["status", "tail deflection [mm]", "bending stress [MPa]", "peak deceleration [g]", "depth [m]",
-                 "torsional shear 2T/(pi a^3) [MPa]", "tunnel's lateral push [kN]", "von Mises / yield [-]",
-                 "energy balance [-]", "wall [s]"], rows,
-              ["{}"] * 5 + ["{:g}"] * 4 + ["{}", "{:.3f}", "{:.1f}", "{:.0f}", "{:.3f}", "{:.1f}", "{:.1f}", "{:.2f}",
-                                          "{:.1e}", "{:.0f}"])
-    factorial = [r for r in results[:8]]
+              + ["status", "tail deflection [mm]", "bending stress [MPa]", "where, from the nose tip [m]",
+                 "bending from the stations' curvature [MPa]", "axial compression [MPa]", "peak deceleration [g]",
+                 "depth [m]", "torsional shear 2T/(pi a^3) [MPa]", "tunnel's lateral push [kN]",
+                 "von Mises / yield [-]", "energy balance [-]", "wall [s]"], rows,
+              ["{}"] * 5 + ["{:g}"] * 4 + ["{}", "{:.3f}", "{:.1f}", "{:.3f}", "{:.1f}", "{:.0f}", "{:.0f}", "{:.3f}",
+                                          "{:.1f}", "{:.1f}", "{:.2f}", "{:.1e}", "{:.0f}"])
+    factorial = results[:8]
     if any(r is None for r in factorial):
         rep.text("A run of the fractional design did not complete: no regression.")
         return
-    _analysis(rep, coded[:8], factorial, results[8:])
+    centres = results[16:] if fold else results[8:]
+    _analysis(rep, coded[:8], factorial, centres)
     _doe_figure(rep, factorial, levels)
+    _along_figure(rep, factorial, levels, length)
+    if fold:
+        if any(r is None for r in results[8:16]):
+            rep.text("A run of the fold-over half did not complete: the interactions stay aliased.")
+            return
+        _full_factorial(rep, coded[:16], results[:16])
 
 
 def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[dict]):
@@ -127,7 +149,7 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
         "Design: 2^(4-1) with D = ABC (I = ABCD, resolution IV): main effects are clear of two-factor interactions "
         "but the interactions are aliased in pairs, AB = CD, AC = BD, AD = BC; so the yaw x spin column (AC) is the "
         "concrete strength x velocity one (BD) too, and a large AC effect cannot be told from BD without the "
-        "fold-over half (the other 8 runs, D = -ABC). A simulation repeats itself exactly, so centre points give no "
+        "fold-over half (the other 8 runs, D = -ABC; run at default size, below). A simulation repeats itself exactly, so centre points give no "
         "error estimate; the centre run tells curvature (its response less the factorial mean, the last column: a "
         "straight-line model predicts zero), and significance comes from Lenth's pseudo standard error of the 7 "
         "effects (margin of error t(0.975, 7/3) PSE).",
@@ -150,17 +172,64 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
         "not quite a body of revolution), below which no effect above means anything.")
 
 
+def _label(levels: list[float]) -> str:
+    """A run's levels in the units shown."""
+    return ", ".join(f"{name} {v:g} {unit}" for v, (name, _, _, _, unit, _) in zip(levels, FACTORS))
+
+
 def _doe_figure(rep: Report, runs: list[dict], levels: list[list[float]]):
+    series = [(_label(lv), r["curves"][0] * 1e3, r["curves"][1] * 1e3, r["curves"][2] / 1e6, "-")
+              for r, lv in zip(runs, levels)]
+    _runs_figure(rep, "doe.png", "the eight runs of the fractional design: the tail's flexural deflection and the "
+                 "bending stress", series, ("tail deflection [mm]", "bending stress [MPa]"), "time [ms]")
+
+
+def _along_figure(rep: Report, runs: list[dict], levels: list[list[float]], length: float):
+    series = [(_label(lv), np.array(r["along"]["position"]) * 1e3, np.array(r["along"]["max_bending"]) / 1e6,
+               -np.array(r["along"]["max_axial_compression"]) / 1e6, "o-") for r, lv in zip(runs, levels)]
+    _, nose = ogive(article_dims(length))
+    _runs_figure(rep, "doe_along_body.png", "the stress along the body: each run's largest bending stress (outer "
+                 "fibre) and axial compression at each section over the event (`outputs.sections`)", series,
+                 ("largest bending stress [MPa]", "largest axial compression [MPa]"),
+                 "distance from the nose tip along the axis [mm] (dotted: the nose meets the shank)", mark=nose * 1e3)
+
+
+def _runs_figure(rep: Report, filename: str, caption: str, series, ylabels, xlabel: str, mark: float | None = None):
+    """Two panels sharing x, a line per run in each: series of (label, x, upper y, lower y, style)."""
     plt = pyplot()
     fig, axes = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
-    for r, lv in zip(runs, levels):
-        t, deflection, bending = r["curves"]
-        label = f"{lv[0]:g} deg, {lv[1]:g} ksi, {lv[2]:g} rev/s, {lv[3]:g} ft/s"
-        axes[0].plot(t * 1e3, deflection * 1e3, label=label)
-        axes[1].plot(t * 1e3, bending / 1e6)
-    axes[0].set_ylabel("tail deflection [mm]")
-    axes[1].set_ylabel("bending stress [MPa]")
-    axes[1].set_xlabel("time [ms]")
+    for label, x, upper, lower, style in series:
+        axes[0].plot(x, upper, style, ms=3, label=label)
+        axes[1].plot(x, lower, style, ms=3)
+    for ax, ylabel in zip(axes, ylabels):
+        ax.set_ylabel(ylabel)
+        if mark is not None:
+            ax.axvline(mark, color="k", lw=0.8, ls=":")
+    axes[1].set_xlabel(xlabel)
     axes[0].legend(fontsize=7)
-    rep.figure("doe.png", "the eight runs of the fractional design: the tail's flexural deflection and the bending "
-               "stress", fig)
+    rep.figure(filename, caption, fig)
+
+
+def _full_factorial(rep: Report, coded: np.ndarray, runs: list[dict]):
+    """The two halves together: the full 2^4, every effect estimated clear of the others."""
+    columns = effect_columns(coded, LETTERS, order=4)
+    shown = [n for n in columns if len(n) <= 2]
+    rows, interaction = [], {}
+    for label, key in RESPONSES:
+        y = np.array([r[key] for r in runs])
+        e = effects(columns, y)
+        _, margin = lenth(e.values())
+        flagged = [n for n, v in e.items() if significant(v, margin)]
+        interaction[key] = (e["AC"], e["BD"], margin)
+        rows.append([label, float(y.mean())] + [e[n] for n in shown] + [margin, ", ".join(flagged) or "none"])
+    rep.table("doe_full_effects", ["response", "mean"] + [f"effect {n}" for n in shown]
+              + ["Lenth margin (95%, 15 effects)", "significant (of all 15)"], rows,
+              ["{}"] + ["{:.4g}"] * (len(shown) + 2) + ["{}"])
+    for key, (ac, bd, margin) in interaction.items():
+        rep.value(f"full_factorial_{key}_yaw_x_spin", ac)
+        rep.value(f"full_factorial_{key}_fc_x_velocity", bd)
+    lines = [f"- {label}: yaw x spin (AC) {interaction[key][0]:+.4g}, f'c x velocity (BD) {interaction[key][1]:+.4g} "
+             f"(margin {interaction[key][2]:.3g}; the half fraction read their sum)" for label, key in RESPONSES]
+    rep.text("The fold-over half (D = -ABC) with the first is the full 2^4 factorial: the 15 effects (main, "
+             "two-, three- and four-factor) are estimated each clear of the others, and Lenth's margin now rests "
+             "on 15 of them. The aliased pair of the half fraction, separated:", "\n".join(lines))

@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from shockfem.study.doe import effect_columns, effects, fractional_factorial, lenth, physical_coefficients
+from shockfem.study.doe import effect_columns, effects, fold_over, fractional_factorial, lenth, physical_coefficients
 
 
 def test_half_fraction_with_d_equal_abc_aliases_two_factor_interactions_in_pairs():
@@ -26,3 +26,20 @@ def test_effects_recover_a_linear_model_and_lenth_flags_the_large_ones():
     assert abs(e["A"]) > margin and abs(e["C"]) > margin and abs(e["B"]) < margin
     c0, slopes = physical_coefficients({"A": 3.0, "B": 0.0}, 10.0, [2.0, 50.0], [2.0, 25.0], "AB")
     assert slopes["A"] == 1.5 and c0 == pytest.approx(10.0 - 3.0)
+
+
+def test_fold_over_on_d_makes_the_full_factorial_and_unaliases_the_interactions():
+    """D = ABC folded on D (D = -ABC): the 16 runs are the 2^4 full factorial, every one of its 15 effect
+    columns distinct; a yaw x spin interaction (AC) that the half fraction could not tell from BD is
+    found whole, and BD as zero."""
+    X = fractional_factorial(3, {3: (0, 1, 2)})
+    both = np.vstack([X, fold_over(X, 3)])
+    assert (both[8:, 3] == -both[8:, 0] * both[8:, 1] * both[8:, 2]).all()
+    assert len({tuple(r) for r in both}) == 16
+    columns = effect_columns(both, "ABCD", order=4)
+    assert len(columns) == 15 and all(" = " not in n for n in columns)
+    y = 5 + 2 * both[:, 0] * both[:, 2]
+    half = effects(effect_columns(X, "ABCD"), y[:8])
+    assert half["AC = BD"] == pytest.approx(4.0)
+    e = effects(columns, y)
+    assert e["AC"] == pytest.approx(4.0) and e["BD"] == pytest.approx(0.0, abs=1e-12)
