@@ -6,6 +6,8 @@ are kept for assembly of the mass and for output.
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass, field
 
 import basix
@@ -298,6 +300,22 @@ def plane_normal_axis(points: np.ndarray, comm, region: str) -> int:
     return int(flat[0])
 
 
+def _obliquity(sc: Scene, pn) -> str:
+    """The projectile's angle of attack on the face (its velocity against the face's inward normal), said
+    when it is not square: the crater is measured along the normal and the whole nose loaded in it, and
+    an oblique face's free-surface relief (what turns an oblique shot) is not modelled."""
+    body = next((b for b in sc.bodies if b.name == pn.nose.split(".")[0]), None)
+    v = np.asarray(body.velocity if body is not None else (), dtype=float)
+    if sc.kinematics == "axisymmetric" or not len(v) or not np.linalg.norm(v):
+        return ""
+    cos = float(-(v @ np.asarray(pn.normal)) / np.linalg.norm(v))
+    angle = math.degrees(math.acos(max(-1.0, min(1.0, cos))))
+    if angle < 0.5:
+        return ""
+    return (f"; oblique: the path {angle:.3g} deg from the face's normal (the crater measured along the normal, "
+            "the free surface's asymmetric relief not modelled: outside what the load is verified for)")
+
+
 def describe(model: Model, sc: Scene) -> str:
     """One line per body of the scene ``sc`` saying which model runs for it ("model only what a
     scene needs")."""
@@ -351,6 +369,7 @@ def describe(model: Model, sc: Scene) -> str:
                      f"linearly with depth; "
                      + (f"friction torque mu F a / 2, mu = {pn.friction:g}; " if pn.friction else "no friction; ")
                      + ("a rigid tunnel behind the nose" if pn.tunnel else "no tunnel")
+                     + _obliquity(sc, pn)
                      + ". Left out: the target's own deformation, free surfaces, scabbing and perforation, "
                        "sliding friction along the nose")
     if sc.gravity:
