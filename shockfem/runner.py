@@ -5,6 +5,8 @@ and read their results back from the run directory.
 """
 from __future__ import annotations
 
+import math
+
 import sys
 import time
 from dataclasses import dataclass
@@ -116,6 +118,11 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
                     f"beyond its material's curve, or inverting). Check the impact speed against the "
                     f"material, refine the mesh there, or lower scene.safety_factor.", s.t)
             plastic_before = s.energy.plastic
+            if not math.isfinite(s.energy.balance_error):
+                raise UnstableRun(
+                    f"the energy balance is not finite ({s.energy.balance_error}) at t = {s.t:.6g} s (step "
+                    f"{s.step}): an energy term overflowed or went NaN (a material or a load beyond range). "
+                    f"Check the scene's magnitudes (density, moduli, speeds, loads).", s.t)
             if s.step > 20 and s.energy.balance_error > scene.energy_error_limit:
                 raise UnstableRun(
                     f"energy balance error {s.energy.balance_error:.3g} exceeds the limit "

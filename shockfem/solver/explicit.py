@@ -221,22 +221,28 @@ class ExplicitSolver:
         m = self.model
         self.f_int[:] = 0.0
         hourglass_power = 0.0
-        if m.one_point and m.gdim == 2:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
-                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
-                m.axisymmetric, m.thickness, m.hourglass_form,
-                m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                self.f_int)
-        elif m.one_point:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
-                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
-                m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                self.f_int)
-        else:
-            dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = self._full(
-                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
-                m.kinematics, m.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
-                self.sigma, self.f_int)
+        try:
+            if m.one_point and m.gdim == 2:
+                dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
+                    m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
+                    m.axisymmetric, m.thickness, m.hourglass_form,
+                    m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
+                    self.f_int)
+            elif m.one_point:
+                dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
+                    m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
+                    m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
+                    self.f_int)
+            else:
+                dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = self._full(
+                    m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
+                    m.kinematics, m.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
+                    self.sigma, self.f_int)
+        except ZeroDivisionError:
+            # a kernel divided by a zero that a non-finite state made (numba's Python error model): the
+            # state, not the element, is at fault; name the first non-finite node
+            self._check_finite(self._first_non_finite())
+            raise
         if self.parallel:
             compat.reverse_add(self._f_fn)
             dt_local = dt_stable
@@ -308,6 +314,12 @@ class ExplicitSolver:
         return (f"{what}: body '{self._body_of_cell(cell)}', element {first + cell}{where}, "
                 f"t = {self.t:.6g} s (step {self.step}). Check the impact speed against the material, "
                 f"refine the mesh there, or lower scene.safety_factor.")
+
+    def _first_non_finite(self) -> int:
+        """The first node of this rank whose position or velocity is not finite, or -1 (local: called
+        where a kernel failed on this rank alone)."""
+        bad = ~(np.isfinite(self.x).all(axis=1) & np.isfinite(self.v).all(axis=1))
+        return int(np.argmax(bad)) if bad.any() else -1
 
     def _check_finite(self, node: int):
         if node >= 0:

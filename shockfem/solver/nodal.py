@@ -11,6 +11,10 @@ import math
 
 from numba import njit
 
+# fastmath without its "no NaN / no Inf" assumptions: with them LLVM folds math.isfinite to True and the
+# non-finite guard of ``finish_step`` never fires (a NaN run ended "completed")
+FINITE_SAFE_FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
+
 
 @njit(cache=True, fastmath=True)
 def update_velocity(v, a, dt_avg, alpha, mass, num_owned):
@@ -65,7 +69,7 @@ def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
     return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con
 
 
-@njit(cache=True, fastmath=True)
+@njit(cache=True, fastmath=FINITE_SAFE_FASTMATH)
 def finish_step(a, v, f_int, f_ext, f_con, inv_mass, mass, constrained, dt, num_owned):
     """a_{n+1} = M^-1 (f_ext + f_con - f_int), the second halves of the work increments, and the
     kinetic energy 1/2 m |v_{n+1}|^2 with v_{n+1} = v_{n+1/2} + dt/2 a_{n+1} (constrained dofs,

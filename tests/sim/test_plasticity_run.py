@@ -57,3 +57,28 @@ def test_crushed_element_stops_the_run_and_keeps_its_outputs(tmp_path):
     assert 0.0 < s["end_time"] < 20e-6
     for name in ("fields.xdmf", "history.csv", "final_shape.xdmf"):
         assert (tmp_path / name).exists(), name
+
+
+def test_a_nan_in_the_state_stops_the_run_as_unstable():
+    """#25: the non-finite guard of ``nodal.finish_step`` was compiled with full fastmath, which lets LLVM
+    fold ``math.isfinite`` to True, so a NaN ran on to "completed". A NaN velocity put into a running
+    bar reaches the accelerations within a step and must stop it, naming the body and the node."""
+    from shockfem.geometry import build_mesh
+    from shockfem.model import build_model
+    from shockfem.solver.explicit import ExplicitSolver
+    from shockfem.solver.nodal import finish_step
+    raw = taylor_scene(0.0008, end_time=5e-6, impact_face="wall")
+    scene = resolve(raw)
+    solver = ExplicitSolver(build_model(scene, build_mesh(scene, log=lambda *a: None)))
+    solver.v[3, 0] = np.nan
+    with pytest.raises(UnstableRun) as info:
+        for _ in solver.steps(scene.end_time):
+            pass
+    assert "not finite" in str(info.value) and "body 'bar'" in str(info.value)
+    # the compiled guard itself, on a force that is infinite at node 2 (nothing else non-finite)
+    n = 4
+    f = np.zeros((n, 2))
+    f[2, 1] = np.inf
+    bad = finish_step(np.zeros((n, 2)), np.zeros((n, 2)), np.zeros((n, 2)), f, np.zeros((n, 2)), np.ones(n),
+                      np.ones(n), np.zeros((n, 2), dtype=np.bool_), 1e-6, n)[-1]
+    assert bad == 2
