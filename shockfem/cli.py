@@ -10,7 +10,7 @@ import json
 import os
 import sys
 
-from .errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_UNSTABLE, ModelError, UnstableRun
+from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, EXIT_UNSTABLE, ModelError, RunInterrupted, UnstableRun
 from .units import LB
 
 
@@ -157,6 +157,9 @@ def main(argv=None) -> int:
     except UnstableRun as e:
         print(f"unstable: {e.diagnosis}", file=sys.stderr)
         return EXIT_UNSTABLE
+    except RunInterrupted as e:
+        print(f"interrupted: {e} (the run's outputs were finished and kept)", file=sys.stderr)
+        return EXIT_INTERRUPTED + e.signum
 
 
 def _dispatch(args) -> int:

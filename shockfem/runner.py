@@ -7,14 +7,16 @@ from __future__ import annotations
 
 import math
 
+import signal
 import sys
+import threading
 import time
 from dataclasses import dataclass
 
 import numpy as np
 from mpi4py import MPI
 
-from .errors import UnstableRun
+from .errors import RunInterrupted, UnstableRun
 from .geometry import build_mesh
 from .geometry.quality import check_mesh
 from .model import build_model, describe
@@ -68,10 +70,14 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     ------
     UnstableRun
         After writing everything produced so far and a summary with ``status = "unstable"``.
+    RunInterrupted
+        On SIGINT or SIGTERM, at the next step, after finishing the outputs (``status = "interrupted"``).
     """
     rd = RunDirectory(out_dir, comm)
     say = (lambda msg: rd.log(msg, echo=not quiet))
     rd.write_scene_and_provenance(scene)
+    rd.write_json("summary.json", {"status": "running", "diagnosis": None, "scene": scene.name,
+                                   "started": time.strftime("%Y-%m-%dT%H:%M:%S")})
     say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
     meshed = build_mesh(scene, comm, log=say)
     qualities = check_mesh(scene, meshed, log=say)
@@ -85,7 +91,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     note = damping_step_note(scene, qualities, solver.stable_step())
     if note:
         say(note)
-    history = HistoryRecorder(solver)
+    history = HistoryRecorder(solver, rd.file("history.csv"))
     for note in history.notes:
         say(note)
     fields = FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields) if write_fields else None
@@ -99,6 +105,9 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     max_vm = np.zeros(len(scene.bodies))
     plastic_before = 0.0
     wall0 = time.perf_counter()
+    # from here (meshing done: gmsh sets its own SIGINT handling while it works) a signal asks the loop to
+    # stop between two steps
+    stop = _StopOnSignal(comm).install()
     try:
         for s in solver.steps(scene.end_time):
             if s.t >= next_hist * (1 - 1e-9) or s.t >= scene.end_time * (1 - 1e-12):
@@ -132,6 +141,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
                 say(msg)
             if on_step is not None:
                 on_step(s)
+            stop.check(s.step, s.t)
             if bar is not None and s.step % 50 == 0:
                 bar.n = s.t * 1e6
                 bar.set_postfix_str(f"step {s.step}, dt {s.dt:.3g} s, E err {s.energy.balance_error:.1e}",
@@ -142,33 +152,83 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
         say(f"RUN STOPPED: {e.diagnosis}")
         history.record()
         raise
+    except RunInterrupted as e:
+        status, diagnosis = "interrupted", f"{signal.Signals(e.signum).name} at t = {e.time:.6g} s"
+        say(f"RUN INTERRUPTED by {signal.Signals(e.signum).name}: finishing the outputs at t = {e.time:.6g} s")
+        history.record()
+        raise
     except BaseException as e:           # keep what was written and say that the run did not finish
         status, diagnosis = "failed", f"{type(e).__name__}: {e}"
         raise
     finally:
-        wall = time.perf_counter() - wall0
-        if bar is not None:
-            bar.n = solver.t * 1e6
-            bar.close()
-        _track_max_von_mises(solver, max_vm)
-        if fields:
-            if status != "completed":
-                fields.write(solver.t)   # the state at the stop, for the diagnosis
-            fields.close()
-            write_final_shape(rd.file("final_shape.xdmf"), solver)
-        history.write(rd.file("history.h5"), rd.file("history.csv"))
-        summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
-        summary["sections"] = {sec.name: sec.summary() for sec in history.sections}
-        rd.write_json("summary.json", summary)
-        if comm.rank == 0 and len(history.rows) > 1:
-            plot_histories(out_dir, [b.name for b in scene.bodies])
-            summary["shock"] = _shock_metrics(out_dir, say)
-        say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
-            f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
-            f"{solver.energy.balance_error:.2e}")
-        say(f"results in {out_dir}")
-        rd.close()
+        try:
+            wall = time.perf_counter() - wall0
+            stop.finishing()
+            if bar is not None:
+                bar.n = solver.t * 1e6
+                bar.close()
+            _track_max_von_mises(solver, max_vm)
+            if fields:
+                if status != "completed":
+                    fields.write(solver.t)   # the state at the stop, for the diagnosis
+                fields.close()
+                write_final_shape(rd.file("final_shape.xdmf"), solver)
+            history.write(rd.file("history.h5"), rd.file("history.csv"))
+            summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
+            summary["sections"] = {sec.name: sec.summary() for sec in history.sections}
+            rd.write_json("summary.json", summary)
+            if comm.rank == 0 and len(history.rows) > 1:
+                plot_histories(out_dir, [b.name for b in scene.bodies])
+                summary["shock"] = _shock_metrics(out_dir, say)
+            say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
+                f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
+                f"{solver.energy.balance_error:.2e}")
+            say(f"results in {out_dir}")
+            rd.close()
+        finally:
+            stop.restore()
     return RunResult(summary, solver, history, out_dir)
+
+
+class _StopOnSignal:
+    """SIGINT and SIGTERM, while a run's time loop is on, ask it to stop between two steps (``check``)
+    rather than wherever the signal lands: the run then finishes its outputs and says ``interrupted``.
+    Only the main thread can take signals; elsewhere the defaults stay.  Under MPI the ranks agree every
+    ``AGREE_EVERY`` steps, so that all stop at the same step."""
+
+    AGREE_EVERY = 50
+
+    def __init__(self, comm):
+        self.comm = comm
+        self.signum = 0
+        self.previous = {}
+
+    def install(self) -> "_StopOnSignal":
+        if threading.current_thread() is threading.main_thread():
+            for sig in (signal.SIGINT, signal.SIGTERM):
+                self.previous[sig] = signal.signal(sig, self._note)
+        return self
+
+    def _note(self, signum, frame):
+        self.signum = self.signum or signum
+
+    def finishing(self):
+        """The outputs are being finished: a signal now is noted and does not cut them short."""
+        self.check = lambda step, t: None
+
+    def check(self, step: int, t: float):
+        signum = self.signum
+        if self.comm.size > 1:
+            if step % self.AGREE_EVERY:
+                return
+            signum = self.comm.allreduce(signum, op=MPI.MAX)
+        if signum:
+            raise RunInterrupted(signum, t)
+
+    def restore(self):
+        for sig, handler in self.previous.items():
+            signal.signal(sig, handler)
+        self.previous = {}
 
 
 def _shock_metrics(out_dir: str, say) -> dict | None:

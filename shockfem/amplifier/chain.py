@@ -60,6 +60,7 @@ import numpy as np
 
 from ..parts.catalog import PARTS
 from ..metrics.stages import stage_table
+from ..output.rundir import write_json_atomic
 from ..scene import SceneError, resolve
 from ..scene.checker import Checker
 from ..units import G0
@@ -477,8 +478,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         "test_article_pulse": pulse,
         "launcher": spec.launcher,
     }
-    with open(summary_path, "w") as fh:
-        json.dump({**base, "chain": chain}, fh, indent=2, default=float)
+    write_json_atomic(summary_path, {**base, "chain": chain})
     if spec.launcher:
         from ..launcher.output import write_shot
         write_shot(os.path.join(out_dir, "launcher"), spec.shot, spec.launcher["sizing"])

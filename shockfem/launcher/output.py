@@ -8,6 +8,7 @@ import math
 import os
 
 from ..output.figures import pyplot, save
+from ..output.rundir import write_json_atomic
 
 from .vessel import barrel_weight, tank_weight
 from ..units import FT, G0, IN, LB, PSI
@@ -34,8 +35,7 @@ def sizing(gun, options) -> dict:
 def write_shot(out_dir: str, shot, size: dict) -> str:
     plt = pyplot()
     os.makedirs(out_dir, exist_ok=True)
-    with open(os.path.join(out_dir, "summary.json"), "w") as fh:
-        json.dump({**shot.summary(), "sizing": size}, fh, indent=2, default=float)
+    write_json_atomic(os.path.join(out_dir, "summary.json"), {**shot.summary(), "sizing": size})
     h = shot.history
     cols = [("time", "s"), ("x", "m"), ("v", "m/s"), ("acceleration", "m/s^2"), ("p_reservoir", "Pa"),
             ("p_barrel", "Pa"), ("p_base", "Pa")]

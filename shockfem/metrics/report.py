@@ -22,6 +22,7 @@ import os
 import numpy as np
 
 from ..output.history import read_history_csv
+from ..output.rundir import write_json_atomic
 from . import filters, shapes
 from .pulse import pulse_metrics
 from .signals import acceleration_from_velocity
@@ -176,8 +177,7 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
             line += "; no closing speed (a contact from rest, such as a fit): no restitution"
         lines.append(line)
     summary["shock"] = result
-    with open(os.path.join(run_dir, "summary.json"), "w") as fh:
-        json.dump(summary, fh, indent=2, default=float)
+    write_json_atomic(os.path.join(run_dir, "summary.json"), summary)
     if plots:
         from ..output.plots import plot_pulse, plot_srs, plot_stages
         for name, arr in arrays.items():

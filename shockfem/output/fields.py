@@ -70,27 +70,31 @@ class FieldWriter:
         self.solver = solver
         self.fields = tuple(fields)
         mesh = m.meshed.mesh
-        self.file = io.XDMFFile(mesh.comm, path, "w")
-        self.file.write_mesh(mesh)
-        m.meshed.cell_tags.name = "body"
-        self.file.write_meshtags(m.meshed.cell_tags)
+        self.path, self.comm = path, mesh.comm
+        with io.XDMFFile(mesh.comm, path, "w") as file:
+            file.write_mesh(mesh)
+            m.meshed.cell_tags.name = "body"
+            file.write_meshtags(m.meshed.cell_tags)
         self.cells = _CellFields(solver, self.fields)
         self.vel = fem.Function(m.V, name="velocity")
 
     def write(self, t: float):
+        """One frame, the file opened to append it and closed again (1-2 ms): the HDF5 file is whole
+        between frames, so a run killed at any moment leaves it readable to its last complete frame."""
         s = self.solver
-        if "displacement" in self.fields:
-            s.u_fn.x.scatter_forward()
-            self.file.write_function(s.u_fn, t)
-        if "velocity" in self.fields:
-            # velocity at t_n (the solver holds v_{n-1/2}, v_{n+1/2} is ahead by half a step)
-            self.vel.x.array[:] = (s.v + 0.5 * s.dt * s.a).reshape(-1)
-            self.vel.x.scatter_forward()
-            self.file.write_function(self.vel, t)
-        self.cells.write(self.file, t)
+        with io.XDMFFile(self.comm, self.path, "a") as file:
+            if "displacement" in self.fields:
+                s.u_fn.x.scatter_forward()
+                file.write_function(s.u_fn, t)
+            if "velocity" in self.fields:
+                # velocity at t_n (the solver holds v_{n-1/2}, v_{n+1/2} is ahead by half a step)
+                self.vel.x.array[:] = (s.v + 0.5 * s.dt * s.a).reshape(-1)
+                self.vel.x.scatter_forward()
+                file.write_function(self.vel, t)
+            self.cells.write(file, t)
 
     def close(self):
-        self.file.close()
+        """Nothing stays open between frames."""
 
 
 def write_final_shape(path: str, solver: ExplicitSolver):

@@ -39,6 +39,15 @@ def pyvista():
 def save(fig, path: str) -> str:
     """Write ``fig`` to the PNG ``path`` (tight layout, 110 dpi) and close it; returns the path."""
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    partial = partial_path(path)
+    fig.savefig(partial, dpi=110)
     pyplot().close(fig)
+    os.replace(partial, path)
     return path
+
+
+def partial_path(path: str) -> str:
+    """Where a picture is drawn before it is renamed to ``path`` (same extension, so the writer keeps its
+    format): a run killed mid-write leaves no half picture under the real name."""
+    stem, ext = os.path.splitext(path)
+    return f"{stem}.partial{ext}"

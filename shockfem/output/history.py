@@ -1,7 +1,8 @@
 """Time histories: per-body mean velocity and acceleration, accelerometer velocities, contact
 forces, stresses along slender bodies (``sections``), energies; HDF5 and CSV.
 
-Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes.
+Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes; a run streams the
+CSV row by row (flushed every half second), so a killed run leaves it readable to its last samples.
 Accelerometers record the *velocity* of their node: the shock metrics take acceleration as
 its interval mean between samples, which cannot alias the stress waves above the sampling
 rate (``metrics/signals.py``).
@@ -9,6 +10,8 @@ rate (``metrics/signals.py``).
 from __future__ import annotations
 
 import csv
+import os
+import time
 
 import h5py
 import numpy as np
@@ -24,8 +27,13 @@ ENERGY_COLUMNS = ("kinetic", "internal", "plastic", "damping", "hourglass", "bul
                   "external", "balance")
 
 
+# how often (wall time) the streamed CSV is flushed to disk: a kill loses at most this much of it
+FLUSH_EVERY_S = 0.5
+
+
 class HistoryRecorder:
-    def __init__(self, solver: ExplicitSolver):
+    def __init__(self, solver: ExplicitSolver, csv_path: str | None = None):
+        """``csv_path``: stream the rows there as they are recorded (rank 0), header first."""
         m = solver.model
         self.solver = solver
         axes = ("r", "z") if m.axisymmetric else "xyz"[:m.gdim]
@@ -62,6 +70,16 @@ class HistoryRecorder:
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
+        self._stream = None
+        if csv_path and solver.comm.rank == 0:
+            self._stream = open(csv_path, "w", newline="")
+            self._csv = csv.writer(self._stream)
+            self._csv.writerow(self._header())
+            self._stream.flush()
+            self._flushed = time.perf_counter()
+
+    def _header(self) -> list[str]:
+        return [f"{n} [{u}]" for n, u in self.columns]
 
     def record(self):
         s = self.solver
@@ -87,6 +105,11 @@ class HistoryRecorder:
             row += sec.record()
         row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
         self.rows.append(row)
+        if self._stream is not None:
+            self._csv.writerow([float(c) for c in row])
+            if time.perf_counter() - self._flushed > FLUSH_EVERY_S:
+                self._stream.flush()
+                self._flushed = time.perf_counter()
 
     def array(self) -> np.ndarray:
         return np.array(self.rows) if self.rows else np.zeros((0, len(self.columns)))
@@ -96,16 +119,24 @@ class HistoryRecorder:
         return self.array()[:, names.index(name)]
 
     def write(self, h5_path: str, csv_path: str):
+        """The HDF5 file (written beside and renamed into place) and the CSV (closed if it was streamed,
+        written whole if not)."""
         if self.solver.comm.rank != 0:
             return
         data = self.array()
-        with h5py.File(h5_path, "w") as f:
+        partial = h5_path + ".partial"
+        with h5py.File(partial, "w") as f:
             for j, (name, unit) in enumerate(self.columns):
                 ds = f.create_dataset(name, data=data[:, j])
                 ds.attrs["unit"] = unit
+        os.replace(partial, h5_path)
+        if self._stream is not None:
+            self._stream.close()
+            self._stream = None
+            return
         with open(csv_path, "w", newline="") as fh:
             w = csv.writer(fh)
-            w.writerow([f"{n} [{u}]" for n, u in self.columns])
+            w.writerow(self._header())
             w.writerows(data.tolist())
 
 
@@ -183,8 +214,13 @@ def read_history(path: str) -> tuple[dict[str, np.ndarray], dict[str, str]]:
     """(columns, units) of a ``history.csv``: arrays and units keyed by the column name, whose header
     is written as "name [unit]"."""
     with open(path) as fh:
-        header = next(csv.reader(fh))
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+        text = fh.read()
+    lines = text.splitlines()
+    if not text.endswith("\n"):
+        lines = lines[:-1]          # a run killed mid-write left its last row cut short: only whole rows
+    header = next(csv.reader(lines[:1]))
+    whole = [line for line in lines[1:] if line.count(",") == len(header) - 1]
+    data = np.loadtxt(whole, delimiter=",", ndmin=2) if whole else np.zeros((0, len(header)))
     names, units = zip(*(h[:-1].rsplit(" [", 1) for h in header))
     return {n: data[:, j] for j, n in enumerate(names)}, dict(zip(names, units))
 

@@ -1,9 +1,11 @@
 """Off-screen pictures of meshes (pyvista): a part as the user will see it in ParaView."""
 from __future__ import annotations
 
+import os
+
 import numpy as np
 
-from .figures import pyvista
+from .figures import partial_path, pyvista
 
 
 def _grid(meshed):
@@ -41,8 +43,9 @@ def render_mesh(meshed, path: str, title: str = "", cut: bool = True):
     if title:
         plotter.add_text(title, font_size=12)
     plotter.reset_camera()
-    plotter.screenshot(path)
+    plotter.screenshot(partial_path(path))
     plotter.close()
+    os.replace(partial_path(path), path)
 
 
 def render_state(solver, path: str, field: str = "von_mises", title: str = "", cut: bool = True,
@@ -76,5 +79,6 @@ def render_state(solver, path: str, field: str = "von_mises", title: str = "", c
     plotter.add_text(f"{title or f't = {solver.t * 1e3:.4g} ms'}\n{label}: {shown.min():.4g} (dark blue) to "
                      f"{shown.max():.4g} (yellow)", font_size=10)
     plotter.reset_camera()
-    plotter.screenshot(path)
+    plotter.screenshot(partial_path(path))
     plotter.close()
+    os.replace(partial_path(path), path)

@@ -7,9 +7,15 @@
     history.h5/.csv      per-body mean velocity/acceleration and energies at the history cadence
     summary.json         status, sizes, speed, energy balance and per-body results
     energy.png, bodies.png
+
+Crash-safe: a rerun into the directory first removes the previous run's files (so no old summary
+stands beside a new scene); ``summary.json`` says ``running`` from the start and every JSON and
+picture is written beside and renamed into place; the history's CSV grows row by row and each field
+frame is closed as written, so a run killed at any moment leaves them readable up to the last sample.
 """
 from __future__ import annotations
 
+import glob
 import json
 import os
 import platform
@@ -32,12 +38,21 @@ def git_hash() -> str | None:
         return None
 
 
+# what a run writes, so that a rerun clears exactly that (a study's own files beside its runs stay)
+RUN_FILES = ("resolved_scene.json", "provenance.json", "run.log", "summary.json", "fields.xdmf", "fields.h5",
+             "history.h5", "history.csv", "final_shape.xdmf", "final_shape.h5", "final_shape.png", "energy.png",
+             "bodies.png", "stages.png", "pulse_*.png", "srs_*.png", "*.partial.*")
+
+
 class RunDirectory:
     def __init__(self, path: str, comm):
         self.path = path
         self.comm = comm
         if comm.rank == 0:
             os.makedirs(path, exist_ok=True)
+            for pattern in RUN_FILES:
+                for old in glob.glob(os.path.join(glob.escape(path), pattern)):
+                    os.remove(old)
         comm.barrier()
         self._log = open(os.path.join(path, "run.log"), "w") if comm.rank == 0 else None
 
@@ -54,9 +69,9 @@ class RunDirectory:
             print(message, flush=True)
 
     def write_json(self, name: str, data):
+        """Rank 0 writes ``name`` whole or not at all (beside, then renamed into place)."""
         if self.comm.rank == 0:
-            with open(self.file(name), "w") as fh:
-                json.dump(data, fh, indent=2, default=float)
+            write_json_atomic(self.file(name), data)
 
     def write_scene_and_provenance(self, scene: Scene):
         self.write_json("resolved_scene.json", to_plain(scene))
@@ -69,3 +84,11 @@ class RunDirectory:
     def close(self):
         if self._log:
             self._log.close()
+
+
+def write_json_atomic(path: str, data):
+    """``data`` as JSON at ``path``, written beside and renamed into place: readers never see half a file."""
+    partial = path + ".partial"
+    with open(partial, "w") as fh:
+        json.dump(data, fh, indent=2, default=float)
+    os.replace(partial, path)

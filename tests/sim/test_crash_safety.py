@@ -1,0 +1,88 @@
+"""A run killed halfway keeps what it wrote (#25): SIGTERM and SIGINT stop it between two steps, and it
+finishes its outputs and says ``interrupted`` (exit 143 / 130); after SIGKILL its ``summary.json`` says
+``running`` and its streamed ``history.csv`` reads to its last whole row. A rerun into the same directory
+starts from a clean one. The rod impact of ``studies/metrics/rod_pulse.toml`` is run far past its event
+(20 ms) so that the signal lands mid-run; a field frame every 10 us (a few per second of wall time)."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import h5py
+import meshio
+import pytest
+
+from shockfem.output.history import read_history_csv
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCENE = os.path.join(REPO, "studies", "metrics", "rod_pulse.toml")
+
+
+def _start(out):
+    return subprocess.Popen([sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out), "--no-progress",
+                             "--set", 'scene.end_time="20 ms"', "--set", 'outputs.field_interval="10 us"'],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def _wait_for_rows(out, rows=300, timeout=300):
+    """Until the streamed history has ``rows`` rows (the loop is well under way)."""
+    t0 = time.time()
+    path = out / "history.csv"
+    while time.time() - t0 < timeout:
+        if path.exists() and path.read_text().count("\n") > rows:
+            return
+        time.sleep(0.2)
+    raise AssertionError("the run did not start streaming its history")
+
+
+def _png_ok(path):
+    return path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize("sig, code", [(signal.SIGTERM, 143), (signal.SIGINT, 130)])
+def test_sigterm_and_sigint_finish_the_outputs(tmp_path, sig, code):
+    out = tmp_path / "run"
+    p = _start(out)
+    _wait_for_rows(out)
+    time.sleep(0.37)
+    p.send_signal(sig)
+    _, err = p.communicate(timeout=300)
+    assert p.returncode == code, err
+    s = json.loads((out / "summary.json").read_text())
+    assert s["status"] == "interrupted" and signal.Signals(sig).name in s["diagnosis"]
+    assert 0.0 < s["end_time"] < 0.02
+    h = read_history_csv(str(out / "history.csv"))
+    with h5py.File(out / "history.h5") as f:
+        assert len(f["time"]) == len(h["time"]) > 300
+    reader = meshio.xdmf.TimeSeriesReader(str(out / "fields.xdmf"))
+    reader.read_points_cells()
+    for k in range(reader.num_steps):
+        reader.read_data(k)
+    assert reader.num_steps >= 2 and (out / "final_shape.xdmf").exists()
+    for png in ("energy.png", "bodies.png"):
+        assert _png_ok(out / png)
+    assert not list(out.glob("*.partial*"))
+    assert "RUN INTERRUPTED" in (out / "run.log").read_text()
+
+
+def test_sigkill_leaves_a_running_summary_and_a_readable_history_and_a_rerun_starts_clean(tmp_path):
+    out = tmp_path / "run"
+    p = _start(out)
+    _wait_for_rows(out)
+    time.sleep(0.53)
+    p.kill()
+    p.wait(timeout=60)
+    assert json.loads((out / "summary.json").read_text())["status"] == "running"
+    h = read_history_csv(str(out / "history.csv"))
+    assert len(h["time"]) > 300 and (h["time"][1:] > h["time"][:-1]).all()
+    # the same directory again, a short run: nothing of the killed one is left beside it
+    (out / "pulse_ghost.png").write_bytes(b"old")
+    done = subprocess.run([sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out), "--no-progress",
+                           "--no-fields", "--set", 'scene.end_time="5 us"'], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert json.loads((out / "summary.json").read_text())["status"] == "completed"
+    assert not (out / "fields.xdmf").exists() and not (out / "pulse_ghost.png").exists()
+    assert read_history_csv(str(out / "history.csv"))["time"][-1] == pytest.approx(5e-6)
