@@ -175,11 +175,10 @@ def test_penetration_study_smoke(tmp_path):
         assert row["peak deceleration, FE CFC 1000 [g]"] == pytest.approx(force / m / 9.80665, rel=0.03)
     # the axial stress along the shank against the inertia relief of the peak force: the crater's rise over
     # 2.6 axial periods amplifies it a little (section 3: 1.06 at 4 periods, 1.28 at 1), never below it
-    along = _rows(results, "axial_stress_along_body", part="shank")
-    assert len(along) >= 3
-    for row in along:
-        for target in ("5 ksi", "10 ksi"):
-            assert 1.0 < row[f"{target}: FE / inertia relief [-]"] < 1.3
+    assert len(_rows(results, "axial_stress_along_body", part="shank")) >= 3
+    for target in ("5ksi", "10ksi"):
+        assert 1.0 < results["values"][f"shank_peak_over_inertia_relief_{target}"] < 1.3
+        assert 0.0 < results["values"][f"shank_largest_excess_over_inertia_relief_{target}"] < 0.3
     # the cased article: its payload rides with the case (the same rigid-body deceleration, CFC 1000, within
     # its ringing) and, with the solid article's mass and nose, it goes as deep
     case, payload = _rows(results, "cased_shot")
