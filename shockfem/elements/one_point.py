@@ -37,6 +37,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ..materials.algebra import inverse_3x3
 from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
 from ..materials.objective import cayley_matrix
 from ..materials.update import update_stress
@@ -105,18 +106,6 @@ def _inverse_2x2(j00, j01, j10, j11):
     det = j00 * j11 - j01 * j10
     idet = 1.0 / det
     return det, j11 * idet, -j01 * idet, -j10 * idet, j00 * idet
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def _inverse_3x3(j00, j01, j02, j10, j11, j12, j20, j21, j22):
-    c00 = j11 * j22 - j12 * j21
-    c01 = j02 * j21 - j01 * j22
-    c02 = j01 * j12 - j02 * j11
-    det = j00 * c00 + j10 * c01 + j20 * c02
-    idet = 1.0 / det
-    return (det, c00 * idet, c01 * idet, c02 * idet,
-            (j12 * j20 - j10 * j22) * idet, (j00 * j22 - j02 * j20) * idet, (j02 * j10 - j00 * j12) * idet,
-            (j10 * j21 - j11 * j20) * idet, (j01 * j20 - j00 * j21) * idet, (j00 * j11 - j01 * j10) * idet)
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -310,7 +299,7 @@ def _hex_kernel(elastic_only: bool):
             v10, v11, v12 = 0.25 * uy[1], 0.25 * uy[2], 0.25 * uy[4]
             v20, v21, v22 = 0.25 * uz[1], 0.25 * uz[2], 0.25 * uz[4]
             # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
-            (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
+            (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = inverse_3x3(
                 j00 - hdt * v00, j01 - hdt * v01, j02 - hdt * v02, j10 - hdt * v10, j11 - hdt * v11,
                 j12 - hdt * v12, j20 - hdt * v20, j21 - hdt * v21, j22 - hdt * v22)
             l00 = v00 * i00 + v01 * i10 + v02 * i20
@@ -337,7 +326,7 @@ def _hex_kernel(elastic_only: bool):
             (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
              sigma[c, 0, 5]) = s_np1
             # end-of-step configuration
-            (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = _inverse_3x3(
+            (det, i00, i01, i02, i10, i11, i12, i20, i21, i22) = inverse_3x3(
                 j00, j01, j02, j10, j11, j12, j20, j21, j22)
             vol = det * cell_sign[c]
             if vol <= 0.0:

@@ -21,18 +21,8 @@ from __future__ import annotations
 
 from numba import njit
 
+from .algebra import inverse_3x3
 from .layout import P_C01, P_LAMBDA, P_MU, S_DEFORMATION
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def _inverse(a00, a01, a02, a10, a11, a12, a20, a21, a22):
-    c00 = a11 * a22 - a12 * a21
-    c01 = a02 * a21 - a01 * a22
-    c02 = a01 * a12 - a02 * a11
-    idet = 1.0 / (a00 * c00 + a10 * c01 + a20 * c02)
-    return (c00 * idet, c01 * idet, c02 * idet,
-            (a12 * a20 - a10 * a22) * idet, (a00 * a22 - a02 * a20) * idet, (a02 * a10 - a00 * a12) * idet,
-            (a10 * a21 - a11 * a20) * idet, (a01 * a20 - a00 * a21) * idet, (a00 * a11 - a01 * a10) * idet)
 
 
 @njit(cache=True, fastmath=True)
@@ -45,8 +35,9 @@ def rubber_update(row, point, d, w, dt):
     l02, l20 = d4 + w[1], d4 - w[1]
     l12, l21 = d3 + w[0], d3 - w[0]
     h = 0.5 * dt
-    i00, i01, i02, i10, i11, i12, i20, i21, i22 = _inverse(1.0 - h * d0, -h * l01, -h * l02, -h * l10, 1.0 - h * d1,
-                                                           -h * l12, -h * l20, -h * l21, 1.0 - h * d2)
+    _, i00, i01, i02, i10, i11, i12, i20, i21, i22 = inverse_3x3(1.0 - h * d0, -h * l01, -h * l02, -h * l10,
+                                                                 1.0 - h * d1, -h * l12, -h * l20, -h * l21,
+                                                                 1.0 - h * d2)
     # M = (I - h L)^-1 (I + h L)
     b00, b01, b02, b10, b11, b12, b20, b21, b22 = (1.0 + h * d0, h * l01, h * l02, h * l10, 1.0 + h * d1, h * l12,
                                                    h * l20, h * l21, 1.0 + h * d2)
