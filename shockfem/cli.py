@@ -162,25 +162,27 @@ def main(argv=None) -> int:
         return EXIT_INTERRUPTED + e.signum
 
 
+def check_raw(raw: dict) -> str:
+    """What ``shockfem check`` does to a raw scene (plain, chain or launcher): read every field through
+    the checker; returns what it is, or raises ``SceneError`` listing every problem."""
+    from .amplifier.chain import is_chain
+    if is_chain(raw):
+        from .amplifier.chain import resolve_chain
+        spec, scene, _ = resolve_chain(raw)
+        return f"chain of {len(scene.bodies)} bodies, {spec.architecture}, fidelity {spec.fidelity}"
+    if _is_launcher_scene(raw):
+        from .launcher.scene import resolve_design, resolve_launcher
+        name, gun, _ = resolve_launcher(raw)
+        design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
+        return f"launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design}"
+    from .scene import resolve
+    scene = resolve(raw)
+    return f"{scene.kinematics}, {len(scene.bodies)} bodies, end time {scene.end_time:.6g} s"
+
+
 def _dispatch(args) -> int:
     if args.command == "check":
-        from .amplifier.chain import is_chain
-        raw = _raw(args)
-        if is_chain(raw):
-            from .amplifier.chain import resolve_chain
-            spec, scene, _ = resolve_chain(raw)
-            print(f"{args.scene}: ok (chain of {len(scene.bodies)} bodies, {spec.architecture}, "
-                  f"fidelity {spec.fidelity})")
-            return EXIT_OK
-        if _is_launcher_scene(raw):
-            from .launcher.scene import resolve_design, resolve_launcher
-            name, gun, _ = resolve_launcher(raw)
-            design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
-            print(f"{args.scene}: ok (launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design})")
-            return EXIT_OK
-        scene = _scene(args)
-        print(f"{args.scene}: ok ({scene.kinematics}, {len(scene.bodies)} bodies, "
-              f"end time {scene.end_time:.6g} s)")
+        print(f"{args.scene}: ok ({check_raw(_raw(args))})")
         return EXIT_OK
     if args.command == "run":
         chain = _chain_raw(args)

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from mpi4py import MPI
 
-from .errors import RunInterrupted, UnstableRun
+from .errors import ModelError, RunInterrupted, UnstableRun
 from .geometry import build_mesh
 from .geometry.quality import check_mesh
 from .model import build_model, describe
@@ -44,6 +44,28 @@ def _progress(total: float, enabled: bool):
     return tqdm(total=total * 1e6, unit="us", unit_scale=False, dynamic_ncols=True, file=sys.stderr,
                 bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} us [{elapsed}<{remaining}, {postfix}]",
                 mininterval=0.5)
+
+
+# a run is refused before it starts when its step or its number of steps is beyond any useful run: a
+# stable step under a picosecond, or more steps than a day of small runs
+SMALLEST_STEP = 1e-12          # [s]
+MOST_STEPS = 1e8
+
+
+def _refuse_endless(scene: Scene, solver: ExplicitSolver):
+    """A ``ModelError`` (exit 2) naming what sets the step, when the run could not end in useful time."""
+    dt = solver.stable_step()
+    steps = scene.end_time / dt
+    if dt >= SMALLEST_STEP and steps <= MOST_STEPS:
+        return
+    cell = solver.critical_cell
+    body = scene.bodies[solver.model.cell_body[cell]] if cell >= 0 else None
+    where = (f"body '{body.name}' (material '{body.material}', element_size {body.element_size:.3g} m)"
+             if body is not None else "a contact or spring")
+    raise ModelError(f"the stable step is {dt:.3g} s, set by {where}: scene.end_time {scene.end_time:.3g} s would take "
+                     f"{steps:.3g} steps (limits: a step of at least {SMALLEST_STEP:g} s, at most {MOST_STEPS:.0e} "
+                     "steps). Check that material's modulus and density (units), coarsen the body, or shorten "
+                     "scene.end_time.")
 
 
 def damping_step_note(scene: Scene, qualities, dt: float) -> str | None:
@@ -88,6 +110,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
         say(msg)
     say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
         f"(safety factor {scene.safety_factor})")
+    _refuse_endless(scene, solver)
     note = damping_step_note(scene, qualities, solver.stable_step())
     if note:
         say(note)

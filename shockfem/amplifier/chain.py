@@ -244,10 +244,13 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
     for i, b in enumerate(bodies):
         if not isinstance(b, dict):
             ck.fail(f"bodies[{i}]", f"must be a table, got {b!r}")
+        elif not (isinstance(b.get("name"), str) and b["name"].isidentifier()):
+            ck.fail(f"bodies[{i}].name", f"a chain body needs a name made of letters, digits and _, got "
+                                         f"{b.get('name')!r}")
         for k in ("position", "velocity"):
             if isinstance(b, dict) and k in b:
                 ck.fail(f"bodies[{i}].{k}", f"the chain sets it (launch_speed, gap); remove it, got {b[k]!r}")
-        if isinstance(b, dict) and b.get("shape") not in PARTS:
+        if isinstance(b, dict) and not (isinstance(b.get("shape"), str) and b["shape"] in PARTS):
             ck.fail(f"bodies[{i}].shape", f"a chain body is a part of revolution ({', '.join(PARTS)}), "
                                           f"got {b.get('shape')!r}")
     spec = _spec(raw, len(bodies), ck)
@@ -255,7 +258,7 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
         spec.fidelity = ck.choice({"--fidelity": fidelity}, "--fidelity", "", FIDELITIES)
     kinematics = spec.fidelity if spec.fidelity in ("axisymmetric", "3d") else "axisymmetric"
     scene = None
-    if all(isinstance(b, dict) for b in bodies):
+    if all(isinstance(b, dict) and isinstance(b.get("name"), str) for b in bodies):
         try:   # positions, velocities and contacts are generated: the rest is the user's, checked as a scene's
             scene = resolve(fe_scene(raw, spec, kinematics))
         except SceneError as e:

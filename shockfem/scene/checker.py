@@ -4,7 +4,26 @@ and raises them together as a ``SceneError`` (the command line exits with status
 """
 from __future__ import annotations
 
-from ..units import UnitError, to_si
+from ..units import SI_UNITS, UnitError, to_si
+
+# the largest magnitude a scene's quantity may have, by dimension [SI]: far beyond any shock machine, so a
+# value past it is a slip (1e308 m/s, a modulus in Pa read as GPa twice), refused before it overflows a
+# formula or sets a time step that never ends
+MAGNITUDE_LIMITS = {"length": 1e4, "mass": 1e9, "time": 1e3, "velocity": 1e5, "angular_velocity": 1e7,
+                    "acceleration": 1e12, "force": 1e13, "pressure": 1e14, "density": 1e5, "frequency": 1e10,
+                    "strain_rate": 1e10, "energy": 1e15, "stiffness": 1e16, "damping": 1e13, "slowness": 1e3,
+                    "area": 1e8, "volume": 1e12, "temperature": 1e5, "angle": 1e4, "dimensionless": 1e12}
+
+
+def _checked_si(value, dimension: str) -> float:
+    """``to_si``, and a magnitude within ``MAGNITUDE_LIMITS`` (else a ``UnitError`` saying so)."""
+    v = to_si(value, dimension)
+    limit = MAGNITUDE_LIMITS.get(dimension)
+    if limit is not None and abs(v) > limit:
+        shown = value if isinstance(value, str) else repr(value)
+        raise UnitError(f"must be at most {limit:g} {SI_UNITS.get(dimension, '')} in size (far beyond a shock "
+                        f"machine: a slip?), got {shown}")
+    return v
 
 
 class SceneError(Exception):
@@ -67,7 +86,7 @@ class Checker:
             return default
         raw = d[key]
         try:
-            v = to_si(raw, dimension)
+            v = _checked_si(raw, dimension)
         except UnitError as e:
             self.fail(at, str(e))
             return default if default is not None else 1.0
@@ -149,7 +168,7 @@ class Checker:
                 self.fail(f"{path}.{key}[{j}]", f"must be {article} {what} pair")
                 continue
             try:
-                out.append((to_si(pair[0], dimensions[0]), to_si(pair[1], dimensions[1])))
+                out.append((_checked_si(pair[0], dimensions[0]), _checked_si(pair[1], dimensions[1])))
             except UnitError as e:
                 self.fail(f"{path}.{key}[{j}]", str(e))
         if any(x1 <= x0 for (x0, _), (x1, _) in zip(out, out[1:])):
@@ -163,7 +182,7 @@ class Checker:
         if not isinstance(raw, list):
             # A single value means "along the z axis" (the axis of axisymmetry).
             try:
-                vz = to_si(raw, dimension)
+                vz = _checked_si(raw, dimension)
             except UnitError as e:
                 self.fail(f"{path}.{key}", str(e))
                 return tuple(default)
@@ -174,7 +193,7 @@ class Checker:
         out = []
         for i, item in enumerate(raw):
             try:
-                out.append(to_si(item, dimension))
+                out.append(_checked_si(item, dimension))
             except UnitError as e:
                 self.fail(f"{path}.{key}[{i}]", str(e))
                 out.append(0.0)

@@ -13,6 +13,8 @@ from .specs import Scene
 def read_toml(path: str) -> dict:
     if not os.path.exists(path):
         raise SceneError([f"{path}: no such scene file"])
+    if not os.path.isfile(path):
+        raise SceneError([f"{path}: a directory, not a scene file (give one .toml in it)"])
     try:
         with open(path, "rb") as fh:
             return tomllib.load(fh)

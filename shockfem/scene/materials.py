@@ -21,7 +21,7 @@ def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
     ck.unknown(m, MATERIAL_FIELDS, path)
     source = ""
     if "library" in m:
-        entry = LIBRARY.get(m["library"])
+        entry = LIBRARY.get(m["library"]) if isinstance(m["library"], str) else None
         if entry is None:
             ck.fail(f"{path}.library", f"unknown library material {m['library']!r} (known: {', '.join(LIBRARY)})")
         else:

@@ -24,9 +24,17 @@ from .specs import (BC_TYPES, BOX_REGIONS, DAMPING_TYPES, ELEMENTS, FIELDS, HOUR
                     KINEMATICS, SHAPES, Body, Boundary, Damping, Material, Outputs, Scene, SectionCuts)
 
 
+class _AnyRegion(tuple):
+    """The regions of a body whose dimensions were refused: every name is taken as one of them."""
+
+    def __contains__(self, name) -> bool:
+        return True
+
+
 def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[str], bool]:
     """Read a catalogued part's dimensions into ``dims`` and check them together; returns the
     fields the part accepts and whether the dimensions are sound (so its regions can be drawn)."""
+    read = len(ck.problems)
     for p in part.params:
         if p.kind == "lengths":
             raw = b.get(p.name)
@@ -51,13 +59,15 @@ def _part_dims(ck, part, b: dict, path: str, kin: str, dims: dict) -> tuple[set[
         ck.fail(f"{path}.shape", f"a {part.name} is a part of revolution: use kinematics 'axisymmetric' or '3d' "
                                  "(or shape = 'box' / 'mesh' in plane strain)")
     before = len(ck.problems)
-    if part.name != "clamp_ring":         # a clamp ring is checked against the body it fits
+    # a clamp ring is checked against the body it fits; dimensions already refused are not checked
+    # together (their geometry would be nonsense: a negative radius under a square root)
+    if part.name != "clamp_ring" and before == read:
         for fieldname, message in part.check(dims):
             ck.fail(f"{path}.{fieldname}", message)
     accepted = {p.name for p in part.params}
     if part.name == "clamp_ring":
         accepted.add("fits")
-    return accepted, len(ck.problems) == before
+    return accepted, len(ck.problems) == read
 
 
 def _damping(ck, raw: dict, path: str, kinds, default_kind: str) -> Damping:
@@ -156,7 +166,12 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity",
                    "bulk_viscosity_quadratic", "bulk_viscosity_linear"), "scene")
-    name = str(s.get("name", "scene"))
+    name = s.get("name", "scene")
+    if not isinstance(name, str) or not name.strip() or name.strip(".") == "" or any(c in name for c in "/\\"):
+        # the name is the run directory's default (results/<name>): it must name one directory
+        ck.fail("scene.name", f"must be a name for the run's directory (letters, digits, - and _; no slash), "
+                              f"got {name!r}")
+        name = "scene"
     kin = ck.choice(s, "kinematics", "scene", KINEMATICS)
     gdim = 3 if kin == "3d" else 2
     element = ck.choice(s, "element", "scene", ELEMENTS[kin], default=ELEMENTS[kin][0])
@@ -259,7 +274,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                 regions = dict(reg)
         ck.unknown(b, allowed, path)
         mat = b.get("material")
-        if mat not in materials:
+        if not isinstance(mat, str) or mat not in materials:
             ck.fail(f"{path}.material", f"unknown material {mat!r} (defined: {', '.join(materials) or 'none'})")
         h = ck.quantity(b, "element_size", path, "length", positive=True,
                         default=None if shape != "mesh" else 0.0)
@@ -287,11 +302,13 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
             ck.fail(f"{path}.rigid", f"must be true or false, got {rigid!r}")
             rigid = False
         own_damping = _body_damping(ck, b, path) if "damping" in b else None
-        bodies.append(Body(bname, mat if mat in materials else "", shape, dims, h, pos, vel, spin,
+        bodies.append(Body(bname, mat if isinstance(mat, str) and mat in materials else "", shape, dims, h, pos, vel, spin,
                            rigid, mesh_file, regions, refine, own_damping, orientation))
 
     bodies = _fit_clamp_rings(ck, raw, bodies, gdim)
-    body_regions = {b.name: _regions_of(b, gdim) if sound.get(b.name, True) else () for b in bodies}
+    # a body whose dimensions were refused has no regions to check against: any region named on it is
+    # taken, so that one bad dimension is one message, not one more per contact, load and refinement
+    body_regions = {b.name: _regions_of(b, gdim) if sound.get(b.name, True) else _AnyRegion() for b in bodies}
     for i, b in enumerate(bodies):
         for j, (region, _, _) in enumerate(b.refine):
             if region not in body_regions[b.name]:
@@ -313,7 +330,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         history: tuple = ((0.0, 0.0),)
         if kind in ("velocity", "force"):
             d = bc.get("direction", axes[-1])
-            if d not in axes:
+            if not isinstance(d, str) or d not in tuple(axes):        # ("rz" and "" are in the string "rz")
                 ck.fail(f"{path}.direction", f"must be one of {', '.join(axes)}, got {d!r}")
                 d = axes[-1]
             comps = (axes.index(d),)
