@@ -46,6 +46,34 @@ def _progress(total: float, enabled: bool):
                 mininterval=0.5)
 
 
+# what a finished run is warned of (``run_warnings``)
+HOURGLASS_SHARE = 0.10         # hourglass energy over internal energy: the hourglass control shapes the answer
+NEGATIVE_INTERNAL = 1e-4       # internal energy below minus this share of the largest energy: not round-off
+CONTACT_PENETRATION = 0.2      # a contact's deepest penetration (beyond any initial overlap) over its smallest facet
+
+
+def run_warnings(summary: dict) -> list[str]:
+    """What a user should act on in a finished run's ``summary``: each a sentence with the number and the fix."""
+    out = []
+    e = summary["energy"]
+    if e["hourglass_to_internal"] > HOURGLASS_SHARE:
+        out.append(f"the hourglass energy is {e['hourglass_to_internal']:.0%} of the internal energy (above "
+                   f"{HOURGLASS_SHARE:.0%}): the one-point elements' hourglass control is shaping the answer. Refine "
+                   "the mesh where it deforms most, or set scene.integration = \"full\"")
+    largest = max(abs(e["initial_total"]), abs(e["kinetic"]), abs(e["internal"]), abs(e["external_work"]))
+    if e["internal"] < -NEGATIVE_INTERNAL * largest:
+        out.append(f"the internal energy ends negative ({e['internal']:.4g} J, {-e['internal'] / largest:.2g} of the "
+                   "largest energy): elements returned more work than they took, a sign of an unstable or "
+                   "inverted element. Lower scene.safety_factor or refine")
+    for name, c in summary["contacts"].items():
+        beyond = c["max_penetration"] - c["initial_overlap"]["deepest"]
+        if c["smallest_facet"] > 0 and beyond > CONTACT_PENETRATION * c["smallest_facet"]:
+            out.append(f"contact {name}: surfaces went {beyond:.3g} m into each other, {beyond / c['smallest_facet']:.0%} "
+                       f"of its smallest facet ({c['smallest_facet']:.3g} m; above {CONTACT_PENETRATION:.0%}): the "
+                       "penalty is soft for this impact. Raise the contact's penalty_scale or refine the surfaces")
+    return out
+
+
 # a run is refused before it starts when its step or its number of steps is beyond any useful run: a
 # stable step under a picosecond, or more steps than a day of small runs
 SMALLEST_STEP = 1e-12          # [s]
@@ -199,6 +227,9 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
             history.write(rd.file("history.h5"), rd.file("history.csv"))
             summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
             summary["sections"] = {sec.name: sec.summary() for sec in history.sections}
+            summary["warnings"] = run_warnings(summary)
+            for warning in summary["warnings"]:
+                say(f"WARNING: {warning}")
             rd.write_json("summary.json", summary)
             if comm.rank == 0 and len(history.rows) > 1:
                 plot_histories(out_dir, [b.name for b in scene.bodies])

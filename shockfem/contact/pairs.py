@@ -160,6 +160,7 @@ class ContactPair:
             # is a safe bound for a single step's travel); the search reaches a facet size beyond that
             self.depth = 0.5 * float(sizes.min())
         self.margin = float(sizes.max())
+        self.smallest_facet = float(sizes.min())
         self.reach = 0.5 * float(sizes.max()) + self.margin
         n = len(self.global_nodes)
         self.x = np.zeros((n, gdim))
@@ -358,6 +359,7 @@ class ContactPair:
                 "max_pressure": self.max_pressure, "pressure_at_max_force": self.pressure_at_max_force,
                 "contact_energy": -(self.work + self.friction_work),
                 "friction_work": self.friction_work, "max_penetration": self.max_penetration,
+                "smallest_facet": self.smallest_facet,
                 "intervals": self.intervals, "restitution": self.restitution(),
                 "initial_overlap": {"nodes": self.initial_overlap[0], "deepest": self.initial_overlap[1]},
                 "interference_preload": self.preload,

@@ -1,0 +1,25 @@
+"""What a finished run warns of (#25: "34% hourglass energy in a 500 m/s steel impact without a word"):
+``runner.run_warnings`` on made-up summaries, each threshold just crossed and just not."""
+from shockfem.runner import run_warnings
+
+
+def _summary(hourglass=0.0, internal=10.0, penetration=0.0, overlap=0.0, facet=1e-3):
+    return {"energy": {"hourglass_to_internal": hourglass, "initial_total": 1000.0, "kinetic": 500.0,
+                       "internal": internal, "external_work": 0.0},
+            "contacts": {"impact": {"max_penetration": penetration, "smallest_facet": facet,
+                                    "initial_overlap": {"nodes": 0, "deepest": overlap}}}}
+
+
+def test_a_clean_run_has_no_warning():
+    assert run_warnings(_summary(hourglass=0.09, internal=-0.09, penetration=1.9e-4)) == []
+
+
+def test_each_warning_names_its_number_and_its_fix():
+    (w,) = run_warnings(_summary(hourglass=0.34))
+    assert "34% of the internal energy" in w and 'integration = "full"' in w
+    (w,) = run_warnings(_summary(internal=-0.2))
+    assert "internal energy ends negative (-0.2 J" in w and "safety_factor" in w
+    (w,) = run_warnings(_summary(penetration=3e-4))
+    assert "contact impact" in w and "30% of its smallest facet" in w and "penalty_scale" in w
+    # an interference fit starts overlapped: only what goes beyond that counts
+    assert run_warnings(_summary(penetration=3e-4, overlap=2e-4)) == []
