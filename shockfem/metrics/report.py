@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import os
+from dataclasses import asdict
 
 import numpy as np
 
@@ -165,16 +166,20 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
                 # an impact meets a plane or another body; a cylinder or a tunnel guides a body along the
                 # axis, and its contact is no stage of a chain
                 if not (c.get("rigid") and c["rigid"]["kind"] in ("cylinder", "tunnel"))]
-    stages = stage_table(h, masses, contacts, axis, translation) if len(t) >= 2 else []
+    sustained = []
+    stages = stage_table(h, masses, contacts, axis, translation, sustained) if len(t) >= 2 else []
     result["stages"] = [s.as_dict() for s in stages]
+    result["sustained_contacts"] = [asdict(ev) for ev in sustained]
+    for ev in sustained:
+        lines.append(f"contact {ev.pair}: carried force from {ev.start * 1e6:.4g} to {ev.end * 1e6:.4g} us (peak "
+                     f"{ev.peak_force:.4g} N) without the bodies closing: a sustained contact (resting, sliding, a "
+                     "fit), not an impact stage")
     for s in stages:
         line = (f"stage {s.pair}: {s.striker} {s.striker_before:.4g} -> {s.striker_after:.4g} m/s, "
                 f"{s.struck} {s.struck_before:.4g} -> {s.struck_after:.4g} m/s over {(s.end - s.start) * 1e6:.4g} us")
         if np.isfinite(s.restitution):
             line += (f"; restitution {s.restitution:.4f}, velocity ratio {s.velocity_ratio:.4f}, "
                      f"{s.vibration_share:.1%} of the launch energy in vibration")
-        else:
-            line += "; no closing speed (a contact from rest, such as a fit): no restitution"
         lines.append(line)
     summary["shock"] = result
     write_json_atomic(os.path.join(run_dir, "summary.json"), summary)

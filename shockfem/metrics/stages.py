@@ -20,6 +20,10 @@ import numpy as np
 FORCE_THRESHOLD = 1e-3
 # a gap shorter than this fraction of the event before it joins the event
 MERGE_GAP = 0.25
+# an event is an impact stage only if its bodies close at more than this fraction of the fastest speed along
+# the axis in the record; slower (a body resting or sliding on a surface, chatter, a fit from rest) it is a
+# sustained contact: no restitution to speak of (the closing speed would divide it)
+STAGE_APPROACH = 0.02
 
 
 @dataclass
@@ -82,7 +86,8 @@ class Stage:
     peak_force: float              # [N]
 
     def as_dict(self) -> dict:
-        return asdict(self)
+        """Plain data, with null where a ratio has no meaning (strict JSON has no NaN)."""
+        return {k: (None if isinstance(v, float) and not np.isfinite(v) else v) for k, v in asdict(self).items()}
 
 
 def vibration_energy(h: dict, bodies: dict[str, float], axes: tuple[str, ...]) -> np.ndarray:
@@ -93,8 +98,10 @@ def vibration_energy(h: dict, bodies: dict[str, float], axes: tuple[str, ...]) -
 
 
 def stage_table(h: dict, bodies: dict[str, float], contacts: list[dict], axis: str,
-                translation_axes: tuple[str, ...]) -> list[Stage]:
-    """The stages of a run, in time order.
+                translation_axes: tuple[str, ...], sustained: list | None = None) -> list[Stage]:
+    """The impact stages of a run, in time order; contact events whose bodies did not close at more than
+    ``STAGE_APPROACH`` of the record's fastest speed are no stages, and go to ``sustained`` if given
+    (``ContactEvent``s).
 
     Parameters
     ----------
@@ -108,6 +115,7 @@ def stage_table(h: dict, bodies: dict[str, float], contacts: list[dict], axis: s
     t = h["time"]
     v = {b: h[f"{b}.v_{axis}"] for b in bodies}
     launch = max((abs(x[0]) for x in v.values()), default=0.0)
+    fastest = max((float(np.abs(x).max()) for x in v.values()), default=0.0)
     e_launch = sum(0.5 * m * sum(h[f"{b}.v_{ax}"][0] ** 2 for ax in translation_axes) for b, m in bodies.items())
     vib = vibration_energy(h, bodies, translation_axes)
     events = []
@@ -140,6 +148,10 @@ def stage_table(h: dict, bodies: dict[str, float], contacts: list[dict], axis: s
                 va0, va1, vb0, vb1 = vb0, vb1, va0, va1
         m_struck = bodies.get(struck, 0.0)
         approach = va0 - vb0
+        if not abs(approach) > STAGE_APPROACH * fastest:
+            if sustained is not None:
+                sustained.append(ev)
+            continue
         i_end = int(np.searchsorted(t, ev.end))
         stages.append(Stage(
             ev.pair, striker, struck, ev.start, ev.end, va0, va1, vb0, vb1,

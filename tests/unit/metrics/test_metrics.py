@@ -156,3 +156,30 @@ def test_chattering_faces_are_one_event():
     ev = contact_events("p", t, f)
     assert len(ev) == 2
     assert ev[0].start == pytest.approx(1e-4, abs=2e-6) and ev[0].end == pytest.approx(5e-4, abs=2e-6)
+
+
+def test_a_body_sliding_on_a_wall_is_no_stage():
+    """#25: a long slide gave ten "stages" with restitution -28. A block dropped at 2 m/s onto a wall bounces
+    once, comes back at 1 cm/s (0.5% of its impact speed, below the 2% that makes a stage), then rests and
+    slides on it, its contact force flickering (on and off every 2 ms): one impact stage, the rest sustained
+    contacts with no restitution."""
+    dt = 1e-5
+    t = np.arange(0, 0.05, dt)
+    v = np.full(len(t), -2.0)
+    hit = (t >= 0.001) & (t <= 0.0015)
+    v[t > 0.0015] = 1.0                     # the rebound (e = 0.5), then back down to settle at 1 cm/s
+    v[t > 0.0025] = -0.01
+    v[t > 0.0030] = 0.0                     # on the wall from here: resting, then sliding (along x)
+    force = np.where(hit, 1e4, 0.0)
+    resting = t > 0.0030
+    flicker = (np.floor((t - 0.0030) / 0.002) % 2 == 0) & resting      # on 2 ms, off 2 ms
+    force[flicker] = 50.0
+    v[flicker] += 1e-3 * np.sin(t[flicker] * 1e4)                     # mm/s jitter
+    h = {"time": t, "block.v_z": v, "contact.floor.normal_z": force, "energy.kinetic": 0.5 * v ** 2,
+         "energy.internal": np.zeros(len(t))}
+    sustained = []
+    stages = stage_table(h, {"block": 1.0}, [{"name": "floor", "a": "block.bottom", "b": None}], "z", ("z",),
+                         sustained)
+    assert len(stages) == 1 and stages[0].striker_before == -2.0 and np.isfinite(stages[0].restitution)
+    assert len(sustained) >= 5 and all(ev.pair == "floor" for ev in sustained)
+    assert stages[0].as_dict()["velocity_ratio"] is not None
