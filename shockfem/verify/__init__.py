@@ -5,11 +5,13 @@ import time
 
 from mpi4py import MPI
 
-from .registry import CASES
+from .registry import CASES, GROUPS
 
 
 def run_cases(names, size: str = "default", workdir: str = "results/verify", echo=print) -> list[dict]:
-    """Run the named cases; print each check as it completes; return all checks."""
+    """Run the named cases (a group name, such as ``hard``, stands for its cases); print each check as it
+    completes; return all checks."""
+    names = [case for n in names for case in GROUPS.get(n, [n])]
     unknown = [n for n in names if n not in CASES]
     if unknown:
         from ..scene import SceneError

@@ -24,6 +24,7 @@ from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
                                 penetration_yaw)
 from .section_cases import section_stress
+from .hard_cases import HARD
 
 
 CASES = {
@@ -77,5 +78,9 @@ CASES = {
     "amplifier_pads": amplifier_pads,
     "launcher_model": launcher_model,
     "launcher_design": launcher_design,
+    **HARD,
 }
+
+# names that stand for several cases: ``shockfem verify hard``
+GROUPS = {"hard": list(HARD)}
 
