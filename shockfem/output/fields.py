@@ -77,10 +77,15 @@ class FieldWriter:
             file.write_meshtags(m.meshed.cell_tags)
         self.cells = _CellFields(solver, self.fields)
         self.vel = fem.Function(m.V, name="velocity")
+        self.last = None                # the time of the last frame written
 
     def write(self, t: float):
         """One frame, the file opened to append it and closed again (1-2 ms): the HDF5 file is whole
-        between frames, so a run killed at any moment leaves it readable to its last complete frame."""
+        between frames, so a run killed at any moment leaves it readable to its last complete frame.  A
+        frame at the time of the last one is already there (a run stopped right after a frame)."""
+        if t == self.last:
+            return
+        self.last = t
         s = self.solver
         with io.XDMFFile(self.comm, self.path, "a") as file:
             if "displacement" in self.fields:
