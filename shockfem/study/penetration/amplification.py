@@ -195,7 +195,8 @@ def _bending(rep: Report, ctx: Context, f_bending: float) -> tuple[list, list, l
         "the quasi-static bending of the same force, the free article's inertia relief (its rigid-body "
         "acceleration and turn under the force, the d'Alembert moment across each section from the mesh's own "
         "masses, `metrics.flexure.inertia_relief_moment`, over the section's I / R). The largest amplification, "
-        f"{max(dafs):.2f}, comes at {worst:g} bending periods (one-mode shock spectrum {sdofs[ratios.index(worst)]:.2f}); "
+        f"{max(dafs):.2f}, comes at a pulse of {worst:g} bending period{'' if worst == 1 else 's'} (one-mode shock "
+        f"spectrum {sdofs[ratios.index(worst)]:.2f}); "
         + (f"from {shortest_quasi:g} bending periods ({shortest_quasi * T * 1e3:.3f} ms) on, the bending stays within "
            f"{QUASI_STATIC - 1:.0%} of quasi-static."
            if math.isfinite(shortest_quasi) else
