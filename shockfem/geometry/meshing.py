@@ -54,7 +54,7 @@ def mesh_key(scene: Scene) -> str:
     """Hash of everything that determines the mesh (shapes, sizes, placement, files, element, gmsh)."""
     import gmsh
     desc = {"v": MESH_FORMAT_VERSION, "gmsh": gmsh.__version__, "kinematics": scene.kinematics,
-            "element": scene.element,
+            "element": scene.element, "curve": scene.curve_elements,
             "bodies": [(b.name, b.shape, sorted(b.dims.items()), b.element_size, b.position,
                         _file_stamp(b.mesh_file), sorted(b.regions.items()), b.refine, b.orientation)
                        for b in scene.bodies]}
@@ -93,12 +93,12 @@ def _reset_options():
         gmsh.option.setNumber(name, value)
 
 
-# Elements round a full circle on curved faces, whatever the element size: keeps a small orifice
-# or a fillet round (and the volume within 0.5%) at a coarse element size.
-CURVATURE_ELEMENTS = 24
+# Elements round a full circle on curved faces, whatever the element size (the scene's curve_elements,
+# default 24): keeps a small orifice or a fillet round (and the volume within 0.5%) at a coarse element
+# size.
 
 
-def _draw_part(body, gdim: int, element: str):
+def _draw_part(body, gdim: int, element: str, curve: int):
     """A catalogued part from its (r, z) outline with gmsh's OCC kernel: unstructured quads
     (frontal-Delaunay + full-quad recombination) or triangles in 2D, tetrahedra in 3D, or
     hexahedra by splitting each tetrahedron in four (drawn at twice the size, so the hexes come
@@ -108,7 +108,7 @@ def _draw_part(body, gdim: int, element: str):
     from .outline import draw
     origin = (0.0, body.position[1], 0.0) if gdim == 2 else tuple(body.position)
     entities, regions = draw(PARTS[body.shape], body.dims, gdim, origin)
-    scale = _mesh_options(body, element)
+    scale = _mesh_options(body, element, curve)
     if body.refine:
         _refinement_field(body, regions, gdim, scale)
     return entities, regions
@@ -137,13 +137,13 @@ def _refinement_field(body, regions: dict, gdim: int, scale: float):
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
 
 
-def _mesh_options(body, element: str) -> float:
+def _mesh_options(body, element: str, curve: int) -> float:
     """Element size and type options of one body's gmsh mesh; returns the size scale (hexes come
     from splitting tetrahedra drawn at twice the size)."""
     import gmsh
     scale = 2.0 if element == "hex" else 1.0
     gmsh.option.setNumber("Mesh.MeshSizeMax", scale * body.element_size)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", CURVATURE_ELEMENTS)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", curve)
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     if element == "quad":
         gmsh.option.setNumber("Mesh.Algorithm", 8)
@@ -154,7 +154,7 @@ def _mesh_options(body, element: str) -> float:
     return scale
 
 
-def _import_cad(body, gdim: int, element: str):
+def _import_cad(body, gdim: int, element: str, curve: int):
     """A STEP file through gmsh's OCC kernel, converted to metres, meshed at the body's element
     size; its faces (edges in 2D) named by the scene's ``regions`` tags."""
     import gmsh
@@ -177,7 +177,7 @@ def _import_cad(body, gdim: int, element: str):
         if missing:
             raise ModelError(f"body {body.name}: {body.mesh_file} has no {'face' if gdim == 3 else 'edge'} "
                              f"{missing} (region '{name}'); it has {sorted(faces)}: fix bodies.regions")
-    _mesh_options(body, element)
+    _mesh_options(body, element, curve)
     _generate(body, gdim, element)
     _reset_options()
     return entities, {name: list(tags) for name, tags in body.regions.items()}
@@ -215,7 +215,7 @@ def _generate(body, gdim: int, element: str):
                          "scene.element") from None
 
 
-def _draw_body(body, gdim: int, element: str) -> BodyMesh:
+def _draw_body(body, gdim: int, element: str, curve: int) -> BodyMesh:
     """Mesh one body in a gmsh model of its own (current model) and take its mesh out.
 
     Each body gets its own model so that gmsh's coherence, which the built-in kernel needs to
@@ -223,7 +223,7 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
     target would be glued to it)."""
     import gmsh
     if body.shape == "mesh" and body.mesh_file.lower().endswith(CAD_FILES):
-        entities, regions = _import_cad(body, gdim, element)
+        entities, regions = _import_cad(body, gdim, element, curve)
     elif body.shape == "mesh":
         gmsh.merge(body.mesh_file)
         entities = [tag for _, tag in gmsh.model.getEntities(gdim)]
@@ -242,7 +242,7 @@ def _draw_body(body, gdim: int, element: str) -> BodyMesh:
             entities, regions = builder(dims, position, body.element_size, element in ("quad", "hex"))
             gmsh.model.geo.synchronize()
         else:
-            entities, regions = _draw_part(body, gdim, element)
+            entities, regions = _draw_part(body, gdim, element, curve)
         _generate(body, gdim, element)
         _reset_options()
     node_tags, coords, _ = gmsh.model.mesh.getNodes()
@@ -276,7 +276,7 @@ def _build_gmsh_model(scene: Scene) -> dict[str, int]:
     meshes = []
     for i, body in enumerate(scene.bodies):
         gmsh.model.add(f"{combined}-body{i}")
-        meshes.append(_draw_body(body, gdim, scene.element))
+        meshes.append(_draw_body(body, gdim, scene.element, scene.curve_elements))
         gmsh.model.remove()
     gmsh.model.setCurrent(combined)
     region_ids: dict[str, int] = {}

@@ -9,10 +9,11 @@ from ..units import SI_UNITS, UnitError, to_si
 # the largest magnitude a scene's quantity may have, by dimension [SI]: far beyond any shock machine, so a
 # value past it is a slip (1e308 m/s, a modulus in Pa read as GPa twice), refused before it overflows a
 # formula or sets a time step that never ends (a lumped stand-in may be dense: 106,200 kg/m^3 makes a plug
-# weigh 12 lb in the gallery)
+# weigh 12 lb in the gallery; a strain rate has no limit: Cowper-Symonds D = 1e40 /s is how a rate effect is
+# switched off)
 MAGNITUDE_LIMITS = {"length": 1e4, "mass": 1e9, "time": 1e3, "velocity": 1e5, "angular_velocity": 1e7,
                     "acceleration": 1e12, "force": 1e13, "pressure": 1e15, "density": 1e8, "frequency": 1e10,
-                    "strain_rate": 1e10, "energy": 1e15, "stiffness": 1e16, "damping": 1e13, "slowness": 1e3,
+                    "strain_rate": None, "energy": 1e15, "stiffness": 1e16, "damping": 1e13, "slowness": 1e3,
                     "area": 1e8, "volume": 1e12, "temperature": 1e5, "angle": 1e4, "dimensionless": 1e12}
 
 

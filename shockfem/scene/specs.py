@@ -325,6 +325,7 @@ class Scene:
     shock: Shock = Shock()
     cavities: tuple[Cavity, ...] = ()
     penetration: Penetration | None = None
+    curve_elements: int = 24                     # elements round a full circle on curved faces (gmsh)
 
     @property
     def gdim(self) -> int:

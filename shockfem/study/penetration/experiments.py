@@ -75,7 +75,7 @@ def screening(rep: Report, ctx: Context):
         end = event_end(fc, speed, ctx.cfg)
         ctx.echo(f"  {name}: {_label(lv)}")
         raw = shot_scene(name, "3d", ctx.cfg["h_3d"], fc, speed, end, ctx.cfg["history"], yaw, spin,
-                         sections=ctx.cfg["sections"])
+                         sections=ctx.cfg["sections"], curve_elements=ctx.cfg["curve_elements"])
         fe, wall, status = run_case(name, raw, ctx.out_dir, ctx.echo)
         r = responses(fe, length) if fe is not None else None
         results.append(r)

@@ -357,3 +357,17 @@ def test_stress_sections_resolve_and_their_problems_are_listed():
     raw["bodies"][0]["rigid"] = True
     raw["outputs"] = {"sections": [{"body": "bar"}]}
     assert any("a rigid one has no stress" in p for p in _problems(raw))
+
+
+def test_curve_elements_default_and_its_range():
+    """scene.curve_elements: elements round a full circle on curved faces (gmsh's curvature sizing),
+    24 unless given; a whole number in [6, 360]; it is part of the mesh cache's key."""
+    from shockfem.geometry.meshing import mesh_key
+    raw = base()
+    assert resolve(raw).curve_elements == 24
+    raw["scene"]["curve_elements"] = 12
+    coarse = resolve(raw)
+    assert coarse.curve_elements == 12 and mesh_key(coarse) != mesh_key(resolve(base()))
+    for bad in (4, 12.5, "12", True):
+        raw["scene"]["curve_elements"] = bad
+        assert any(p.startswith("scene.curve_elements: must be a whole number") for p in _problems(raw))
