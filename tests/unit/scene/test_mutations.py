@@ -51,7 +51,9 @@ def _mutated(name, path, value):
     return raw
 
 
-@settings(max_examples=250, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# derandomize: the same 250 mutations every run (a CI that fails must fail again); the exhaustive sweep of
+# every leaf with every bad value is the docstring's measurement, too slow for the suite
+@settings(max_examples=250, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 @given(leaf=st.sampled_from(LEAVES), value=BAD)
 def test_one_mutated_field_is_accepted_or_refused_by_name(leaf, value):
     name, path = leaf
