@@ -256,6 +256,7 @@ class _StopOnSignal:
         self.comm = comm
         self.signum = 0
         self.previous = {}
+        self.finished = False
 
     def install(self) -> "_StopOnSignal":
         if threading.current_thread() is threading.main_thread():
@@ -268,9 +269,11 @@ class _StopOnSignal:
 
     def finishing(self):
         """The outputs are being finished: a signal now is noted and does not cut them short."""
-        self.check = lambda step, t: None
+        self.finished = True
 
     def check(self, step: int, t: float):
+        if self.finished:
+            return
         signum = self.signum
         if self.comm.size > 1:
             if step % self.AGREE_EVERY:

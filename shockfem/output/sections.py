@@ -73,7 +73,8 @@ class SectionStresses:
         _, w_exact, N_exact, dN_exact = kin.quadrature(cell, "3d" if m.gdim == 3 else "plane-strain",
                                                          degree=GEOMETRY_DEGREE[m.gdim])
         x_e, dv_e = _points(corners, N_exact, dN_exact, w_exact, m.axisymmetric)
-        p_e = x_e @ frame.T                                                    # (cells, q, lateral)
+        lateral_e = x_e @ frame.T                                              # (cells, q, lateral)
+        p_e = lateral_e
         volume = self._sum(dv_e.sum(axis=1))
         if np.any(volume <= 0.0):
             empty = np.flatnonzero(volume <= 0.0)
@@ -92,21 +93,21 @@ class SectionStresses:
         # the exact rule counted in the slab it lies in (a cell's centre alone would give a slab four or
         # five layers of elements by turns); 3D: the mean of the two principal second moments
         on = np.clip(((x_e @ axis - low) / width).astype(int), 0, self.count - 1).ravel()
-        dv, p_flat = dv_e.ravel(), (x_e @ frame.T).reshape(dv_e.size, frame.shape[0])
-        self.area = self._sum_points(on, dv) / width
+        dv, p_flat = dv_e.ravel(), lateral_e.reshape(dv_e.size, frame.shape[0])
+        self.area = self._sum(dv, on) / width
         if frame.shape[0]:
-            mid = self._sum_points(on, dv[:, None] * p_flat) / (self.area[:, None] * width)
+            mid = self._sum(dv[:, None] * p_flat, on) / (self.area[:, None] * width)
             spread = (p_flat - mid[on]) ** 2
-            self.second_moment = self._sum_points(on, dv[:, None] * spread).mean(axis=1) / width
+            self.second_moment = self._sum(dv[:, None] * spread, on).mean(axis=1) / width
         else:
             self.second_moment = np.zeros(self.count)
         p_q = x_q @ frame.T - offset
         self.weights = dv_q[:, :, None] * np.concatenate([np.ones(p_q.shape[:2] + (1,)), p_q], axis=2)
         # the outer fibre: the largest distance of a slab's corners from its axis line
-        lateral = corners - np.einsum("cnd,d->cn", corners, axis)[..., None] * axis
         if self.axisymmetric:
             reach = np.abs(corners[..., 0]).max(axis=1)
         else:
+            lateral = corners - np.einsum("cnd,d->cn", corners, axis)[..., None] * axis
             centre_line = centre @ frame                                       # (slabs, gdim)
             reach = np.linalg.norm(lateral - centre_line[self.slab][:, None, :], axis=2).max(axis=1)
         radius = np.zeros(self.count)
@@ -123,16 +124,11 @@ class SectionStresses:
         self.max_compression = np.full(self.count, np.inf)
         self.max_bending = np.zeros(self.count)
 
-    def _sum_points(self, slabs: np.ndarray, per_point: np.ndarray) -> np.ndarray:
-        """Per-slab sums of a per-point array whose points lie in ``slabs``, over all ranks.  Collective."""
-        out = np.zeros((self.count,) + per_point.shape[1:])
-        np.add.at(out, slabs, per_point)
-        return self.solver.comm.allreduce(out, op=MPI.SUM) if self.solver.parallel else out
-
-    def _sum(self, per_cell: np.ndarray) -> np.ndarray:
-        """Per-slab sums of a per-cell array over all ranks.  Collective."""
-        out = np.zeros((self.count,) + per_cell.shape[1:])
-        np.add.at(out, self.slab, per_cell)
+    def _sum(self, values: np.ndarray, slabs: np.ndarray | None = None) -> np.ndarray:
+        """Per-slab sums over all ranks of per-item ``values`` lying in ``slabs`` (default: the cells'
+        own slabs).  Collective."""
+        out = np.zeros((self.count,) + values.shape[1:])
+        np.add.at(out, self.slab if slabs is None else slabs, values)
         return self.solver.comm.allreduce(out, op=MPI.SUM) if self.solver.parallel else out
 
     def current_axis(self) -> np.ndarray:

@@ -127,7 +127,6 @@ class ConcreteTarget:
         depth = (self.point - x) @ self.normal            # each nose node's depth below the face
         self.depth = float(depth.max())
         self.max_depth = max(self.max_depth, self.depth)
-        self.f[:] = 0.0
         if self.depth > 0.0 and self.strike_speed is None:
             self._strike(v_local, t)
         S = area_vectors(self.model, x[self.facets])

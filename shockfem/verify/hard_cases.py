@@ -41,6 +41,19 @@ def _rod(name, material, radius, length, h, z, v):
             "element_size": h, "position": [0.0, z], "velocity": [0.0, v]}
 
 
+def _impact(name: str, end_time: float, history: float, materials: dict, bodies: list, contacts: list,
+            **scene) -> dict:
+    """An axisymmetric impact scene of ``bodies`` (``_rod``) touching through ``contacts``, as raw input."""
+    return {"scene": {"name": name, "kinematics": "axisymmetric", "end_time": end_time, **scene},
+            "materials": materials, "bodies": bodies, "contact": contacts,
+            "outputs": {"history_interval": history}}
+
+
+def _face(a: str, b: str) -> dict:
+    """The contact of body ``a``'s bottom on body ``b``'s top."""
+    return {"name": "face", "a": f"{a}.bottom", "b": f"{b}.top"}
+
+
 def _run(raw: dict, workdir: str):
     """The run through ``run_scene``: (summary, history columns, None) or (None, None, the diagnosis)."""
     try:
@@ -92,13 +105,9 @@ def _what_happened(s: dict) -> str:
 def hard_fast_steel(size, workdir):
     """Two 4340 rods meeting at 500 m/s each way: momentum and energy through heavy plasticity."""
     h = 0.5e-3 * SIZES[size]
-    raw = {"scene": {"name": "hard_fast_steel", "kinematics": "axisymmetric", "end_time": 1.5e-5,
-                     "integration": "full"},
-           "materials": {"steel": STEEL_4340},
-           "bodies": [_rod("upper", "steel", 0.005, 0.02, h, 0.02 + 1e-5, -500.0),
-                      _rod("lower", "steel", 0.005, 0.02, h, 0.0, 500.0)],
-           "contact": [{"name": "face", "a": "upper.bottom", "b": "lower.top"}],
-           "outputs": {"history_interval": 1e-7}}
+    raw = _impact("hard_fast_steel", 1.5e-5, 1e-7, {"steel": STEEL_4340},
+                  [_rod("upper", "steel", 0.005, 0.02, h, 0.02 + 1e-5, -500.0),
+                   _rod("lower", "steel", 0.005, 0.02, h, 0.0, 500.0)], [_face("upper", "lower")], integration="full")
     return _conserved("hard_fast_steel", raw, workdir, 500.0, expected=("contact face:",))
 
 
@@ -106,38 +115,29 @@ def hard_mass_ratio(size, workdir):
     """A rod 1000 times heavier than the disc it strikes: momentum through unequal bodies."""
     h = 1e-3 * SIZES[size]
     # rod R 10 mm x 100 mm (0.247 kg) on a disc R 5 mm x 0.4 mm (0.247 g)
-    raw = {"scene": {"name": "hard_mass_ratio", "kinematics": "axisymmetric", "end_time": 2e-5},
-           "materials": {"steel": dict(STEEL)},
-           "bodies": [_rod("heavy", "steel", 0.01, 0.1, h, 0.4e-3 + 1e-5, -10.0),
-                      _rod("light", "steel", 0.005, 0.4e-3, 0.2e-3, 0.0, 0.0)],
-           "contact": [{"name": "face", "a": "heavy.bottom", "b": "light.top"}],
-           "outputs": {"history_interval": 1e-7}}
+    raw = _impact("hard_mass_ratio", 2e-5, 1e-7, {"steel": dict(STEEL)},
+                  [_rod("heavy", "steel", 0.01, 0.1, h, 0.4e-3 + 1e-5, -10.0),
+                   _rod("light", "steel", 0.005, 0.4e-3, 0.2e-3, 0.0, 0.0)], [_face("heavy", "light")])
     return _conserved("hard_mass_ratio", raw, workdir, 10.0)
 
 
 def hard_soft_pad(size, workdir):
     """A striker on a foam pad on a steel target: momentum through a soft layer."""
     h = 1e-3 * SIZES[size]
-    raw = {"scene": {"name": "hard_soft_pad", "kinematics": "axisymmetric", "end_time": 4e-4},
-           "materials": {"steel": dict(STEEL), "foam": FOAM},
-           "bodies": [_rod("striker", "steel", 0.01, 0.05, h, 0.06 + 2e-5, -20.0),
-                      _rod("pad", "foam", 0.01, 0.01, h, 0.05 + 1e-5, 0.0),
-                      _rod("target", "steel", 0.01, 0.05, h, 0.0, 0.0)],
-           "contact": [{"name": "upper", "a": "striker.bottom", "b": "pad.top"},
-                       {"name": "lower", "a": "pad.bottom", "b": "target.top"}],
-           "outputs": {"history_interval": 1e-6}}
+    raw = _impact("hard_soft_pad", 4e-4, 1e-6, {"steel": dict(STEEL), "foam": FOAM},
+                  [_rod("striker", "steel", 0.01, 0.05, h, 0.06 + 2e-5, -20.0),
+                   _rod("pad", "foam", 0.01, 0.01, h, 0.05 + 1e-5, 0.0),
+                   _rod("target", "steel", 0.01, 0.05, h, 0.0, 0.0)],
+                  [dict(_face("striker", "pad"), name="upper"), dict(_face("pad", "target"), name="lower")])
     return _conserved("hard_soft_pad", raw, workdir, 20.0)
 
 
 def hard_thin_disc(size, workdir):
     """A 0.3 mm disc struck face-on at 50 m/s by a rod: a fraction of a millimetre sets the step."""
     h = 1e-3 * SIZES[size]
-    raw = {"scene": {"name": "hard_thin_disc", "kinematics": "axisymmetric", "end_time": 3e-5},
-           "materials": {"steel": dict(STEEL)},
-           "bodies": [_rod("rod", "steel", 0.005, 0.05, h, 0.3e-3 + 1e-5, -50.0),
-                      _rod("disc", "steel", 0.005, 0.3e-3, 0.15e-3, 0.0, 0.0)],
-           "contact": [{"name": "face", "a": "rod.bottom", "b": "disc.top"}],
-           "outputs": {"history_interval": 1e-7}}
+    raw = _impact("hard_thin_disc", 3e-5, 1e-7, {"steel": dict(STEEL)},
+                  [_rod("rod", "steel", 0.005, 0.05, h, 0.3e-3 + 1e-5, -50.0),
+                   _rod("disc", "steel", 0.005, 0.3e-3, 0.15e-3, 0.0, 0.0)], [_face("rod", "disc")])
     return _conserved("hard_thin_disc", raw, workdir, 50.0)
 
 
@@ -145,11 +145,9 @@ def hard_incompressible(size, workdir):
     """A nu = 0.499 rod on a rigid wall at 10 m/s: the wall's impulse is the rod's momentum change."""
     h = 1e-3 * SIZES[size]
     rubbery = dict(STEEL, poisson_ratio=0.499)
-    raw = {"scene": {"name": "hard_incompressible", "kinematics": "axisymmetric", "end_time": 1e-4},
-           "materials": {"nearly_incompressible": rubbery},
-           "bodies": [_rod("rod", "nearly_incompressible", 0.005, 0.1, h, 1e-5, -10.0)],
-           "contact": [{"name": "wall", "a": "rod.bottom", "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]}}],
-           "outputs": {"history_interval": 2e-7}}
+    raw = _impact("hard_incompressible", 1e-4, 2e-7, {"nearly_incompressible": rubbery},
+                  [_rod("rod", "nearly_incompressible", 0.005, 0.1, h, 1e-5, -10.0)],
+                  [{"name": "wall", "a": "rod.bottom", "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]}}])
     s, hist, stop = _run(raw, workdir)
     if s is None:
         return _stopped("hard_incompressible", stop)

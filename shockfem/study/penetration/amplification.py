@@ -116,10 +116,7 @@ def amplification(rep: Report, ctx: Context):
     for ratio in ctx.cfg["duration_ratios"]:
         duration = ratio * T_axial
         peak, quasi = junction_stress(ctx, force, duration, duration + 1.5 * T_axial)
-        dt = duration / 400
-        t = np.arange(0.0, duration + 3 * T_axial, dt)
-        pulse = np.where(t <= duration, np.sin(math.pi * t / duration), 0.0)
-        sdof = float(shock_response_spectrum(pulse, dt, [f_axial], q=math.inf).maximax[0])
+        sdof = _one_mode(duration, f_axial)
         rows.append([ratio, duration * 1e3, duration / T_bending, peak / 1e6, quasi / 1e6, peak / quasi, sdof])
         ratios.append(ratio)
         dafs.append(peak / quasi)
@@ -128,9 +125,7 @@ def amplification(rep: Report, ctx: Context):
                                 "peak stress [MPa]", "quasi-static stress [MPa]", "amplification [-]",
                                 "one-mode (SDOF) amplification [-]"], rows,
               ["{:g}", "{:.4f}", "{:.3f}", "{:.1f}", "{:.1f}", "{:.3f}", "{:.3f}"])
-    longest_amplified = max((r for r, a in zip(ratios, dafs) if a > QUASI_STATIC), default=float("nan"))
-    shortest_quasi = min((r for r, a in zip(ratios, dafs) if r > longest_amplified and a <= QUASI_STATIC),
-                         default=float("nan"))
+    shortest_quasi = _shortest_quasi_static(ratios, dafs)
     rep.value("shortest_quasi_static_duration_ms", shortest_quasi * T_axial * 1e3)
     rep.text(
         f"The article's first free-free modes (3D tetrahedra, `shockfem modes`): axial {f_axial:,.0f} Hz "
@@ -152,6 +147,23 @@ def amplification(rep: Report, ctx: Context):
     _figure(rep, ratios, dafs, sdofs, bending)
 
 
+def _one_mode(duration: float, frequency: float) -> float:
+    """The undamped shock spectrum of a unit half-sine of ``duration`` at ``frequency``: the largest
+    response of one mode over its static response (``metrics.srs``, Q infinite)."""
+    dt = duration / 400
+    t = np.arange(0.0, duration + 3 / frequency, dt)
+    pulse = np.where(t <= duration, np.sin(math.pi * t / duration), 0.0)
+    return float(shock_response_spectrum(pulse, dt, [frequency], q=math.inf).maximax[0])
+
+
+def _shortest_quasi_static(ratios: list[float], amplifications: list[float]) -> float:
+    """The shortest duration ratio past the longest amplified one (above ``QUASI_STATIC``) whose
+    amplification is within it (nan if none)."""
+    longest_amplified = max((r for r, a in zip(ratios, amplifications) if a > QUASI_STATIC), default=float("nan"))
+    return min((r for r, a in zip(ratios, amplifications) if r > longest_amplified and a <= QUASI_STATIC),
+               default=float("nan"))
+
+
 def _crater_rises(ctx: Context) -> dict:
     """Section 1's shots: the time their force took to rise over the crater, strike to tunnel [s]."""
     out = {}
@@ -170,10 +182,7 @@ def _bending(rep: Report, ctx: Context, f_bending: float) -> tuple[list, list, l
     for ratio in ctx.cfg["bending_ratios"]:
         duration = ratio * T
         peak, quasi, where = lateral_bending(ctx, force, duration, duration + 1.5 * T)
-        dt = duration / 400
-        t = np.arange(0.0, duration + 3 * T, dt)
-        pulse = np.where(t <= duration, np.sin(math.pi * t / duration), 0.0)
-        sdof = float(shock_response_spectrum(pulse, dt, [f_bending], q=math.inf).maximax[0])
+        sdof = _one_mode(duration, f_bending)
         rows.append([ratio, duration * 1e3, peak / 1e6, quasi / 1e6, where * 1e3, peak / quasi, sdof])
         ratios.append(ratio)
         dafs.append(peak / quasi)
@@ -183,9 +192,7 @@ def _bending(rep: Report, ctx: Context, f_bending: float) -> tuple[list, list, l
                                         "quasi-static peak, from the tip [mm]", "amplification [-]",
                                         "one-mode (SDOF) amplification [-]"], rows,
               ["{:g}", "{:.4f}", "{:.3f}", "{:.3f}", "{:.0f}", "{:.3f}", "{:.3f}"])
-    longest_amplified = max((r for r, a in zip(ratios, dafs) if a > QUASI_STATIC), default=float("nan"))
-    shortest_quasi = min((r for r, a in zip(ratios, dafs) if r > longest_amplified and a <= QUASI_STATIC),
-                         default=float("nan"))
+    shortest_quasi = _shortest_quasi_static(ratios, dafs)
     rep.value("bending_peak_amplification", max(dafs))
     rep.value("bending_shortest_quasi_static_duration_ms", shortest_quasi * T * 1e3)
     worst = ratios[int(np.argmax(dafs))]
