@@ -95,6 +95,28 @@ def _parser() -> argparse.ArgumentParser:
     ln.add_argument("--trade", type=int, metavar="N", default=0,
                     help="with the design, trade curves at N points: weight against pressure, length against bore")
 
+    dm = sub.add_parser("design-machine", help="design the whole shock tester for an article and a pulse: fixture, "
+                                               "amplifier, launcher, stops, guides, frame; loads against allowables")
+    dm.add_argument("--article", required=True, help="the unit under test's mass, e.g. '12 lb'")
+    dm.add_argument("--shape", default="rectangle", help="pulse shape: rectangle | half-sine | terminal-peak sawtooth "
+                                                         "| trapezoid (default rectangle)")
+    dm.add_argument("--peak", default="10000 gee", help="pulse peak (default '10000 gee')")
+    dm.add_argument("--duration", default="5 ms", help="pulse duration (default '5 ms')")
+    dm.add_argument("--article-diameter", help="default: the fixture study's 60 mm ogive scaled to the mass")
+    dm.add_argument("--architecture", default="launched-chain", help="launched-chain | stack-on-anvil")
+    dm.add_argument("--masses", type=int, default=5, help="amplifier masses, the striker last (default 5)")
+    dm.add_argument("--launch", default="325 ft/s", help="first mass's launch speed (default '325 ft/s')")
+    dm.add_argument("--material", default="high_strength_steel", help="library metal of masses, housing, frame")
+    dm.add_argument("--gas", default="air", help="launcher gas: air | nitrogen (default air)")
+    dm.add_argument("--max-pressure", default="5000 psi", help="launcher reservoir limit (default '5000 psi')")
+    dm.add_argument("--max-barrel-length", default="20 ft", help="launcher barrel limit (default '20 ft')")
+    dm.add_argument("--max-bore", default="36 in", help="launcher bore limit (default '36 in')")
+    dm.add_argument("--striker-ratio", type=float, default=10.0, help="striker over payload mass, at least "
+                                                                      "(default 10; the housing may ask for more)")
+    dm.add_argument("--safety-factor", type=float, default=1.5, help="yield over allowable stress (default 1.5)")
+    dm.add_argument("--catch-deceleration", help="the payload's catcher (default: half the pulse's peak)")
+    dm.add_argument("--out", help="directory for machine.json and machine.md (default: results/machine/<N>lb)")
+
     st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
     st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration"))
     st.add_argument("--size", choices=("smoke", "default"), default="default")
@@ -227,6 +249,8 @@ def _dispatch(args) -> int:
         return _launcher(args)
     if args.command == "programmer":
         return _programmer(args)
+    if args.command == "design-machine":
+        return _design_machine(args)
     if args.command == "study":
         if args.name == "amplifier":
             from .study.amplifier import run_study
@@ -295,6 +319,23 @@ def _launcher(args) -> int:
     for line in shot_lines(name, shot, size):
         print(line)
     print(f"results in {out}")
+    return EXIT_OK
+
+
+def _design_machine(args) -> int:
+    from .machine.design import design_machine
+    from .machine.output import summary_lines, write_machine
+    from .machine.spec import read_spec
+    names = ("article", "shape", "peak", "duration", "article_diameter", "architecture", "masses", "launch",
+             "material", "gas", "max_pressure", "max_barrel_length", "max_bore", "striker_ratio", "safety_factor",
+             "catch_deceleration")
+    spec = read_spec({k: getattr(args, k) for k in names if getattr(args, k) is not None})
+    out = args.out or os.path.join("results", "machine", f"{spec.article_mass / LB:.3g}lb")
+    machine = design_machine(spec, out, echo=print)
+    for line in summary_lines(machine):
+        print(line)
+    for path in write_machine(machine, out):
+        print(f"wrote {path}")
     return EXIT_OK
 
 

@@ -9,7 +9,8 @@ article), without positions or velocities, which the chain sets:
     architecture = "launched-chain"   # or "stack-on-anvil"
     launch_speed = "10 m/s"           # of the first body, or of the whole stack
     fidelity = "1d"                   # rigid | 1d | axisymmetric | 3d (default rigid)
-    gap = "1 mm"                      # launched chain: between neighbours; stack: to the anvil
+    gap = "1 mm"                      # launched chain: between neighbours (or a list, one per
+                                      #   interface); stack: to the anvil
     restitution = 0.9                 # the rigid model's, every interface (or a list)
     damping = 0.02                    # structural damping ratio, every body at its own first mode
                                       #   c0 / 2L (1d and finite elements)
@@ -91,6 +92,7 @@ class ChainSpec:
     pad_stiffness: tuple[float, ...] = ()   # per interface [N/m], 0: none
     pad_thickness: tuple[float, ...] = ()   # per interface [m]
     pad_damping: float = 0.02
+    gaps: tuple[float, ...] = ()      # per interface of a launched chain, when given as a list [m]
     launcher: dict | None = None      # the shot's summary and sizing when a [launcher] fired the chain
     shot: object = None               # and the shot itself (its histories)
 
@@ -103,9 +105,11 @@ class ChainSpec:
         return self.pad_thickness[k] if self.pad(k) else 0.0
 
     def interface_gap(self, k: int) -> float:
-        """Gap between bodies k and k + 1 [m]: ``gap`` in a launched chain; in a stack ``gap`` is
-        the anvil's and the others shrink up the stack by STACK_SHRINK."""
-        return self.gap * (STACK_SHRINK ** (k + 1) if self.architecture == "stack-on-anvil" else 1.0)
+        """Gap between bodies k and k + 1 [m]: ``gap`` (or its k-th value) in a launched chain; in a
+        stack ``gap`` is the anvil's and the others shrink up the stack by STACK_SHRINK."""
+        if self.architecture == "stack-on-anvil":
+            return self.gap * STACK_SHRINK ** (k + 1)
+        return self.gaps[k] if self.gaps else self.gap
 
     def rigid_restitution(self) -> tuple[float, ...]:
         """The rigid model's restitution per interface: as given, or its pad's."""
@@ -155,10 +159,17 @@ def _spec(raw: dict, n: int, ck: Checker) -> ChainSpec:
             if any(k and not t for k, t in zip(pads, thickness)):
                 ck.fail("chain.pad_thickness", f"every pad needs a thickness > 0, got {c['pad_thickness']!r}")
     pad_damping = ck.number(c, "pad_damping", "chain", 0.02, 0.0, 1.0, "a damping ratio", high_open=True)
-    return ChainSpec(str(c.get("name", "chain")), arch, speed, fidelity,
-                     ck.quantity(c, "gap", "chain", "length", 1e-3, positive=True), e, damping,
+    gaps: tuple[float, ...] = ()
+    if isinstance(c.get("gap"), list):
+        if arch != "launched-chain":
+            ck.fail("chain.gap", f"a stack has one gap (to the anvil; the others shrink up the stack), got {c['gap']!r}")
+        else:
+            gaps = per_interface("gap", 1e-3, lambda d, k: ck.quantity(d, k, "chain", "length", 1e-3, positive=True))
+    gap = gaps[0] if gaps else ck.quantity(c if not isinstance(c.get("gap"), list) else {}, "gap", "chain", "length",
+                                           1e-3, positive=True)
+    return ChainSpec(str(c.get("name", "chain")), arch, speed, fidelity, gap, e, damping,
                      ck.quantity(c, "end_time", "chain", "time", 0.0, nonnegative=True) or None,
-                     pads if thickness else (), thickness, pad_damping)
+                     pads if thickness else (), thickness, pad_damping, gaps)
 
 
 def _height(body) -> float:
@@ -342,7 +353,7 @@ def _default_end(spec, masses, heights, scene) -> float:
     # a pad's contact lasts half its period on the two masses, pi sqrt(M* / k)
     pads = sum(math.pi * math.sqrt(reduced_mass(masses[k], masses[k + 1]) / spec.pad(k))
                for k in range(len(masses) - 1) if spec.pad(k))
-    return last + 3 * transit + spec.gap / spec.launch_speed + 1.5 * pads
+    return last + 3 * transit + max(spec.gaps or (spec.gap,)) / spec.launch_speed + 1.5 * pads
 
 
 def _run_rigid_model(spec, masses, heights):

@@ -13,6 +13,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import brentq
 
 from .gain import collide
 
@@ -138,3 +139,24 @@ def stack_on_anvil(masses, speed: float, e: float, lengths=None, gap: float = 1e
     lengths = lengths if lengths is not None else [0.0] * n
     return run_chain(masses, [-speed] * n, lengths, [gap * shrink ** (k + 1) for k in range(n - 1)],
                      [e] * (n - 1), anvil=e, anvil_gap=gap)
+
+
+def first_closing_speeds(masses, speed: float, e: float) -> list[float]:
+    """Closing speed of each neighbour pair at its first collision in a rigid launched chain."""
+    first: dict[int, float] = {}
+    for c in launched_chain(masses, speed, e).collisions:
+        if c.left >= 0:
+            first.setdefault(c.left, c.before[0] - c.before[1])
+    return [first[k] for k in range(len(masses) - 1)]
+
+
+def effective_restitution(masses, speed: float, gain: float, architecture: str = "launched-chain") -> float:
+    """The single restitution that gives a rigid chain of ``masses`` (launched, or a stack falling on an
+    anvil of the same restitution) this ``gain`` (nan when no e in (0, 1] does)."""
+    chain = launched_chain if architecture == "launched-chain" else stack_on_anvil
+
+    def excess(e):
+        return chain(masses, speed, e).final[-1] / speed - gain
+    if excess(1e-6) > 0 or excess(1.0) < 0:
+        return float("nan")
+    return float(brentq(excess, 1e-6, 1.0, xtol=1e-10))

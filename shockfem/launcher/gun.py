@@ -36,6 +36,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from ..units import FT, IN, PSI
 from .gas import GASES, Gas, orifice_flow
 
 GAS_INERTIA = ("none", "lagrange", "simple-wave")
@@ -83,6 +84,14 @@ class Gun:
     def gas_model(self) -> Gas:
         g = GASES[self.gas]
         return g.real() if self.real_gas else g
+
+
+def white_paper_gun(mass: float, gas: str = "air") -> "Gun":
+    """The white paper's gun (12 in bore, 6 ft barrel, 20 ft^3 at 2000 psi, an 8 in valve opening in
+    2 ms), as ``studies/launcher/white_paper_gun.toml`` describes it, firing ``mass`` [kg]: the start the
+    launcher design moves from."""
+    return Gun(reservoir_volume=20 * FT ** 3, reservoir_pressure=2000 * PSI, bore=12 * IN, length=6 * FT,
+               projectile_mass=mass, valve_area=math.pi * (8 * IN) ** 2 / 4, opening_time=2e-3, gas=gas)
 
 
 @dataclass

@@ -454,3 +454,18 @@ PARTS: dict[str, Part] = {p.name: p for p in [
                                                    * d["seat_depth"]),
          _carrier_check),
 ]}
+
+
+def solid_ogive(radius: float, crh: float, meplat_radius: float, length: float = 0.0) -> dict:
+    """The dimensions of a solid (no cavity) ``projectile`` part [m]."""
+    return {"radius": radius, "length": length, "crh": crh, "meplat_radius": meplat_radius,
+            "cavity_radius": 0.0, "cavity_length": 0.0, "base_thickness": 0.0}
+
+
+def solid_ogive_length(mass: float, density: float, radius: float, crh: float, meplat_radius: float) -> float:
+    """The length [m] at which a solid ogive projectile of ``radius`` weighs ``mass`` [kg] at ``density``:
+    its closed-form volume solved for the length (longer than its nose)."""
+    from scipy.optimize import brentq
+    _, nose = ogive(solid_ogive(radius, crh, meplat_radius))
+    return brentq(lambda L: PARTS["projectile"].volume(solid_ogive(radius, crh, meplat_radius, L), 3) * density
+                  - mass, 1.01 * nose, 1e4 * radius)

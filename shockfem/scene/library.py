@@ -109,3 +109,16 @@ LIBRARY: dict[str, dict] = {
         **_foam(0.2, 1200.0, 1.6e9, 127e6, 1.1),
     },
 }
+
+
+def property_si(name: str, key: str, dimension: str) -> float:
+    """A library material's property in SI (``key`` e.g. "density", dimension e.g. "density")."""
+    from ..units import to_si
+    return to_si(LIBRARY[name][key], dimension)
+
+
+def initial_yield_stress(name: str) -> float:
+    """The initial yield stress of a library metal [Pa]: its hardening curve's first point, or its yield."""
+    from ..units import to_si
+    m = LIBRARY[name]
+    return to_si(m["hardening_curve"][0][1] if "hardening_curve" in m else m["yield_stress"], "pressure")

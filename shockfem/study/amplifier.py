@@ -28,7 +28,6 @@ import os
 import time
 
 from ..output.figures import pyplot
-from scipy.optimize import brentq
 
 from ..amplifier import rigid
 from ..amplifier.bars import Bar, Interface, Tether, run_bars
@@ -443,15 +442,6 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
     return rows
 
 
-def _closing_speeds(masses, speed: float, e: float) -> list[float]:
-    """Closing speed of each neighbour pair at its first collision in a rigid launched chain."""
-    first: dict[int, float] = {}
-    for c in rigid.launched_chain(masses, speed, e).collisions:
-        if c.left >= 0:
-            first.setdefault(c.left, c.before[0] - c.before[1])
-    return [first[k] for k in range(len(masses) - 1)]
-
-
 def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
     """What keeps the five-mass design elastic: flat faces and crowned faces against yield, then
     pads sized to a face stress below yield, run at every fidelity; the effective restitution per
@@ -472,7 +462,7 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
              "over the smaller face, and the largest closing speed that keeps it below yield. Crowned faces: "
              "the closing speed at which a crown of radius ten times the smaller diameter first yields "
              "(Hertz, p0 = 1.6 Y; `shockfem/amplifier/interfaces.py`).")
-    dvs = _closing_speeds(masses, d.launch_speed, d.restitution)
+    dvs = rigid.first_closing_speeds(masses, d.launch_speed, d.restitution)
     rows = []
     for (a, b), dv in zip(pairs, dvs):
         z_a, z_b = rho * c0 * areas[a], rho * c0 * areas[b]
@@ -486,7 +476,7 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
     # closing speeds of a rigid chain with the pads' own restitution
     zeta = PAD_DAMPING
     e_pad = rigid.pad_restitution(zeta)
-    dvs_pad = _closing_speeds(masses, d.launch_speed, e_pad)
+    dvs_pad = rigid.first_closing_speeds(masses, d.launch_speed, e_pad)
     pads = [pad_for_force(dv, reduced_mass(masses[a], masses[b]), ALLOWABLE * Y * areas[b])
             for (a, b), dv in zip(pairs, dvs_pad)]
     thickness = [PAD_SPACE * p.travel for p in pads]
@@ -528,7 +518,7 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
             es = first_impacts(chain["stages"])
             runs.append([label, gap * 1e3, ", ".join(f"{e:.3f}" for e in es),
                          "yes" if contacts_overlap(chain["stages"]) else "no",
-                         effective_restitution(masses, d.launch_speed, chain["gain"]), chain["gain"],
+                         rigid.effective_restitution(masses, d.launch_speed, chain["gain"]), chain["gain"],
                          max(chain["stress_over_yield"].values(), default=float("nan")), chain["wall_time_s"]])
     for e in ASSUMED_RESTITUTION:
         g = rigid.launched_chain(masses, d.launch_speed, e).final[-1] / d.launch_speed
@@ -580,16 +570,6 @@ def contacts_overlap(stages) -> bool:
     """Whether a contact begins before an earlier one has ended (dicts of the stage table)."""
     spans = sorted((st["start"], st["end"]) for st in stages if st["struck"] != "wall")
     return any(b[0] < a[1] for a, b in zip(spans, spans[1:]))
-
-
-def effective_restitution(masses, speed: float, gain: float) -> float:
-    """The single restitution that gives a rigid launched chain of ``masses`` this ``gain``
-    (nan when no e in (0, 1] does)."""
-    def excess(e):
-        return rigid.launched_chain(masses, speed, e).final[-1] / speed - gain
-    if excess(1e-6) > 0 or excess(1.0) < 0:
-        return float("nan")
-    return float(brentq(excess, 1e-6, 1.0, xtol=1e-10))
 
 
 def run_study(size: str = "default", out_dir: str = "results/amplifier", echo=print) -> str:

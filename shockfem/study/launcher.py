@@ -25,7 +25,7 @@ from scipy.optimize import brentq
 from ..amplifier.chain import run_chain_scene
 from ..amplifier.gain import cylinder_size, design
 from ..launcher.design import Limits, Sizing, around, length_against_bore, lightest_launcher, trade
-from ..launcher.gun import Gun, barrel_length_for, fire
+from ..launcher.gun import Gun, barrel_length_for, fire, white_paper_gun
 from ..launcher.output import write_design
 from ..scene.library import LIBRARY
 from ..units import FT, G0, IN, LB, PSI, to_si
@@ -40,12 +40,6 @@ SIZES = {"smoke": {"payloads": (10,), "architectures": ("launched-chain",), "tra
                    "fidelities": ("rigid",)},
          "default": {"payloads": (10, 50, 100), "architectures": ("launched-chain", "stack-on-anvil"), "trade": 6,
                      "starts": 3, "fidelities": ("rigid", "1d")}}
-
-
-def paper_gun(mass: float) -> Gun:
-    """The white paper's gun as ``studies/launcher/white_paper_gun.toml`` describes it."""
-    return Gun(reservoir_volume=20 * FT ** 3, reservoir_pressure=2000 * PSI, bore=12 * IN, length=6 * FT,
-               projectile_mass=mass, valve_area=math.pi * (8 * IN) ** 2 / 4, opening_time=2e-3)
 
 
 def launched(arch: str, article: float = ARTICLE) -> tuple[float, float, object]:
@@ -95,7 +89,7 @@ def first_mass(rep: Report, cfg) -> dict:
     rows, designs = [], {}
     for arch in cfg["architectures"]:
         m, v, _ = launched(arch)
-        gun = paper_gun(m)
+        gun = white_paper_gun(m)
         shot = fire(gun)
         wave = fire(dataclasses.replace(gun, gas_inertia="simple-wave"))
         rows.append([arch, m / LB, v / FT, shot.muzzle_velocity / FT, wave.muzzle_velocity / FT,
@@ -139,7 +133,7 @@ def thirty_pounds(rep: Report, cfg):
              "constant-pressure bound, an infinite chamber of the bore's section (the simple-wave gun) and the paper's 20 ft^3 tank with a valve "
              "of 2/3 the bore.")
     m, v = 30 * LB, TARGET
-    gun = dataclasses.replace(paper_gun(m), reservoir_pressure=2000 * PSI)
+    gun = dataclasses.replace(white_paper_gun(m), reservoir_pressure=2000 * PSI)
     rows = []
     bores = (4, 5, 6, 8, 10, 12) if cfg["trade"] else (6, 12)
     for b in bores:
@@ -211,7 +205,7 @@ def payload_machines(rep: Report, cfg):
     for p in cfg["payloads"]:
         for arch in cfg["architectures"]:
             m, v, amp = launched(arch, p * LB)
-            d = lightest_launcher(paper_gun(m), v, LIMITS, SIZING, starts=cfg["starts"], report_binding=False)
+            d = lightest_launcher(white_paper_gun(m), v, LIMITS, SIZING, starts=cfg["starts"], report_binding=False)
             rows.append(_design_row(f"{p} lb, {arch}", d))
             biggest = cylinder_size(amp.masses[0], rho, 1.0)["diameter"]
             extra.append([f"{p} lb, {arch}", sum(amp.masses[:-1]) / LB, biggest / IN,

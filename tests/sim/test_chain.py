@@ -66,3 +66,15 @@ def test_bad_chain_lists_its_problems():
                      "bodies[0].radius: must be > 0, got -1 mm"):
         assert expected in p.stderr
     assert "Traceback" not in p.stderr
+
+
+def test_gaps_per_interface_time_the_collisions(tmp_path):
+    """A launched chain's gaps may be one per interface: with rigid bodies at 10 m/s, the first collision
+    comes at gap_1 / 10 and the second, the struck body moving at v2, gap_2 / v2 later."""
+    chain, _ = _run(tmp_path, "rigid", "--set", 'chain.gap=["5 mm", "40 mm"]')
+    m = list(chain["masses"].values())
+    v2 = 1.9 * m[0] / (m[0] + m[1]) * 10.0
+    # the rigid history steps at each collision (samples 1e-12 s either side): a stage ends at its collision
+    t1, t2 = (s["end"] for s in chain["stages"])
+    assert t1 == pytest.approx(0.005 / 10.0, abs=1e-11)
+    assert t2 - t1 == pytest.approx(0.040 / v2, abs=1e-11)

@@ -27,6 +27,7 @@ LAYERS = [
     {"metrics"},
     {"runner"},
     {"modal", "launcher", "amplifier", "programmer", "penetration"},
+    {"machine"},
     {"verify", "study", "bench"},
     {"api", "cli", "__main__", "__init__"},
 ]

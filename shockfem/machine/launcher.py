@@ -1,0 +1,40 @@
+"""The launcher: the lightest gas gun (``launcher.design.lightest_launcher``, ASME walls) that fires the
+amplifier's first mass (or the whole stack) at the launch speed, within the spec's limits, starting
+from the white paper's gun; with what it stores and what it costs in gas."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..launcher.design import Limits, Sizing, lightest_launcher
+from ..launcher.gas import GASES
+from ..launcher.gun import white_paper_gun
+from ..launcher.output import sizing
+from .spec import MachineSpec
+
+SIZING = Sizing()
+
+
+@dataclass
+class Launcher:
+    design: object                # ``launcher.design.LauncherDesign``
+    sizing: dict                  # ASME walls, weights and hoop stresses (``launcher.output.sizing``)
+    projectile_mass: float        # [kg]
+    gas_mass: float               # in the reservoir at its pressure and temperature [kg]
+    stored_energy: float          # the reservoir gas's internal energy p V / (gamma - 1) [J]
+    launch_energy: float          # the projectile's kinetic energy at the muzzle [J]
+
+    def as_dict(self) -> dict:
+        return {"design": self.design.summary(), "sizing": self.sizing, "projectile_mass": self.projectile_mass,
+                "gas_mass": self.gas_mass, "stored_energy": self.stored_energy, "launch_energy": self.launch_energy}
+
+
+def design_launcher(spec: MachineSpec, masses: list[float], starts: int = 3) -> Launcher:
+    launched = masses[0] if spec.architecture == "launched-chain" else sum(masses)
+    limits = Limits(max_length=spec.max_barrel_length, max_bore=spec.max_bore, max_pressure=spec.max_pressure)
+    d = lightest_launcher(white_paper_gun(launched, spec.gas), spec.launch_speed, limits, SIZING, starts=starts)
+    g = d.gun
+    gas = GASES[spec.gas]
+    return Launcher(d, sizing(g, SIZING), launched,
+                    gas.mass_for(g.reservoir_pressure, g.reservoir_temperature, g.reservoir_volume),
+                    g.reservoir_pressure * g.reservoir_volume / (gas.gamma - 1),
+                    0.5 * launched * d.muzzle_velocity ** 2)

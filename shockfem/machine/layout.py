@@ -1,0 +1,184 @@
+"""Where everything sits along the machine's axis, and what stops, guides and carries the moving bodies.
+
+The machine is horizontal, on one axis x: the tank behind the breech, the barrel, the amplifier's
+masses with their pads and gaps, the striker (the dashpot's housing), the payload (piston and article)
+a gap beyond its mouth, then the arrest: every moving body is stopped by a ring stop on the axis whose
+bore lets the smaller bodies ahead of it pass (masses shrink along the chain), the payload last by its
+catcher.
+
+* Each body is stopped over its own length (the stop then takes no more of the machine than the body,
+  and the frame carries the force m v^2 / (2 L)), or over more where that would pass its inertia's
+  limit: a body stopped at one end at deceleration a carries rho L a at the stop (a bar pushed from one
+  end), at most the allowable S, so a <= S / (rho L).  Stroke v^2 / (2 a), force m a, energy m v^2 / 2.  The payload's catcher is the spec's (at most half
+  the test pulse's peak by default: the arrest must not be the harsher shock).
+* Guides: two rails under every body, sliding shoes under it (its weight their load): catalogue
+  rolling carriages run at most ``ROLLING_CARRIAGE_SPEED`` (item Industrietechnik, PS 4 bearing carriages:
+  v max 5 m/s), far below the bodies' speeds, so the shoes slide (wear strips on hardened rails).
+* Frame: two side members as ties that carry the largest stop force back to the gun at the allowable
+  stress (their bending and the foundation are left out).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field
+
+from ..programmer.dashpot_design import DASHPOT
+from ..units import G0
+
+ROLLING_CARRIAGE_SPEED = 5.0       # [m/s], item PS 4 bearing carriages (catalogue)
+GUIDES_PER_BODY = 2
+GAP_TO_PAYLOAD = 0.05              # between the striker's mouth and the piston at rest [m]
+RING_CLEARANCE = 0.01              # a stop ring's bore over the body that passes through it [m]
+STOP_MARGIN = 0.05                 # free run past the next body's far end before a stop engages [m]
+
+
+@dataclass
+class Stop:
+    body: str
+    mass: float                # [kg]
+    speed: float               # when it reaches its stop [m/s]
+    deceleration: float        # [m/s^2]
+    stroke: float              # [m]
+    force: float               # [N]
+    energy: float              # [J]
+    limit: str                 # what set the deceleration
+
+
+@dataclass
+class Item:
+    """One component on the axis: x0 its rear end, length along x, outer (and inner) diameter [m]."""
+    name: str
+    kind: str                  # tank, barrel, mass, pad, housing, piston, article, stop, rail, frame
+    x0: float
+    length: float
+    diameter: float
+    inner: float = 0.0
+    mass: float = 0.0          # [kg]
+    material: str = ""
+    note: str = ""
+
+
+@dataclass
+class Layout:
+    items: list[Item]
+    stops: list[Stop]
+    overall_length: float      # [m]
+    overall_width: float       # [m]
+    frame_section: float       # each side member [m^2]
+    frame_mass: float          # [kg]
+    fastest_guided_speed: float
+    guide_load: float          # the heaviest shoe's load [N]
+    notes: list[str] = field(default_factory=list)
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+def stop_for(body: str, mass: float, speed: float, length: float, rho: float, allowable: float,
+             deceleration: float | None = None, limit: str = "") -> Stop:
+    """The stop of a body of ``length`` at ``speed``: over its own length (so that stopping takes no
+    more of the machine than the body does, at the force its energy over that length needs), or longer
+    where that would pass its inertia's limit S / (rho L); at ``deceleration`` if given (the catcher)."""
+    if deceleration:
+        a, why = deceleration, limit
+    else:
+        a_inertia = allowable / (rho * length)
+        a_own = speed * speed / (2 * length)
+        a = min(a_own, a_inertia)
+        why = (f"over its own length ({a / G0:,.0f} g)" if a_own <= a_inertia
+               else f"its inertia: rho L a = allowable ({a / G0:,.0f} g)")
+    return Stop(body, mass, speed, a, speed * speed / (2 * a), mass * a, 0.5 * mass * speed * speed, why)
+
+
+def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, material: str,
+          final_speeds: list[float]) -> Layout:
+    """Every component's place on the axis, the stops, the guides and the frame.  ``final_speeds``: each
+    amplifier mass's speed after the chain (the striker's is the fixture's after the pulse)."""
+    g, size = launcher.design.gun, launcher.sizing
+    items: list[Item] = []
+    tank = size["tank"]
+    D_t = tank["diameter"]
+    # the tank's overall length: its volume as a cylinder between hemispherical heads, then the heads
+    L_cyl = max(g.reservoir_volume - math.pi * D_t ** 3 / 6, 0.0) / (math.pi * D_t * D_t / 4)
+    L_tank = L_cyl + D_t + 2 * tank["head_thickness"]
+    items.append(Item("tank", "tank", 0.0, L_tank, D_t + 2 * tank["shell_thickness"], D_t, tank["weight"],
+                      tank["material"], f"{g.reservoir_volume:.3g} m^3 of {g.gas} at {g.reservoir_pressure / 1e6:.3g} MPa"))
+    bodies = amp.bodies
+    slug = bodies[0]
+    x_breech = L_tank
+    L_barrel = g.length + slug["length"]
+    items.append(Item("barrel", "barrel", x_breech, L_barrel, g.bore + 2 * size["barrel"]["thickness"], g.bore,
+                      size["barrel"]["weight"], size["barrel"]["material"], f"{g.length:.3g} m of travel"))
+    # the chain as it stands when the first mass leaves the muzzle: the others at rest ahead of it
+    fronts, rears = [], []
+    for k, (b, m) in enumerate(zip(bodies, amp.masses)):
+        if k == 0:
+            rear = x_breech
+        else:
+            stage = amp.stages[k - 1]
+            pad_rear = (x_breech + g.length + slug["length"] if k == 1 else fronts[-1]) + amp.gaps[k - 1]
+            items.append(Item(f"pad_{stage.pair}", "pad", pad_rear, stage.pad_thickness,
+                              stage.pad_diameter, 0.0, 0.0, "elastomer",
+                              f"{stage.pad_stiffness / 1e6:.4g} MN/m, {stage.pad_travel * 1e3:.0f} mm travel"))
+            rear = pad_rear + stage.pad_thickness
+        kind = "housing" if b["name"] == "striker" else "mass"
+        items.append(Item(b["name"], kind, rear, b["length"], b["diameter"], b.get("bore", 0.0), m, material,
+                          "" if kind == "mass" else f"bore {b['bore'] * 1e3:.0f} mm, {fixture.liquid_mass:.2f} kg "
+                                                    "of oil (in the mass)"))
+        rears.append(rear)
+        fronts.append(rear + b["length"])
+    mouth = fronts[-1]
+    piston_x = mouth + GAP_TO_PAYLOAD
+    t_piston = DASHPOT["piston_thickness"]
+    items.append(Item("piston", "piston", piston_x, t_piston, 2 * fixture.bore_radius, 0.0, fixture.piston_mass,
+                      material, "the article stands on it; it enters the bore"))
+    items.append(Item("article", "article", piston_x + t_piston, fixture.article_length, fixture.article_diameter,
+                      0.0, fixture.article_mass, "steel_4340", "the unit under test (the reference ogive, nose "
+                                                               "forward)"))
+    payload_front = piston_x + t_piston + fixture.article_length
+    # stops: each amplifier mass's ring just past the next body, after the previous ring's stroke
+    stops, ring_end = [], 0.0
+    names = [b["name"] for b in bodies]
+    for k in range(len(bodies) - 1):
+        b = bodies[k]
+        s = stop_for(names[k], amp.masses[k], final_speeds[k], b["length"], rho, allowable)
+        x_ring = max(fronts[k + 1] + STOP_MARGIN, ring_end)
+        items.append(Item(f"stop_{names[k]}", "stop", x_ring, s.stroke, 1.3 * b["diameter"],
+                          bodies[k + 1]["diameter"] + RING_CLEARANCE, 0.0, material,
+                          f"{s.force / 1e6:.3g} MN over {s.stroke:.3g} m"))
+        ring_end = x_ring + s.stroke
+        stops.append(s)
+    striker = bodies[-1]
+    s = stop_for("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable)
+    x_ring = max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end)
+    items.append(Item("stop_striker", "stop", x_ring, s.stroke, 1.3 * striker["diameter"],
+                      2 * fixture.bore_radius + RING_CLEARANCE, 0.0, material, f"{s.force / 1e6:.3g} MN over "
+                                                                                f"{s.stroke:.3g} m"))
+    stops.append(s)
+    ring_end = x_ring + s.stroke
+    c = stop_for("payload", fixture.payload_mass, fixture.after_speed_payload, fixture.article_length, rho, allowable,
+                 catch, f"the catcher's deceleration ({catch / G0:,.0f} g)")
+    x_catch = max(payload_front + fixture.payload_travel + STOP_MARGIN, ring_end)
+    items.append(Item("catcher", "stop", x_catch, c.stroke, 1.3 * striker["diameter"], 0.0, 0.0, material,
+                      f"{c.force / 1e6:.3g} MN over {c.stroke:.3g} m"))
+    stops.append(c)
+    length = max(i.x0 + i.length for i in items)
+    width = max(i.diameter for i in items)
+    # guides: rails under every moving body from where it rests to its stop's end
+    moving = [i for i in items if i.kind in ("mass", "housing", "piston")]
+    stop_end = {st.body: it.x0 + it.length for st, it in zip(stops, [i for i in items if i.kind == "stop"])}
+    for it in moving:
+        end = stop_end.get(it.name, stop_end["payload"]) if it.kind != "piston" else stop_end["payload"]
+        items.append(Item(f"rails_{'payload' if it.kind == 'piston' else it.name}", "rail", it.x0, end - it.x0, it.diameter, 0.0, 0.0, material,
+                          f"two rails, sliding shoes under {it.name}"))
+    F = max(st.force for st in stops)
+    section = F / allowable / 2
+    frame_mass = 2 * rho * section * length
+    items.append(Item("frame", "frame", 0.0, length, width, 0.0, frame_mass, material,
+                      f"two side members of {section * 1e4:.3g} cm^2 each: the largest stop force at the allowable"))
+    fastest = max([launcher.design.muzzle_velocity, fixture.striker_speed, fixture.after_speed_payload])
+    heaviest = max(amp.masses)
+    notes = [f"the guided bodies reach {fastest:.4g} m/s, {fastest / ROLLING_CARRIAGE_SPEED:.0f} times the "
+             f"{ROLLING_CARRIAGE_SPEED:g} m/s of catalogue rolling carriages: the shoes slide on the rails"]
+    return Layout(items, stops, length, width, section, frame_mass, fastest,
+                  heaviest * G0 / (GUIDES_PER_BODY * 2), notes)

@@ -1,0 +1,114 @@
+"""A designed machine's directory: ``machine.json`` (every number, SI, units named in ``units``),
+``machine.md`` (its tables with units in the headers) and the lines the command prints."""
+from __future__ import annotations
+
+import json
+import math
+import os
+
+from ..output.rundir import write_json_atomic
+from ..units import FT, G0, IN, LB, PSI
+from .design import Machine
+
+UNITS = {"mass": "kg", "length": "m", "speed": "m/s", "stress": "Pa", "pressure": "Pa", "energy": "J",
+         "acceleration": "m/s^2", "force": "N", "stiffness": "N/m", "time": "s", "temperature rise": "K"}
+
+
+def summary_lines(m: Machine) -> list[str]:
+    s, f, a, L, t = m.spec, m.fixture, m.amplifier, m.launcher, m.totals
+    g = L.design.gun
+    lines = [
+        f"machine for a {s.article_mass:.4g} kg ({s.article_mass / LB:.4g} lb) article, {s.pulse.shape} "
+        f"{s.pulse.peak / G0:,.0f} g for {s.pulse.duration * 1e3:g} ms: {'FEASIBLE' if m.feasible else 'NOT FEASIBLE'}",
+        f"  fixture: dashpot, bore {2 * f.bore_radius * 1e3:.0f} mm, payload {f.payload_mass:.3g} kg; striker "
+        f"{f.striker_mass:.4g} kg at {f.striker_speed:.4g} m/s ({f.striker_speed / FT:.0f} ft/s); lumped pulse "
+        f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band "
+        f"{'pass' if f.band_passed else 'FAIL'}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
+        f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; effective e "
+        f"{a.restitution:.4f} (1D); the 1D chain gives the striker {a.striker_speed_1d:.4g} m/s",
+        f"  launcher: bore {g.bore / IN:.3g} in, barrel {g.length / FT:.3g} ft, {g.reservoir_volume:.3g} m^3 at "
+        f"{g.reservoir_pressure / PSI:,.0f} psi ({g.gas}, {L.gas_mass:.4g} kg); barrel and tank {L.design.weight:,.0f} kg",
+        f"  machine: {t['overall_length']:.3g} m long, {t['overall_width']:.3g} m wide, {t['machine_mass']:,.0f} kg; "
+        f"the article gets {t['article_over_stored']:.2%} of the gas's stored energy",
+    ]
+    lines += [f"  binds: {b}" for b in m.binding]
+    lines += [f"  PROBLEM: {p}" for p in m.problems]
+    worst = max(m.loads, key=lambda ld: ld.ratio)
+    lines.append(f"  highest stress over allowable: {worst.component} {worst.ratio:.2f}")
+    return lines
+
+
+def _table(header: list[str], rows: list[list]) -> str:
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def markdown(m: Machine) -> str:
+    s, f, a, t = m.spec, m.fixture, m.amplifier, m.totals
+    g = m.launcher.design.gun
+    parts = [f"# Machine for a {s.article_mass / LB:.4g} lb article ({s.pulse.shape}, {s.pulse.peak / G0:,.0f} g, "
+             f"{s.pulse.duration * 1e3:g} ms)", "", "\n".join(summary_lines(m)[1:]), "", "## Models", ""]
+    parts += [f"- {x}" for x in m.models]
+    parts += ["", "## Components on the axis", "",
+              _table(["component", "kind", "from x [m]", "length [m]", "diameter [m]", "bore [m]", "mass [kg]",
+                      "material", "note"],
+                     [[i.name, i.kind, f"{i.x0:.3f}", f"{i.length:.3f}", f"{i.diameter:.3f}",
+                       f"{i.inner:.3f}" if i.inner else "-", f"{i.mass:,.1f}" if i.mass else "-", i.material, i.note]
+                      for i in m.layout.items])]
+    parts += ["", "## Operating loads and stresses", "",
+              _table(["component", "load", "stress [MPa]", "allowable [MPa]", "stress / allowable", "basis"],
+                     [[ld.component, ld.load, f"{ld.stress / 1e6:.1f}", f"{ld.allowable / 1e6:.1f}", f"{ld.ratio:.2f}",
+                       ld.basis] for ld in m.loads])]
+    parts += ["", "## Amplifier stages (pads)", "",
+              _table(["stage", "closing speed [m/s]", "gap before the pad [m]", "pad stiffness [MN/m]", "travel [mm]",
+                      "thickness [mm]", "energy [kJ]", "contact [ms]", "1D interface stress [MPa]"],
+                     [[st.pair, f"{st.closing_speed:.1f}", f"{gap:.3f}", f"{st.pad_stiffness / 1e6:.4g}",
+                       f"{st.pad_travel * 1e3:.0f}", f"{st.pad_thickness * 1e3:.0f}", f"{st.pad_energy / 1e3:,.0f}",
+                       f"{st.contact_duration * 1e3:.2f}", f"{st.interface_stress_1d / 1e6:.0f}"]
+                      for st, gap in zip(a.stages, a.gaps)])]
+    parts += ["", "Effective restitution, iterated (1D):", "",
+              _table(["assumed e", "1D gain", "effective e", "striker speed 1D [m/s]", "first mass [kg]"],
+                     [[f"{it['assumed']:.4f}", f"{it['gain_1d']:.4f}", f"{it['effective']:.4f}",
+                       f"{it['striker_speed_1d']:.2f}", f"{it['first_mass']:,.1f}"] for it in a.iterations])]
+    parts += ["", "## Stops", "",
+              _table(["body", "mass [kg]", "speed [m/s]", "deceleration [g]", "stroke [m]", "force [MN]", "energy [kJ]",
+                      "what set it"],
+                     [[st.body, f"{st.mass:,.4g}", f"{st.speed:.1f}", f"{st.deceleration / G0:,.0f}", f"{st.stroke:.3f}",
+                       f"{st.force / 1e6:.3g}", f"{st.energy / 1e3:,.0f}", st.limit] for st in m.layout.stops])]
+    parts += ["", "## Totals", "", _table(["quantity", "value"], [[k, f"{v:.6g}"] for k, v in t.items()]),
+              "", "(SI: kg, m, m^2, J, Pa, K.)", "",
+              f"Launcher: {g.bore / IN:.4g} in bore, {g.length / FT:.4g} ft of travel, {g.reservoir_volume:.4g} m^3 at "
+              f"{g.reservoir_pressure / PSI:,.0f} psi; fixture lumped pulse {f.peak / G0:,.0f} g.",
+              f"Designed in {m.wall_time_s:.1f} s."]
+    return "\n".join(parts) + "\n"
+
+
+def write_machine(m: Machine, out_dir: str) -> list[str]:
+    """``machine.json`` and ``machine.md`` in ``out_dir``; returns the paths."""
+    os.makedirs(out_dir, exist_ok=True)
+    data = m.as_dict()
+    data["units"] = UNITS
+    path_json = os.path.join(out_dir, "machine.json")
+    write_json_atomic(path_json, _finite(json.loads(json.dumps(data, default=_plain))))
+    path_md = os.path.join(out_dir, "machine.md")
+    with open(path_md, "w") as fh:
+        fh.write(markdown(m))
+    return [path_json, path_md]
+
+
+def _finite(x):
+    """Non-finite numbers as null (JSON has no NaN)."""
+    if isinstance(x, float):
+        return x if math.isfinite(x) else None
+    if isinstance(x, dict):
+        return {k: _finite(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_finite(v) for v in x]
+    return x
+
+
+def _plain(x):
+    if hasattr(x, "tolist"):
+        return x.tolist()
+    return str(x)

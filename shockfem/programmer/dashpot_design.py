@@ -1,0 +1,150 @@
+"""The fluid dashpot designed to a pulse specification, for any payload.
+
+This is the fixture study's chosen design (``shockfem study fixture``, section 4; ``docs/fixture.md``)
+written as a law of the payload, so that the whole machine (``shockfem.machine``) sizes its fixture
+the way the study did for any article: the striker carries a housing full of oil; the article stands
+on a light piston in its bore; a metering pin holds the force m A_g on piston and article over the
+relative stroke (``programmer.concepts.metering_pin_area`` with the two masses' reduced mass).  Four
+handles, factors on that closed form (the pin's opening, the liquid column over the stroke, the force
+the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead on the lumped model
+(``programmer.lumped_dashpot``) to a pulse inside the specification's band narrowed by
+``DESIGN_MARGIN``, so that the finite-element run, a little off the lumped one, still lands inside.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq, minimize
+
+from ..amplifier.gain import collide
+from ..amplifier.interfaces import reduced_mass
+from ..metrics import shapes
+from ..metrics.pulse import pulse_metrics
+from ..metrics.shapes import TOLERANCE
+from ..scene.library import LIBRARY
+from ..units import to_si
+from .concepts import least_throttling_pressure, metering_pin_area
+from .lumped_dashpot import LumpedDashpot, simulate
+from .requirement import requirement
+
+# the oil (a mineral hydraulic oil) and the orifice's discharge coefficient
+OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
+# the bore clears the article by ``clearance``; the piston's thickness; the metering pin's points; the
+# liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
+DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
+CARRIER_STEEL = "high_strength_steel"          # the fixture's metal parts
+# striking mass over payload: heavy enough that the payload's velocity change costs the striker only a
+# tenth of its speed
+STRIKER_RATIO = 10.0
+HANDLES = ("pin_scale", "column_over_stroke", "force_factor", "speed_factor")
+START = (1.0, DASHPOT["column_over_stroke"], 1.0, 1.0)
+DESIGN_MARGIN = 0.03             # the lumped design aims this share of the peak inside the band
+LUMPED_SAMPLES = 3000
+
+
+@dataclass(frozen=True)
+class PulseSpec:
+    """A specified pulse: shape (``programmer.requirement.SHAPES``), peak [m/s^2], duration [s]."""
+    shape: str
+    peak: float
+    duration: float
+
+    @property
+    def checked_shape(self) -> str:
+        """The shape the shock metrics check against: a rectangle as MIL-STD-810's trapezoid (10% ramps)."""
+        return "trapezoid" if self.shape == "rectangle" else self.shape
+
+    def record_end(self) -> float:
+        """The record a band check needs after first contact: the pulse and the window after it."""
+        return self.duration * (1.0 + TOLERANCE["after"]) * 1.2
+
+    def placed_ideal(self, t, a, pulse):
+        """The specified pulse placed on a measured one."""
+        return shapes.place(shapes.specified(self.checked_shape, self.peak, self.duration), t, pulse.sign * a, pulse)
+
+    def band(self, t: np.ndarray, a: np.ndarray, margin: float = 0.0):
+        """The pulse metrics of a payload acceleration record ``a`` starting at first contact, and its
+        check against the band (``metrics.shapes``), the record padded with rest before contact so that
+        the band's window is covered."""
+        before = TOLERANCE["before"] * self.duration * 1.2
+        n = max(int(before / (t[1] - t[0])), 2)
+        t = np.concatenate([t[0] - before + np.arange(n) * before / n, t])
+        a = np.concatenate([np.zeros(n), a])
+        pulse = pulse_metrics(t, a)
+        return pulse, shapes.band_check(t, pulse.sign * a, self.placed_ideal(t, a, pulse), margin)
+
+
+def striker_speed(payload: float, striker: float, dv: float, e: float = 0.0) -> float:
+    """The striking speed that gives a payload at rest the velocity change ``dv`` (the rigid collision
+    law of the amplifier, restitution ``e``: 0 for a programmer that stops the two together)."""
+    return brentq(lambda v: collide(striker, v, payload, 0.0, e)[1] - dv, 0.0, 100.0 * dv)
+
+
+def carrier_density() -> float:
+    return to_si(LIBRARY[CARRIER_STEEL]["density"], "density")
+
+
+def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, handles=START,
+                   seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO) -> dict:
+    """The fluid dashpot for ``pulse`` on an article of ``article_mass`` [kg] in a bore of
+    ``bore_radius`` [m]: a piston the article stands on, the metering pin that holds the force m A_g on
+    the payload (article, piston and a ``seat_mass`` riding with them) over the relative stroke against a
+    striker of ``striker_ratio`` times the payload, its opening never wider than the bore.  ``handles``
+    (``HANDLES``) scale that closed form; the start is the closed form itself.  SI throughout."""
+    pin_scale, column_over_stroke, force_factor, speed_factor = handles
+    area = math.pi * bore_radius ** 2
+    m_piston = carrier_density() * area * DASHPOT["piston_thickness"]
+    payload = article_mass + m_piston + seat_mass
+    req = requirement(pulse.shape, pulse.peak, pulse.duration, payload)
+    M = striker_ratio * payload
+    V = speed_factor * striker_speed(payload, M, req.velocity_change)
+    reduced = reduced_mass(payload, M)
+    force = force_factor * payload * pulse.peak
+    stroke = reduced * V * V / (2 * force)
+    rho, cd = OIL["density"], OIL["discharge"]
+    strokes = np.linspace(0.0, stroke, DASHPOT["pin_points"])
+    pin = [min(pin_scale * metering_pin_area(x, area, force, reduced, V, rho, cd), area) for x in strokes]
+    p_least = least_throttling_pressure(V, rho, cd)
+    return {"handles": dict(zip(HANDLES, map(float, handles))),
+            "bore_radius": bore_radius, "piston_area": area, "piston_mass": m_piston, "article_mass": article_mass,
+            "seat_mass": seat_mass, "payload_mass": payload,
+            "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
+            "least_pressure": p_least, "initial_overshoot": p_least * area / force - 1.0, "stroke_design": stroke,
+            "column": column_over_stroke * stroke, "pin": [[float(x), float(a)] for x, a in zip(strokes, pin)],
+            "liquid_mass": rho * area * column_over_stroke * stroke}
+
+
+def dashpot_lumped(d: dict) -> LumpedDashpot:
+    """The lumped model (``programmer.lumped_dashpot``) of a dashpot design."""
+    return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
+                         d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), OIL["density"],
+                         OIL["bulk_modulus"], OIL["discharge"])
+
+
+def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
+                   striker_ratio: float = STRIKER_RATIO, echo=None) -> tuple[dict, object, int]:
+    """The dashpot's handles iterated on the lumped model (Nelder-Mead from the closed form) to a pulse
+    inside the band narrowed by ``DESIGN_MARGIN``: the objective is the narrowed band's worst excess and
+    the velocity change beyond its tolerance, with the velocity-change error and the largest deviation
+    from the ideal as a small tie-breaker toward the band's middle.  Returns (design, lumped run,
+    evaluations)."""
+    end = pulse.record_end()
+
+    def design(h):
+        return dashpot_design(pulse, article_mass, bore_radius, h, seat_mass, striker_ratio)
+
+    def objective(h):
+        if h[0] <= 0.05 or h[1] <= 1.02 or h[2] <= 0.3 or h[3] <= 0.5:
+            return 10.0
+        run = simulate(dashpot_lumped(design(h)), end, LUMPED_SAMPLES)
+        _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
+        allowed = TOLERANCE["velocity_change"] - DESIGN_MARGIN
+        return (10.0 * (band.worst_excess + max(0.0, abs(band.velocity_change_error) - allowed))
+                + abs(band.velocity_change_error) + 0.1 * band.worst_deviation)
+    res = minimize(objective, START, method="Nelder-Mead", options={"xatol": 1e-3, "fatol": 1e-5, "maxfev": 400})
+    if echo:
+        echo(f"  dashpot design: {res.nfev} lumped runs")
+    d = design(tuple(res.x))
+    return d, simulate(dashpot_lumped(d), end, LUMPED_SAMPLES), int(res.nfev)

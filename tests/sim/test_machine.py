@@ -1,0 +1,59 @@
+"""``shockfem design-machine`` end to end for the 12 lb article: every part designed by its own model, and
+the parts agreeing with each other (the tolerances say which model checks which)."""
+import json
+import math
+import subprocess
+import sys
+
+import pytest
+
+from shockfem.units import G0, LB
+
+
+@pytest.fixture(scope="module")
+def machine(tmp_path_factory):
+    out = tmp_path_factory.mktemp("machine")
+    p = subprocess.run([sys.executable, "-m", "shockfem", "design-machine", "--article", "12 lb", "--out", str(out)],
+                       capture_output=True, text=True, timeout=900)
+    assert p.returncode == 0, p.stderr
+    return json.load(open(out / "machine.json")), p.stdout, out
+
+
+def test_machine_closes(machine):
+    m, out, _ = machine
+    f, a, L = m["fixture"], m["amplifier"], m["launcher"]
+    assert m["feasible"] and "FEASIBLE" in out
+    assert m["spec"]["article_mass"] == pytest.approx(12 * LB)
+    # the fixture's lumped pulse is inside the specification's band (MIL-STD-810 trapezoid, +/-20%)
+    assert f["band_passed"] and 8000 * G0 < f["peak"] < 12000 * G0
+    # the payload is the article and the piston; the striker at least the asked ratio of it
+    assert f["payload_mass"] == pytest.approx(f["article_mass"] + f["piston_mass"], rel=1e-12)
+    assert f["striker_mass"] >= 10 * f["payload_mass"] * (1 - 1e-9)
+    # the amplifier's last mass is the striker, and its 1D chain (independent of the closed form the masses
+    # come from) brings it to the fixture's speed: within 2%, the design's own feasibility test
+    assert a["masses"][-1] == pytest.approx(f["striker_mass"], rel=1e-12)
+    assert a["striker_speed_1d"] == pytest.approx(f["striker_speed"], rel=0.02)
+    assert 0.5 < a["restitution"] < 1.0
+    # the launcher fires the first mass at the launch speed (its optimiser's constraint, 1e-4)
+    assert L["projectile_mass"] == pytest.approx(a["masses"][0], rel=1e-12)
+    assert L["design"]["muzzle_velocity"] == pytest.approx(m["spec"]["launch_speed"], rel=2e-4)
+    # no stress over its allowable, and every row has both numbers
+    for ld in m["loads"]:
+        assert ld["stress"] >= 0 and ld["allowable"] > 0, ld
+        assert ld["ratio"] <= 1 + 1e-6, ld
+
+
+def test_machine_totals_follow_from_its_parts(machine):
+    m, _, out = machine
+    items, t = m["layout"]["items"], m["totals"]
+    assert t["machine_mass"] == pytest.approx(sum(i["mass"] for i in items) + m["fixture"]["liquid_mass"], rel=1e-12)
+    assert t["overall_length"] == pytest.approx(max(i["x0"] + i["length"] for i in items), rel=1e-12)
+    # every stop takes its body's kinetic energy over its stroke
+    for st in m["layout"]["stops"]:
+        assert st["force"] * st["stroke"] == pytest.approx(0.5 * st["mass"] * st["speed"] ** 2, rel=1e-9)
+    # the bodies sit in order along the axis, each clear of the one before it
+    chain = [i for i in items if i["kind"] in ("mass", "pad", "housing", "piston", "article")]
+    for a, b in zip(chain, chain[1:]):
+        assert b["x0"] >= a["x0"] + a["length"] - 1e-9, (a["name"], b["name"])
+    assert all(isinstance(v, (int, float)) and math.isfinite(v) for v in t.values())
+    assert "| component | load | stress [MPa]" in (out / "machine.md").read_text()
