@@ -334,7 +334,12 @@ def _design_machine(args) -> int:
     machine = design_machine(spec, out, echo=print)
     for line in summary_lines(machine):
         print(line)
-    for path in write_machine(machine, out):
+    paths = write_machine(machine, out)
+    with open(paths[0]) as fh:
+        cad = json.load(fh)["cad"]
+    print(f"  CAD: {len(cad['solids'])} named solids in {paths[2]}, read back to volumes within "
+          f"{cad['max_volume_error']:.1e}, the designed parts' masses within {cad['max_mass_error']:.1e}")
+    for path in paths:
         print(f"wrote {path}")
     return EXIT_OK
 

@@ -151,7 +151,7 @@ def _totals(spec, fixture, amp, launcher, layout) -> dict:
     g = launcher.design.gun
     article_energy = 0.5 * fixture.article_mass * fixture.velocity_change ** 2
     return {
-        "machine_mass": mass + fixture.liquid_mass,
+        "machine_mass": mass,
         "launcher_mass": launcher.design.weight, "amplifier_mass": sum(amp.masses[:-1]),
         "striker_mass": fixture.striker_mass, "payload_mass": fixture.payload_mass, "frame_mass": layout.frame_mass,
         "overall_length": layout.overall_length, "overall_width": layout.overall_width,

@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass, field
 
-from ..programmer.dashpot_design import DASHPOT
+from ..programmer.dashpot_design import DASHPOT, OIL
 from ..units import G0
 
 ROLLING_CARRIAGE_SPEED = 5.0       # [m/s], item PS 4 bearing carriages (catalogue)
@@ -48,7 +48,7 @@ class Stop:
 class Item:
     """One component on the axis: x0 its rear end, length along x, outer (and inner) diameter [m]."""
     name: str
-    kind: str                  # tank, barrel, mass, pad, housing, piston, article, stop, rail, frame
+    kind: str                  # tank, barrel, mass, pad, housing, oil, piston, article, stop, rail, frame
     x0: float
     length: float
     diameter: float
@@ -107,8 +107,11 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     slug = bodies[0]
     x_breech = L_tank
     L_barrel = g.length + slug["length"]
-    items.append(Item("barrel", "barrel", x_breech, L_barrel, g.bore + 2 * size["barrel"]["thickness"], g.bore,
-                      size["barrel"]["weight"], size["barrel"]["material"], f"{g.length:.3g} m of travel"))
+    D_barrel = g.bore + 2 * size["barrel"]["thickness"]
+    # the ASME wall over the travel and the slug the barrel also holds at rest
+    barrel_mass = size["barrel"]["weight"] * L_barrel / g.length
+    items.append(Item("barrel", "barrel", x_breech, L_barrel, D_barrel, g.bore, barrel_mass, size["barrel"]["material"],
+                      f"{g.length:.3g} m of travel and the {slug['length']:.3g} m slug"))
     # the chain as it stands when the first mass leaves the muzzle: the others at rest ahead of it
     fronts, rears = [], []
     for k, (b, m) in enumerate(zip(bodies, amp.masses)):
@@ -121,10 +124,14 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
                               stage.pad_diameter, 0.0, 0.0, "elastomer",
                               f"{stage.pad_stiffness / 1e6:.4g} MN/m, {stage.pad_travel * 1e3:.0f} mm travel"))
             rear = pad_rear + stage.pad_thickness
-        kind = "housing" if b["name"] == "striker" else "mass"
-        items.append(Item(b["name"], kind, rear, b["length"], b["diameter"], b.get("bore", 0.0), m, material,
-                          "" if kind == "mass" else f"bore {b['bore'] * 1e3:.0f} mm, {fixture.liquid_mass:.2f} kg "
-                                                    "of oil (in the mass)"))
+        if b["name"] == "striker":
+            items.append(Item(b["name"], "housing", rear, b["length"], b["diameter"], b["bore"],
+                              fixture.housing_steel_mass, material, f"bore {b['bore'] * 1e3:.0f} mm, floor "
+                                                                    f"{fixture.floor_thickness * 1e3:.0f} mm"))
+            items.append(Item("oil", "oil", rear + fixture.floor_thickness, fixture.column, b["bore"], 0.0,
+                              fixture.liquid_mass, "oil", f"{OIL['density']:g} kg/m^3, carried by the striker"))
+        else:
+            items.append(Item(b["name"], "mass", rear, b["length"], b["diameter"], 0.0, m, material))
         rears.append(rear)
         fronts.append(rear + b["length"])
     mouth = fronts[-1]

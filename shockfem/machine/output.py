@@ -8,7 +8,9 @@ import os
 
 from ..output.rundir import write_json_atomic
 from ..units import FT, G0, IN, LB, PSI
+from .cad import read_step, write_step
 from .design import Machine
+from .drawing import draw_sheet
 
 UNITS = {"mass": "kg", "length": "m", "speed": "m/s", "stress": "Pa", "pressure": "Pa", "energy": "J",
          "acceleration": "m/s^2", "force": "N", "stiffness": "N/m", "time": "s", "temperature rise": "K"}
@@ -85,16 +87,39 @@ def markdown(m: Machine) -> str:
 
 
 def write_machine(m: Machine, out_dir: str) -> list[str]:
-    """``machine.json`` and ``machine.md`` in ``out_dir``; returns the paths."""
+    """``machine.json``, ``machine.md``, the STEP assembly ``machine.step`` (re-read and checked against
+    the design: ``cad`` in the JSON) and the drawing ``drawing.svg/.pdf/.png`` in ``out_dir``; returns the
+    paths."""
     os.makedirs(out_dir, exist_ok=True)
+    step = os.path.join(out_dir, "machine.step")
+    name = f"shock_tester_{m.spec.article_mass / LB:.3g}lb".replace(".", "_")
+    cad_check = check_step(m, write_step(m, step, name), read_step(step))
+    sheet = draw_sheet(m, os.path.join(out_dir, "drawing"))
     data = m.as_dict()
     data["units"] = UNITS
+    data["cad"] = cad_check
     path_json = os.path.join(out_dir, "machine.json")
     write_json_atomic(path_json, _finite(json.loads(json.dumps(data, default=_plain))))
     path_md = os.path.join(out_dir, "machine.md")
     with open(path_md, "w") as fh:
         fh.write(markdown(m))
-    return [path_json, path_md]
+    return [path_json, path_md, step, *sheet]
+
+
+def check_step(m: Machine, written: list[dict], read_back: list[dict]) -> dict:
+    """The STEP file read back: every solid by its name at the volume it was built with, and the designed
+    parts' masses (a part's solids summed at their density) against the design's."""
+    back = {r["name"]: r["volume"] for r in read_back}
+    volume_error = max(abs(back.get(r["name"], 0.0) / r["volume"] - 1) for r in written)
+    by_part: dict[str, float] = {}
+    for r in written:
+        part = r["name"] if r["name"] in {i.name for i in m.layout.items} else r["name"].rsplit("_", 1)[0]
+        by_part[part] = by_part.get(part, 0.0) + r["mass"]
+    designed = {i.name: i.mass for i in m.layout.items if i.mass}
+    mass_error = {k: by_part.get(k, 0.0) / v - 1 for k, v in designed.items()}
+    return {"solids": written, "names_read_back": sorted(back) == sorted(r["name"] for r in written),
+            "max_volume_error": volume_error, "mass_error": mass_error,
+            "max_mass_error": max(abs(e) for e in mass_error.values())}
 
 
 def _finite(x):

@@ -1,0 +1,197 @@
+"""The designed machine as a STEP assembly: named solids built with gmsh's OpenCASCADE kernel.
+
+Why gmsh's OpenCASCADE: it is already the project's geometry kernel (every part is drawn and meshed with
+it), so the CAD solids of the catalogue's parts (the article's ogive) are the very outlines the solver
+meshes, and no second CAD stack (CadQuery or build123d, each a few hundred MB of OCP wheels pinned to
+their own numpy) has to be installed.  Its STEP writer does not carry entity names (gmsh 4.15), so each
+solid's PRODUCT is named in the written file (``_name_products``), in the order the solids were written;
+gmsh reads them back as labels (``Shapes/<assembly>/<k>/<name>``), which the checks use.
+
+Conventions: millimetres (the STEP file says so: SI_UNIT(.MILLI.,.METRE.)); the machine's axis is z (the
+tank at z = 0, the catcher last), y up, x across.  Pressure parts are hollow (their steel only), the
+striker's housing is its steel with the oil a solid of its own, the article the catalogue's ogive standing
+on its base.  Rails, shoes and stop rings are drawn to show the arrangement: their sections are not
+designed (their loads are, in ``machine.json``), so they carry no designed mass.
+"""
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import re
+import sys
+
+import gmsh
+
+from ..geometry.outline import draw
+from ..parts.catalog import PARTS, solid_ogive
+from ..programmer.dashpot_design import OIL
+from ..scene.library import property_si
+from .spec import REFERENCE_ARTICLE
+
+MM = 1000.0                       # the file's unit per metre
+RAIL_SIZE = (0.06, 0.020)         # a rail's square section: this share of the body's diameter, at least [m]
+
+
+def _cylinder(z0, length, radius, x=0.0, y=0.0):
+    return gmsh.model.occ.addCylinder(x * MM, y * MM, z0 * MM, 0, 0, length * MM, radius * MM)
+
+
+def _tube(z0, length, outer, inner):
+    o, i = _cylinder(z0, length, outer), _cylinder(z0, length, inner)
+    out, _ = gmsh.model.occ.cut([(3, o)], [(3, i)])
+    return [t for d, t in out if d == 3]
+
+
+def _box(x0, y0, z0, dx, dy, dz):
+    return gmsh.model.occ.addBox(x0 * MM, y0 * MM, z0 * MM, dx * MM, dy * MM, dz * MM)
+
+
+def _capsule(z0, length_cyl, r_cyl, r_head):
+    """A cylinder of radius r_cyl and length length_cyl from z0 + r_head, with spheres of r_head at its
+    ends (hemispherical heads)."""
+    occ = gmsh.model.occ
+    c = _cylinder(z0 + r_head, length_cyl, r_cyl)
+    s1 = occ.addSphere(0, 0, (z0 + r_head) * MM, r_head * MM)
+    s2 = occ.addSphere(0, 0, (z0 + r_head + length_cyl) * MM, r_head * MM)
+    out, _ = occ.fuse([(3, c)], [(3, s1), (3, s2)])
+    return out
+
+
+def _tank(item, sizing):
+    t = sizing["tank"]
+    R = t["diameter"] / 2
+    head = R + t["head_thickness"]
+    L_cyl = item.length - 2 * head
+    outer = _capsule(item.x0, L_cyl, R + t["shell_thickness"], head)
+    inner = _capsule(item.x0 + (head - R), L_cyl, R, R)
+    out, _ = gmsh.model.occ.cut(outer, inner)
+    return [t for d, t in out if d == 3]
+
+
+def _article(item):
+    """The catalogue's ogive, drawn nose down at its base's place, then turned end over end."""
+    R = item.diameter / 2
+    dims = solid_ogive(R * MM, REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R * MM,
+                       item.length * MM)
+    volumes, _ = draw(PARTS["projectile"], dims, 3, (0.0, 0.0, item.x0 * MM))
+    gmsh.model.occ.rotate([(3, v) for v in volumes], 0, 0, (item.x0 + item.length / 2) * MM, 1, 0, 0, math.pi)
+    return volumes
+
+
+def solids(machine) -> list[tuple[str, int, float]]:
+    """Build every component in the current gmsh model: (name, volume tag, density [kg/m^3] or 0 where
+    the design gives it no mass)."""
+    lay, fixture, launcher = machine.layout, machine.fixture, machine.launcher
+    rho = property_si(machine.spec.material, "density", "density")
+    out: list[tuple[str, int, float]] = []
+
+    def add(name, tags, density):
+        for k, t in enumerate(tags):
+            out.append((name if len(tags) == 1 else f"{name}_{k + 1}", t, density))
+    for it in lay.items:
+        if it.kind == "tank":
+            add(it.name, _tank(it, launcher.sizing), _density(launcher.sizing["tank"]["material"]))
+        elif it.kind == "barrel":
+            add(it.name, _tube(it.x0, it.length, it.diameter / 2, it.inner / 2),
+                _density(launcher.sizing["barrel"]["material"]))
+        elif it.kind == "mass":
+            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], rho)
+        elif it.kind == "housing":
+            floor = fixture.floor_thickness
+            steel = _tube(it.x0 + floor, it.length - floor, it.diameter / 2, it.inner / 2)
+            steel = gmsh.model.occ.fuse([(3, t) for t in steel], [(3, _cylinder(it.x0, floor, it.diameter / 2))])[0]
+            add(it.name, [t for d, t in steel if d == 3], rho)
+        elif it.kind == "oil":
+            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], OIL["density"])
+        elif it.kind == "piston":
+            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], rho)
+        elif it.kind == "article":
+            add(it.name, _article(it), property_si(REFERENCE_ARTICLE["library"], "density", "density"))
+        elif it.kind == "pad":
+            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)
+        elif it.kind == "stop":
+            add(it.name, _tube(it.x0, it.length, it.diameter / 2, it.inner / 2) if it.inner
+                else [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)
+        elif it.kind == "rail":
+            body = it.diameter
+            h = max(RAIL_SIZE[0] * body, RAIL_SIZE[1])
+            y = -body / 2 - h / 2 - h
+            for side, x in (("left", -0.35 * body - h / 2), ("right", 0.35 * body - h / 2)):
+                add(f"{it.name}_{side}", [_box(x, y, it.x0, h, h, it.length)], 0.0)
+                add(f"shoe_{it.name.removeprefix('rails_')}_{side}",
+                    [_box(x - h / 2, y + h, it.x0, 2 * h, h / 2, min(it.length, max(2 * h, 0.25 * body)))], 0.0)
+        elif it.kind == "frame":
+            a = math.sqrt(lay.frame_section)
+            W = lay.overall_width
+            for side, x in (("left", -W / 2 - a), ("right", W / 2)):
+                add(f"frame_{side}", [_box(x, -W / 2 - a, it.x0, a, a, it.length)], rho)
+    gmsh.model.occ.synchronize()
+    return out
+
+
+def _density(vessel_material: str) -> float:
+    from ..launcher.vessel import MATERIALS
+    return MATERIALS[vessel_material]["density"]
+
+
+def write_step(machine, path: str, name: str) -> list[dict]:
+    """Build the machine and write it as a STEP assembly of named solids; returns each solid's name,
+    volume [m^3], density and mass [kg] (0 where the design gives none)."""
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add(name)
+        parts = solids(machine)
+        rows = []
+        for part_name, tag, density in parts:
+            volume = gmsh.model.occ.getMass(3, tag) / MM ** 3
+            rows.append({"name": part_name, "volume": volume, "density": density, "mass": density * volume})
+        order = {tag: part_name for part_name, tag, _ in parts}
+        written = [order[t] for _, t in gmsh.model.getEntities(3)]
+        with _quiet_stdout():           # OpenCASCADE's STEP writer prints its statistics on fd 1
+            gmsh.write(path)
+    finally:
+        gmsh.finalize()
+    _name_products(path, name, written)
+    return rows
+
+
+@contextlib.contextmanager
+def _quiet_stdout():
+    sys.stdout.flush()
+    saved = os.dup(1)
+    with open(os.devnull, "w") as null:
+        os.dup2(null.fileno(), 1)
+        try:
+            yield
+        finally:
+            os.dup2(saved, 1)
+            os.close(saved)
+
+
+def _name_products(path: str, assembly: str, names: list[str]):
+    """Name the assembly's PRODUCT and each solid's (``<prefix> 1.k`` in the order written)."""
+    text = open(path).read()
+    products = re.findall(r"PRODUCT\('([^']*)'", text)
+    top = products[0]
+    mapping = {top: assembly}
+    for k, n in enumerate(names, start=1):
+        mapping[f"{top}.{k}"] = n
+    text = re.sub(r"'(" + re.escape(top) + r"(?:\.\d+)?)'", lambda m: f"'{mapping.get(m.group(1), m.group(1))}'",
+                  text)
+    with open(path, "w") as fh:
+        fh.write(text)
+
+
+def read_step(path: str) -> list[dict]:
+    """A STEP file's solids as gmsh reads them back: label (the last part of gmsh's label path) and volume [m^3]."""
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.occ.importShapes(path)
+        gmsh.model.occ.synchronize()
+        return [{"name": gmsh.model.getEntityName(3, t).split("/")[-1],
+                 "volume": gmsh.model.occ.getMass(3, t) / MM ** 3} for _, t in gmsh.model.getEntities(3)]
+    finally:
+        gmsh.finalize()
