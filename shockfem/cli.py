@@ -115,10 +115,12 @@ def _parser() -> argparse.ArgumentParser:
                                                                       "(default 10; the housing may ask for more)")
     dm.add_argument("--safety-factor", type=float, default=1.5, help="yield over allowable stress (default 1.5)")
     dm.add_argument("--catch-deceleration", help="the payload's catcher (default: half the pulse's peak)")
+    dm.add_argument("--oil-pressure", default="120 MPa", help="the dashpot's design pressure, the payload's force "
+                                                            "over the piston: it sets the bore (default '120 MPa')")
     dm.add_argument("--out", help="directory for machine.json and machine.md (default: results/machine/<N>lb)")
 
     st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
-    st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration"))
+    st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration", "system"))
     st.add_argument("--size", choices=("smoke", "default"), default="default")
     st.add_argument("--out", help="results directory (default: results/<name>)")
 
@@ -258,6 +260,8 @@ def _dispatch(args) -> int:
             from .study.launcher import run_study
         elif args.name == "fixture":
             from .study.fixture import run_study
+        elif args.name == "system":
+            from .study.system import run_study
         else:
             from .study.penetration import run_study
         run_study(args.size, args.out or os.path.join("results", args.name))
@@ -328,7 +332,7 @@ def _design_machine(args) -> int:
     from .machine.spec import read_spec
     names = ("article", "shape", "peak", "duration", "article_diameter", "architecture", "masses", "launch",
              "material", "gas", "max_pressure", "max_barrel_length", "max_bore", "striker_ratio", "safety_factor",
-             "catch_deceleration")
+             "catch_deceleration", "oil_pressure")
     spec = read_spec({k: getattr(args, k) for k in names if getattr(args, k) is not None})
     out = args.out or os.path.join("results", "machine", f"{spec.article_mass / LB:.3g}lb")
     machine = design_machine(spec, out, echo=print)

@@ -20,7 +20,7 @@ from dataclasses import asdict, dataclass, field
 from ..amplifier import rigid
 from ..amplifier.chain import run_chain_scene
 from ..amplifier.gain import cylinder_size, design
-from ..amplifier.interfaces import pad_for_force, reduced_mass
+from ..amplifier.interfaces import Pad, pad_for_force, reduced_mass
 from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
 from .spec import MachineSpec
@@ -134,6 +134,13 @@ def _chain_raw(spec: MachineSpec, masses, bodies, fixture: Fixture, pads, gaps: 
             "materials": {"steel": {"library": spec.material},
                           "housing": {"library": spec.material, "density": fixture.striker_mass / steel}},
             "bodies": scene_bodies}
+
+
+def chain_scene(spec: MachineSpec, amp: Amplifier, fixture: Fixture) -> dict:
+    """The designed chain as a chain scene (``amplifier.chain``, fidelity 1d), its pads and gaps as designed."""
+    pads = [(st.closing_speed, Pad(st.pad_stiffness, st.pad_travel, st.pad_energy, st.contact_duration))
+            for st in amp.stages]
+    return _chain_raw(spec, amp.masses, amp.bodies, fixture, pads, amp.gaps)
 
 
 def _run(spec, masses, bodies, fixture, out_dir, label):

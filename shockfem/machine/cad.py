@@ -27,10 +27,10 @@ from ..geometry.outline import draw
 from ..parts.catalog import PARTS, solid_ogive
 from ..programmer.dashpot_design import OIL
 from ..scene.library import property_si
+from .layout import rail_section, shoe_length
 from .spec import REFERENCE_ARTICLE
 
 MM = 1000.0                       # the file's unit per metre
-RAIL_SIZE = (0.06, 0.020)         # a rail's square section: this share of the body's diameter, at least [m]
 
 
 def _cylinder(z0, length, radius, x=0.0, y=0.0):
@@ -58,7 +58,8 @@ def _capsule(z0, length_cyl, r_cyl, r_head):
     return out
 
 
-def _tank(item, sizing):
+def tank_solid(item, sizing) -> list[int]:
+    """The tank (an ``Item``) as its steel: a capsule of the ASME shell and head thicknesses, hollow."""
     t = sizing["tank"]
     R = t["diameter"] / 2
     head = R + t["head_thickness"]
@@ -69,7 +70,7 @@ def _tank(item, sizing):
     return [t for d, t in out if d == 3]
 
 
-def _article(item):
+def article_solid(item) -> list[int]:
     """The catalogue's ogive, drawn nose down at its base's place, then turned end over end."""
     R = item.diameter / 2
     dims = solid_ogive(R * MM, REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R * MM,
@@ -77,6 +78,13 @@ def _article(item):
     volumes, _ = draw(PARTS["projectile"], dims, 3, (0.0, 0.0, item.x0 * MM))
     gmsh.model.occ.rotate([(3, v) for v in volumes], 0, 0, (item.x0 + item.length / 2) * MM, 1, 0, 0, math.pi)
     return volumes
+
+
+def housing_solid(item, floor: float) -> list[int]:
+    """The striker's housing (an ``Item``): a tube of its bore closed by a floor of thickness ``floor``."""
+    steel = _tube(item.x0 + floor, item.length - floor, item.diameter / 2, item.inner / 2)
+    fused, _ = gmsh.model.occ.fuse([(3, t) for t in steel], [(3, _cylinder(item.x0, floor, item.diameter / 2))])
+    return [t for d, t in fused if d == 3]
 
 
 def solids(machine) -> list[tuple[str, int, float]]:
@@ -91,23 +99,20 @@ def solids(machine) -> list[tuple[str, int, float]]:
             out.append((name if len(tags) == 1 else f"{name}_{k + 1}", t, density))
     for it in lay.items:
         if it.kind == "tank":
-            add(it.name, _tank(it, launcher.sizing), _density(launcher.sizing["tank"]["material"]))
+            add(it.name, tank_solid(it, launcher.sizing), _density(launcher.sizing["tank"]["material"]))
         elif it.kind == "barrel":
             add(it.name, _tube(it.x0, it.length, it.diameter / 2, it.inner / 2),
                 _density(launcher.sizing["barrel"]["material"]))
         elif it.kind == "mass":
             add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], rho)
         elif it.kind == "housing":
-            floor = fixture.floor_thickness
-            steel = _tube(it.x0 + floor, it.length - floor, it.diameter / 2, it.inner / 2)
-            steel = gmsh.model.occ.fuse([(3, t) for t in steel], [(3, _cylinder(it.x0, floor, it.diameter / 2))])[0]
-            add(it.name, [t for d, t in steel if d == 3], rho)
+            add(it.name, housing_solid(it, fixture.floor_thickness), rho)
         elif it.kind == "oil":
             add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], OIL["density"])
         elif it.kind == "piston":
             add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], rho)
         elif it.kind == "article":
-            add(it.name, _article(it), property_si(REFERENCE_ARTICLE["library"], "density", "density"))
+            add(it.name, article_solid(it), property_si(REFERENCE_ARTICLE["library"], "density", "density"))
         elif it.kind == "pad":
             add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)
         elif it.kind == "stop":
@@ -115,12 +120,12 @@ def solids(machine) -> list[tuple[str, int, float]]:
                 else [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)
         elif it.kind == "rail":
             body = it.diameter
-            h = max(RAIL_SIZE[0] * body, RAIL_SIZE[1])
+            h = rail_section(body)
             y = -body / 2 - h / 2 - h
             for side, x in (("left", -0.35 * body - h / 2), ("right", 0.35 * body - h / 2)):
                 add(f"{it.name}_{side}", [_box(x, y, it.x0, h, h, it.length)], 0.0)
                 add(f"shoe_{it.name.removeprefix('rails_')}_{side}",
-                    [_box(x - h / 2, y + h, it.x0, 2 * h, h / 2, min(it.length, max(2 * h, 0.25 * body)))], 0.0)
+                    [_box(x - h / 2, y + h, it.x0, 2 * h, h / 2, shoe_length(body, it.length))], 0.0)
         elif it.kind == "frame":
             a = math.sqrt(lay.frame_section)
             W = lay.overall_width
@@ -138,9 +143,7 @@ def _density(vessel_material: str) -> float:
 def write_step(machine, path: str, name: str) -> list[dict]:
     """Build the machine and write it as a STEP assembly of named solids; returns each solid's name,
     volume [m^3], density and mass [kg] (0 where the design gives none)."""
-    gmsh.initialize()
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
+    with empty_gmsh():
         gmsh.model.add(name)
         parts = solids(machine)
         rows = []
@@ -151,8 +154,6 @@ def write_step(machine, path: str, name: str) -> list[dict]:
         written = [order[t] for _, t in gmsh.model.getEntities(3)]
         with _quiet_stdout():           # OpenCASCADE's STEP writer prints its statistics on fd 1
             gmsh.write(path)
-    finally:
-        gmsh.finalize()
     _name_products(path, name, written)
     return rows
 
@@ -186,12 +187,22 @@ def _name_products(path: str, assembly: str, names: list[str]):
 
 def read_step(path: str) -> list[dict]:
     """A STEP file's solids as gmsh reads them back: label (the last part of gmsh's label path) and volume [m^3]."""
-    gmsh.initialize()
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
+    with empty_gmsh():
         gmsh.model.occ.importShapes(path)
         gmsh.model.occ.synchronize()
         return [{"name": gmsh.model.getEntityName(3, t).split("/")[-1],
                  "volume": gmsh.model.occ.getMass(3, t) / MM ** 3} for _, t in gmsh.model.getEntities(3)]
+
+
+@contextlib.contextmanager
+def empty_gmsh():
+    """gmsh with no model in it, for as long as the block runs; initialised as the mesher does it (once a
+    process, left initialised for the next user), so a machine's solids never mix with a mesh's."""
+    if not gmsh.isInitialized():
+        gmsh.initialize(interruptible=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.clear()
+    try:
+        yield
     finally:
-        gmsh.finalize()
+        gmsh.clear()

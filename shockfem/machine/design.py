@@ -19,7 +19,7 @@ from ..units import G0, format_si
 from .amplifier import Amplifier, check_with_first_mass, design_amplifier
 from .fixture import Fixture, design_fixture
 from .launcher import Launcher, design_launcher
-from .layout import Layout, place
+from .layout import GUIDES_PER_BODY, Layout, place, rail_section, shoe_length
 from .spec import REFERENCE_ARTICLE, MachineSpec
 
 
@@ -66,11 +66,14 @@ def final_speeds(spec: MachineSpec, amp: Amplifier) -> list[float]:
     return [abs(v) for v in chain(amp.masses, spec.launch_speed, amp.restitution).final]
 
 
-def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3) -> Machine:
+def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, fixture: Fixture | None = None
+                   ) -> Machine:
+    """The machine for ``spec``; ``fixture``: one designed already for the same article and pulse (the
+    amplifier's and the launcher's choices do not change it), to try other architectures without it."""
     t0 = time.perf_counter()
     say = echo or (lambda *a: None)
     say(f"machine for {spec.article_mass:.4g} kg: the fixture (dashpot iterated on its lumped model)")
-    fixture = design_fixture(spec, echo)
+    fixture = fixture or design_fixture(spec, echo)
     say("  the amplifier (1D chain, effective restitution)")
     amp = design_amplifier(spec, fixture, os.path.join(out_dir, "amplifier_1d"), echo)
     say("  the launcher (lightest gun within the limits)")
@@ -132,6 +135,16 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
                                              f"{st.stroke:.3g} m",
                         rho * _length(amp, fixture, st.body) * st.deceleration, S,
                         f"rho L a in the stopped body; deceleration: {st.limit}"))
+    # the guides: each moving body's weight on its sliding shoes, as bearing pressure on the rails
+    for it in layout.items:
+        if it.kind in ("mass", "housing", "piston"):
+            mass = it.mass + (fixture.liquid_mass if it.kind == "housing" else 0.0) + (
+                fixture.article_mass if it.kind == "piston" else 0.0)
+            area = rail_section(it.diameter) * shoe_length(it.diameter, it.length)
+            out.append(Load(f"guide shoes of {it.name}", f"its weight {mass * G0 / 1e3:.3g} kN on {GUIDES_PER_BODY} shoes",
+                            mass * G0 / (GUIDES_PER_BODY * area), S,
+                            "bearing pressure on the rail (shoe and rail as drawn; a polymer wear strip's own limit "
+                            "is lower and not modelled)"))
     out.append(Load("frame side members", f"the largest stop force {max(s.force for s in layout.stops) / 1e6:.3g} MN",
                     max(s.force for s in layout.stops) / (2 * layout.frame_section), S,
                     "two ties at the allowable (set by the design; bending and buckling left out)"))

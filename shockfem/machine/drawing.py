@@ -17,6 +17,7 @@ import numpy as np
 from ..output.figures import partial_path, pyplot
 from ..parts.catalog import PARTS, solid_ogive
 from ..units import G0, LB
+from .layout import rail_section
 from .spec import REFERENCE_ARTICLE
 
 SHEET = (16.54, 11.69)               # A3 landscape [in]
@@ -28,8 +29,7 @@ AXIAL_KINDS = ("tank", "barrel", "mass", "pad", "housing", "oil", "piston", "art
 
 def _rail_geometry(it):
     """(section, x offsets) of a body's rails, as ``cad.solids`` draws them."""
-    from .cad import RAIL_SIZE
-    h = max(RAIL_SIZE[0] * it.diameter, RAIL_SIZE[1])
+    h = rail_section(it.diameter)
     return h, (-0.35 * it.diameter - h / 2, 0.35 * it.diameter - h / 2), -it.diameter / 2 - 2 * h
 
 

@@ -85,6 +85,16 @@ def article_length(spec: MachineSpec) -> float:
                               REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R)
 
 
+def bore_radius(spec: MachineSpec, rho_piston: float) -> float:
+    """The bore at which the payload's force (article and piston) at the pulse's peak is the design oil
+    pressure: pi r^2 p = (m_a + rho pi r^2 t) A, so r^2 = m_a A / (pi (p - rho t A)); never narrower than
+    the article and its clearance."""
+    A, p, t = spec.pulse.peak, spec.oil_pressure, DASHPOT["piston_thickness"]
+    if p <= rho_piston * t * A:
+        return math.inf          # the piston alone would need more than the design pressure
+    return max(spec.diameter / 2 + DASHPOT["clearance"], math.sqrt(spec.article_mass * A / (math.pi * (p - rho_piston * t * A))))
+
+
 def housing_wall(p: float, r: float, S: float) -> float:
     """The smallest outer radius whose Lame hoop stress at the bore r stays at S under p (inf if p >= S)."""
     return r * math.sqrt((S + p) / (S - p)) if p < S else math.inf
@@ -98,11 +108,12 @@ def floor_thickness(p: float, r: float, S: float) -> float:
 def design_fixture(spec: MachineSpec, echo=None) -> Fixture:
     rho_s = property_si(spec.material, "density", "density")
     S = initial_yield_stress(spec.material) / spec.safety_factor
-    r = spec.diameter / 2 + DASHPOT["clearance"]
+    r = bore_radius(spec, rho_s)
     L_article = article_length(spec)
-    ratio, runs, redesigns = spec.striker_ratio, 0, 0
+    ratio, runs, redesigns, near = spec.striker_ratio, 0, 0, None
     while True:
-        d, run, n = design_dashpot(spec.pulse, spec.article_mass, r, striker_ratio=ratio, echo=echo)
+        d, run, n = design_dashpot(spec.pulse, spec.article_mass, r, striker_ratio=ratio, echo=echo, near=near)
+        near = d["handles"]
         runs += n
         p = float(run.pressure.max())
         depth = d["column"] + DASHPOT["piston_thickness"] + L_article + BORE_HEADROOM

@@ -26,7 +26,8 @@ from ..programmer.dashpot_design import DASHPOT, OIL
 from ..units import G0
 
 ROLLING_CARRIAGE_SPEED = 5.0       # [m/s], item PS 4 bearing carriages (catalogue)
-GUIDES_PER_BODY = 2
+GUIDES_PER_BODY = 2               # rails under a body, one sliding shoe on each
+RAIL_SIZE = (0.06, 0.020)         # a rail's square section: this share of the body's diameter, at least [m]
 GAP_TO_PAYLOAD = 0.05              # between the striker's mouth and the piston at rest [m]
 RING_CLEARANCE = 0.01              # a stop ring's bore over the body that passes through it [m]
 STOP_MARGIN = 0.05                 # free run past the next body's far end before a stop engages [m]
@@ -67,11 +68,22 @@ class Layout:
     frame_section: float       # each side member [m^2]
     frame_mass: float          # [kg]
     fastest_guided_speed: float
-    guide_load: float          # the heaviest shoe's load [N]
     notes: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict:
         return asdict(self)
+
+
+def rail_section(diameter: float) -> float:
+    """The side of a body's rails' square section [m] (drawn, not designed)."""
+    return max(RAIL_SIZE[0] * diameter, RAIL_SIZE[1])
+
+
+def shoe_length(diameter: float, length: float) -> float:
+    """A shoe's length along its rail [m]: a quarter of the body's diameter, at least two rail sections,
+    at most the body's length."""
+    h = rail_section(diameter)
+    return min(length, max(2 * h, 0.25 * diameter))
 
 
 def stop_for(body: str, mass: float, speed: float, length: float, rho: float, allowable: float,
@@ -184,8 +196,6 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     items.append(Item("frame", "frame", 0.0, length, width, 0.0, frame_mass, material,
                       f"two side members of {section * 1e4:.3g} cm^2 each: the largest stop force at the allowable"))
     fastest = max([launcher.design.muzzle_velocity, fixture.striker_speed, fixture.after_speed_payload])
-    heaviest = max(amp.masses)
     notes = [f"the guided bodies reach {fastest:.4g} m/s, {fastest / ROLLING_CARRIAGE_SPEED:.0f} times the "
              f"{ROLLING_CARRIAGE_SPEED:g} m/s of catalogue rolling carriages: the shoes slide on the rails"]
-    return Layout(items, stops, length, width, section, frame_mass, fastest,
-                  heaviest * G0 / (GUIDES_PER_BODY * 2), notes)
+    return Layout(items, stops, length, width, section, frame_mass, fastest, notes)

@@ -42,6 +42,7 @@ HANDLES = ("pin_scale", "column_over_stroke", "force_factor", "speed_factor")
 START = (1.0, DASHPOT["column_over_stroke"], 1.0, 1.0)
 DESIGN_MARGIN = 0.03             # the lumped design aims this share of the peak inside the band
 LUMPED_SAMPLES = 3000
+RESTART_SPREAD = 0.02            # the simplex of a search started near a neighbouring design
 
 
 @dataclass(frozen=True)
@@ -124,12 +125,15 @@ def dashpot_lumped(d: dict) -> LumpedDashpot:
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
-                   striker_ratio: float = STRIKER_RATIO, echo=None) -> tuple[dict, object, int]:
+                   striker_ratio: float = STRIKER_RATIO, echo=None, near: dict | None = None
+                   ) -> tuple[dict, object, int]:
     """The dashpot's handles iterated on the lumped model (Nelder-Mead from the closed form) to a pulse
     inside the band narrowed by ``DESIGN_MARGIN``: the objective is the narrowed band's worst excess and
     the velocity change beyond its tolerance, with the velocity-change error and the largest deviation
     from the ideal as a small tie-breaker toward the band's middle.  Returns (design, lumped run,
-    evaluations)."""
+    evaluations).  ``near``: the handles of a design for nearly the same inputs (the same payload with a
+    slightly heavier striker); the search then starts there in a simplex RESTART_SPREAD wide, not from
+    the closed form's."""
     end = pulse.record_end()
 
     def design(h):
@@ -143,7 +147,12 @@ def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, se
         allowed = TOLERANCE["velocity_change"] - DESIGN_MARGIN
         return (10.0 * (band.worst_excess + max(0.0, abs(band.velocity_change_error) - allowed))
                 + abs(band.velocity_change_error) + 0.1 * band.worst_deviation)
-    res = minimize(objective, START, method="Nelder-Mead", options={"xatol": 1e-3, "fatol": 1e-5, "maxfev": 400})
+    options = {"xatol": 1e-3, "fatol": 1e-5, "maxfev": 400}
+    start = START
+    if near:
+        start = np.array([near[k] for k in HANDLES])
+        options["initial_simplex"] = np.vstack([start, start * (1 + RESTART_SPREAD * np.eye(len(start)))])
+    res = minimize(objective, start, method="Nelder-Mead", options=options)
     if echo:
         echo(f"  dashpot design: {res.nfev} lumped runs")
     d = design(tuple(res.x))

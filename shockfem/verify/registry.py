@@ -16,6 +16,7 @@ from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_hal
 from .modal_cases import circular_plate, modal_rod, nafems_fv12
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
+from .machine_cases import machine_geometry
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
@@ -78,6 +79,7 @@ CASES = {
     "amplifier_pads": amplifier_pads,
     "launcher_model": launcher_model,
     "launcher_design": launcher_design,
+    "machine_geometry": machine_geometry,
     **HARD,
 }
 
