@@ -7,7 +7,9 @@ their own numpy) has to be installed.  Its STEP writer does not carry entity nam
 solid's PRODUCT is named in the written file (``_name_products``), in the order the solids were written;
 gmsh reads them back as labels (``Shapes/<assembly>/<k>/<name>``), which the checks use.
 
-Conventions: millimetres (the STEP file says so: SI_UNIT(.MILLI.,.METRE.)); the machine's axis is z (the
+Conventions: the solids are built in metres with gmsh's ``Geometry.OCCTargetUnit`` set to "M", so the
+file is written in millimetres (it says so: SI_UNIT(.MILLI.,.METRE.)) and read back in metres whatever unit
+an earlier import left OpenCASCADE in (it keeps one for the whole process); the machine's axis is z (the
 tank at z = 0, the catcher last), y up, x across.  Pressure parts are hollow (their steel only), the
 striker's housing is its steel with the oil a solid of its own, the article the catalogue's ogive standing
 on its base.  Rails, shoes and stop rings are drawn to show the arrangement: their sections are not
@@ -30,11 +32,10 @@ from ..scene.library import property_si
 from .layout import rail_section, shoe_length
 from .spec import REFERENCE_ARTICLE
 
-MM = 1000.0                       # the file's unit per metre
 
 
 def _cylinder(z0, length, radius, x=0.0, y=0.0):
-    return gmsh.model.occ.addCylinder(x * MM, y * MM, z0 * MM, 0, 0, length * MM, radius * MM)
+    return gmsh.model.occ.addCylinder(x, y, z0, 0, 0, length, radius)
 
 
 def _tube(z0, length, outer, inner):
@@ -44,7 +45,7 @@ def _tube(z0, length, outer, inner):
 
 
 def _box(x0, y0, z0, dx, dy, dz):
-    return gmsh.model.occ.addBox(x0 * MM, y0 * MM, z0 * MM, dx * MM, dy * MM, dz * MM)
+    return gmsh.model.occ.addBox(x0, y0, z0, dx, dy, dz)
 
 
 def _capsule(z0, length_cyl, r_cyl, r_head):
@@ -52,8 +53,8 @@ def _capsule(z0, length_cyl, r_cyl, r_head):
     ends (hemispherical heads)."""
     occ = gmsh.model.occ
     c = _cylinder(z0 + r_head, length_cyl, r_cyl)
-    s1 = occ.addSphere(0, 0, (z0 + r_head) * MM, r_head * MM)
-    s2 = occ.addSphere(0, 0, (z0 + r_head + length_cyl) * MM, r_head * MM)
+    s1 = occ.addSphere(0, 0, (z0 + r_head), r_head)
+    s2 = occ.addSphere(0, 0, (z0 + r_head + length_cyl), r_head)
     out, _ = occ.fuse([(3, c)], [(3, s1), (3, s2)])
     return out
 
@@ -73,10 +74,9 @@ def tank_solid(item, sizing) -> list[int]:
 def article_solid(item) -> list[int]:
     """The catalogue's ogive, drawn nose down at its base's place, then turned end over end."""
     R = item.diameter / 2
-    dims = solid_ogive(R * MM, REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R * MM,
-                       item.length * MM)
-    volumes, _ = draw(PARTS["projectile"], dims, 3, (0.0, 0.0, item.x0 * MM))
-    gmsh.model.occ.rotate([(3, v) for v in volumes], 0, 0, (item.x0 + item.length / 2) * MM, 1, 0, 0, math.pi)
+    dims = solid_ogive(R, REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R, item.length)
+    volumes, _ = draw(PARTS["projectile"], dims, 3, (0.0, 0.0, item.x0))
+    gmsh.model.occ.rotate([(3, v) for v in volumes], 0, 0, (item.x0 + item.length / 2), 1, 0, 0, math.pi)
     return volumes
 
 
@@ -148,7 +148,7 @@ def write_step(machine, path: str, name: str) -> list[dict]:
         parts = solids(machine)
         rows = []
         for part_name, tag, density in parts:
-            volume = gmsh.model.occ.getMass(3, tag) / MM ** 3
+            volume = gmsh.model.occ.getMass(3, tag)
             rows.append({"name": part_name, "volume": volume, "density": density, "mass": density * volume})
         order = {tag: part_name for part_name, tag, _ in parts}
         written = [order[t] for _, t in gmsh.model.getEntities(3)]
@@ -191,7 +191,7 @@ def read_step(path: str) -> list[dict]:
         gmsh.model.occ.importShapes(path)
         gmsh.model.occ.synchronize()
         return [{"name": gmsh.model.getEntityName(3, t).split("/")[-1],
-                 "volume": gmsh.model.occ.getMass(3, t) / MM ** 3} for _, t in gmsh.model.getEntities(3)]
+                 "volume": gmsh.model.occ.getMass(3, t)} for _, t in gmsh.model.getEntities(3)]
 
 
 @contextlib.contextmanager
@@ -201,8 +201,11 @@ def empty_gmsh():
     if not gmsh.isInitialized():
         gmsh.initialize(interruptible=False)
     gmsh.option.setNumber("General.Terminal", 0)
+    unit = gmsh.option.getString("Geometry.OCCTargetUnit")
+    gmsh.option.setString("Geometry.OCCTargetUnit", "M")
     gmsh.clear()
     try:
         yield
     finally:
         gmsh.clear()
+        gmsh.option.setString("Geometry.OCCTargetUnit", unit)

@@ -22,7 +22,7 @@ import time
 import gmsh
 
 from ..launcher.vessel import MATERIALS, tank_diameter_for, tank_weight
-from ..machine.cad import MM, article_solid, empty_gmsh, housing_solid, tank_solid
+from ..machine.cad import article_solid, empty_gmsh, housing_solid, tank_solid
 from ..machine.fixture import floor_thickness, housing_wall
 from ..machine.layout import Item
 from ..parts.catalog import PARTS, solid_ogive, solid_ogive_length
@@ -54,14 +54,14 @@ def machine_geometry(size: str, workdir: str) -> list[dict]:
         L_cyl = (TANK["volume"] - 4 / 3 * math.pi * R ** 3) / (math.pi * R * R)
         sizing = {"tank": {"diameter": D, "shell_thickness": shell.thickness, "head_thickness": head}}
         tank = Item("tank", "tank", 0.0, L_cyl + 2 * (R + head), D + 2 * shell.thickness, D)
-        v = sum(gmsh.model.occ.getMass(3, t) for t in tank_solid(tank, sizing)) / MM ** 3
+        v = sum(gmsh.model.occ.getMass(3, t) for t in tank_solid(tank, sizing))
         out.append(check("tank steel volume [m^3] (capsule, ASME walls)",
                          weight / MATERIALS[TANK["material"]]["density"], v, VOLUME_TOL, 0.0, 0))
         # the housing
         h = HOUSING
         housing = Item("striker", "housing", 10.0, h["floor"] + h["depth"], 2 * h["outer_radius"],
                        2 * h["bore_radius"])
-        v = sum(gmsh.model.occ.getMass(3, t) for t in housing_solid(housing, h["floor"])) / MM ** 3
+        v = sum(gmsh.model.occ.getMass(3, t) for t in housing_solid(housing, h["floor"]))
         ref = math.pi * ((h["outer_radius"] ** 2 - h["bore_radius"] ** 2) * h["depth"]
                          + h["outer_radius"] ** 2 * h["floor"])
         out.append(check("housing steel volume [m^3] (wall and floor)", ref, v, VOLUME_TOL, 0.0, 0))
@@ -71,7 +71,7 @@ def machine_geometry(size: str, workdir: str) -> list[dict]:
         meplat = a["meplat_over_radius"] * a["radius"]
         L = solid_ogive_length(a["mass"], rho, a["radius"], a["crh"], meplat)
         art = Item("article", "article", 20.0, L, 2 * a["radius"])
-        v = sum(gmsh.model.occ.getMass(3, t) for t in article_solid(art)) / MM ** 3
+        v = sum(gmsh.model.occ.getMass(3, t) for t in article_solid(art))
         ref = PARTS["projectile"].volume(solid_ogive(a["radius"], a["crh"], meplat, L), 3)
         out.append(check("article volume [m^3] (ogive, turned end over end)", ref, v, VOLUME_TOL, 0.0, 0))
     wall = time.perf_counter() - t0
