@@ -29,7 +29,8 @@ class Load:
     load: str                   # what loads it, in words with its value
     stress: float               # [Pa]
     allowable: float            # [Pa]
-    basis: str                  # the formula or model, and whether the design set it to the allowable
+    basis: str                  # the formula or model
+    sized: bool = False         # the design set this stress to the allowable (its ratio is 1 by construction)
 
     @property
     def ratio(self) -> float:
@@ -103,7 +104,7 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
         out.append(Load(f"launcher {part}", f"reservoir pressure {P / 1e6:.3g} MPa", w["hoop_stress"],
                         w["hoop_stress"] * (1 + w["margin"]),
                         f"Lame hoop stress at the bore; ASME VIII-1 {w['rule']} wall, {w['material']} allowable "
-                        "(set by the design)"))
+                        "(set by the design)", sized=True))
     g = launcher.design.gun
     base = launcher.projectile_mass * launcher.design.peak_acceleration / g.area
     out.append(Load("first mass in the barrel", f"peak launch acceleration {launcher.design.peak_acceleration / G0:,.0f} g",
@@ -111,7 +112,7 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
     for st in amp.stages:
         out.append(Load(f"pad {st.pair}", f"closing at {st.closing_speed:.1f} m/s", st.face_stress, S,
                         "rigid bodies on the pad: peak force dv sqrt(k M*) over the smaller load section "
-                        "(set by the design)"))
+                        "(set by the design)", sized=True))
         out.append(Load(f"interface {st.pair} (1D)", "the 1D chain's peak pad force", st.interface_stress_1d, S,
                         "1D run: the low-passed interface force over the smaller bar section"))
     for body, over in amp.peak_stress_over_yield.items():
@@ -120,9 +121,10 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
                             "1D run: the largest axial stress in the bar"))
     f = fixture
     out.append(Load("striker housing wall", f"oil at {f.peak_pressure / 1e6:.0f} MPa", f.wall_hoop_stress, S,
-                    "Lame hoop stress at the bore" + (" (the wall set the striker's mass)" if f.housing_binds else "")))
+                    "Lame hoop stress at the bore" + (" (the wall set the striker's mass)" if f.housing_binds else ""),
+                    sized=f.housing_binds))
     out.append(Load("striker housing floor", f"oil at {f.peak_pressure / 1e6:.0f} MPa", f.floor_stress, S,
-                    "clamped plate, 3 p r^2 / (4 t^2) at the edge (Roark 11.2 case 10b; set by the design)"))
+                    "clamped plate, 3 p r^2 / (4 t^2) at the edge (Roark 11.2 case 10b; set by the design)", sized=True))
     out.append(Load("piston", f"oil at {f.peak_pressure / 1e6:.0f} MPa", f.peak_pressure, S,
                     "the oil's pressure on its face, carried in compression"))
     a_Y = initial_yield_stress(REFERENCE_ARTICLE["library"])
@@ -134,7 +136,7 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
         out.append(Load(f"stop of {st.body}", f"{st.mass:.4g} kg at {st.speed:.1f} m/s: {st.force / 1e6:.3g} MN over "
                                              f"{st.stroke:.3g} m",
                         rho * _length(amp, fixture, st.body) * st.deceleration, S,
-                        f"rho L a in the stopped body; deceleration: {st.limit}"))
+                        f"rho L a in the stopped body; deceleration: {st.limit}", sized="inertia" in st.limit))
     # the guides: each moving body's weight on its sliding shoes, as bearing pressure on the rails
     for it in layout.items:
         if it.kind in ("mass", "housing", "piston"):
@@ -147,7 +149,7 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
                             "is lower and not modelled)"))
     out.append(Load("frame side members", f"the largest stop force {max(s.force for s in layout.stops) / 1e6:.3g} MN",
                     max(s.force for s in layout.stops) / (2 * layout.frame_section), S,
-                    "two ties at the allowable (set by the design; bending and buckling left out)"))
+                    "two ties at the allowable (set by the design; bending and buckling left out)", sized=True))
     return out
 
 

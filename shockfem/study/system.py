@@ -29,6 +29,7 @@ import time
 from ..amplifier.chain import run_chain_scene
 from ..machine.amplifier import chain_scene
 from ..machine.design import design_machine
+from ..machine.layout import ROLLING_CARRIAGE_SPEED
 from ..machine.output import write_machine
 from ..machine.spec import MachineSpec, read_spec
 from ..output.figures import pyplot
@@ -196,6 +197,17 @@ def verdict(machines: dict, rows: list) -> str:
     if bound:
         out.append(f"the striker's housing (its wall at the oil's pressure) sets the striker's mass above the asked ratio "
                    f"for {', '.join(f'{lb} lb' for lb in bound)}")
+    # yield: the stresses no sizing set to the allowable, the highest over every feasible machine
+    computed = [(ld.ratio, ld.component, lb) for lb in ok for ld in machines[lb].loads if not ld.sized]
+    if computed:
+        r, component, lb = max(computed)
+        out.append(f"every pad, stop, wall and the frame is sized to its allowable; of the stresses no sizing set, the "
+                   f"highest is the {component} at {r:.2f} of its allowable ({lb} lb)")
+    # commercial parts: the guides
+    fastest = max(machines[lb].layout.fastest_guided_speed for lb in payloads)
+    out.append(f"at every payload the guided bodies reach {fastest:.0f} m/s, {fastest / ROLLING_CARRIAGE_SPEED:.0f} times "
+               f"what catalogue rolling carriages allow ({ROLLING_CARRIAGE_SPEED:g} m/s): the guides are sliding shoes, "
+               "not commercial linear bearings")
     return "; ".join(out) + "."
 
 
