@@ -142,7 +142,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     note = damping_step_note(scene, qualities, solver.stable_step())
     if note:
         say(note)
-    history = HistoryRecorder(solver, rd.file("history.csv"))
+    history = HistoryRecorder(solver, rd.file("history.csv"), rd.file("history.h5"))
     for note in history.notes:
         say(note)
     fields = FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields) if write_fields else None

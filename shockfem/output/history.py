@@ -2,7 +2,11 @@
 forces, stresses along slender bodies (``sections``), energies; HDF5 and CSV.
 
 Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes; a run streams the
-CSV row by row (flushed every half second), so a killed run leaves it readable to its last samples.
+CSV row by row (flushed every half second), so a killed run leaves it readable to its last samples, and
+rewrites the HDF5 file whole as it goes (written beside and renamed into place, every 2 s or more seldom:
+its writing kept under 2% of the wall time), so a kill leaves it whole to its last snapshot.
+Whole-file snapshots rather than HDF5's own append (SWMR): a SWMR file whose writer was killed stays
+marked as open, and readers refuse it until ``h5clear`` has been run on it.
 Accelerometers record the *velocity* of their node: the shock metrics take acceleration as
 its interval mean between samples, which cannot alias the stress waves above the sampling
 rate (``metrics/signals.py``).
@@ -29,11 +33,16 @@ ENERGY_COLUMNS = ("kinetic", "internal", "plastic", "damping", "hourglass", "bul
 
 # how often (wall time) the streamed CSV is flushed to disk: a kill loses at most this much of it
 FLUSH_EVERY_S = 0.5
+# the HDF5 snapshot: at most every SNAPSHOT_EVERY_S (a whole file each time: the CSV is the fine-grained
+# stream), and at most SNAPSHOT_SHARE of the wall time spent on it
+SNAPSHOT_EVERY_S = 2.0
+SNAPSHOT_SHARE = 0.02
 
 
 class HistoryRecorder:
-    def __init__(self, solver: ExplicitSolver, csv_path: str | None = None):
-        """``csv_path``: stream the rows there as they are recorded (rank 0), header first."""
+    def __init__(self, solver: ExplicitSolver, csv_path: str | None = None, h5_path: str | None = None):
+        """``csv_path``: stream the rows there as they are recorded (rank 0), header first; ``h5_path``:
+        keep a whole snapshot of the history there as the run goes (rank 0)."""
         m = solver.model
         self.solver = solver
         axes = ("r", "z") if m.axisymmetric else "xyz"[:m.gdim]
@@ -70,6 +79,9 @@ class HistoryRecorder:
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
         self.rows: list[list[float]] = []
+        self._array = np.zeros((0, len(self.columns)))
+        self._h5 = h5_path if solver.comm.rank == 0 else None
+        self._snapshot_due = 0.0
         self._stream = None
         if csv_path and solver.comm.rank == 0:
             self._stream = open(csv_path, "w", newline="")
@@ -110,19 +122,23 @@ class HistoryRecorder:
             if time.perf_counter() - self._flushed > FLUSH_EVERY_S:
                 self._stream.flush()
                 self._flushed = time.perf_counter()
+        if self._h5 is not None and time.perf_counter() >= self._snapshot_due:
+            self._snapshot(self._h5)
 
     def array(self) -> np.ndarray:
-        return np.array(self.rows) if self.rows else np.zeros((0, len(self.columns)))
+        """The rows so far as one array (rows converted once: the snapshots ask for it again and again)."""
+        if len(self.rows) > len(self._array):
+            self._array = np.vstack([self._array, np.array(self.rows[len(self._array):])])
+        return self._array
 
     def column(self, name: str) -> np.ndarray:
         names = [c[0] for c in self.columns]
         return self.array()[:, names.index(name)]
 
-    def write(self, h5_path: str, csv_path: str):
-        """The HDF5 file (written beside and renamed into place) and the CSV (closed if it was streamed,
-        written whole if not)."""
-        if self.solver.comm.rank != 0:
-            return
+    def _snapshot(self, h5_path: str):
+        """The whole history as HDF5, written beside and renamed into place; the next one is due after
+        SNAPSHOT_EVERY_S, or later if this one took more than SNAPSHOT_SHARE of that."""
+        started = time.perf_counter()
         data = self.array()
         partial = h5_path + ".partial"
         with h5py.File(partial, "w") as f:
@@ -130,6 +146,15 @@ class HistoryRecorder:
                 ds = f.create_dataset(name, data=data[:, j])
                 ds.attrs["unit"] = unit
         os.replace(partial, h5_path)
+        took = time.perf_counter() - started
+        self._snapshot_due = time.perf_counter() + max(SNAPSHOT_EVERY_S, took / SNAPSHOT_SHARE)
+
+    def write(self, h5_path: str, csv_path: str):
+        """The last HDF5 snapshot (written beside and renamed into place) and the CSV (closed if it was
+        streamed, written whole if not)."""
+        if self.solver.comm.rank != 0:
+            return
+        self._snapshot(h5_path)
         if self._stream is not None:
             self._stream.close()
             self._stream = None
@@ -137,7 +162,7 @@ class HistoryRecorder:
         with open(csv_path, "w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(self._header())
-            w.writerows(data.tolist())
+            w.writerows(self.array().tolist())
 
 
 class _Meter:

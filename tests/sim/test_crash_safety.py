@@ -1,6 +1,7 @@
 """A run killed halfway keeps what it wrote (#25): SIGTERM and SIGINT stop it between two steps, and it
 finishes its outputs and says ``interrupted`` (exit 143 / 130); after SIGKILL its ``summary.json`` says
-``running`` and its streamed ``history.csv`` reads to its last whole row. A rerun into the same directory
+``running``, its streamed ``history.csv`` reads to its last whole row and ``history.h5`` to its last
+snapshot. A rerun into the same directory
 starts from a clean one. The rod impact of ``studies/metrics/rod_pulse.toml`` is run far past its event
 (20 ms) so that the signal lands mid-run; a field frame every 10 us (a few per second of wall time)."""
 import json
@@ -80,6 +81,13 @@ def test_sigkill_leaves_a_running_summary_and_a_readable_history_and_a_rerun_sta
     assert json.loads((out / "summary.json").read_text())["status"] == "running"
     h = read_history_csv(str(out / "history.csv"))
     assert len(h["time"]) > 300 and (h["time"][1:] > h["time"][:-1]).all()
+    # the HDF5 history is whole to its last snapshot (at most a few half seconds behind the CSV): every
+    # column, the same rows as the CSV's first ones
+    with h5py.File(out / "history.h5") as f:
+        t5 = f["time"][:]
+        assert 0 < len(t5) <= len(h["time"]) and set(f) == set(h)
+        assert (t5 == h["time"][:len(t5)]).all()
+        assert f["striker.v_z"].attrs["unit"] == "m/s"
     # the same directory again, a short run: nothing of the killed one is left beside it
     (out / "pulse_ghost.png").write_bytes(b"old")
     done = subprocess.run([sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out), "--no-progress",
