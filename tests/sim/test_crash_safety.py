@@ -97,3 +97,32 @@ def test_sigkill_leaves_a_running_summary_and_a_readable_history_and_a_rerun_sta
     assert json.loads((out / "summary.json").read_text())["status"] == "completed"
     assert not (out / "fields.xdmf").exists() and not (out / "pulse_ghost.png").exists()
     assert read_history_csv(str(out / "history.csv"))["time"][-1] == pytest.approx(5e-6)
+
+
+def test_sigterm_under_mpirun_finishes_every_rank(tmp_path):
+    """Two MPI ranks: SIGTERM to mpirun reaches both, they agree to stop at the same step (they compare
+    notes every 50 steps) and rank 0 finishes the outputs: status ``interrupted``, the histories and the
+    fields whole. (mpirun itself exits 1 when its ranks exit 143.)"""
+    import shutil
+    mpirun = shutil.which("mpirun")
+    assert mpirun, "mpirun not found (apt-get install openmpi-bin)"
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    out = tmp_path / "run"
+    p = subprocess.Popen([mpirun, "-n", "2", sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out),
+                          "--no-progress", "--set", 'scene.end_time="20 ms"', "--set", 'outputs.field_interval="10 us"'],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+    _wait_for_rows(out)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=300)
+    assert p.returncode != 0, err[-3000:]
+    s = json.loads((out / "summary.json").read_text())
+    assert s["status"] == "interrupted" and "SIGTERM" in s["diagnosis"], err[-3000:]
+    h = read_history_csv(str(out / "history.csv"))
+    with h5py.File(out / "history.h5") as f:
+        assert len(f["time"]) == len(h["time"]) > 300
+    reader = meshio.xdmf.TimeSeriesReader(str(out / "fields.xdmf"))
+    reader.read_points_cells()
+    for k in range(reader.num_steps):
+        reader.read_data(k)
+    assert reader.num_steps >= 2
