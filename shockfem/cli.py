@@ -1,7 +1,8 @@
-"""The ``shockfem`` command: run, check, mesh, verify, bench.
+"""The ``shockfem`` command: run, check, mesh, metrics, modes, amplifier, programmer, launcher,
+design-machine, study, verify, bench (``shockfem COMMAND --help`` for each).
 
 Exit codes: 0 ok, 2 bad input (every problem listed, no traceback), 3 run stopped as
-unstable (outputs kept), 1 a verification case failed.
+unstable (outputs kept), 1 a verification case failed, 130 / 143 interrupted by SIGINT / SIGTERM.
 """
 from __future__ import annotations
 
@@ -14,59 +15,75 @@ from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, EXIT_UNSTABLE, Mo
 from .units import LB
 
 
+class _DefaultsShown(argparse.HelpFormatter):
+    """Every option's default in its help, unless it has none or its help already says it."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        if "default" in text or action.default in (None, False, [], argparse.SUPPRESS):
+            return text
+        return f"{text} (default: %(default)s)"
+
+
 def _parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="shockfem", description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(prog="shockfem", description=" ".join(__doc__.replace("``", "").split("\n\n")[0].split()),
+                                epilog=" ".join(__doc__.split("\n\n")[1].split()))
     sub = p.add_subparsers(dest="command", required=True)
 
-    r = sub.add_parser("run", help="run a scene and write a run directory")
-    r.add_argument("scene")
+    def command(name, help):
+        # every option's default shown in its help
+        return sub.add_parser(name, help=help, description=help, formatter_class=_DefaultsShown)
+
+    r = command("run", "run a scene and write a run directory")
+    r.add_argument("scene", help="scene file (TOML)")
     r.add_argument("--out", help="run directory (default: results/<scene name>)")
     r.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
                    help="override a scene field, e.g. bodies.striker.velocity='12 m/s'")
-    r.add_argument("--no-progress", action="store_true")
+    r.add_argument("--no-progress", action="store_true", help="no progress bar (batch jobs, logs)")
     r.add_argument("--no-fields", action="store_true", help="skip the XDMF field output")
     r.add_argument("--fidelity", choices=("rigid", "1d", "axisymmetric", "3d"),
                    help="chain scenes: the model to run (default: the scene's chain.fidelity)")
 
-    c = sub.add_parser("check", help="validate a scene without running it")
-    c.add_argument("scene")
-    c.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    c = command("check", "validate a scene without running it")
+    c.add_argument("scene", help="scene file (TOML)")
+    c.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
 
-    m = sub.add_parser("mesh", help="mesh a scene's bodies (cached in meshes/), report their quality and write "
-                                    "the mesh as XDMF")
-    m.add_argument("scene")
-    m.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    m = command("mesh", "mesh a scene's bodies (cached in meshes/ or $SHOCKFEM_MESH_CACHE), report their "
+                        "quality and write the mesh as XDMF")
+    m.add_argument("scene", help="scene file (TOML)")
+    m.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
     m.add_argument("--out", help="XDMF file to write (default: results/<scene>/mesh.xdmf)")
     m.add_argument("--png", help="also render the mesh to this PNG (3D cut open by a quarter)")
 
-    s = sub.add_parser("metrics", help="(re)compute the shock metrics of a run directory: pulses, spectra, "
+    s = command("metrics", "(re)compute the shock metrics of a run directory: pulses, spectra, "
                                        "stage table (into its summary.json, with plots)")
-    s.add_argument("run_dir")
+    s.add_argument("run_dir", help="a run directory written by shockfem run")
     s.add_argument("--cfc", help="filter class instead of the scene's: 60, 180, 600, 1000 or none")
 
-    o = sub.add_parser("modes", help="natural frequencies and mode shapes of a body (SLEPc)")
-    o.add_argument("scene")
-    o.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    o = command("modes", "natural frequencies and mode shapes of a body (SLEPc)")
+    o.add_argument("scene", help="scene file (TOML)")
+    o.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
     o.add_argument("--body", help="the body (default: the scene's only deformable body)")
     o.add_argument("--count", type=int, default=10, help="elastic modes to find (default 10)")
     o.add_argument("--degree", type=int, choices=(1, 2), default=1,
                    help="element degree: 2 for thin plates and shells, which lock with linear solids")
     o.add_argument("--free", action="store_true", help="ignore the scene's boundary conditions (free-free)")
-    o.add_argument("--mass", choices=("consistent", "lumped"), default="consistent")
+    o.add_argument("--mass", choices=("consistent", "lumped"), default="consistent", help="mass matrix")
     o.add_argument("--out", help="directory for modes.json and modes.xdmf (default: results/<scene>/modes)")
 
-    a = sub.add_parser("amplifier", help="size a velocity amplifier's masses (rigid-body design tool)")
-    a.add_argument("--architecture", choices=("launched-chain", "stack-on-anvil"), default="launched-chain")
+    a = command("amplifier", "size a velocity amplifier's masses (rigid-body design tool)")
+    a.add_argument("--architecture", choices=("launched-chain", "stack-on-anvil"), default="launched-chain",
+                   help="a gun fires the first mass into the others, or the whole stack falls onto an anvil")
     a.add_argument("--article", required=True, help="test article mass, e.g. '12 lb'")
     a.add_argument("--target", required=True, help="test article speed to reach, e.g. '1600 ft/s'")
     a.add_argument("--launch", required=True, help="first-mass (or stack) speed, e.g. '325 ft/s'")
-    a.add_argument("--restitution", type=float, default=0.9)
+    a.add_argument("--restitution", type=float, default=0.9, help="coefficient of restitution of every collision")
     a.add_argument("--masses", type=int, default=5, help="number of masses, test article included")
     a.add_argument("--material", default="high_strength_steel", help="library material for the sizes")
     a.add_argument("--aspect", type=float, default=1.0, help="length / diameter of the cylinders")
     a.add_argument("--json", help="write the design to this JSON file")
 
-    pg = sub.add_parser("programmer", help="size pulse programmers (crushable pad, orifice dashpot, split cone) "
+    pg = command("programmer", "size pulse programmers (crushable pad, orifice dashpot, split cone) "
                                            "for a specified pulse (closed forms)")
     pg.add_argument("--article", required=True, help="mass brought to rest, e.g. '12 lb'")
     pg.add_argument("--shape", required=True, help="half-sine | terminal-peak sawtooth | trapezoid | rectangle")
@@ -86,16 +103,16 @@ def _parser() -> argparse.ArgumentParser:
     pg.add_argument("--elongation", default=0.2, type=float, help="usable hoop strain of a yielding ring")
     pg.add_argument("--json", help="write the requirement and the concepts to this JSON file")
 
-    ln = sub.add_parser("launcher", help="fire a gas gun described by a [launcher] scene; ASME sizing")
-    ln.add_argument("scene")
-    ln.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    ln = command("launcher", "fire a gas gun described by a [launcher] scene; ASME sizing")
+    ln.add_argument("scene", help="scene file (TOML)")
+    ln.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
     ln.add_argument("--out", help="results directory (default: results/<name>)")
     ln.add_argument("--design", action="store_true",
                     help="find the lightest launcher meeting the scene's [design] table, then fire it")
     ln.add_argument("--trade", type=int, metavar="N", default=0,
                     help="with the design, trade curves at N points: weight against pressure, length against bore")
 
-    dm = sub.add_parser("design-machine", help="design the whole shock tester for an article and a pulse: fixture, "
+    dm = command("design-machine", "design the whole shock tester for an article and a pulse: fixture, "
                                                "amplifier, launcher, stops, guides, frame; loads against allowables")
     dm.add_argument("--article", required=True, help="the unit under test's mass, e.g. '12 lb'")
     dm.add_argument("--shape", default="rectangle", help="pulse shape: rectangle | half-sine | terminal-peak sawtooth "
@@ -119,19 +136,20 @@ def _parser() -> argparse.ArgumentParser:
                                                             "over the piston: it sets the bore (default '120 MPa')")
     dm.add_argument("--out", help="directory for machine.json and machine.md (default: results/machine/<N>lb)")
 
-    st = sub.add_parser("study", help="run a study and write its report (report.md with tables and figures)")
-    st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration", "system"))
-    st.add_argument("--size", choices=("smoke", "default"), default="default")
+    st = command("study", "run a study and write its report (report.md with tables and figures)")
+    st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration", "system"), help="the study")
+    st.add_argument("--size", choices=("smoke", "default"), default="default",
+                    help="smoke: coarse and short (what the tests run); default: the study's answer")
     st.add_argument("--out", help="results directory (default: results/<name>)")
 
-    v = sub.add_parser("verify", help="verification against exact and published solutions")
+    v = command("verify", "verification against exact and published solutions")
     v.add_argument("names", nargs="*", help="cases to run (default: all)")
     v.add_argument("--list", action="store_true", help="list the cases")
     v.add_argument("--json", help="write the results to this JSON file")
-    v.add_argument("--size", choices=("coarse", "default", "fine"), default="default")
-    v.add_argument("--workdir", default="results/verify")
+    v.add_argument("--size", choices=("coarse", "default", "fine"), default="default", help="mesh size of the cases")
+    v.add_argument("--workdir", default="results/verify", help="where the cases' runs are written")
 
-    b = sub.add_parser("bench", help="element-cycles per second at several mesh sizes")
+    b = command("bench", "element-cycles per second at several mesh sizes")
     b.add_argument("--json", help="write the results to this JSON file")
     b.add_argument("--quick", action="store_true", help="small meshes only (a smoke test)")
     b.add_argument("--steps", type=int, default=200)

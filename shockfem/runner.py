@@ -41,8 +41,9 @@ def _progress(total: float, enabled: bool):
     if not enabled:
         return None
     from tqdm import tqdm
+    # (tqdm writes its own ", " before a postfix)
     return tqdm(total=total * 1e6, unit="us", unit_scale=False, dynamic_ncols=True, file=sys.stderr,
-                bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} us [{elapsed}<{remaining}, {postfix}]",
+                bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} us [{elapsed}<{remaining}{postfix}]",
                 mininterval=0.5)
 
 
@@ -341,7 +342,8 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "nodes": m.V.dofmap.index_map.size_global,
         "processes": solver.comm.size,
         "steps": solver.step,
-        "dt": solver.dt,
+        "dt": solver.stable_step() if solver.step else solver.dt,
+        "dt_last": solver.dt,
         "end_time": solver.t,
         "wall_time_s": wall,
         "element_cycles_per_s": elements * solver.step / wall if wall > 0 else 0.0,

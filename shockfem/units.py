@@ -59,8 +59,10 @@ class UnitError(ValueError):
 def registry() -> pint.UnitRegistry:
     ureg = pint.UnitRegistry()
     # "g" is gram in pint; shock engineers write accelerations in standard gravities as "gn"
-    # or "g0"; we accept "gee" too so that "10000 gee" is unambiguous.
+    # or "g0" (pint's own name is "g_n"); we accept "gee" too so that "10000 gee" is unambiguous.
+    # Outputs write the unit as "g" ("11,344 g"): a standard gravity, never a gram.
     ureg.define(f"gee = {G0} m/s**2")
+    ureg.define(f"gn = {G0} m/s**2")
     return ureg
 
 

@@ -501,7 +501,10 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
              f"{launch:.5g} m/s from {L['gun']['reservoir_pressure'] / 1e6:.4g} MPa "
              f"(peak {L['peak_acceleration'] / G0:.4g} g, efficiency {L['efficiency']:.1%}); "
              f"barrel and tank {L['sizing']['total_weight']:.4g} kg")
-    echo(f"chain '{spec.name}', {spec.architecture}, fidelity {spec.fidelity}:\n    " + model.replace("; ", "\n    "))
+    # a finite-element run with its progress shown has printed its model and its directory already
+    runner_printed = spec.fidelity in ("axisymmetric", "3d") and progress
+    echo(f"chain '{spec.name}', {spec.architecture}, fidelity {spec.fidelity}:"
+         + (" (the model is the run's, above)" if runner_printed else "\n    " + model.replace("; ", "\n    ")))
     for s in stages:
         echo(f"  {s.pair:24s} {s.striker} {s.striker_before:+.4g} -> {s.striker_after:+.4g} m/s, {s.struck} "
              f"{s.struck_before:+.4g} -> {s.struck_after:+.4g} m/s, e = {s.restitution:.4f}")
@@ -511,5 +514,6 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         y = _yield_of(k, yields)
         against = f", {v / y:.0%} of yield {y / 1e6:.4g} MPa" if y else ", elastic material (no yield given)"
         echo(f"  peak stress {k}: {v / 1e6:.4g} MPa{against} ({stress_kind})")
-    echo(f"results in {out_dir}")
+    if not runner_printed:
+        echo(f"results in {out_dir}")
     return chain

@@ -9,8 +9,9 @@ catcher.
 * Each body is stopped over its own length (the stop then takes no more of the machine than the body,
   and the frame carries the force m v^2 / (2 L)), or over more where that would pass its inertia's
   limit: a body stopped at one end at deceleration a carries rho L a at the stop (a bar pushed from one
-  end), at most the allowable S, so a <= S / (rho L).  Stroke v^2 / (2 a), force m a, energy m v^2 / 2.  The payload's catcher is the spec's (at most half
-  the test pulse's peak by default: the arrest must not be the harsher shock).
+  end), at most the allowable S, so a <= S / (rho L).  Stroke v^2 / (2 a), force m a, energy m v^2 / 2.
+  The payload's catcher is the spec's (half the test pulse's peak by default: the arrest must not be the
+  harsher shock).
 * Guides: two rails under every body, sliding shoes under it (its weight their load): catalogue
   rolling carriages run at most ``ROLLING_CARRIAGE_SPEED`` (item Industrietechnik, PS 4 bearing carriages:
   v max 5 m/s), far below the bodies' speeds, so the shoes slide (wear strips on hardened rails).

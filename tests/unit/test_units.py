@@ -9,6 +9,8 @@ from shockfem.units import UnitError, to_si
     ("2000 psi", "pressure", 2000 * 6894.757293168),
     ("5 ms", "time", 5e-3),
     ("10000 gee", "acceleration", 98066.5),
+    ("10000 gn", "acceleration", 98066.5),          # the standard gravity's usual symbols (9.80665 m/s^2)
+    ("10000 g0", "acceleration", 98066.5),
     ("7850 kg/m^3", "density", 7850.0),
 ])
 def test_to_si(text, dim, si):
