@@ -105,10 +105,12 @@ def damping_step_note(scene: Scene, qualities, dt: float) -> str | None:
     if not np.isfinite(undamped) or dt > 0.5 * undamped:
         return None
     own = any(b.damping for b in scene.bodies)
+    where = ("the bodies' damping (bodies[i].damping; a chain scene sets it from chain.damping, 0.02 unless "
+             "given)" if own else "the scene's damping")
     return (f"stiffness-proportional damping shortens the stable step {undamped / dt:.3g} times (from "
-            f"{undamped:.3g} s without it): the smallest elements' frequencies are damped far above critical. "
-            "If the run is slow: " + ("" if own else "damp each body at its own first frequency "
-                                      "(bodies[i].damping), ")
+            f"{undamped:.3g} s without it): the smallest elements' frequencies are damped far above critical "
+            f"by {where}. If the run is slow: " + ("" if own else "damp each body at its own first frequency "
+                                                   "(bodies[i].damping), ")
             + "damp at a higher frequency, use damping.type = 'mass', or coarsen the elements.")
 
 
