@@ -26,6 +26,7 @@ import sys
 import gmsh
 
 from ..geometry.outline import draw
+from ..launcher.vessel import MATERIALS as VESSEL_MATERIALS
 from ..parts.catalog import PARTS, solid_ogive
 from ..programmer.dashpot_design import OIL
 from ..scene.library import property_si
@@ -136,8 +137,7 @@ def solids(machine) -> list[tuple[str, int, float]]:
 
 
 def _density(vessel_material: str) -> float:
-    from ..launcher.vessel import MATERIALS
-    return MATERIALS[vessel_material]["density"]
+    return VESSEL_MATERIALS[vessel_material]["density"]
 
 
 def write_step(machine, path: str, name: str) -> list[dict]:

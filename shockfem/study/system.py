@@ -28,14 +28,17 @@ import time
 
 from ..amplifier.chain import run_chain_scene
 from ..machine.amplifier import chain_scene
-from ..machine.design import design_machine
+from ..machine.design import design_machine, models
+from ..machine.launcher import SIZING
 from ..machine.layout import ROLLING_CARRIAGE_SPEED
 from ..machine.output import write_machine
 from ..machine.spec import MachineSpec, read_spec
 from ..output.figures import pyplot
 from ..units import FT, G0, IN, LB, PSI
 from .cases import run_case
+from .fixture.common import band_of
 from .fixture.dashpot import dashpot_scene
+from .fixture.runs import fe_pulse
 from .report import Report
 
 SIZES = {
@@ -80,13 +83,8 @@ def choices(rep: Report, s: MachineSpec):
              "industry standard pressures'), the payload caught at half the pulse's peak. The article of each "
              "payload is the fixture study's 60 mm ogive scaled geometrically to its mass.")
     rep.text("The models, in the order the data flows:")
-    for line in _models_of(s):
+    for line in models(s):
         rep.text(f"- {line}")
-
-
-def _models_of(s):
-    from ..machine.design import models
-    return models(s)
 
 
 def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
@@ -274,7 +272,6 @@ def coupled(rep: Report, m, cfg, out_dir: str, echo):
     rep.heading(f"4. The coupled check: the {lb} lb machine end to end")
     f, a = m.fixture, m.amplifier
     g = m.launcher.design.gun
-    from ..machine.launcher import SIZING
     raw = chain_scene(m.spec, a, f)
     raw["chain"].pop("launch_speed")
     raw["launcher"] = {"name": "gun", "bore": g.bore, "length": g.length, "reservoir_pressure": g.reservoir_pressure,
@@ -297,8 +294,6 @@ def coupled(rep: Report, m, cfg, out_dir: str, echo):
     rows = [["system model (lumped fixture, rigid chain at effective e)", f.striker_speed, f.peak / G0,
              f.duration * 1e3, f.velocity_change, "pass" if f.band_passed else "FAIL", "-", f"{m.wall_time_s:.1f}"]]
     if fe is not None:
-        from .fixture.common import band_of
-        from .fixture.runs import fe_pulse
         t, acc = fe_pulse(fe)
         pulse, band = band_of(t, acc, m.spec.pulse.shape)
         rows.append(["end to end (gun and chain 1D, fixture finite elements)", v_striker, pulse.peak / G0,
