@@ -136,7 +136,7 @@ def test_fixture_study_smoke(tmp_path):
     chosen = {"the dashpot": "dashpot", "the dashpot with the nose seat": "seated"}[lightest["design"]]
     assert results["values"]["chosen_design"] == chosen
     # section 5: the chosen design at two axisymmetric meshes (its pulse is the lumped liquid's, the same to
-    # 1e-3) and in 3D (at smoke size only the pulse's first 0.5 ms: run, not compared)
+    # 1e-3) and in 3D (at smoke size only the pulse's first 0.25 ms: run, not compared)
     meshes = _rows(results, "speed_against_error")
     assert len(meshes) == 3 and all(r["status"] == "completed" for r in meshes)
     assert meshes[0]["peak [g]"] == pytest.approx(meshes[1]["peak [g]"], rel=1e-3)
