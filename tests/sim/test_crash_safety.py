@@ -21,10 +21,28 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 SCENE = os.path.join(REPO, "studies", "metrics", "rod_pulse.toml")
 
 
-def _start(out, frames="10 us"):
-    return subprocess.Popen([sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out), "--no-progress",
-                             "--set", 'scene.end_time="20 ms"', "--set", f'outputs.field_interval="{frames}"'],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+def _start(out, frames="10 us", launcher=(), env=None):
+    """The rod impact run far past its event into ``out`` (``launcher``: e.g. mpirun's command before it)."""
+    return subprocess.Popen([*launcher, sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out),
+                             "--no-progress", "--set", 'scene.end_time="20 ms"', "--set",
+                             f'outputs.field_interval="{frames}"'],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+
+
+def _finished_outputs(out, signame: str, err: str) -> int:
+    """An interrupted run's outputs, read back: the summary says so and names the signal, both histories
+    hold the same rows (over 300), every field frame reads; returns the number of frames."""
+    s = json.loads((out / "summary.json").read_text())
+    assert s["status"] == "interrupted" and signame in s["diagnosis"], err[-3000:]
+    assert 0.0 < s["end_time"] < 0.02
+    h = read_history_csv(str(out / "history.csv"))
+    with h5py.File(out / "history.h5") as f:
+        assert len(f["time"]) == len(h["time"]) > 300
+    reader = meshio.xdmf.TimeSeriesReader(str(out / "fields.xdmf"))
+    reader.read_points_cells()
+    for k in range(reader.num_steps):
+        reader.read_data(k)
+    return reader.num_steps
 
 
 def _wait_for_rows(out, rows=300, timeout=300):
@@ -54,17 +72,7 @@ def test_sigterm_and_sigint_finish_the_outputs(tmp_path, sig, code, frames):
     p.send_signal(sig)
     _, err = p.communicate(timeout=300)
     assert p.returncode == code, err[-3000:]
-    s = json.loads((out / "summary.json").read_text())
-    assert s["status"] == "interrupted" and signal.Signals(sig).name in s["diagnosis"]
-    assert 0.0 < s["end_time"] < 0.02
-    h = read_history_csv(str(out / "history.csv"))
-    with h5py.File(out / "history.h5") as f:
-        assert len(f["time"]) == len(h["time"]) > 300
-    reader = meshio.xdmf.TimeSeriesReader(str(out / "fields.xdmf"))
-    reader.read_points_cells()
-    for k in range(reader.num_steps):
-        reader.read_data(k)
-    assert reader.num_steps >= 2 and (out / "final_shape.xdmf").exists()
+    assert _finished_outputs(out, signal.Signals(sig).name, err) >= 2 and (out / "final_shape.xdmf").exists()
     for png in ("energy.png", "bodies.png"):
         assert _png_ok(out / png)
     assert not list(out.glob("*.partial*"))
@@ -109,20 +117,9 @@ def test_sigterm_under_mpirun_finishes_every_rank(tmp_path):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1")
     out = tmp_path / "run"
-    p = subprocess.Popen([mpirun, "-n", "2", sys.executable, "-m", "shockfem", "run", SCENE, "--out", str(out),
-                          "--no-progress", "--set", 'scene.end_time="20 ms"', "--set", 'outputs.field_interval="10 us"'],
-                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+    p = _start(out, launcher=(mpirun, "-n", "2"), env=env)
     _wait_for_rows(out)
     p.send_signal(signal.SIGTERM)
     _, err = p.communicate(timeout=300)
     assert p.returncode != 0, err[-3000:]
-    s = json.loads((out / "summary.json").read_text())
-    assert s["status"] == "interrupted" and "SIGTERM" in s["diagnosis"], err[-3000:]
-    h = read_history_csv(str(out / "history.csv"))
-    with h5py.File(out / "history.h5") as f:
-        assert len(f["time"]) == len(h["time"]) > 300
-    reader = meshio.xdmf.TimeSeriesReader(str(out / "fields.xdmf"))
-    reader.read_points_cells()
-    for k in range(reader.num_steps):
-        reader.read_data(k)
-    assert reader.num_steps >= 2
+    assert _finished_outputs(out, "SIGTERM", err) >= 2
