@@ -141,12 +141,14 @@ def stack_on_anvil(masses, speed: float, e: float, lengths=None, gap: float = 1e
                      [e] * (n - 1), anvil=e, anvil_gap=gap)
 
 
-def first_closing_speeds(masses, speed: float, e: float) -> list[float]:
-    """Closing speed of each neighbour pair at its first collision in a rigid launched chain."""
+def first_closing_speeds(masses, speed: float, e: float, architecture: str = "launched-chain") -> list[float]:
+    """Closing speed of each neighbour pair at its first collision in a rigid launched chain (or a stack
+    falling on an anvil of the same restitution)."""
+    chain = launched_chain if architecture == "launched-chain" else stack_on_anvil
     first: dict[int, float] = {}
-    for c in launched_chain(masses, speed, e).collisions:
+    for c in chain(masses, speed, e).collisions:
         if c.left >= 0:
-            first.setdefault(c.left, c.before[0] - c.before[1])
+            first.setdefault(c.left, abs(c.before[0] - c.before[1]))
     return [first[k] for k in range(len(masses) - 1)]
 
 

@@ -20,7 +20,7 @@ from dataclasses import asdict, dataclass, field
 from ..amplifier import rigid
 from ..amplifier.chain import run_chain_scene
 from ..amplifier.gain import cylinder_size, design
-from ..amplifier.interfaces import Pad, pad_for_force, reduced_mass
+from ..amplifier.interfaces import pad_for_force, reduced_mass
 from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
 from .spec import MachineSpec
@@ -99,22 +99,16 @@ def load_section(body: dict) -> float:
 def _pads(masses, bodies, launch: float, allowable: float, architecture: str) -> list:
     """The stiffest pad on each struck face that holds it at the ``allowable`` stress (rigid closing
     speeds at the pads' own restitution)."""
-    e_pad = rigid.pad_restitution(PAD_DAMPING)
-    if architecture == "launched-chain":
-        dvs = rigid.first_closing_speeds(masses, launch, e_pad)
-    else:       # the stack: each pair first meets at the closing speed the anvil's rebound starts
-        first: dict[int, float] = {}
-        for c in rigid.stack_on_anvil(masses, launch, e_pad).collisions:
-            if c.left >= 0:
-                first.setdefault(c.left, abs(c.before[0] - c.before[1]))
-        dvs = [first[k] for k in range(len(masses) - 1)]
+    dvs = rigid.first_closing_speeds(masses, launch, rigid.pad_restitution(PAD_DAMPING), architecture)
     return [(dv, pad_for_force(dv, reduced_mass(masses[k], masses[k + 1]),
                                allowable * min(load_section(bodies[k]), load_section(bodies[k + 1]))))
             for k, dv in enumerate(dvs)]
 
 
-def _chain_raw(spec: MachineSpec, masses, bodies, fixture: Fixture, pads, gaps: list[float]) -> dict:
-    """The padded chain as a chain scene (``amplifier.chain``), fidelity 1d."""
+def _chain_raw(spec: MachineSpec, bodies, fixture: Fixture, stiffness: list[float], thickness: list[float],
+               gaps: list[float]) -> dict:
+    """The padded chain as a chain scene (``amplifier.chain``), fidelity 1d: its pads' stiffness and
+    thickness and the gaps before them, one per interface."""
     rho = property_si(spec.material, "density", "density")
     steel = fixture.housing_steel_mass / rho
     scene_bodies = []
@@ -128,8 +122,7 @@ def _chain_raw(spec: MachineSpec, masses, bodies, fixture: Fixture, pads, gaps: 
     return {"chain": {"name": "amplifier", "architecture": spec.architecture, "launch_speed": spec.launch_speed,
                       "fidelity": "1d", "gap": gaps if spec.architecture == "launched-chain" else gaps[0],
                       "restitution": 0.9, "damping": STRUCTURAL_DAMPING,
-                      "pad_stiffness": [p.stiffness for _, p in pads],
-                      "pad_thickness": [PAD_SPACE * p.travel for _, p in pads], "pad_damping": PAD_DAMPING},
+                      "pad_stiffness": stiffness, "pad_thickness": thickness, "pad_damping": PAD_DAMPING},
             # the striker's oil rides in its bore: its mass smeared into the housing's steel
             "materials": {"steel": {"library": spec.material},
                           "housing": {"library": spec.material, "density": fixture.striker_mass / steel}},
@@ -138,9 +131,8 @@ def _chain_raw(spec: MachineSpec, masses, bodies, fixture: Fixture, pads, gaps: 
 
 def chain_scene(spec: MachineSpec, amp: Amplifier, fixture: Fixture) -> dict:
     """The designed chain as a chain scene (``amplifier.chain``, fidelity 1d), its pads and gaps as designed."""
-    pads = [(st.closing_speed, Pad(st.pad_stiffness, st.pad_travel, st.pad_energy, st.contact_duration))
-            for st in amp.stages]
-    return _chain_raw(spec, amp.masses, amp.bodies, fixture, pads, amp.gaps)
+    return _chain_raw(spec, amp.bodies, fixture, [st.pad_stiffness for st in amp.stages],
+                      [st.pad_thickness for st in amp.stages], amp.gaps)
 
 
 def _run(spec, masses, bodies, fixture, out_dir, label):
@@ -155,8 +147,9 @@ def _run(spec, masses, bodies, fixture, out_dir, label):
     else:
         gaps = [MIN_GAP] * len(pads)
     where = os.path.join(out_dir, label)
-    result = run_chain_scene(_chain_raw(spec, masses, bodies, fixture, pads, gaps), where, "1d", progress=False,
-                             echo=lambda *a: None)
+    raw = _chain_raw(spec, bodies, fixture, [p.stiffness for _, p in pads], [PAD_SPACE * p.travel for _, p in pads],
+                     gaps)
+    result = run_chain_scene(raw, where, "1d", progress=False, echo=lambda *a: None)
     return pads, gaps, result, where
 
 

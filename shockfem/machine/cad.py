@@ -30,7 +30,7 @@ from ..launcher.vessel import MATERIALS as VESSEL_MATERIALS
 from ..parts.catalog import PARTS, solid_ogive
 from ..programmer.dashpot_design import OIL
 from ..scene.library import property_si
-from .layout import rail_section, shoe_length
+from .layout import rail_geometry, shoe_length
 from .spec import REFERENCE_ARTICLE
 
 
@@ -88,17 +88,17 @@ def housing_solid(item, floor: float) -> list[int]:
     return [t for d, t in fused if d == 3]
 
 
-def solids(machine) -> list[tuple[str, int, float]]:
+def solids(machine) -> list[tuple[str, int, float, str]]:
     """Build every component in the current gmsh model: (name, volume tag, density [kg/m^3] or 0 where
-    the design gives it no mass)."""
+    the design gives it no mass, the layout's component it belongs to)."""
     lay, fixture, launcher = machine.layout, machine.fixture, machine.launcher
     rho = property_si(machine.spec.material, "density", "density")
-    out: list[tuple[str, int, float]] = []
-
-    def add(name, tags, density):
-        for k, t in enumerate(tags):
-            out.append((name if len(tags) == 1 else f"{name}_{k + 1}", t, density))
+    out: list[tuple[str, int, float, str]] = []
     for it in lay.items:
+        def add(name, tags, density):
+            for k, t in enumerate(tags):
+                out.append((name if len(tags) == 1 else f"{name}_{k + 1}", t, density, it.name))
+
         if it.kind == "tank":
             add(it.name, tank_solid(it, launcher.sizing), _density(launcher.sizing["tank"]["material"]))
         elif it.kind == "barrel":
@@ -120,13 +120,11 @@ def solids(machine) -> list[tuple[str, int, float]]:
             add(it.name, _tube(it.x0, it.length, it.diameter / 2, it.inner / 2) if it.inner
                 else [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)
         elif it.kind == "rail":
-            body = it.diameter
-            h = rail_section(body)
-            y = -body / 2 - h / 2 - h
-            for side, x in (("left", -0.35 * body - h / 2), ("right", 0.35 * body - h / 2)):
+            h, xs, y = rail_geometry(it.diameter)
+            for side, x in zip(("left", "right"), xs):
                 add(f"{it.name}_{side}", [_box(x, y, it.x0, h, h, it.length)], 0.0)
                 add(f"shoe_{it.name.removeprefix('rails_')}_{side}",
-                    [_box(x - h / 2, y + h, it.x0, 2 * h, h / 2, shoe_length(body, it.length))], 0.0)
+                    [_box(x - h / 2, y + h, it.x0, 2 * h, h / 2, shoe_length(it.diameter, it.length))], 0.0)
         elif it.kind == "frame":
             a = math.sqrt(lay.frame_section)
             W = lay.overall_width
@@ -141,16 +139,16 @@ def _density(vessel_material: str) -> float:
 
 
 def write_step(machine, path: str, name: str) -> list[dict]:
-    """Build the machine and write it as a STEP assembly of named solids; returns each solid's name,
-    volume [m^3], density and mass [kg] (0 where the design gives none)."""
+    """Build the machine and write it as a STEP assembly of named solids; returns each solid's name, the
+    component it belongs to, volume [m^3], density and mass [kg] (0 where the design gives none)."""
     with empty_gmsh():
         gmsh.model.add(name)
         parts = solids(machine)
         rows = []
-        for part_name, tag, density in parts:
+        for solid, tag, density, part in parts:
             volume = gmsh.model.occ.getMass(3, tag)
-            rows.append({"name": part_name, "volume": volume, "density": density, "mass": density * volume})
-        order = {tag: part_name for part_name, tag, _ in parts}
+            rows.append({"name": solid, "part": part, "volume": volume, "density": density, "mass": density * volume})
+        order = {tag: solid for solid, tag, _, _ in parts}
         written = [order[t] for _, t in gmsh.model.getEntities(3)]
         with _quiet_stdout():           # OpenCASCADE's STEP writer prints its statistics on fd 1
             gmsh.write(path)

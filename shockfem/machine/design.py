@@ -88,7 +88,7 @@ def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, 
     S = Y / spec.safety_factor
     layout = place(launcher, amp, fixture, rho, S, spec.catch, spec.material, final_speeds(spec, amp))
     loads = operating_loads(spec, fixture, amp, launcher, layout, S)
-    totals = _totals(spec, fixture, amp, launcher, layout)
+    totals = _totals(fixture, amp, launcher, layout)
     binding, problems = _binding(spec, fixture, amp, launcher, layout, loads)
     return Machine(spec, fixture, amp, launcher, layout, loads, totals, binding, models(spec),
                    time.perf_counter() - t0, not problems, problems)
@@ -131,11 +131,9 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
     out.append(Load("article base", f"{f.peak / G0:,.0f} g", f.article_mass * f.peak / (math.pi * f.article_diameter ** 2 / 4),
                     a_Y / spec.safety_factor, "its mass times the pulse's peak over its base (the piston's face); "
                                               "4340's allowable"))
-    rho = property_si(spec.material, "density", "density")
     for st in layout.stops:
         out.append(Load(f"stop of {st.body}", f"{st.mass:.4g} kg at {st.speed:.1f} m/s: {st.force / 1e6:.3g} MN over "
-                                             f"{st.stroke:.3g} m",
-                        rho * _length(amp, fixture, st.body) * st.deceleration, S,
+                                             f"{st.stroke:.3g} m", st.stress, S,
                         f"rho L a in the stopped body; deceleration: {st.limit}", sized="inertia" in st.limit))
     # the guides: each moving body's weight on its sliding shoes, as bearing pressure on the rails
     for it in layout.items:
@@ -153,14 +151,7 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
     return out
 
 
-def _length(amp: Amplifier, fixture: Fixture, body: str) -> float:
-    for b in amp.bodies:
-        if b["name"] == body:
-            return b["length"]
-    return fixture.article_length
-
-
-def _totals(spec, fixture, amp, launcher, layout) -> dict:
+def _totals(fixture, amp, launcher, layout) -> dict:
     items = layout.items
     mass = sum(i.mass for i in items)
     g = launcher.design.gun

@@ -17,7 +17,7 @@ import numpy as np
 from ..output.figures import partial_path, pyplot
 from ..parts.catalog import PARTS, solid_ogive
 from ..units import G0, LB
-from .layout import rail_section
+from .layout import rail_geometry
 from .spec import REFERENCE_ARTICLE
 
 SHEET = (16.54, 11.69)               # A3 landscape [in]
@@ -25,12 +25,6 @@ COLOURS = {"tank": "#9db4c0", "barrel": "#9db4c0", "mass": "#c2c5cc", "pad": "#e
            "oil": "#d9c27a", "piston": "#8fa7c7", "article": "#c0504d", "stop": "#7f7f7f", "rail": "#5b6770",
            "frame": "#3d4a52"}
 AXIAL_KINDS = ("tank", "barrel", "mass", "pad", "housing", "oil", "piston", "article", "stop")
-
-
-def _rail_geometry(it):
-    """(section, x offsets) of a body's rails, as ``cad.solids`` draws them."""
-    h = rail_section(it.diameter)
-    return h, (-0.35 * it.diameter - h / 2, 0.35 * it.diameter - h / 2), -it.diameter / 2 - 2 * h
 
 
 def _ogive_outline(it):
@@ -69,7 +63,7 @@ def _outline(ax, it, s, lateral=False):
         ax.fill(np.concatenate([z, z[::-1]]) * s, np.concatenate([r, -r[::-1]]) * s, color=c, lw=0.4, ec="k")
         return
     if it.kind == "rail":
-        h, xs, y = _rail_geometry(it)
+        h, xs, y = rail_geometry(it.diameter)
         for x in xs:
             lo = x if lateral else y
             ax.add_patch(_rect(it.x0 * s, lo * s, it.length * s, h * s, c))
@@ -178,7 +172,7 @@ def _end_view(ax, machine):
         ax.add_patch(Circle((0, 0), it.diameter / 2, fc=COLOURS.get(it.kind, "0.7"), ec="k", lw=0.3))
     for it in lay.items:
         if it.kind == "rail":
-            h, xs, y = _rail_geometry(it)
+            h, xs, y = rail_geometry(it.diameter)
             for x in xs:
                 ax.add_patch(_rect(x, y, h, h, COLOURS["rail"]))
     W, a = lay.overall_width, math.sqrt(lay.frame_section)

@@ -22,9 +22,8 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
-from ..programmer.dashpot_design import DASHPOT, OIL, design_dashpot
+from ..programmer.dashpot_design import DASHPOT, design_dashpot
 from ..scene.library import initial_yield_stress, property_si
-from ..units import G0
 from .spec import REFERENCE_ARTICLE, MachineSpec
 
 # the free length left in the bore above the article's nose [m]
@@ -146,11 +145,3 @@ def design_fixture(spec: MachineSpec, echo=None) -> Fixture:
         float(np.trapz(run.payload_speed, run.t)),
         throttled / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, redesigns, d)
 
-
-def describe(f: Fixture) -> str:
-    return (f"fluid dashpot (the fixture study's choice, `programmer.dashpot_design`, iterated on its lumped model): "
-            f"bore {2 * f.bore_radius * 1e3:.0f} mm, piston {f.piston_mass:.2f} kg, payload {f.payload_mass:.2f} kg, "
-            f"striker {f.striker_mass:.1f} kg ({f.striker_ratio:.2f} x payload) at {f.striker_speed:.1f} m/s, "
-            f"{f.liquid_mass:.1f} kg of oil at up to {f.peak_pressure / 1e6:.0f} MPa; lumped pulse {f.peak / G0:,.0f} g, "
-            f"{f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band {'pass' if f.band_passed else 'FAIL'}"
-            f"; oil density {OIL['density']:g} kg/m^3")

@@ -43,6 +43,7 @@ class Stop:
     stroke: float              # [m]
     force: float               # [N]
     energy: float              # [J]
+    stress: float              # rho L a: the stopped body's inertia at the stop [Pa]
     limit: str                 # what set the deceleration
 
 
@@ -80,6 +81,13 @@ def rail_section(diameter: float) -> float:
     return max(RAIL_SIZE[0] * diameter, RAIL_SIZE[1])
 
 
+def rail_geometry(diameter: float) -> tuple[float, tuple[float, float], float]:
+    """A body's two rails (drawn, not designed): their square section's side h, their left faces' x and
+    their bottom's y [m] (the body's axis at x = y = 0), a shoe h / 2 thick between rail and body."""
+    h = rail_section(diameter)
+    return h, (-0.35 * diameter - h / 2, 0.35 * diameter - h / 2), -diameter / 2 - 1.5 * h
+
+
 def shoe_length(diameter: float, length: float) -> float:
     """A shoe's length along its rail [m]: a quarter of the body's diameter, at least two rail sections,
     at most the body's length."""
@@ -100,7 +108,8 @@ def stop_for(body: str, mass: float, speed: float, length: float, rho: float, al
         a = min(a_own, a_inertia)
         why = (f"over its own length ({a / G0:,.0f} g)" if a_own <= a_inertia
                else f"its inertia: rho L a = allowable ({a / G0:,.0f} g)")
-    return Stop(body, mass, speed, a, speed * speed / (2 * a), mass * a, 0.5 * mass * speed * speed, why)
+    return Stop(body, mass, speed, a, speed * speed / (2 * a), mass * a, 0.5 * mass * speed * speed,
+                rho * length * a, why)
 
 
 def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, material: str,
@@ -126,7 +135,7 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     items.append(Item("barrel", "barrel", x_breech, L_barrel, D_barrel, g.bore, barrel_mass, size["barrel"]["material"],
                       f"{g.length:.3g} m of travel and the {slug['length']:.3g} m slug"))
     # the chain as it stands when the first mass leaves the muzzle: the others at rest ahead of it
-    fronts, rears = [], []
+    fronts = []
     for k, (b, m) in enumerate(zip(bodies, amp.masses)):
         if k == 0:
             rear = x_breech
@@ -145,7 +154,6 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
                               fixture.liquid_mass, "oil", f"{OIL['density']:g} kg/m^3, carried by the striker"))
         else:
             items.append(Item(b["name"], "mass", rear, b["length"], b["diameter"], 0.0, m, material))
-        rears.append(rear)
         fronts.append(rear + b["length"])
     mouth = fronts[-1]
     piston_x = mouth + GAP_TO_PAYLOAD
@@ -156,40 +164,36 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
                       0.0, fixture.article_mass, "steel_4340", "the unit under test (the reference ogive, nose "
                                                                "forward)"))
     payload_front = piston_x + t_piston + fixture.article_length
-    # stops: each amplifier mass's ring just past the next body, after the previous ring's stroke
-    stops, ring_end = [], 0.0
-    names = [b["name"] for b in bodies]
-    for k in range(len(bodies) - 1):
-        b = bodies[k]
-        s = stop_for(names[k], amp.masses[k], final_speeds[k], b["length"], rho, allowable)
-        x_ring = max(fronts[k + 1] + STOP_MARGIN, ring_end)
-        items.append(Item(f"stop_{names[k]}", "stop", x_ring, s.stroke, 1.3 * b["diameter"],
-                          bodies[k + 1]["diameter"] + RING_CLEARANCE, 0.0, material,
+    stops: list[Stop] = []
+    stop_end: dict[str, float] = {}         # body -> where its stop's stroke ends
+
+    def add_stop(s: Stop, name: str, x: float, outer: float, inner: float) -> float:
+        """A stop on the axis from ``x`` over its stroke; returns where it ends."""
+        items.append(Item(name, "stop", x, s.stroke, outer, inner, 0.0, material,
                           f"{s.force / 1e6:.3g} MN over {s.stroke:.3g} m"))
-        ring_end = x_ring + s.stroke
         stops.append(s)
+        stop_end[s.body] = x + s.stroke
+        return stop_end[s.body]
+    # each amplifier mass's ring just past the next body, after the previous ring's stroke
+    ring_end = 0.0
+    for k, b in enumerate(bodies[:-1]):
+        s = stop_for(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable)
+        ring_end = add_stop(s, f"stop_{b['name']}", max(fronts[k + 1] + STOP_MARGIN, ring_end), 1.3 * b["diameter"],
+                            bodies[k + 1]["diameter"] + RING_CLEARANCE)
     striker = bodies[-1]
     s = stop_for("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable)
-    x_ring = max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end)
-    items.append(Item("stop_striker", "stop", x_ring, s.stroke, 1.3 * striker["diameter"],
-                      2 * fixture.bore_radius + RING_CLEARANCE, 0.0, material, f"{s.force / 1e6:.3g} MN over "
-                                                                                f"{s.stroke:.3g} m"))
-    stops.append(s)
-    ring_end = x_ring + s.stroke
+    ring_end = add_stop(s, "stop_striker", max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end),
+                        1.3 * striker["diameter"], 2 * fixture.bore_radius + RING_CLEARANCE)
     c = stop_for("payload", fixture.payload_mass, fixture.after_speed_payload, fixture.article_length, rho, allowable,
                  catch, f"the catcher's deceleration ({catch / G0:,.0f} g)")
-    x_catch = max(payload_front + fixture.payload_travel + STOP_MARGIN, ring_end)
-    items.append(Item("catcher", "stop", x_catch, c.stroke, 1.3 * striker["diameter"], 0.0, 0.0, material,
-                      f"{c.force / 1e6:.3g} MN over {c.stroke:.3g} m"))
-    stops.append(c)
+    add_stop(c, "catcher", max(payload_front + fixture.payload_travel + STOP_MARGIN, ring_end),
+             1.3 * striker["diameter"], 0.0)
     length = max(i.x0 + i.length for i in items)
     width = max(i.diameter for i in items)
-    # guides: rails under every moving body from where it rests to its stop's end
-    moving = [i for i in items if i.kind in ("mass", "housing", "piston")]
-    stop_end = {st.body: it.x0 + it.length for st, it in zip(stops, [i for i in items if i.kind == "stop"])}
-    for it in moving:
-        end = stop_end.get(it.name, stop_end["payload"]) if it.kind != "piston" else stop_end["payload"]
-        items.append(Item(f"rails_{'payload' if it.kind == 'piston' else it.name}", "rail", it.x0, end - it.x0, it.diameter, 0.0, 0.0, material,
+    # guides: rails under every moving body from where it rests to its stop's end (the piston: the payload's)
+    for it in [i for i in items if i.kind in ("mass", "housing", "piston")]:
+        body = "payload" if it.kind == "piston" else it.name
+        items.append(Item(f"rails_{body}", "rail", it.x0, stop_end[body] - it.x0, it.diameter, 0.0, 0.0, material,
                           f"two rails, sliding shoes under {it.name}"))
     F = max(st.force for st in stops)
     section = F / allowable / 2

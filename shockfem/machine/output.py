@@ -113,8 +113,7 @@ def check_step(m: Machine, written: list[dict], read_back: list[dict]) -> dict:
     volume_error = max(abs(back.get(r["name"], 0.0) / r["volume"] - 1) for r in written)
     by_part: dict[str, float] = {}
     for r in written:
-        part = r["name"] if r["name"] in {i.name for i in m.layout.items} else r["name"].rsplit("_", 1)[0]
-        by_part[part] = by_part.get(part, 0.0) + r["mass"]
+        by_part[r["part"]] = by_part.get(r["part"], 0.0) + r["mass"]
     designed = {i.name: i.mass for i in m.layout.items if i.mass}
     mass_error = {k: by_part.get(k, 0.0) / v - 1 for k, v in designed.items()}
     return {"solids": written, "names_read_back": sorted(back) == sorted(r["name"] for r in written),
