@@ -370,8 +370,7 @@ def _amplifier(args) -> int:
     from .amplifier import rigid
     from .amplifier.gain import cylinder_size, design
     from .scene.checker import Checker
-    from .scene.library import LIBRARY
-    from .units import to_si
+    from .scene.library import LIBRARY, property_si
     ck = Checker()      # the options, checked like a scene's fields (every problem, exit 2)
     options = vars(args)
     values = {name: ck.quantity({f"--{name}": options[name]}, f"--{name}", "", dimension, positive=True)
@@ -391,7 +390,7 @@ def _amplifier(args) -> int:
     if not d.feasible:
         print(f"not possible: {d.reason}")
         return EXIT_BAD_INPUT
-    rho = to_si(LIBRARY[args.material]["density"], "density")
+    rho = property_si(args.material, "density", "density")
     d.sizes = [cylinder_size(m, rho, args.aspect) for m in d.masses]
     run = (rigid.launched_chain(d.masses, values["launch"], args.restitution) if args.architecture == "launched-chain"
            else rigid.stack_on_anvil(d.masses, values["launch"], args.restitution))

@@ -23,8 +23,7 @@ from ..amplifier.interfaces import reduced_mass
 from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
-from ..scene.library import LIBRARY
-from ..units import to_si
+from ..scene.library import property_si
 from .concepts import least_throttling_pressure, metering_pin_area
 from .lumped_dashpot import LumpedDashpot, simulate
 from .requirement import requirement
@@ -84,7 +83,7 @@ def striker_speed(payload: float, striker: float, dv: float, e: float = 0.0) -> 
 
 
 def carrier_density() -> float:
-    return to_si(LIBRARY[CARRIER_STEEL]["density"], "density")
+    return property_si(CARRIER_STEEL, "density", "density")
 
 
 def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, handles=START,

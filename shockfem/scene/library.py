@@ -20,6 +20,8 @@ Values are typical, for design studies; use certified data for a real part.  Sou
 """
 from __future__ import annotations
 
+from ..units import to_si
+
 
 def _foam(phi: float, rho_solid: float, E_solid: float, yield_solid: float, hardening: float) -> dict:
     """A crushable foam of relative density ``phi`` scaled from its solid [GA]: plateau from volumetric
@@ -113,12 +115,10 @@ LIBRARY: dict[str, dict] = {
 
 def property_si(name: str, key: str, dimension: str) -> float:
     """A library material's property in SI (``key`` e.g. "density", dimension e.g. "density")."""
-    from ..units import to_si
     return to_si(LIBRARY[name][key], dimension)
 
 
 def initial_yield_stress(name: str) -> float:
     """The initial yield stress of a library metal [Pa]: its hardening curve's first point, or its yield."""
-    from ..units import to_si
     m = LIBRARY[name]
     return to_si(m["hardening_curve"][0][1] if "hardening_curve" in m else m["yield_stress"], "pressure")

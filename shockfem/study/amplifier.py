@@ -37,7 +37,7 @@ from ..amplifier.interfaces import (flat_face_stress, hertz_yield_speed, pad_for
                                     reduced_mass)
 from ..errors import UnstableRun
 from ..metrics.stages import stage_table
-from ..scene.library import LIBRARY
+from ..scene.library import LIBRARY, property_si
 from ..units import FT, LB, to_si
 from .report import Report
 
@@ -87,7 +87,7 @@ def sizing_claims(rep: Report):
     rep.text("A 12 lb test article at 1600 ft/s from a first mass at 300-350 ft/s, five masses, e = 0.9: the paper "
              "claims under 800 lb of intermediate masses (under 4 cubic feet of steel). Geometric mass ratios "
              "(optimal for a given mass ratio), closed forms of `shockfem/amplifier/gain.py`.")
-    rho = to_si(LIBRARY[MATERIAL]["density"], "density")
+    rho = property_si(MATERIAL, "density", "density")
     rows = []
     for arch in ("launched-chain", "stack-on-anvil"):
         for e in (0.9, 0.8, 0.75):
@@ -203,7 +203,7 @@ def _sweep_reading(rep: Report, curves: dict) -> str:
 def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
     rep.heading("3. The five-mass design at each fidelity")
     cfg = SIZES[size]
-    rho = to_si(LIBRARY[MATERIAL]["density"], "density")
+    rho = property_si(MATERIAL, "density", "density")
     sizes = [cylinder_size(m, rho, 1.0) for m in d.masses]
     rep.text(f"Launched chain, 12 lb at 1600 ft/s from 325 ft/s, e = 0.9 assumed, {MATERIAL} cylinders with "
              "L = D. The rigid model uses the assumed restitution; the others find their own.")
@@ -293,7 +293,7 @@ def paper_rods(rep: Report, size: str):
     diameters = [d0 * shrink ** k for k in range(n)]
     lengths = [2 * d for d in diameters]
     names = [f"rod{k + 1}" for k in range(n)]
-    K = to_si(LIBRARY[MATERIAL]["youngs_modulus"], "pressure") / (3 * (1 - 2 * 0.3))
+    K = property_si(MATERIAL, "youngs_modulus", "pressure") / (3 * (1 - 2 * 0.3))
     h = lengths[-1] / cfg["rod_elements"]
     # LS-DYNA's default penalty for a face of area A on elements of size h: SLSFAC K A / h,
     # SLSFAC = 0.1; the smaller face of each pair
@@ -339,7 +339,7 @@ def paper_rods(rep: Report, size: str):
             last = r.history[f"{names[-1]}.v_z"]
             rows.append([speed, label, ", ".join(f"{e:.2f}" for e in es), float(last.max()) / speed,
                          float(last[-1]) / speed, rigid_gain,
-                         max(r.interface_stress.values()) / to_si(LIBRARY[MATERIAL]["yield_stress"], "pressure"),
+                         max(r.interface_stress.values()) / property_si(MATERIAL, "yield_stress", "pressure"),
                          r.energy_balance_error, r.wall_time_s])
     rep.table("paper_rods", ["launch [m/s]", "contacts", "restitution per stage", "gain (peak)", "gain (end)",
                "rigid, e = 0.5", "interface stress / yield", "energy balance", "wall [s]"], rows,
@@ -374,7 +374,7 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
     plt = pyplot()
     rep.heading("5. Cylinders against thick plates")
     cfg = SIZES[size]
-    rho = to_si(LIBRARY[MATERIAL]["density"], "density")
+    rho = property_si(MATERIAL, "density", "density")
     rep.text("The five masses of section 3 at several length / diameter ratios, from long cylinders to thick "
              "plates, and all of one diameter (a stack that fits one bore: long rods above a thick plate); "
              "launched chain, axisymmetric, 2% damping, 1 mm gaps. Occupied volume: the envelope of the "

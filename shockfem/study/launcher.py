@@ -27,8 +27,8 @@ from ..amplifier.gain import cylinder_size, design
 from ..launcher.design import Limits, Sizing, around, length_against_bore, lightest_launcher, trade
 from ..launcher.gun import Gun, barrel_length_for, fire, white_paper_gun
 from ..launcher.output import write_design
-from ..scene.library import LIBRARY
-from ..units import FT, G0, IN, LB, PSI, to_si
+from ..scene.library import property_si
+from ..units import FT, G0, IN, LB, PSI
 from .report import Report
 
 ARTICLE, TARGET, LAUNCH, E, N = 12 * LB, 1600 * FT, 325 * FT, 0.9, 5
@@ -201,7 +201,7 @@ def payload_machines(rep: Report, cfg):
              "target payload of at least 50 lbs without going outside of customary equipment dimensions and "
              "industry standard pressures'.")
     rows, extra = [], []
-    rho = to_si(LIBRARY[MATERIAL]["density"], "density")
+    rho = property_si(MATERIAL, "density", "density")
     for p in cfg["payloads"]:
         for arch in cfg["architectures"]:
             m, v, amp = launched(arch, p * LB)
@@ -243,7 +243,7 @@ def coupled(rep: Report, designs: dict, cfg, out_dir: str):
     rep.heading("5. Gun and chain in one run")
     g = designs["launched-chain"].gun
     _, _, amp = launched("launched-chain")
-    rho = to_si(LIBRARY[MATERIAL]["density"], "density")
+    rho = property_si(MATERIAL, "density", "density")
     bodies = []
     for k, m in enumerate(amp.masses):
         s = cylinder_size(m, rho, 1.0)

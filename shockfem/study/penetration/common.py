@@ -12,7 +12,7 @@ from scipy.optimize import brentq
 
 from ...parts.catalog import PARTS, ogive
 from ...penetration.forrestal import depth_of, speed_at_depth
-from ...scene.library import LIBRARY
+from ...scene.library import LIBRARY, property_si
 from ...scene.orientation import axis_angle
 from ...target.concrete import nose_factor, strength_factor
 from ...units import FT, LB, to_si
@@ -137,8 +137,8 @@ def cased_article() -> dict:
     the two weigh the solid article's mass."""
     R = ARTICLE["radius"]
     _, nose = ogive(article_dims())
-    steel = to_si(LIBRARY[ARTICLE["library"]]["density"], "density")
-    fill = to_si(LIBRARY[CASE["payload"]]["density"], "density")
+    steel = property_si(ARTICLE["library"], "density", "density")
+    fill = property_si(CASE["payload"], "density", "density")
     rc, z0 = R - CASE["wall"], nose + CASE["cavity_start"]
 
     def dims(L):

@@ -14,7 +14,8 @@ from ...units import FT, to_si
 from ..cases import run_case
 from ..doe import effect_columns, effects, fold_over, fractional_factorial, lenth, physical_coefficients, significant
 from ...parts.catalog import ogive
-from ..fixture.common import ARTICLE, article_dims, article_length, yield_stress
+from ...scene.library import initial_yield_stress
+from ..fixture.common import ARTICLE, article_dims, article_length
 from ..report import Report
 from .common import KSI, MATERIAL, STATIONS, Context, event_end, shot_scene
 
@@ -60,7 +61,7 @@ def responses(fe, length: float) -> dict:
             "deceleration": s["shock"]["channels"]["projectile"]["pulse"]["peak_g"],
             "depth": s["penetration"]["max_depth"], "torque": torque,
             "shear": 2 * torque / (math.pi * ARTICLE["radius"] ** 3) / 1e6, "tunnel_push": float(push.max()) / 1e3,
-            "von_mises": s["bodies"]["projectile"]["max_von_mises"] / yield_stress(ARTICLE["library"]),
+            "von_mises": s["bodies"]["projectile"]["max_von_mises"] / initial_yield_stress(ARTICLE["library"]),
             "curves": (t, deflection, bending)}
 
 
@@ -144,7 +145,7 @@ def _analysis(rep: Report, coded: np.ndarray, runs: list[dict], centres: list[di
     shear = max(r["shear"] for r, x in zip(runs, coded) if x[2] > 0)
     rolled = max(r["shear"] for r, x in zip(runs, coded) if x[2] < 0)       # unspun: what the yaw sets rolling
     bending = max(r["bending"] for r in runs)
-    yield_mpa = yield_stress(ARTICLE["library"]) / 1e6
+    yield_mpa = initial_yield_stress(ARTICLE["library"]) / 1e6
     rep.text(
         "Design: 2^(4-1) with D = ABC (I = ABCD, resolution IV): main effects are clear of two-factor interactions "
         "but the interactions are aliased in pairs, AB = CD, AC = BD, AD = BC; so the yaw x spin column (AC) is the "

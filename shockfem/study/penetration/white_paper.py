@@ -10,10 +10,10 @@ from ...metrics.flexure import axial_inertia_relief
 from ...output.figures import pyplot
 from ...parts.catalog import ogive
 from ...penetration.forrestal import depth_of
-from ...scene.library import LIBRARY
-from ...units import G0, to_si
+from ...scene.library import initial_yield_stress, property_si
+from ...units import G0
 from ..cases import run_case
-from ..fixture.common import ARTICLE, DURATION, PEAK, article_dims, yield_stress
+from ..fixture.common import ARTICLE, DURATION, PEAK, article_dims
 from ..report import Report
 from .common import (CASE, DENSITY, SPEED, TARGETS, Context, cased_article, cased_shot_scene, closed_form,
                      event_end, shot_scene)
@@ -38,7 +38,7 @@ def white_paper_shot(rep: Report, ctx: Context):
                      pulse["peak_g"],
                      cf["duration"] * 1e3, pulse["duration"] * 1e3, abs(pulse["velocity_change"]), pen["nose_factor"],
                      pen["max_axial_force"] / 1e6, s["bodies"]["projectile"]["max_von_mises"] / 1e6,
-                     s["bodies"]["projectile"]["max_von_mises"] / yield_stress(ARTICLE["library"]),
+                     s["bodies"]["projectile"]["max_von_mises"] / initial_yield_stress(ARTICLE["library"]),
                      s["energy"]["balance_error"], wall])
     rep.table("shot", ["target", "f'c [MPa]", "status", "depth, closed form [m]",
                        "depth, closed form with the mesh's N [m]", "depth, FE [m]",
@@ -83,7 +83,7 @@ def white_paper_shot(rep: Report, ctx: Context):
 def _along_body(rep: Report, ctx: Context):
     """The axial stress along the solid article (``outputs.sections``) against its inertia relief under
     the peak force."""
-    steel = to_si(LIBRARY[ARTICLE["library"]]["density"], "density")
+    steel = property_si(ARTICLE["library"], "density", "density")
     rows, readings = [], {}
     first = next(iter(ctx.shots.values()))[0].summary["sections"]["projectile"]
     x = np.array(first["position"])
@@ -142,7 +142,7 @@ def _cased_shot(rep: Report, ctx: Context):
     ch = s["shock"]["channels"]
     solid = ctx.shots.get("5 ksi")
     solid_peak = solid[0].summary["shock"]["channels"]["projectile"]["pulse"]["peak_g"] if solid else float("nan")
-    case_yield, payload_yield = yield_stress(ARTICLE["library"]), yield_stress(CASE["payload"])
+    case_yield, payload_yield = initial_yield_stress(ARTICLE["library"]), initial_yield_stress(CASE["payload"])
     rows = [["case", c["case_mass"], ch["projectile"]["pulse"]["peak_g"], ch["projectile"]["pulse"]["duration"] * 1e3,
              abs(ch["projectile"]["pulse"]["velocity_change"]), s["bodies"]["projectile"]["max_von_mises"] / case_yield],
             ["payload", c["payload_mass"], ch["payload"]["pulse"]["peak_g"], ch["payload"]["pulse"]["duration"] * 1e3,
