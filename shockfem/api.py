@@ -9,6 +9,7 @@
     run.history["bar.v_z"]             # numpy array, run.units["bar.v_z"] == "m/s"
     run.fields                         # results/bar_2ms/fields.xdmf, for ParaView or pyvista
     again = shockfem.load_run("results/bar_2ms")
+    shockfem.resume("results/bar_2ms")     # a run stopped by SIGTERM or a kill goes on from its checkpoint
 
 A scene is a TOML file or a dictionary of the same tables (units as strings, "5 m/s"); overrides
 are the command line's ``--set`` assignments.  ``run`` writes the same run directory as
@@ -75,6 +76,15 @@ def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields:
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
     run_scene(scene, out_dir, progress=progress, write_fields=fields, quiet=True, on_step=on_step)
+    return load_run(out_dir)
+
+
+def resume(out_dir: str, progress: bool = False, on_step=None) -> Run:
+    """Continue the stopped run in ``out_dir`` from its last checkpoint (``docs/outputs.md``) and return
+    its ``Run``: the same as a run that was never stopped.  Raises ``ModelError`` when there is nothing to
+    resume (a completed run, no checkpoint) or it cannot be (another number of MPI processes)."""
+    from .runner import resume_run
+    resume_run(out_dir, progress=progress, quiet=True, on_step=on_step)
     return load_run(out_dir)
 
 

@@ -34,8 +34,11 @@ def _parser() -> argparse.ArgumentParser:
         # every option's default shown in its help
         return sub.add_parser(name, help=help, description=help, formatter_class=_DefaultsShown)
 
-    r = command("run", "run a scene and write a run directory")
-    r.add_argument("scene", help="scene file (TOML)")
+    r = command("run", "run a scene and write a run directory, or resume a stopped run")
+    r.add_argument("scene", nargs="?", help="scene file (TOML)")
+    r.add_argument("--resume", metavar="RUN_DIR",
+                   help="continue the run in RUN_DIR from its last checkpoint (written every "
+                        "scene.checkpoint_interval and when SIGTERM or SIGINT stops a run), with as many processes")
     r.add_argument("--out", help="run directory (default: results/<scene name>)")
     r.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
                    help="override a scene field, e.g. bodies.striker.velocity='12 m/s'")
@@ -226,7 +229,11 @@ def _dispatch(args) -> int:
     if args.command == "check":
         print(f"{args.scene}: ok ({check_raw(_raw(args))})")
         return EXIT_OK
+    if args.command == "run" and args.resume:
+        return _resume(args)
     if args.command == "run":
+        if not args.scene:
+            raise ModelError("run: give a scene file, or --resume RUN_DIR")
         chain = _chain_raw(args)
         if chain is not None:
             from .amplifier.chain import resolve_chain, run_chain_scene
@@ -303,6 +310,24 @@ def _dispatch(args) -> int:
                 json.dump(results, fh, indent=2, default=float)
         return EXIT_OK
     raise AssertionError(args.command)
+
+
+def _resume(args) -> int:
+    """``shockfem run --resume DIR``: the run as it was started (a chain scene's run goes on to its report)."""
+    given = [name for name, used in (("a scene file", args.scene), ("--set", args.set), ("--fidelity", args.fidelity),
+                                     ("--no-fields", args.no_fields), ("--out", args.out)) if used]
+    if given:
+        raise ModelError(f"--resume continues the run as it was started: drop {', '.join(given)}")
+    from .output.checkpoint import latest
+    origin = latest(args.resume)["origin"] or {}
+    if "chain" in origin:
+        from .amplifier.chain import run_chain_scene
+        run_chain_scene(origin["chain"], args.resume, origin["fidelity"], progress=not args.no_progress,
+                        resume=True)
+    else:
+        from .runner import resume_run
+        resume_run(args.resume, progress=not args.no_progress)
+    return EXIT_OK
 
 
 def _launcher(args) -> int:

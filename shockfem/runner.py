@@ -21,10 +21,11 @@ from .geometry import build_mesh
 from .geometry.quality import check_mesh
 from .model import build_model, describe
 from .output.fields import FieldWriter, von_mises, write_final_shape
+from .output import checkpoint
 from .output.history import HistoryRecorder
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
-from .scene import Scene
+from .scene import Scene, to_plain
 from .materials.layout import S_EPS
 from .solver.explicit import ExplicitSolver
 
@@ -115,30 +116,70 @@ def damping_step_note(scene: Scene, qualities, dt: float) -> str | None:
 
 
 def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = True,
-              write_fields: bool = True, quiet: bool = False, on_step=None) -> RunResult:
+              write_fields: bool = True, quiet: bool = False, on_step=None, origin: dict | None = None) -> RunResult:
     """Run ``scene`` and write the run directory ``out_dir``; ``on_step(step)``, if given, is called
     after every step with the loop's read-only ``solver.explicit.Step`` (t, dt, step, energies).
+    ``origin``: how the run was started, kept with its checkpoints for ``--resume`` (a chain's table).
 
     Raises
     ------
     UnstableRun
         After writing everything produced so far and a summary with ``status = "unstable"``.
     RunInterrupted
-        On SIGINT or SIGTERM, at the next step, after finishing the outputs (``status = "interrupted"``).
+        On SIGINT or SIGTERM, at the next step, after finishing the outputs and writing a checkpoint
+        (``status = "interrupted"``).
     """
-    rd = RunDirectory(out_dir, comm)
+    return _run(scene, out_dir, comm, progress, write_fields, quiet, on_step, origin, None)
+
+
+def resume_run(out_dir: str, comm=MPI.COMM_WORLD, progress: bool = True, quiet: bool = False, on_step=None,
+               scene: Scene | None = None) -> RunResult:
+    """Continue the run in ``out_dir`` from its last checkpoint (``output/checkpoint.py``) to its end time,
+    in the same directory: the histories and frames after the checkpoint are written again, and match a
+    run that was never stopped.  ``scene``, if given, must be the one checkpointed (a chain resumed
+    builds its scene again).  Raises ``ModelError`` when there is nothing to resume or it cannot be (another
+    number of processes, another mesh); otherwise as ``run_scene``."""
+    info = checkpoint.latest(out_dir)
+    if scene is not None and to_plain(scene) != to_plain(info["scene"]):
+        raise ModelError(f"--resume {out_dir}: the scene differs from the one its checkpoint ran")
+    origin = info["origin"] or {}
+    return _run(info["scene"], out_dir, comm, progress, origin.get("write_fields", True), quiet, on_step, origin,
+                info)
+
+
+def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, quiet: bool, on_step,
+         origin: dict | None, resume: dict | None) -> RunResult:
+    """``run_scene`` and ``resume_run``: a new run, or (``resume``: what ``checkpoint.latest`` read) one
+    going on from its checkpoint."""
+    origin = {**(origin or {}), "write_fields": write_fields}
+    rd = RunDirectory(out_dir, comm, resume=resume is not None)
     say = (lambda msg: rd.log(msg, echo=not quiet))
-    rd.write_scene_and_provenance(scene)
+    state = None if resume is None else checkpoint.read_rank(out_dir, resume, comm)
+    if resume is None:
+        rd.write_scene_and_provenance(scene)
+    # where this run was resumed before (and, on the next checkpoint, now)
+    resumed = [] if state is None else state["loop"]["resumed"] + [
+        {"step": resume["step"], "time": resume["time"], "at": time.strftime("%Y-%m-%dT%H:%M:%S")}]
     rd.write_json("summary.json", {"status": "running", "diagnosis": None, "scene": scene.name,
-                                   "started": time.strftime("%Y-%m-%dT%H:%M:%S")})
+                                   "started": time.strftime("%Y-%m-%dT%H:%M:%S"), "resumed_from": resumed})
     say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
+    if resume is not None:
+        say(f"resuming from the checkpoint at t = {resume['time']:.6g} s (step {resume['step']}, written "
+            f"{resume['written']})")
     meshed = build_mesh(scene, comm, log=say)
     qualities = check_mesh(scene, meshed, log=say)
     model = build_model(scene, meshed)
     say("models that run:\n" + describe(model, scene))
     solver = ExplicitSolver(model)
-    for msg in solver.log_messages:
-        say(msg)
+    if state is None:
+        for msg in solver.log_messages:
+            say(msg)
+    else:
+        same = state["mesh"] == checkpoint.mesh_fingerprint(model.X0)
+        if not comm.allreduce(same, op=MPI.LAND):
+            raise ModelError(f"--resume {out_dir}: the mesh built again differs from the checkpointed one (a mesh "
+                             "file or the mesher changed since): start the run again")
+        checkpoint.restore(solver, state["solver"])
     say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
         f"(safety factor {scene.safety_factor})")
     _refuse_endless(scene, solver)
@@ -148,39 +189,61 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     history = HistoryRecorder(solver, rd.file("history.csv"), rd.file("history.h5"))
     for note in history.notes:
         say(note)
-    fields = FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields) if write_fields else None
-    history.record()
-    if fields:
-        fields.write(0.0)
-    next_field = scene.outputs.field_interval
-    next_hist = scene.outputs.history_interval
+    fields = (FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields,
+                          resume_after=state["fields_last"] if state else None) if write_fields else None)
+    if state is None:
+        history.record()
+        if fields:
+            fields.write(0.0)
+        loop = {"next_field": scene.outputs.field_interval, "next_history": scene.outputs.history_interval,
+                "next_checkpoint": scene.checkpoint_interval, "max_von_mises": np.zeros(len(scene.bodies)),
+                "plastic_before": 0.0, "wall": 0.0, "resumed": []}
+    else:
+        history.resume(comm.bcast(state["history"], root=0))
+        for sec, saved in zip(history.sections, state["sections"]):
+            checkpoint.restore(sec, saved)
+        loop = {**state["loop"], "resumed": resumed}
+    max_vm = loop["max_von_mises"]
     bar = _progress(scene.end_time, progress and comm.rank == 0 and not quiet)
+    if bar is not None:
+        bar.n = solver.t * 1e6
     status, diagnosis = "completed", None
-    max_vm = np.zeros(len(scene.bodies))
-    plastic_before = 0.0
+    checkpoint_time = 0.0
+
+    def save_checkpoint():
+        """The whole state at the step just finished (``output/checkpoint.py``).  Collective."""
+        seen = {id(model)}
+        kept = {"solver": checkpoint.capture(solver, seen),
+                "sections": [checkpoint.capture(sec, seen) for sec in history.sections],
+                "history": history.array() if comm.rank == 0 else None,
+                "fields_last": fields.last if fields else None,
+                "loop": {**loop, "wall": loop["wall"] + time.perf_counter() - wall0},
+                "mesh": checkpoint.mesh_fingerprint(model.X0)}
+        return checkpoint.write(out_dir, comm, solver.step, solver.t, kept, scene, origin)
+
     wall0 = time.perf_counter()
     # from here (meshing done: gmsh sets its own SIGINT handling while it works) a signal asks the loop to
     # stop between two steps
     stop = _StopOnSignal(comm).install()
     try:
         for s in solver.steps(scene.end_time):
-            if s.t >= next_hist * (1 - 1e-9) or s.t >= scene.end_time * (1 - 1e-12):
+            if s.t >= loop["next_history"] * (1 - 1e-9) or s.t >= scene.end_time * (1 - 1e-12):
                 history.record()
-                next_hist += scene.outputs.history_interval
-            if s.t >= next_field * (1 - 1e-9):
+                loop["next_history"] += scene.outputs.history_interval
+            if s.t >= loop["next_field"] * (1 - 1e-9):
                 _track_max_von_mises(solver, max_vm)
                 if fields:
                     fields.write(s.t)
-                next_field += scene.outputs.field_interval
+                loop["next_field"] += scene.outputs.field_interval
             # plastic work is dissipated, never given back: a fall beyond round-off is a material update
             # creating energy that the balance cannot see (the plastic term absorbs it)
-            if s.energy.plastic < plastic_before - 1e-9 * max(s.energy.peak, s.energy.initial):
+            if s.energy.plastic < loop["plastic_before"] - 1e-9 * max(s.energy.peak, s.energy.initial):
                 raise UnstableRun(
-                    f"the plastic work fell from {plastic_before:.6g} J to {s.energy.plastic:.6g} J at t = "
-                    f"{s.t:.6g} s (step {s.step}): a material update is creating energy (an element crushed "
+                    f"the plastic work fell from {loop['plastic_before']:.6g} J to {s.energy.plastic:.6g} J at "
+                    f"t = {s.t:.6g} s (step {s.step}): a material update is creating energy (an element crushed "
                     f"beyond its material's curve, or inverting). Check the impact speed against the "
                     f"material, refine the mesh there, or lower scene.safety_factor.", s.t)
-            plastic_before = s.energy.plastic
+            loop["plastic_before"] = s.energy.plastic
             if not math.isfinite(s.energy.balance_error):
                 raise UnstableRun(
                     f"the energy balance is not finite ({s.energy.balance_error}) at t = {s.t:.6g} s (step "
@@ -193,6 +256,11 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
                     f"created, a sign of instability. Lower scene.safety_factor or refine the mesh.", s.t)
             for msg in s.messages:
                 say(msg)
+            if (scene.checkpoint_interval > 0 and s.t >= loop["next_checkpoint"] * (1 - 1e-9)
+                    and s.t < scene.end_time * (1 - 1e-12)):
+                while loop["next_checkpoint"] <= s.t * (1 + 1e-9):
+                    loop["next_checkpoint"] += scene.checkpoint_interval
+                checkpoint_time += save_checkpoint()
             if on_step is not None:
                 on_step(s)
             stop.check(s.step, s.t)
@@ -209,6 +277,10 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
     except RunInterrupted as e:
         status, diagnosis = "interrupted", f"{signal.Signals(e.signum).name} at t = {e.time:.6g} s"
         say(f"RUN INTERRUPTED by {signal.Signals(e.signum).name}: finishing the outputs at t = {e.time:.6g} s")
+        # the checkpoint first: the row and frame the stop adds below are not the run's cadence
+        checkpoint_time += save_checkpoint()
+        say(f"checkpoint written at t = {solver.t:.6g} s (step {solver.step}): continue with "
+            f"shockfem run --resume {out_dir}")
         history.record()
         raise
     except BaseException as e:           # keep what was written and say that the run did not finish
@@ -216,7 +288,7 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
         raise
     finally:
         try:
-            wall = time.perf_counter() - wall0
+            wall = time.perf_counter() - wall0 + loop["wall"]
             stop.finishing()
             if bar is not None:
                 bar.n = solver.t * 1e6
@@ -230,9 +302,13 @@ def run_scene(scene: Scene, out_dir: str, comm=MPI.COMM_WORLD, progress: bool = 
             history.write(rd.file("history.h5"), rd.file("history.csv"))
             summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
             summary["sections"] = {sec.name: sec.summary() for sec in history.sections}
+            summary["checkpoints"] = {"interval": scene.checkpoint_interval, "wall_time_s": checkpoint_time,
+                                      "resumed_from": resumed}
             summary["warnings"] = run_warnings(summary)
             for warning in summary["warnings"]:
                 say(f"WARNING: {warning}")
+            if status == "completed" and comm.rank == 0:
+                checkpoint.clear(out_dir)
             rd.write_json("summary.json", summary)
             if comm.rank == 0 and len(history.rows) > 1:
                 plot_histories(out_dir, [b.name for b in scene.bodies])

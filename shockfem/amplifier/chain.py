@@ -394,8 +394,9 @@ def _rigid_history(result, names, interface_names) -> dict:
 
 
 def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progress: bool = True,
-                    echo=print) -> dict:
-    """Run a chain scene at its fidelity (or ``fidelity``); writes ``out_dir/summary.json``."""
+                    echo=print, resume: bool = False) -> dict:
+    """Run a chain scene at its fidelity (or ``fidelity``); writes ``out_dir/summary.json``.  ``resume``:
+    continue its finite-element run from the checkpoint in ``out_dir`` (``runner.resume_run``)."""
     spec, scene, heights = resolve_chain(raw, fidelity)
     masses = _masses(scene)
     names = [b.name for b in scene.bodies]
@@ -453,10 +454,14 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
         stress = dict(r.interface_stress)
         stress_kind = "peak contact force (low-passed over 4 element transits) over the smaller face"
     else:
-        from ..runner import run_scene
+        from ..runner import resume_run, run_scene
         scene = resolve(fe_scene(raw, spec, spec.fidelity, heights, end_time,
                                  frequencies=first_frequencies(scene, heights), masses=masses))
-        res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress)
+        if resume:
+            res = resume_run(out_dir, progress=progress, quiet=not progress, scene=scene)
+        else:
+            res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress,
+                            origin={"chain": raw, "fidelity": spec.fidelity})
         wall = res.summary["wall_time_s"]
         from ..output.history import read_history_csv
         h = read_history_csv(os.path.join(out_dir, "history.csv"))

@@ -335,6 +335,11 @@ def build_mesh(scene: Scene, comm=MPI.COMM_WORLD, cache_dir: str | None = None,
             os.replace(tmp, msh_path)
             with open(regions_path, "w") as fh:
                 json.dump(region_ids, fh, indent=1)
+            # the run goes on from the file, as every later run will: the file's coordinates are rounded,
+            # and a run must be the same whether it meshed or found the mesh cached (a run resumed from a
+            # checkpoint finds it cached, and must see the mesh it was checkpointed on)
+            gmsh.clear()
+            gmsh.open(msh_path)
             log(f"mesh: wrote {msh_path}")
     region_ids = comm.bcast(region_ids, root=0)
     mesh, cell_tags, facet_tags = compat.mesh_from_gmsh(gmsh.model, comm, 0, scene.gdim)

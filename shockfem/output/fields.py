@@ -12,13 +12,18 @@ for measuring a deformed part directly (a Taylor bar's length and footprint).
 from __future__ import annotations
 
 import os
+from xml.etree import ElementTree
 
+import h5py
 import numpy as np
 from dolfinx import fem, io
 
 from .. import compat
 from ..materials.layout import S_EPS, S_RATE
 from ..solver.explicit import ExplicitSolver
+
+# the XDMF files say xi:include: written back under that prefix, not ElementTree's ns0
+ElementTree.register_namespace("xi", "http://www.w3.org/2001/XInclude")
 
 CELL_FIELDS = ("von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
 
@@ -65,19 +70,26 @@ class _CellFields:
 
 
 class FieldWriter:
-    def __init__(self, path: str, solver: ExplicitSolver, fields):
+    def __init__(self, path: str, solver: ExplicitSolver, fields, resume_after: float | None = None):
+        """A new ``path`` with the mesh and its body tags; or, with ``resume_after`` (a resumed run), the
+        existing file cut back to its frames up to that time, to be appended to."""
         m = solver.model
         self.solver = solver
         self.fields = tuple(fields)
         mesh = m.meshed.mesh
         self.path, self.comm = path, mesh.comm
-        with io.XDMFFile(mesh.comm, path, "w") as file:
-            file.write_mesh(mesh)
-            m.meshed.cell_tags.name = "body"
-            file.write_meshtags(m.meshed.cell_tags)
+        if resume_after is None:
+            with io.XDMFFile(mesh.comm, path, "w") as file:
+                file.write_mesh(mesh)
+                m.meshed.cell_tags.name = "body"
+                file.write_meshtags(m.meshed.cell_tags)
+        else:
+            if self.comm.rank == 0:
+                drop_frames_after(path, resume_after)
+            self.comm.barrier()
         self.cells = _CellFields(solver, self.fields)
         self.vel = fem.Function(m.V, name="velocity")
-        self.last = None                # the time of the last frame written
+        self.last = resume_after        # the time of the last frame written
 
     def write(self, t: float):
         """One frame, the file opened to append it and closed again (1-2 ms): the HDF5 file is whole
@@ -100,6 +112,29 @@ class FieldWriter:
 
     def close(self):
         """Nothing stays open between frames."""
+
+
+def drop_frames_after(path: str, t: float):
+    """Cut the XDMF file ``path`` (as ``FieldWriter`` writes it) back to its frames at times up to ``t``:
+    the later frames of a run resumed from a checkpoint at ``t`` are written again.  Their grids leave
+    the XML and their datasets the HDF5 file (a frame written again at the same time would collide)."""
+    tree = ElementTree.parse(path)
+    domain = tree.getroot().find("Domain")
+    dropped = []
+    for series in domain.findall("Grid[@CollectionType='Temporal']"):
+        for grid in series.findall("Grid"):
+            if float(grid.find("Time").get("Value")) > t:
+                dropped += [item.text.strip().split(":", 1)[1] for item in grid.iter("DataItem")]
+                series.remove(grid)
+    if not dropped:
+        return
+    with h5py.File(os.path.splitext(path)[0] + ".h5", "a") as h5:
+        for name in dropped:
+            if name in h5:
+                del h5[name]
+    partial = path + ".partial"
+    tree.write(partial, xml_declaration=True, encoding="utf-8")
+    os.replace(partial, path)
 
 
 def write_final_shape(path: str, solver: ExplicitSolver):

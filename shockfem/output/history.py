@@ -90,6 +90,15 @@ class HistoryRecorder:
             self._stream.flush()
             self._flushed = time.perf_counter()
 
+    def resume(self, rows: np.ndarray):
+        """Take the rows a checkpoint kept as the history so far (a resumed run): the streamed CSV starts
+        again from them (its rows beyond the checkpoint are written again as the run goes on)."""
+        self.rows = [list(r) for r in rows]
+        self._array = np.array(rows, dtype=float).reshape(-1, len(self.columns))
+        if self._stream is not None:
+            self._csv.writerows(rows.tolist())
+            self._stream.flush()
+
     def _header(self) -> list[str]:
         return [f"{n} [{u}]" for n, u in self.columns]
 

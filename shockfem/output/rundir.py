@@ -19,6 +19,7 @@ import glob
 import json
 import os
 import platform
+import shutil
 import subprocess
 import sys
 import time
@@ -42,19 +43,24 @@ def git_hash() -> str | None:
 RUN_FILES = ("resolved_scene.json", "provenance.json", "run.log", "summary.json", "fields.xdmf", "fields.h5",
              "history.h5", "history.csv", "final_shape.xdmf", "final_shape.h5", "final_shape.png", "energy.png",
              "bodies.png", "stages.png", "pulse_*.png", "srs_*.png", "*.partial.*")
+# the run's checkpoints (``checkpoint.py``), a directory of their own, cleared with the rest
+CHECKPOINT_DIRECTORY = "checkpoint"
 
 
 class RunDirectory:
-    def __init__(self, path: str, comm):
+    def __init__(self, path: str, comm, resume: bool = False):
+        """A new run clears what an earlier run left at ``path``; a resumed run (``resume``) keeps it all
+        and appends to its log."""
         self.path = path
         self.comm = comm
-        if comm.rank == 0:
+        if comm.rank == 0 and not resume:
             os.makedirs(path, exist_ok=True)
             for pattern in RUN_FILES:
                 for old in glob.glob(os.path.join(glob.escape(path), pattern)):
                     os.remove(old)
+            shutil.rmtree(os.path.join(path, CHECKPOINT_DIRECTORY), ignore_errors=True)
         comm.barrier()
-        self._log = open(os.path.join(path, "run.log"), "w") if comm.rank == 0 else None
+        self._log = open(os.path.join(path, "run.log"), "a" if resume else "w") if comm.rank == 0 else None
 
     def file(self, name: str) -> str:
         return os.path.join(self.path, name)

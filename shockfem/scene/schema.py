@@ -165,7 +165,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity",
-                   "bulk_viscosity_quadratic", "bulk_viscosity_linear", "curve_elements"), "scene")
+                   "bulk_viscosity_quadratic", "bulk_viscosity_linear", "curve_elements", "checkpoint_interval"),
+               "scene")
     name = s.get("name", "scene")
     if not isinstance(name, str) or not name.strip() or name.strip(".") == "" or any(c in name for c in "/\\"):
         # the name is the run directory's default (results/<name>): it must name one directory
@@ -181,6 +182,9 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         ck.fail("scene.safety_factor", f"must be <= 1 (explicit stability), got {sf}")
     thickness = ck.quantity(s, "thickness", "scene", "length", default=1.0, positive=True)
     elimit = ck.quantity(s, "energy_error_limit", "scene", "dimensionless", default=0.05, positive=True)
+    # simulated time between checkpoints (``output/checkpoint.py``); 0: only when a signal stops the run
+    checkpoint = ck.quantity(s, "checkpoint_interval", "scene", "time", default=end_time / 10,
+                             nonnegative=True)
     curve = s.get("curve_elements", 24)
     if not isinstance(curve, int) or isinstance(curve, bool) or not 6 <= curve <= 360:
         ck.fail("scene.curve_elements", f"must be a whole number of elements round a circle in [6, 360], got {curve!r}")
@@ -370,7 +374,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     return Scene(name, kin, element, end_time, sf, thickness, elimit, integration, hourglass, hg_coef,
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
-                 gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities), penetration, curve)
+                 gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities), penetration, curve,
+                 checkpoint)
 
 
 def _section_cuts(ck: Checker, o: dict, bodies) -> tuple[SectionCuts, ...]:

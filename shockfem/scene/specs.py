@@ -326,6 +326,7 @@ class Scene:
     cavities: tuple[Cavity, ...] = ()
     penetration: Penetration | None = None
     curve_elements: int = 24                     # elements round a full circle on curved faces (gmsh)
+    checkpoint_interval: float = 0.0             # simulated time between checkpoints [s]; 0: on signals only
 
     @property
     def gdim(self) -> int:

@@ -187,6 +187,7 @@ class ExplicitSolver:
         self._rigid_loads(0.0)
         self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
         self.energy.peak = self.energy.initial
+        self.dt_first = self.dt_stable    # the reference of a collapsing step (``steps``)
 
     # ----------------------------------------------------------------- set-up
     def _set_initial_velocity(self):
@@ -451,13 +452,13 @@ class ExplicitSolver:
         return kinetic
 
     def steps(self, end_time: float):
-        """Yield a ``Step`` after every step until ``end_time``; stop with a diagnosis if the
-        elements' stable step collapses below ``STEP_COLLAPSE`` of its first value."""
-        first = self.dt_stable
+        """Yield a ``Step`` after every step until ``end_time`` (from wherever the solver stands: a run
+        restored from a checkpoint goes on from there); stop with a diagnosis if the elements' stable step
+        collapses below ``STEP_COLLAPSE`` of its first value."""
         said = len(self.log_messages)
         while self.t < end_time * (1 - 1e-12):
-            if self.dt_stable < STEP_COLLAPSE * first:
-                self._step_collapsed(first)
+            if self.dt_stable < STEP_COLLAPSE * self.dt_first:
+                self._step_collapsed(self.dt_first)
             dt = min(self.stable_step(), end_time - self.t)
             self.advance(dt)
             yield Step(self.step, self.t, dt, self.dt_stable, replace(self.energy), tuple(self.log_messages[said:]))

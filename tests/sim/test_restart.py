@@ -1,0 +1,191 @@
+"""Restart (#25): a run stopped by SIGTERM, SIGINT or SIGKILL and resumed from its checkpoint
+(``shockfem run --resume DIR``) ends with the histories of a run that was never stopped, bit for bit
+(the state is restored whole and the arithmetic is the same; any difference is a piece of state the
+checkpoint missed), in one process and under ``mpirun -n 2``, and for a chain scene through to its
+report.  The scenes cover every stateful part of the loop: rigid bodies, friction and an interference
+preload (the split cone), a liquid cavity (the piston dashpot), a penetrated target with plasticity,
+3D with rotation (the tilted drop) and discrete springs."""
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import meshio
+import numpy as np
+import pytest
+
+import shockfem
+from shockfem.cli import main
+from shockfem.errors import RunInterrupted
+from shockfem.output.history import read_history_csv
+from shockfem.verify import spring_cases
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+GALLERY = os.path.join(REPO, "studies", "gallery")
+ROD = os.path.join(REPO, "studies", "metrics", "rod_pulse.toml")
+
+
+def _spring_scene():
+    raw, _, _ = spring_cases._scene(0.01)
+    raw["scene"]["end_time"] = 2e-4
+    return raw
+
+
+SCENES = {   # name: (scene, overrides, the step at which a SIGTERM stops it)
+    "cone_drop": (os.path.join(GALLERY, "cone_drop.toml"), ['scene.end_time="0.3 ms"'], 900),
+    "piston_dashpot": (os.path.join(GALLERY, "piston_dashpot.toml"), ['scene.end_time="0.3 ms"'], 500),
+    "penetration": (os.path.join(GALLERY, "penetration.toml"), ['scene.end_time="0.2 ms"'], 500),
+    "tilted_drop_3d": (os.path.join(GALLERY, "tilted_drop.toml"), ['scene.end_time="0.1 ms"'], 300),
+    "springs": (None, [], 100),
+}
+
+
+def _frame_times(run_dir):
+    reader = meshio.xdmf.TimeSeriesReader(str(run_dir / "fields.xdmf"))
+    reader.read_points_cells()
+    return [reader.read_data(k)[0] for k in range(reader.num_steps)]
+
+
+def _same_run(a_dir, b_dir):
+    """Two run directories hold the same run: every history column equal, bit for bit, the same
+    field frames, the same end state in the summary."""
+    a, b = shockfem.load_run(str(a_dir)), shockfem.load_run(str(b_dir))
+    assert a.status == b.status == "completed"
+    assert list(a.history) == list(b.history)
+    differ = [k for k in a.history if not np.array_equal(a.history[k], b.history[k])]
+    assert not differ, f"columns differ after the resume: {differ[:8]}"
+    for key in ("steps", "end_time", "dt"):
+        assert a.summary[key] == b.summary[key]
+    assert a.summary["energy"] == b.summary["energy"]
+    assert a.summary["bodies"] == b.summary["bodies"]
+    if a.fields:
+        assert _frame_times(a_dir) == _frame_times(b_dir)
+    assert not (b_dir / "checkpoint").exists(), "a completed run keeps no checkpoint"
+
+
+@pytest.mark.parametrize("name", list(SCENES))
+def test_a_resumed_run_is_the_uninterrupted_run(tmp_path, name):
+    path, overrides, stop_at = SCENES[name]
+    scene = shockfem.load_scene(path or _spring_scene(), overrides)
+    shockfem.run(scene, str(tmp_path / "whole"))
+
+    def stop(step):
+        if step.step == stop_at:
+            os.kill(os.getpid(), signal.SIGTERM)     # as a scheduler would: caught, the loop stops there
+
+    with pytest.raises(RunInterrupted):
+        shockfem.run(scene, str(tmp_path / "cut"), on_step=stop)
+    cut = json.loads((tmp_path / "cut" / "checkpoint" / "latest.json").read_text())
+    assert cut["step"] == stop_at and cut["processes"] == 1
+    shockfem.resume(str(tmp_path / "cut"))
+    _same_run(tmp_path / "whole", tmp_path / "cut")
+    resumed = shockfem.load_run(str(tmp_path / "cut")).summary["checkpoints"]["resumed_from"]
+    assert [r["step"] for r in resumed] == [stop_at]
+
+
+def _cli(*args, launcher=(), env=None, **kw):
+    return subprocess.Popen([*launcher, sys.executable, "-m", "shockfem", "run", *args, "--no-progress"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env, **kw)
+
+
+ROD_LONG = ["--set", 'scene.end_time="2 ms"', "--set", 'outputs.field_interval="50 us"',
+            "--set", 'scene.checkpoint_interval="0.25 ms"']
+
+
+def _wait_for_checkpoint(run_dir, after: float, timeout=300):
+    """Until the run has a checkpoint past ``after`` seconds of simulated time."""
+    latest = run_dir / "checkpoint" / "latest.json"
+    t0 = time.time()
+    while time.time() - t0 < timeout:
+        try:
+            if json.loads(latest.read_text())["time"] > after:
+                return
+        except (OSError, ValueError):
+            pass
+        time.sleep(0.05)
+    raise AssertionError("no checkpoint was written")
+
+
+def test_sigkill_then_resume_from_the_command_line(tmp_path):
+    """SIGKILL gives no warning: the run goes on from its last periodic checkpoint (every 0.25 ms here),
+    its later rows and frames written again."""
+    whole = _cli(ROD, "--out", str(tmp_path / "whole"), *ROD_LONG)
+    cut = _cli(ROD, "--out", str(tmp_path / "cut"), *ROD_LONG)
+    _wait_for_checkpoint(tmp_path / "cut", 0.6e-3)
+    cut.send_signal(signal.SIGKILL)
+    cut.communicate(timeout=300)
+    assert whole.wait(timeout=300) == 0, whole.stderr.read()[-3000:]
+    assert json.loads((tmp_path / "cut" / "summary.json").read_text())["status"] == "running"
+    resumed = _cli("--resume", str(tmp_path / "cut"))
+    _, err = resumed.communicate(timeout=300)
+    assert resumed.returncode == 0, err[-3000:]
+    _same_run(tmp_path / "whole", tmp_path / "cut")
+    assert "resuming from the checkpoint" in (tmp_path / "cut" / "run.log").read_text()
+
+
+def test_resume_under_mpirun(tmp_path):
+    """Two ranks stopped by SIGTERM (to mpirun) resume on two ranks to the two-rank run's histories; on
+    one rank the resume is refused, naming the count it needs (exit 2)."""
+    mpirun = shutil.which("mpirun")
+    assert mpirun, "mpirun not found (apt-get install openmpi-bin)"
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    two = (mpirun, "-n", "2")
+    whole = _cli(ROD, "--out", str(tmp_path / "whole"), *ROD_LONG, launcher=two, env=env)
+    assert whole.wait(timeout=300) == 0, whole.stderr.read()[-3000:]
+    cut = _cli(ROD, "--out", str(tmp_path / "cut"), *ROD_LONG, launcher=two, env=env)
+    _wait_for_checkpoint(tmp_path / "cut", 0.3e-3)
+    cut.send_signal(signal.SIGTERM)
+    cut.communicate(timeout=300)
+    assert json.loads((tmp_path / "cut" / "summary.json").read_text())["status"] == "interrupted"
+    one = subprocess.run([sys.executable, "-m", "shockfem", "run", "--resume", str(tmp_path / "cut")],
+                         capture_output=True, text=True, timeout=300)
+    assert one.returncode == 2 and "mpirun -n 2" in one.stderr, one.stderr[-3000:]
+    resumed = _cli("--resume", str(tmp_path / "cut"), launcher=two, env=env)
+    _, err = resumed.communicate(timeout=300)
+    assert resumed.returncode == 0, err[-3000:]
+    _same_run(tmp_path / "whole", tmp_path / "cut")
+
+
+def test_a_chain_resumes_through_to_its_report(tmp_path):
+    """A chain scene's finite-element run, stopped and resumed, ends in the same chain report (gain,
+    stages) as one never stopped."""
+    chain = os.path.join(REPO, "studies", "amplifier", "three_rods.toml")
+    args = ["run", chain, "--fidelity", "axisymmetric", "--no-progress"]
+    assert main(args + ["--out", str(tmp_path / "whole")]) == 0
+    cut = tmp_path / "cut"
+
+    def stop_when_under_way():
+        while not (cut / "history.csv").exists() or (cut / "history.csv").read_text().count("\n") < 100:
+            time.sleep(0.01)
+        os.kill(os.getpid(), signal.SIGTERM)
+
+    threading.Thread(target=stop_when_under_way, daemon=True).start()
+    assert main(args + ["--out", str(cut)]) == 128 + signal.SIGTERM
+    assert main(["run", "--resume", str(cut), "--no-progress"]) == 0
+    a = json.loads((tmp_path / "whole" / "summary.json").read_text())["chain"]
+    b = json.loads((cut / "summary.json").read_text())["chain"]
+    for key in ("gain", "test_article_speed", "stages", "peak_stress"):
+        assert a[key] == b[key], key
+    h_a, h_b = read_history_csv(str(tmp_path / "whole" / "history.csv")), read_history_csv(str(cut / "history.csv"))
+    assert all(np.array_equal(h_a[k], h_b[k]) for k in h_a)
+
+
+def test_what_cannot_be_resumed_is_refused(tmp_path, capsys):
+    """Exit 2 and the reason: a completed run, a directory that is no run, a scene beside --resume."""
+    done = tmp_path / "done"
+    assert main(["run", ROD, "--out", str(done), "--no-progress", "--no-fields", "--set",
+                 'scene.end_time="5 us"']) == 0
+    capsys.readouterr()
+    assert main(["run", "--resume", str(done)]) == 2
+    assert "it completed" in capsys.readouterr().err
+    assert main(["run", "--resume", str(tmp_path / "nowhere")]) == 2
+    assert "no such run directory" in capsys.readouterr().err
+    assert main(["run", ROD, "--resume", str(done)]) == 2
+    assert "drop a scene file" in capsys.readouterr().err
+    assert main(["run"]) == 2
+    assert "--resume RUN_DIR" in capsys.readouterr().err
