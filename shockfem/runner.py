@@ -49,7 +49,9 @@ def _progress(total: float, enabled: bool):
 
 
 # what a finished run is warned of (``run_warnings``)
-HOURGLASS_SHARE = 0.10         # hourglass energy over internal energy: the hourglass control shapes the answer
+HOURGLASS_SHARE = 0.10         # a body's hourglass energy over its internal energy (stored and plastic, LS-DYNA's
+                               # sense): the hourglass control shapes the answer
+HOURGLASS_FLOOR = 1e-3         # ... unless its hourglass energy is below this share of the run's largest energy
 NEGATIVE_INTERNAL = 1e-4       # internal energy below minus this share of the largest energy: not round-off
 CONTACT_PENETRATION = 0.2      # a contact's deepest penetration (beyond any initial overlap) over its smallest facet
 
@@ -58,11 +60,14 @@ def run_warnings(summary: dict) -> list[str]:
     """What a user should act on in a finished run's ``summary``: each a sentence with the number and the fix."""
     out = []
     e = summary["energy"]
-    if e["hourglass_to_internal"] > HOURGLASS_SHARE:
-        out.append(f"the hourglass energy is {e['hourglass_to_internal']:.0%} of the internal energy (above "
-                   f"{HOURGLASS_SHARE:.0%}): the one-point elements' hourglass control is shaping the answer. Refine "
-                   "the mesh where it deforms most, or set scene.integration = \"full\"")
     largest = max(abs(e["initial_total"]), abs(e["kinetic"]), abs(e["internal"]), abs(e["external_work"]))
+    for name, b in summary["bodies"].items():
+        # a body whose hourglass work is a sliver of the run's energy shapes nothing: left out
+        if b["hourglass_to_internal"] > HOURGLASS_SHARE and b["hourglass_energy"] > HOURGLASS_FLOOR * largest:
+            out.append(f"body {name}: the hourglass energy is {b['hourglass_to_internal']:.0%} of its internal energy "
+                       f"({b['hourglass_energy']:.4g} J of {b['internal_energy']:.4g} J; above {HOURGLASS_SHARE:.0%}): "
+                       "the one-point elements' hourglass control is shaping its answer. Refine the mesh where it "
+                       "deforms most, or set scene.integration = \"full\"")
     if e["internal"] < -NEGATIVE_INTERNAL * largest:
         out.append(f"the internal energy ends negative ({e['internal']:.4g} J, {-e['internal'] / largest:.2g} of the "
                    "largest energy): elements returned more work than they took, a sign of an unstable or "
@@ -407,6 +412,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
     v, _ = solver.body_means()
     e = solver.energy
     max_eps = _max_plastic_strain(solver)
+    energies = solver.body_energies()
     elements = m.num_cells_global
     kernel_elements = solver.comm.allreduce(len(m.kernel_cells), op=MPI.SUM)
     return {
@@ -430,7 +436,8 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "energy": {"initial_total": e.initial, "kinetic": e.kinetic, "internal": e.internal,
                    "plastic": e.plastic, "bulk_viscosity": e.bulk_viscosity,
                    "damping": e.damping, "hourglass": e.hourglass,
-                   "hourglass_to_internal": abs(e.hourglass) / max(abs(e.internal), 1e-300),
+                   # LS-DYNA's internal energy holds the plastic work: the same ratio as each body's below
+                   "hourglass_to_internal": abs(e.hourglass) / max(abs(e.internal + e.plastic), 1e-300),
                    "contact": e.contact, "external_work": e.external, "balance": e.balance,
                    "balance_error": e.balance_error},
         "models": describe(m, scene).splitlines(),
@@ -441,6 +448,12 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],
                             "max_von_mises": float(max_vm[i]),
-                            "max_plastic_strain": float(max_eps[i])}
+                            "max_plastic_strain": float(max_eps[i]),
+                            "kinetic_energy": float(energies["kinetic"][i]),
+                            "internal_energy": float(energies["internal"][i]),
+                            "plastic_work": float(energies["plastic"][i]),
+                            "hourglass_energy": float(energies["hourglass"][i]),
+                            "hourglass_to_internal": float(abs(energies["hourglass"][i])
+                                                           / max(abs(energies["internal"][i]), 1e-300))}
                    for i, b in enumerate(scene.bodies)},
     }

@@ -30,7 +30,7 @@ def _kernel(elastic_only: bool):
 
     @njit(cache=True, fastmath=True)
     def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics,
-                          thickness, cell_kind, mean_dilatation, params, curves, state, sigma, f):
+                          thickness, cell_kind, mean_dilatation, params, curves, state, sigma, f, body_energy):
         """Update the stress of ``cells`` over one step and add their internal force to ``f``.
 
         Parameters
@@ -54,6 +54,9 @@ def _kernel(elastic_only: bool):
             stub when no law needs one).
         sigma : (num_cells, nq, 6) Cauchy stress, updated in place from t_n to t_{n+1}.
         f : (num_nodes, gdim) internal force, accumulated (caller zeroes it).
+        body_energy : (rows of params, 3) accumulates per row (one per body) the work of the stresses
+            dt w (sigma_n + sigma_n+1)/2 : d and the plastic work over the step [J] (columns 0 and 2;
+            column 1, the hourglass work, stays: no hourglass modes at full integration).
 
         Returns
         -------
@@ -137,6 +140,10 @@ def _kernel(elastic_only: bool):
                 s_n = (sigma[c, q, 0], sigma[c, q, 1], sigma[c, q, 2], sigma[c, q, 3], sigma[c, q, 4], sigma[c, q, 5])
                 s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0, elastic_only)
                 plastic_work += wmid[q] * wp
+                body_energy[m, 2] += wmid[q] * wp
+                body_energy[m, 0] += 0.5 * dt * wmid[q] * (
+                    (s_n[0] + s_np1[0]) * d[0] + (s_n[1] + s_np1[1]) * d[1] + (s_n[2] + s_np1[2]) * d[2]
+                    + 2.0 * ((s_n[3] + s_np1[3]) * d[3] + (s_n[4] + s_np1[4]) * d[4] + (s_n[5] + s_np1[5]) * d[5]))
                 for k in range(6):
                     sigma[c, q, k] = s_np1[k]
                 s, pd, pv = viscous_stress(params, m, s_np1, d, pq)

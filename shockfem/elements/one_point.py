@@ -121,13 +121,16 @@ def _quad_kernel(elastic_only: bool):
 
     @njit(cache=True, fastmath=True)
     def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
-                       hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f):
+                       hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f,
+                       body_energy):
         """One-point quads (plane strain or axisymmetric): stress update and internal force.
 
         Arguments as ``full_integration.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
         hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
         hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
-        stiffness form accumulates them; both forms need them for the trapezoidal work).
+        stiffness form accumulates them; both forms need them for the trapezoidal work);
+        body_energy : (rows of params, 3) accumulates, per row (one per body), the work of the stresses
+        dt V (sigma_n + sigma_n+1)/2 : d, the hourglass work and the plastic work over the step [J].
 
         Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
         """
@@ -178,8 +181,8 @@ def _quad_kernel(elastic_only: bool):
             d5 = 0.5 * (l01 + l10)
             # the material update at the centre (objective rotation, slotted ring, law)
             w12 = 0.5 * (l01 - l10)
-            s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
-                                         (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], 0.0, 0.0, sigma[c, 0, 5]),
+            a0, a1, a2, a5 = sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 5]
+            s_np1, d, wp = update_stress(params, curves, m, state, c, 0, (a0, a1, a2, 0.0, 0.0, a5),
                                          (d0, d1, d2, 0.0, 0.0, d5), (0.0, 0.0, w12), dt, r if axisymmetric else 0.0,
                                          elastic_only)
             sigma[c, 0, 0] = s_np1[0]
@@ -193,6 +196,9 @@ def _quad_kernel(elastic_only: bool):
                 bad_cell = c
             vol = det * (two_pi * r if axisymmetric else thickness)
             plastic_work += vol * wp
+            body_energy[m, 2] += vol * wp
+            body_energy[m, 0] += 0.5 * dt * vol * ((a0 + s_np1[0]) * d[0] + (a1 + s_np1[1]) * d[1]
+                                                   + (a2 + s_np1[2]) * d[2] + 2.0 * (a5 + s_np1[5]) * d[5])
             # hourglass rate q = h.v - L_end (h.x), and resultant Q
             e00 = v00 * i00 + v01 * i10
             e01 = v00 * i01 + v01 * i11
@@ -223,7 +229,9 @@ def _quad_kernel(elastic_only: bool):
             hourglass[c, 0] = Q0
             hourglass[c, 1] = Q1
             # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
-            hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
+            cell_hourglass = 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
+            hourglass_power += cell_hourglass
+            body_energy[m, 1] += dt * cell_hourglass
             # f_a = S b_a + h_a Q (+ hoop N_a), S = V sigma - Q (h.x)^T, b_a = J^-T dN0_a: with
             # M = J^-1 S^T the force is M^T dN0_a, i.e. the transposed transform of (hoop, M/2, Q).
             t00 = vol * s0 - Q0 * hx0
@@ -256,7 +264,7 @@ def _hex_kernel(elastic_only: bool):
 
     @njit(cache=True, fastmath=True)
     def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
-                      hourglass_coefficient, params, curves, state, sigma, hourglass, f):
+                      hourglass_coefficient, params, curves, state, sigma, hourglass, f, body_energy):
         """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
 
         hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
@@ -319,10 +327,9 @@ def _hex_kernel(elastic_only: bool):
             w13 = 0.5 * (l02 - l20)
             w12 = 0.5 * (l01 - l10)
             # the material update at the centre (objective rotation, law)
-            s_np1, d, wp = update_stress(params, curves, m, state, c, 0,
-                                         (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
-                                          sigma[c, 0, 5]), (d0, d1, d2, d3, d4, d5), (w23, w13, w12), dt, 0.0,
-                                         elastic_only)
+            a = (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4], sigma[c, 0, 5])
+            s_np1, d, wp = update_stress(params, curves, m, state, c, 0, a, (d0, d1, d2, d3, d4, d5),
+                                         (w23, w13, w12), dt, 0.0, elastic_only)
             (sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 3], sigma[c, 0, 4],
              sigma[c, 0, 5]) = s_np1
             # end-of-step configuration
@@ -332,6 +339,10 @@ def _hex_kernel(elastic_only: bool):
             if vol <= 0.0:
                 bad_cell = c
             plastic_work += vol * wp
+            body_energy[m, 2] += vol * wp
+            body_energy[m, 0] += 0.5 * dt * vol * (
+                (a[0] + s_np1[0]) * d[0] + (a[1] + s_np1[1]) * d[1] + (a[2] + s_np1[2]) * d[2]
+                + 2.0 * ((a[3] + s_np1[3]) * d[3] + (a[4] + s_np1[4]) * d[4] + (a[5] + s_np1[5]) * d[5]))
             # hourglass: q^alpha = h^alpha.v - L_end (h^alpha.x), L_end = Jv J^-1, resultants Q^alpha
             e00 = v00 * i00 + v01 * i10 + v02 * i20
             e01 = v00 * i01 + v01 * i11 + v02 * i21
@@ -385,7 +396,9 @@ def _hex_kernel(elastic_only: bool):
                 hourglass[c, 3 * al] = Q0
                 hourglass[c, 3 * al + 1] = Q1
                 hourglass[c, 3 * al + 2] = Q2
-                hourglass_power += 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1 + (o2 + Q2) * q2)
+                cell_hourglass = 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1 + (o2 + Q2) * q2)
+                hourglass_power += cell_hourglass
+                body_energy[m, 1] += dt * cell_hourglass
                 t00 -= Q0 * hx0
                 t01 -= Q0 * hx1
                 t02 -= Q0 * hx2

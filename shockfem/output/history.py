@@ -234,9 +234,9 @@ class _Meter:
         return w / total
 
     def velocity(self) -> np.ndarray:
-        """Its velocity at t_n (v_n-1/2 + dt/2 a_n), on every rank.  Collective."""
+        """Its velocity at t (``ExplicitSolver.motion``), on every rank.  Collective."""
         s = self.solver
-        v = s.v[self.nodes] + 0.5 * s.dt * s.a[self.nodes]
+        v = s.motion(self.nodes)[0]
         if self.owner == -1:
             local = (self.mass[:, None] * v).sum(axis=0)
         else:

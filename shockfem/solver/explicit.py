@@ -143,6 +143,9 @@ class ExplicitSolver:
         self._one_point = one_point.one_point_kernel(gdim, elastic_only) if m.one_point else None
         self._full = None if m.one_point else full_integration.stress_divergence_kernel(elastic_only)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
+        # per body (a row of params each), this rank's share: the stresses' work (stored and plastic
+        # energy), the hourglass work and the plastic work [J], for per-body energies and warnings
+        self.body_energy = np.zeros((len(m.params), 3))
         self.owned = np.zeros(len(self.x), dtype=bool)
         self.owned[:m.num_owned] = True
         self.inv_mass = np.where(m.mass > 0, 1.0 / np.where(m.mass > 0, m.mass, 1.0), 0.0)
@@ -165,6 +168,7 @@ class ExplicitSolver:
         self.energy = Energies()
         self.times = PhaseTimes()
         self.rigid_states = [RigidState(rb.center0.copy(), np.zeros(gdim)) for rb in m.rigid]
+        self._prescribed_at = -1        # the step ``_prescribed_motion`` was last evaluated at
         self._set_initial_velocity()
         if initial_velocity is not None:
             self.v[:] = initial_velocity(self.x)
@@ -228,17 +232,17 @@ class ExplicitSolver:
                     m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
                     m.axisymmetric, m.thickness, m.hourglass_form,
                     m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                    self.f_int)
+                    self.f_int, self.body_energy)
             elif m.one_point:
                 dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
                     m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
                     m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                    self.f_int)
+                    self.f_int, self.body_energy)
             else:
                 dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = self._full(
                     m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
                     m.kinematics, m.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
-                    self.sigma, self.f_int)
+                    self.sigma, self.f_int, self.body_energy)
         except ZeroDivisionError:
             # a kernel divided by a zero that a non-finite state made (numba's Python error model): the
             # state, not the element, is at fault; name the first non-finite node
@@ -476,18 +480,77 @@ class ExplicitSolver:
                           self.t, self._body_of_cell(cell), cell)
 
     # ------------------------------------------------------------ results
+    def body_energies(self) -> dict[str, np.ndarray]:
+        """Per body [J]: ``kinetic`` at t_n (a rigid body's own, with its spin in 3D); ``internal``, the
+        work of the stresses, stored and plastic energy ((sigma_n + sigma_n+1)/2 : d integrated cell by
+        cell, so its sum agrees with the nodal account's ``internal + plastic`` to the time step's order,
+        not to round-off); ``plastic``, the plastic work in it; ``hourglass``, the hourglass forces' work.
+        Collective."""
+        m = self.model
+        o = self.owned
+        # as the nodal account (``nodal.finish_step``) takes it, so that the bodies sum to its kinetic energy
+        v_n = np.where(self.constrained, self.v, self.v + 0.5 * self.dt * self.a)
+        node_kinetic = 0.5 * self.kinetic_mass[o] * (v_n[o] ** 2).sum(axis=1)
+        kinetic = np.bincount(m.node_body[o], weights=node_kinetic, minlength=len(m.bodies))
+        work = self.body_energy[:len(m.bodies)].copy()
+        if self.parallel:
+            kinetic = self.comm.allreduce(kinetic, op=MPI.SUM)
+            work = self.comm.allreduce(work, op=MPI.SUM)
+        for rb, rs in zip(m.rigid, self.rigid_states):     # at t_n, as ``_rigid_loads`` takes it
+            v_c = rs.velocity + 0.5 * self.dt * rs.force / rb.mass
+            kinetic[rb.index] += 0.5 * rb.mass * float(v_c @ v_c)
+            if m.gdim == 3:
+                momentum = rs.momentum_angular + 0.5 * self.dt * rs.torque
+                inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
+                kinetic[rb.index] += 0.5 * float(np.linalg.solve(inertia, momentum) @ momentum)
+        return {"kinetic": kinetic, "internal": work[:, 0], "hourglass": work[:, 1], "plastic": work[:, 2]}
+
+    def motion(self, nodes=slice(None)) -> tuple[np.ndarray, np.ndarray]:
+        """Velocity and acceleration of ``nodes`` (all by default) at t [m/s, m/s^2]: v_{n+1/2} + dt/2 a_{n+1}
+        and a_{n+1} (with the mass damping's -alpha v) where the dof is free; where a velocity is prescribed (fixed, symmetry, the axis, a
+        driven end), that velocity at t and its rate: there M^-1 f is the push the constraint cancels,
+        not the motion (a bar driven at a constant speed would show its wave front's force as acceleration)."""
+        v = self.v[nodes] + 0.5 * self.dt * self.a[nodes]
+        a = self.a[nodes].copy()
+        if self.model.alpha:
+            a -= self.model.alpha * v       # mass-proportional damping: a force the solver applies implicitly
+        if self.model.constraints:
+            prescribed_v, prescribed_a = self._prescribed_motion()
+            mask = self.constrained[nodes]
+            v[mask] = prescribed_v[nodes][mask]
+            a[mask] = prescribed_a[nodes][mask]
+        return v, a
+
+    def _prescribed_motion(self) -> tuple[np.ndarray, np.ndarray]:
+        """The constrained dofs' prescribed velocity at t and its rate (central difference over the last
+        step: exact on the piecewise-linear histories), (nodes, gdim) each, zero elsewhere; kept per step."""
+        if self._prescribed_at != self.step:
+            v = np.zeros_like(self.v)
+            a = np.zeros_like(self.a)
+            h = 0.5 * self.dt if self.dt > 0 else 1e-9
+            before, after = max(self.t - h, 0.0), self.t + h
+            for con in self.model.constraints:
+                v.reshape(-1)[con.dofs] = con.value(self.t)
+                a.reshape(-1)[con.dofs] = (con.value(after) - con.value(before)) / (after - before)
+            self._prescribed, self._prescribed_at = (v, a), self.step
+        return self._prescribed
+
     def body_means(self):
-        """Mass-weighted mean velocity and acceleration of every body, (bodies, gdim) each."""
+        """Mass-weighted mean velocity and acceleration of every body at t (``motion``), (bodies, gdim) each."""
         m = self.model
         o = self.owned
         nb = len(m.bodies)
         mv = np.zeros((nb, m.gdim))
         ma = np.zeros((nb, m.gdim))
-        v_n = self.v + 0.5 * self.dt * self.a
+        v_n, a_n = self.motion()
         for i in range(nb):
             sel = o & (m.node_body == i)
             mv[i] = (m.mass[sel, None] * v_n[sel]).sum(axis=0)
-            ma[i] = (m.mass[sel, None] * self.a[sel]).sum(axis=0)
+            ma[i] = (m.mass[sel, None] * a_n[sel]).sum(axis=0)
         mv = self.comm.allreduce(mv, op=MPI.SUM) if self.parallel else mv
         ma = self.comm.allreduce(ma, op=MPI.SUM) if self.parallel else ma
+        if m.axisymmetric:
+            # the centre of mass of a body of revolution stays on its axis: the mean of the nodes' radial
+            # motion is the body breathing, not moving
+            mv[:, 0] = ma[:, 0] = 0.0
         return mv / m.body_mass[:, None], ma / m.body_mass[:, None]

@@ -42,7 +42,8 @@ def test_internal_force_matches_ufl_form(kinematics, cell):
     # dt = 0 and v = 0: the stress stays as given and the kernel only assembles the force
     sign = ec.cell_orientation(dofmap, X, dN)
     full_integration.stress_divergence(cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X), 0.0, N, dN, wq,
-                              kin.CODES[kinematics], 0.7, kind, True, _params(), NO_CURVES, NO_STATE, sigma.copy(), f)
+                              kin.CODES[kinematics], 0.7, kind, True, _params(), NO_CURVES, NO_STATE, sigma.copy(), f,
+                              np.zeros((1, 3)))
     degree = kin.quadrature_degree(m.topology.cell_name(), kinematics)
     Qe = ufl.VectorElement("Quadrature", m.ufl_cell(), degree=degree, dim=6, quad_scheme="default")
     s6 = fem.Function(fem.FunctionSpace(m, Qe))
@@ -73,7 +74,7 @@ def test_rigid_rotation_rotates_stress_exactly(elastic_only):
                               np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
                               ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
                               N, dN, wq, ec.THREE_D, 1.0, kind, True, _params(), NO_CURVES, NO_STATE, sigma,
-                              np.zeros_like(X))
+                              np.zeros_like(X), np.zeros((1, 3)))
     S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
     S1 = R @ S0 @ R.T
     expected = np.array([S1[0, 0], S1[1, 1], S1[2, 2], S1[1, 2], S1[0, 2], S1[0, 1]])
@@ -96,7 +97,7 @@ def test_uniform_stretch_gives_hooke_stress(elastic_only):
                               np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
                               ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
                               N, dN, wq, ec.PLANE_STRAIN, 1.0, kind, True, p, NO_CURVES, NO_STATE, sigma,
-                              np.zeros_like(X))
+                              np.zeros_like(X), np.zeros((len(p), 3)))
     lam, mu = p[0, layout.P_LAMBDA], p[0, layout.P_MU]
     # the mid-step configuration differs from X by dt/2 * v: strain rate exact to O(dt)
     tr = 0.5

@@ -36,11 +36,13 @@ def _run(kinematics, dofmap, sign, x, v, dt, sigma, hourglass, form=STIFFNESS, c
     p = _params() if params is None else params
     if kinematics == "3d":
         out = one_point.one_point_kernel(3, elastic_only)(cells, dofmap, mats, sign, x, v, dt, form, coefficient, p,
-                                                          NO_CURVES, NO_STATE, sigma, hourglass, f)
+                                                          NO_CURVES, NO_STATE, sigma, hourglass, f,
+                                                          np.zeros((len(p), 3)))
     else:
         out = one_point.one_point_kernel(2, elastic_only)(cells, dofmap, mats, sign, x, v, dt,
                                                           kinematics == "axisymmetric", 0.7, form, coefficient, p,
-                                                          NO_CURVES, NO_STATE, sigma, hourglass, f)
+                                                          NO_CURVES, NO_STATE, sigma, hourglass, f,
+                                                          np.zeros((len(p), 3)))
     dt_stable, _, damping_power, _, _, hourglass_power, bad = out
     return f, dt_stable, damping_power, hourglass_power, bad
 
