@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Install everything shockfem needs on Debian 12 (bookworm), as root, from nothing.
 # Idempotent: a second run installs nothing. Used by the Makefile, CI and the Dockerfile.
+# ParaView (pvpython) and xvfb: the test that opens a run's fields with ParaView's own reader.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 VENV=${VENV:-.venv}
 APT_PACKAGES="python3-dolfinx python3-petsc4py python3-slepc4py python3-mpi4py python3-h5py
   python3-numba python3-scipy python3-venv python3-pip python3-meshio python3-gmsh
-  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make"
+  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make
+  paraview python3-paraview python3-matplotlib xvfb xauth"
 missing=""
 for p in $APT_PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -26,8 +28,18 @@ if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, tqdm" 2>/dev/nu
   echo "install: pip install -e .[test,viz]"
   "$VENV/bin/pip" install -q --disable-pip-version-check -c constraints.txt -e ".[test,viz]"
 fi
+# One matplotlib: Debian's (ParaView depends on it). A second copy in the venv would not be whole:
+# Debian's mpl_toolkits is a regular package and wins over the venv's namespace one ("Unable to
+# import Axes3D" on every import of pyplot).
+if [ -d "$VENV/lib/python3.11/site-packages/matplotlib" ]; then
+  echo "install: the venv's own matplotlib removed (Debian's python3-matplotlib serves)"
+  "$VENV/bin/pip" uninstall -q -y matplotlib
+fi
 "$VENV/bin/python" - <<'PY'
+import warnings
+warnings.simplefilter("error")
 import dolfinx, numpy, gmsh
+import matplotlib.pyplot  # no warning: one matplotlib
 assert numpy.__version__.startswith("1.24"), f"numpy {numpy.__version__}: Debian's dolfinx needs 1.24"
 print(f"install: ok (dolfinx {dolfinx.__version__}, gmsh {gmsh.__version__}, numpy {numpy.__version__})")
 PY

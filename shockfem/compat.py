@@ -56,6 +56,12 @@ def set_cell_values(function, values: np.ndarray, num_cells: int) -> None:
     function.x.scatter_forward()
 
 
+def global_node_numbers(space) -> np.ndarray:
+    """The global number of every local node (owned, then ghosts) of a P1 vector ``space``, int64."""
+    imap = space.dofmap.index_map
+    return imap.local_to_global(np.arange(imap.size_local + imap.num_ghosts, dtype=np.int32))
+
+
 def collapse(subspace):
     """A collapsed copy of a subspace (one component of a vector space)."""
     collapsed, _ = subspace.collapse()

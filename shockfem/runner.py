@@ -6,6 +6,7 @@ and read their results back from the run directory.
 from __future__ import annotations
 
 import math
+import os
 
 import signal
 import sys
@@ -20,7 +21,8 @@ from .errors import ModelError, RunInterrupted, UnstableRun
 from .geometry import build_mesh
 from .geometry.quality import check_mesh
 from .model import build_model, describe
-from .output.fields import FieldWriter, von_mises, write_final_shape
+from .output.cell_fields import von_mises
+from .output.fields import FieldWriter, write_final_shape
 from .output import checkpoint
 from .output.history import HistoryRecorder
 from .output.plots import plot_histories
@@ -217,6 +219,8 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
 
     def save_checkpoint():
         """The whole state at the step just finished (``output/checkpoint.py``).  Collective."""
+        if fields:
+            fields.flush()       # a resume keeps the frames the XDMF file lists
         seen = {id(model)}
         kept = {"solver": checkpoint.capture(solver, seen),
                 "sections": [checkpoint.capture(sec, seen) for sec in history.sections],
@@ -317,6 +321,8 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
             rd.write_json("summary.json", summary)
             if comm.rank == 0 and len(history.rows) > 1:
                 plot_histories(out_dir, [b.name for b in scene.bodies])
+                if fields and pictures_wanted():
+                    _pictures(out_dir, solver.model, say)
                 summary["shock"] = _shock_metrics(out_dir, say)
             say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
                 f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
@@ -326,6 +332,23 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
         finally:
             stop.restore()
     return RunResult(summary, solver, history, out_dir)
+
+
+def pictures_wanted() -> bool:
+    """Whether runs draw their deformed shapes (``render.render_run``): unless ``SHOCKFEM_PICTURES=0`` (the
+    test suite's setting: about 1.5 s a run; batch users may want it too)."""
+    return os.environ.get("SHOCKFEM_PICTURES", "1") != "0"
+
+
+def _pictures(out_dir: str, model, say):
+    """The run's peak-stress and final-shape pictures of its deformable bodies (rigid ones carry no
+    stress and may hide the rest)."""
+    rigid = {rb.index for rb in model.rigid}
+    try:
+        from .output.render import render_run
+        render_run(out_dir, [i for i in range(len(model.bodies)) if i not in rigid])
+    except ImportError as exc:
+        say(f"no pictures of the deformed shape: {exc} (pip install shockfem[viz])")
 
 
 class _StopOnSignal:

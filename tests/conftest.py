@@ -6,6 +6,8 @@ import pytest
 os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
 os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
 os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+# No pictures of the deformed shape in every run (about 1.5 s each); tests/sim/test_paraview.py draws them
+os.environ.setdefault("SHOCKFEM_PICTURES", "0")
 
 
 @pytest.fixture(autouse=True)

@@ -51,6 +51,13 @@ def quadrature(cell: str, kinematics: str, integration: str = "full", degree: in
     return points, np.ascontiguousarray(weights), N, dN
 
 
+def centre_gradients(cell: str) -> np.ndarray:
+    """Reference gradients of the P1 shape functions at the reference cell's centre, (nn, tdim)."""
+    ct = BASIX_CELLS[cell]
+    centre = basix.geometry(ct).mean(axis=0)[None, :]
+    return np.ascontiguousarray(basix.create_element(basix.ElementFamily.P, ct, 1).tabulate(1, centre)[1:, 0, :, 0].T)
+
+
 def measure_weight(mesh, kinematics: str, thickness: float = 1.0):
     """The factor every volume integral carries: 2 pi r, the plane-strain depth, or 1."""
     if kinematics == "axisymmetric":

@@ -1,159 +1,130 @@
-"""Field output to XDMF/HDF5 (opens in ParaView and pyvista).
+"""Field output of a run: ``fields.xdmf`` at the field cadence and ``final_shape.xdmf`` at the end.
 
-``fields.xdmf``: the mesh is written once in its reference configuration with a ``body`` cell
-tag; displacement and velocity are P1 fields (use ParaView's *Warp By Vector* with
-``displacement`` for the deformed shape); von Mises stress, pressure, equivalent plastic
-strain and plastic strain rate are cell averages (DG0).  Select one body with a *Threshold*
-on ``body``.
+``fields.xdmf`` (+ ``fields.h5``, ``output/xdmf.py``): one time series of whole grids on the reference
+mesh, each frame carrying the cell's ``body`` number and every field the scene asks for
+(``outputs.fields``): ``displacement`` [m] and ``velocity`` [m/s] at the nodes (3 components, so
+ParaView's *Warp By Vector* with ``displacement`` shows the deformed shape), and cell values
+(``cell_fields.py``): ``von_mises`` and ``pressure`` [Pa], ``plastic_strain`` [-],
+``plastic_strain_rate`` [1/s], the ``stress_*`` components [Pa] and the logarithmic ``strain_*``
+components [-].  *Threshold* on ``body`` selects a body; the file names them.
 
-``final_shape.xdmf``: the mesh in its final, deformed configuration with the same cell fields,
-for measuring a deformed part directly (a Taylor bar's length and footprint).
+``final_shape.xdmf``: one frame whose geometry is the deformed mesh at the run's end, with every
+cell field, for measuring a deformed part directly (a Taylor bar's length and
+footprint).
+
+Under MPI the ranks' owned nodes and cells are gathered to rank 0, which writes the files: the same
+mesh and values as one process writes, its cells and nodes numbered in the ranks' order.
 """
 from __future__ import annotations
 
 import os
-from xml.etree import ElementTree
 
-import h5py
 import numpy as np
-from dolfinx import fem, io
+from dolfinx import io
 
 from .. import compat
-from ..materials.layout import S_EPS, S_RATE
 from ..solver.explicit import ExplicitSolver
+from . import cell_fields
+from .xdmf import Field, Mesh, TimeSeries, three_coordinates, xdmf_cells
 
-# the XDMF files say xi:include: written back under that prefix, not ElementTree's ns0
-ElementTree.register_namespace("xi", "http://www.w3.org/2001/XInclude")
-
-CELL_FIELDS = ("von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
-
-
-def von_mises(sigma: np.ndarray) -> np.ndarray:
-    """sqrt(3/2 s:s) of stresses stored as [..., 6] = [11, 22, 33, 23, 13, 12] [Pa]."""
-    p = sigma[..., :3].mean(axis=-1)
-    s = sigma[..., :3] - p[..., None]
-    return np.sqrt(1.5 * ((s ** 2).sum(axis=-1) + 2.0 * (sigma[..., 3:] ** 2).sum(axis=-1)))
+NODE_FIELDS = {"displacement": "m", "velocity": "m/s"}
 
 
-def pressure(sigma: np.ndarray) -> np.ndarray:
-    """-tr(sigma)/3 [Pa], positive in compression."""
-    return -sigma[..., :3].mean(axis=-1)
+class _Gathered:
+    """The model's owned nodes and cells of every rank, in rank order, on rank 0 (None elsewhere)."""
 
-
-def cell_values(solver: ExplicitSolver, name: str) -> np.ndarray:
-    """A cell field (one of ``CELL_FIELDS``) averaged over each cell's points, (cells,)."""
-    if name == "von_mises":
-        return von_mises(solver.sigma.mean(axis=1))
-    if name == "pressure":
-        return pressure(solver.sigma.mean(axis=1))
-    if not solver.model.plastic:
-        return np.zeros(len(solver.sigma))
-    column = S_EPS if name == "plastic_strain" else S_RATE
-    return solver.plastic_state[:, :, column].mean(axis=1)
-
-
-class _CellFields:
-    """DG0 functions for the requested cell fields of a mesh, written to an XDMF file."""
-
-    def __init__(self, solver: ExplicitSolver, names):
-        mesh = solver.model.meshed.mesh
-        DG0 = compat.cell_space(mesh)
-        self.solver = solver
-        self.functions = {n: fem.Function(DG0, name=n) for n in CELL_FIELDS if n in names}
+    def __init__(self, model):
+        self.comm = model.comm
+        mesh = model.meshed.mesh
+        self.num_nodes = model.num_owned
         self.num_cells = mesh.topology.index_map(mesh.topology.dim).size_local
+        cells = model.dofmap[:self.num_cells]
+        if self.comm.size > 1:
+            cells = compat.global_node_numbers(model.V)[cells]
+        self.cell_type = mesh.topology.cell_name()
+        self.cells = self._stack(xdmf_cells(cells, self.cell_type))
+        self.body = self._stack(model.cell_body[:self.num_cells] + 1)
 
-    def write(self, file: io.XDMFFile, t: float):
-        n = self.num_cells
-        for name, fn in self.functions.items():
-            compat.set_cell_values(fn, cell_values(self.solver, name), n)
-            file.write_function(fn, t)
+    def _stack(self, local: np.ndarray):
+        if self.comm.size == 1:
+            return local
+        parts = self.comm.gather(np.ascontiguousarray(local), root=0)
+        return np.concatenate(parts) if self.comm.rank == 0 else None
+
+    def nodes(self, values: np.ndarray):
+        return self._stack(values[:self.num_nodes])
+
+    def cell_values(self, values: np.ndarray):
+        return self._stack(values[:self.num_cells])
+
+    def mesh(self, points: np.ndarray, body_names) -> Mesh | None:
+        """The mesh on rank 0 with ``points`` (this rank's nodes, gdim coordinates)."""
+        gathered = self.nodes(points)
+        if gathered is None:
+            return None
+        return Mesh(three_coordinates(gathered), self.cells, self.cell_type, self.body, tuple(body_names))
+
+
+def _fields(solver: ExplicitSolver, names) -> list[Field]:
+    nodal = [Field(n, "Node", 3, u) for n, u in NODE_FIELDS.items() if n in names]
+    cells = [Field(n, "Cell", 1, u) for n, u in cell_fields.units(solver, names).items()]
+    return nodal + cells
+
+
+def _values(solver: ExplicitSolver, gathered: _Gathered, names) -> dict:
+    """Every requested field's values, gathered (collective; a dict on rank 0, empty elsewhere)."""
+    out = {}
+    if "displacement" in names:
+        out["displacement"] = gathered.nodes(solver.x - solver.model.X0)
+    if "velocity" in names:
+        out["velocity"] = gathered.nodes(solver.motion()[0])     # at t (the solver holds v_{n+1/2})
+    for name, v in cell_fields.cell_fields(solver, names, gathered.num_cells).items():
+        out[name] = gathered.cell_values(v)
+    return out if solver.comm.rank == 0 else {}
 
 
 class FieldWriter:
+    """``fields.xdmf`` of a run: a frame at each call of ``write``."""
+
     def __init__(self, path: str, solver: ExplicitSolver, fields, resume_after: float | None = None):
-        """A new ``path`` with the mesh and its body tags; or, with ``resume_after`` (a resumed run), the
+        """A new ``path`` with the mesh and its bodies; or, with ``resume_after`` (a resumed run), the
         existing file cut back to its frames up to that time, to be appended to."""
-        m = solver.model
-        self.solver = solver
-        self.fields = tuple(fields)
-        mesh = m.meshed.mesh
-        self.path, self.comm = path, mesh.comm
-        if resume_after is None:
-            with io.XDMFFile(mesh.comm, path, "w") as file:
-                file.write_mesh(mesh)
-                m.meshed.cell_tags.name = "body"
-                file.write_meshtags(m.meshed.cell_tags)
-        else:
-            if self.comm.rank == 0:
-                drop_frames_after(path, resume_after)
-            self.comm.barrier()
-        self.cells = _CellFields(solver, self.fields)
-        self.vel = fem.Function(m.V, name="velocity")
+        self.solver, self.names = solver, tuple(fields)
+        self.gathered = _Gathered(solver.model)
+        mesh = self.gathered.mesh(solver.model.X0, solver.model.body_names)
+        self.series = (TimeSeries(path, mesh, _fields(solver, self.names), resume_after)
+                       if solver.comm.rank == 0 else None)
         self.last = resume_after        # the time of the last frame written
 
     def write(self, t: float):
-        """One frame, the file opened to append it and closed again (1-2 ms): the HDF5 file is whole
-        between frames, so a run killed at any moment leaves it readable to its last complete frame.  A
-        frame at the time of the last one is already there (a run stopped right after a frame)."""
+        """One frame (collective).  A frame at the time of the last one is already there (a run stopped
+        right after a frame)."""
         if t == self.last:
             return
         self.last = t
-        s = self.solver
-        with io.XDMFFile(self.comm, self.path, "a") as file:
-            if "displacement" in self.fields:
-                s.u_fn.x.scatter_forward()
-                file.write_function(s.u_fn, t)
-            if "velocity" in self.fields:
-                # velocity at t_n (the solver holds v_{n-1/2}, v_{n+1/2} is ahead by half a step)
-                self.vel.x.array[:] = (s.v + 0.5 * s.dt * s.a).reshape(-1)
-                self.vel.x.scatter_forward()
-                file.write_function(self.vel, t)
-            self.cells.write(file, t)
+        values = _values(self.solver, self.gathered, self.names)
+        if self.series is not None:
+            self.series.append(t, values)
 
-    def close(self):
-        """Nothing stays open between frames."""
+    def flush(self):
+        """The XDMF file listing every frame written (it is rewritten only now and then as they come)."""
+        if self.series is not None:
+            self.series.flush()
 
-
-def drop_frames_after(path: str, t: float):
-    """Cut the XDMF file ``path`` (as ``FieldWriter`` writes it) back to its frames at times up to ``t``:
-    the later frames of a run resumed from a checkpoint at ``t`` are written again.  Their grids leave
-    the XML and their datasets the HDF5 file (a frame written again at the same time would collide)."""
-    tree = ElementTree.parse(path)
-    domain = tree.getroot().find("Domain")
-    dropped = []
-    for series in domain.findall("Grid[@CollectionType='Temporal']"):
-        for grid in series.findall("Grid"):
-            if float(grid.find("Time").get("Value")) > t:
-                dropped += [item.text.strip().split(":", 1)[1] for item in grid.iter("DataItem")]
-                series.remove(grid)
-    if not dropped:
-        return
-    with h5py.File(os.path.splitext(path)[0] + ".h5", "a") as h5:
-        for name in dropped:
-            if name in h5:
-                del h5[name]
-    partial = path + ".partial"
-    tree.write(partial, xml_declaration=True, encoding="utf-8")
-    os.replace(partial, path)
+    close = flush
 
 
 def write_final_shape(path: str, solver: ExplicitSolver):
-    """The deformed mesh at the solver's time with all cell fields, to ``path`` (XDMF)."""
-    m = solver.model
-    mesh = m.meshed.mesh
-    x = mesh.geometry.x
-    reference = x.copy()
-    nodes_per_cell = m.dofmap.shape[1]
-    # P1 dofs and geometry nodes list a cell's vertices in the same (reference) order
-    geometry = mesh.geometry.dofmap.array.reshape(-1, nodes_per_cell)[:len(m.dofmap)]
-    x[geometry, :m.gdim] = solver.x[m.dofmap]
-    try:
-        with io.XDMFFile(mesh.comm, path, "w") as f:
-            f.write_mesh(mesh)
-            f.write_meshtags(m.meshed.cell_tags)
-            _CellFields(solver, CELL_FIELDS).write(f, solver.t)
-    finally:
-        x[:] = reference
+    """The deformed mesh at the solver's time with every cell field, to ``path`` (collective).  No
+    displacement: the geometry is already the deformed one (a warp by it would deform it twice)."""
+    names = tuple(cell_fields.SCALARS) + tuple(cell_fields.TENSORS)
+    gathered = _Gathered(solver.model)
+    mesh = gathered.mesh(solver.x, solver.model.body_names)
+    values = _values(solver, gathered, names)
+    if mesh is not None:
+        series = TimeSeries(path, mesh, _fields(solver, names))
+        series.append(solver.t, values)
+        series.close()
 
 
 def write_mesh(meshed, path: str):

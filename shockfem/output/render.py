@@ -1,4 +1,5 @@
-"""Off-screen pictures of meshes (pyvista): a part as the user will see it in ParaView."""
+"""Off-screen pictures (pyvista): a part's mesh as the user will see it in ParaView, and a run's deformed
+shape coloured by von Mises from its XDMF files."""
 from __future__ import annotations
 
 import os
@@ -48,37 +49,60 @@ def render_mesh(meshed, path: str, title: str = "", cut: bool = True):
     os.replace(partial_path(path), path)
 
 
-def render_state(solver, path: str, field: str = "von_mises", title: str = "", cut: bool = True,
-                 bodies: list[int] | None = None):
-    """A PNG of the solver's current, deformed mesh coloured by a cell field (``fields.CELL_FIELDS``;
-    stresses in MPa), cut open in 3D as ``render_mesh`` does: a run's final shape and stress field.
-    ``bodies``: the body indices (scene order) to show, all by default."""
-    from .fields import cell_values
+def _draw(grid, path: str, label: str, title: str, dim: int, cut: bool):
+    """``grid`` coloured by its cell array ``label``, with edges, framed as ``render_mesh`` frames, to ``path``."""
     pv = pyvista()
-    m = solver.model
-    mesh = m.meshed.mesh
-    grid = _grid(m.meshed)
-    # P1 geometry nodes and the solver's nodes list a cell's vertices alike (``fields.write_final_shape``)
-    points = np.array(mesh.geometry.x, copy=True)
-    geometry = mesh.geometry.dofmap.array.reshape(-1, m.dofmap.shape[1])[:len(m.dofmap)]
-    points[geometry, :m.gdim] = solver.x[m.dofmap]
-    grid.points = points
-    values = cell_values(solver, field)
-    stress = field in ("von_mises", "pressure")
-    label = f"{field.replace('_', ' ')} [{'MPa' if stress else '-'}]"
-    grid.cell_data[label] = values[:grid.n_cells] / (1e6 if stress else 1.0)
-    if bodies is not None:
-        grid = grid.extract_cells(np.flatnonzero(np.isin(m.cell_body[:grid.n_cells], bodies)))
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
-    grid = _framed(plotter, grid, mesh.geometry.dim, cut)
+    grid = _framed(plotter, grid, dim, cut)
     # no scalar bar: VTK's (9.x wheels) lays out its tick labels through std::regex, which aborts the
     # process here (std::bad_alloc in vtk::is_printf_format); the colour range is written instead
     shown = grid.cell_data[label]
     plotter.add_mesh(grid, scalars=label, show_edges=True, cmap="viridis", edge_color="#333333", line_width=0.3,
                      show_scalar_bar=False)
-    plotter.add_text(f"{title or f't = {solver.t * 1e3:.4g} ms'}\n{label}: {shown.min():.4g} (dark blue) to "
-                     f"{shown.max():.4g} (yellow)", font_size=10)
+    plotter.add_text(f"{title}\n{label}: {shown.min():.4g} (dark blue) to {shown.max():.4g} (yellow)", font_size=10)
     plotter.reset_camera()
     plotter.screenshot(partial_path(path))
     plotter.close()
     os.replace(partial_path(path), path)
+
+
+def _label(field: str) -> tuple[str, float]:
+    """The picture's name of a cell field and the scale to its unit (stresses in MPa)."""
+    stress = field in ("von_mises", "pressure") or field.startswith("stress_")
+    return f"{field.replace('_', ' ')} [{'MPa' if stress else '-'}]", (1e-6 if stress else 1.0)
+
+
+def render_run(run_dir: str, bodies: list[int] | None = None, cut: bool = True) -> list[str]:
+    """A run directory's pictures, from its files: ``peak_stress.png``, the frame of ``fields.xdmf`` with
+    the highest von Mises stress, warped by its displacement, and ``final_shape.png``, the deformed mesh
+    of ``final_shape.xdmf``, both coloured by von Mises.  ``bodies``: the body indices (scene order) to
+    show, all by default.  Returns the pictures written (none without the files or von Mises)."""
+    import h5py
+    pv = pyvista()
+    written = []
+    for name, picture in (("fields", "peak_stress.png"), ("final_shape", "final_shape.png")):
+        xdmf = os.path.join(run_dir, f"{name}.xdmf")
+        if not os.path.exists(xdmf):
+            continue
+        with h5py.File(os.path.join(run_dir, f"{name}.h5"), "r") as h5:
+            shown = (np.ones(len(h5["mesh/body"]), bool) if bodies is None
+                     else np.isin(h5["mesh/body"][()], np.asarray(bodies) + 1))
+            frames = [(float(g.attrs["time"]), g["von_mises"][()][shown].max(initial=0.0))
+                      for g in h5["frames"].values() if "von_mises" in g]
+            dim = 3 if np.ptp(h5["mesh/geometry"][:, 2]) > 0 else 2
+        if not frames:
+            continue
+        t, peak = max(frames, key=lambda f: f[1])
+        reader = pv.get_reader(xdmf)
+        reader.set_active_time_value(t)
+        grid = reader.read()
+        if "displacement" in grid.point_data:
+            grid = grid.warp_by_vector("displacement")
+        label, scale = _label("von_mises")
+        grid.cell_data[label] = grid.cell_data["von_mises"] * scale
+        grid = grid.extract_cells(np.flatnonzero(shown))
+        what = "highest von Mises" if name == "fields" else "final shape"
+        _draw(grid, os.path.join(run_dir, picture), label, f"{what}: t = {t * 1e3:.4g} ms (deformed, true scale)",
+              dim, cut)
+        written.append(os.path.join(run_dir, picture))
+    return written

@@ -3,10 +3,11 @@
     resolved_scene.json  the scene as run, in SI
     provenance.json      versions of shockfem, dolfinx, gmsh...; git hash; command; processes
     run.log              what was run and what happened
-    fields.xdmf/.h5      displacement, velocity, von Mises, pressure at the field cadence
+    fields.xdmf/.h5      displacement, velocity, von Mises, pressure, stress and strain at the field cadence
+    final_shape.xdmf/.h5 the deformed mesh at the end with every cell field
     history.h5/.csv      per-body mean velocity/acceleration and energies at the history cadence
     summary.json         status, sizes, speed, energy balance and per-body results
-    energy.png, bodies.png
+    energy.png, bodies.png, peak_stress.png, final_shape.png (the deformed shape coloured by von Mises)
 
 Crash-safe: a rerun into the directory first removes the previous run's files (so no old summary
 stands beside a new scene); ``summary.json`` says ``running`` from the start and every JSON and
@@ -41,8 +42,9 @@ def git_hash() -> str | None:
 
 # what a run writes, so that a rerun clears exactly that (a study's own files beside its runs stay)
 RUN_FILES = ("resolved_scene.json", "provenance.json", "run.log", "summary.json", "fields.xdmf", "fields.h5",
-             "history.h5", "history.csv", "final_shape.xdmf", "final_shape.h5", "final_shape.png", "energy.png",
-             "bodies.png", "stages.png", "pulse_*.png", "srs_*.png", "*.partial.*")
+             "history.h5", "history.csv", "final_shape.xdmf", "final_shape.h5", "final_shape.png", "peak_stress.png", "energy.png",
+             "bodies.png", "stages.png", "pulse_*.png", "srs_*.png", "*.partial.*",
+             "*.partial")
 # the run's checkpoints (``checkpoint.py``), a directory of their own, cleared with the rest
 CHECKPOINT_DIRECTORY = "checkpoint"
 

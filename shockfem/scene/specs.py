@@ -16,7 +16,8 @@ SHAPES = tuple(PARTS) + ("box", "mesh")
 BOX_REGIONS = {2: ("left", "right", "bottom", "top"), 3: ("left", "right", "front", "back", "bottom", "top")}
 BC_TYPES = ("fixed", "symmetry", "velocity", "force")
 DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
-FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate")
+FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate", "stress",
+          "strain")
 INTEGRATIONS = ("reduced", "full")
 HOURGLASS_FORMS = tuple(HOURGLASS_CODES)   # elements/one_point.py
 

@@ -1,5 +1,5 @@
 """A study's finite-element case: a raw scene run into a run directory of its own (``shockfem run``'s:
-XDMF fields, histories, summary), a picture of its final shape, and the run read back."""
+XDMF fields, histories, summary, the pictures of its deformed shape), and the run read back."""
 from __future__ import annotations
 
 import json
@@ -9,7 +9,6 @@ from dataclasses import dataclass
 
 from ..errors import ModelError, UnstableRun
 from ..output.history import read_history
-from ..output.render import render_state
 from ..runner import run_scene
 from ..scene import resolve
 
@@ -28,19 +27,13 @@ def run_case(name: str, raw: dict, out_dir: str, echo) -> tuple[CaseRun | None, 
     t0 = time.perf_counter()
     path = os.path.join(out_dir, name)
     try:
-        finished = run_scene(resolve(raw), path, progress=False, quiet=True)
+        run_scene(resolve(raw), path, progress=False, quiet=True)
     except UnstableRun as exc:
         echo(f"  {name}: unstable: {exc}")
         return None, time.perf_counter() - t0, "unstable"
     except ModelError as exc:                 # a mesh gmsh cannot make: the study goes on without the run
         echo(f"  {name}: not run: {exc}")
         return None, time.perf_counter() - t0, "not meshed"
-    # the final shape and its stress field, as a picture beside the run's XDMF
-    model = finished.solver.model
-    deformable = [i for i in range(len(model.body_mass)) if i not in {rb.index for rb in model.rigid}]
-    render_state(finished.solver, os.path.join(path, "final_shape.png"), "von_mises",
-                 f"{name}: von Mises stress at t = {finished.solver.t * 1e3:.3g} ms (deformed; rigid bodies "
-                 "not shown)", bodies=deformable)
     with open(os.path.join(path, "summary.json")) as fh:
         summary = json.load(fh)
     result = CaseRun(path, summary, read_history(os.path.join(path, "history.csv"))[0])

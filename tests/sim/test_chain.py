@@ -51,7 +51,14 @@ def test_axisymmetric_chain_reports_the_same_table(tmp_path):
     assert [s["pair"] for s in chain["stages"]] == ["m1_m2", "m2_m3"]
     assert chain["stages"][1]["struck"] == "m3" and chain["gain"] > 1.0
     assert chain["test_article_pulse"]["pulse"]["peak_g"] > 0
-    assert (tmp_path / "axisymmetric" / "fields.xdmf").exists()
+    # the chain's fields open as any run's (tests/sim/test_paraview.py): every body, named
+    import meshio
+    fields = tmp_path / "axisymmetric" / "fields.xdmf"
+    reader = meshio.xdmf.TimeSeriesReader(str(fields))
+    reader.read_points_cells()
+    _, _, cells = reader.read_data(reader.num_steps - 1)
+    assert set(cells["body"][0]) == {1, 2, 3} and "stress_zz" in cells
+    assert all(f'key="{b}"' in fields.read_text() for b in ("m1", "m2", "m3"))
 
 
 def test_bad_chain_lists_its_problems():
