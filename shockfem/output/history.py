@@ -1,5 +1,6 @@
-"""Time histories: per-body mean velocity and acceleration, accelerometer velocities, contact
-forces, stresses along slender bodies (``sections``), energies; HDF5 and CSV.
+"""Time histories: per-body mean velocity, acceleration and energies, the reactions of the supports,
+accelerometers' displacement, velocity and acceleration, contact forces, stresses along slender bodies
+(``sections``), energies; HDF5 and CSV.
 
 Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes; a run streams the
 CSV row by row (flushed every half second), so a killed run leaves it readable to its last samples, and
@@ -27,6 +28,8 @@ from ..solver.explicit import ExplicitSolver
 from .sections import SectionStresses
 
 
+# each body's (``ExplicitSolver.body_energies``): internal is the work of its stresses, stored and plastic
+BODY_ENERGIES = ("kinetic", "internal", "plastic", "hourglass")
 ENERGY_COLUMNS = ("kinetic", "internal", "plastic", "damping", "hourglass", "bulk_viscosity", "contact",
                   "external", "balance")
 
@@ -50,10 +53,18 @@ class HistoryRecorder:
         for b in m.bodies:
             self.columns += [(f"{b.name}.v_{a}", "m/s") for a in axes]
             self.columns += [(f"{b.name}.a_{a}", "m/s^2") for a in axes]
+        for b in m.bodies:
+            self.columns += [(f"{b.name}.energy_{k}", "J") for k in BODY_ENERGIES]
+        self.reactions = solver.reaction_regions()
+        for region, components in self.reactions:
+            self.columns += [(f"reaction.{region}_{axes[c]}", "N") for c in components]
         self.meters = [_Meter(solver, am) for am in m.accelerometers]
         self.notes = [meter.note for meter in self.meters]
         for am in m.accelerometers:
-            self.columns += [(f"accelerometer.{am.name}.v_{a}", "m/s") for a in axes]
+            # the velocity is the metrics' channel (its interval means cannot alias); the acceleration is
+            # the node's own at the sample
+            for quantity, unit in (("u", "m"), ("v", "m/s"), ("a", "m/s^2")):
+                self.columns += [(f"accelerometer.{am.name}.{quantity}_{a}", unit) for a in axes]
         for c in m.contacts:
             # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
             self.columns += [(f"contact.{c.name}.normal_{a}", "N") for a in axes]
@@ -109,8 +120,14 @@ class HistoryRecorder:
         row = [s.t]
         for vb, ab in zip(v, a):
             row += list(vb) + list(ab)
+        energies = s.body_energies()
+        for i in range(len(v)):
+            row += [float(energies[k][i]) for k in BODY_ENERGIES]
+        reactions = s.reactions()
+        for (region, components), force in zip(self.reactions, reactions):
+            row += [float(force[c]) for c in components]
         for meter in self.meters:
-            row += list(meter.velocity())
+            row += [float(q) for q in meter.motion().reshape(-1)]
         for pair in s.contacts:
             row += list(pair.force_a) + list(pair.friction_a)
         for spring in s.springs:
@@ -233,14 +250,16 @@ class _Meter:
         total = solver.comm.allreduce(w.sum(), op=MPI.SUM) if solver.parallel else w.sum()
         return w / total
 
-    def velocity(self) -> np.ndarray:
-        """Its velocity at t (``ExplicitSolver.motion``), on every rank.  Collective."""
+    def motion(self) -> np.ndarray:
+        """Its displacement, velocity and acceleration at t (``ExplicitSolver.motion``), (3, gdim) on every
+        rank.  Collective."""
         s = self.solver
-        v = s.motion(self.nodes)[0]
+        v, a = s.motion(self.nodes)
+        u = s.x[self.nodes] - s.model.X0[self.nodes]
         if self.owner == -1:
-            local = (self.mass[:, None] * v).sum(axis=0)
+            local = np.array([(self.mass[:, None] * q).sum(axis=0) for q in (u, v, a)])
         else:
-            local = v[0] if s.comm.rank == self.owner else np.zeros(s.model.gdim)
+            local = np.array([q[0] for q in (u, v, a)]) if s.comm.rank == self.owner else np.zeros((3, s.model.gdim))
         return s.comm.allreduce(local, op=MPI.SUM) if s.parallel else local
 
 

@@ -169,6 +169,7 @@ class ExplicitSolver:
         self.times = PhaseTimes()
         self.rigid_states = [RigidState(rb.center0.copy(), np.zeros(gdim)) for rb in m.rigid]
         self._prescribed_at = -1        # the step ``_prescribed_motion`` was last evaluated at
+        self._reaction_dofs = None      # ``reactions``' held dofs by region, made at its first call
         self._set_initial_velocity()
         if initial_velocity is not None:
             self.v[:] = initial_velocity(self.x)
@@ -520,6 +521,47 @@ class ExplicitSolver:
             v[mask] = prescribed_v[nodes][mask]
             a[mask] = prescribed_a[nodes][mask]
         return v, a
+
+    def reaction_regions(self) -> list[tuple[str, list[int]]]:
+        """The supports whose reactions ``reactions`` gives: every region with a fixed, symmetry or
+        prescribed-velocity condition (the axis of an axisymmetric mesh left out), with the components
+        it holds.  The same on every rank."""
+        held: dict[str, set] = {}
+        for con in self.model.constraints:
+            if con.region != "axis":
+                held.setdefault(con.region, set()).update((con.dofs % self.model.gdim).tolist())
+        if self.parallel:
+            merged = {}
+            for part in self.comm.allgather(held):
+                for region, comps in part.items():
+                    merged.setdefault(region, set()).update(comps)
+            held = merged
+        return [(region, sorted(held[region])) for region in sorted(held)]
+
+    def reactions(self) -> list[np.ndarray]:
+        """The force each support (``reaction_regions``) applies to the body at t [N], (gdim,) each: over
+        its held dofs, m a_prescribed + alpha m v_prescribed - (f_ext + f_con - f_int), what the
+        condition adds to the forces for the dofs to follow it (the mass damping's force included; a dof
+        held by two regions counts in each).  Collective."""
+        m = self.model
+        if self._reaction_dofs is None:     # each region's owned held dofs, once
+            owned = m.num_owned * m.gdim
+            self._reaction_dofs = []
+            for region, _ in self.reaction_regions():
+                dofs = np.unique(np.concatenate([c.dofs for c in m.constraints if c.region == region]))
+                self._reaction_dofs.append(dofs[dofs < owned])
+        if not self._reaction_dofs:
+            return []
+        v, a = (q.reshape(-1) for q in self._prescribed_motion())
+        forces = (self.f_ext.reshape(-1), self.f_con.reshape(-1), self.f_int.reshape(-1))
+        out = np.zeros((len(self._reaction_dofs), m.gdim))
+        for k, dofs in enumerate(self._reaction_dofs):
+            push = (m.mass[dofs // m.gdim] * (a[dofs] + m.alpha * v[dofs])
+                    - (forces[0][dofs] + forces[1][dofs] - forces[2][dofs]))
+            np.add.at(out[k], dofs % m.gdim, push)
+        if self.parallel:
+            out = self.comm.allreduce(out, op=MPI.SUM)
+        return list(out)
 
     def _prescribed_motion(self) -> tuple[np.ndarray, np.ndarray]:
         """The constrained dofs' prescribed velocity at t and its rate (central difference over the last
