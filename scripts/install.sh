@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Install everything shockfem needs on Debian 12 (bookworm), as root, from nothing.
 # Idempotent: a second run installs nothing. Used by the Makefile, CI and the Dockerfile.
-# ParaView (pvpython) and xvfb: the test that opens a run's fields with ParaView's own reader.
+# ParaView (pvpython) and xvfb: the test that opens a run's fields with ParaView's own reader
+# (INSTALL_PARAVIEW=0 leaves them out: the Dockerfile's batch image does not run the tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 VENV=${VENV:-.venv}
 APT_PACKAGES="python3-dolfinx python3-petsc4py python3-slepc4py python3-mpi4py python3-h5py
   python3-numba python3-scipy python3-venv python3-pip python3-meshio python3-gmsh
-  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make
-  paraview python3-paraview python3-matplotlib xvfb xauth"
+  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make"
+if [ "${INSTALL_PARAVIEW:-1}" = 1 ]; then
+  APT_PACKAGES="$APT_PACKAGES paraview python3-paraview python3-matplotlib xvfb xauth"
+fi
 missing=""
 for p in $APT_PACKAGES; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -23,15 +26,16 @@ if [ ! -x "$VENV/bin/python" ]; then
   echo "install: venv $VENV (with Debian's dolfinx through --system-site-packages)"
   /usr/bin/python3 -m venv --system-site-packages "$VENV"
 fi
-if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, tqdm" 2>/dev/null \
+if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, tqdm, distributed, pyDOE3" 2>/dev/null \
    || [ pyproject.toml -nt "$VENV/.installed" ] || [ constraints.txt -nt "$VENV/.installed" ]; then
-  echo "install: pip install -e .[test,viz]"
-  "$VENV/bin/pip" install -q --disable-pip-version-check -c constraints.txt -e ".[test,viz]"
+  echo "install: pip install -e .[test,viz,batch]"
+  "$VENV/bin/pip" install -q --disable-pip-version-check -c constraints.txt -e ".[test,viz,batch]"
 fi
 # One matplotlib: Debian's (ParaView depends on it). A second copy in the venv would not be whole:
 # Debian's mpl_toolkits is a regular package and wins over the venv's namespace one ("Unable to
 # import Axes3D" on every import of pyplot).
-if [ -d "$VENV/lib/python3.11/site-packages/matplotlib" ]; then
+if [ -d "$VENV/lib/python3.11/site-packages/matplotlib" ] \
+   && dpkg-query -W -f='${Status}' python3-matplotlib 2>/dev/null | grep -q "install ok installed"; then
   echo "install: the venv's own matplotlib removed (Debian's python3-matplotlib serves)"
   "$VENV/bin/pip" uninstall -q -y matplotlib
 fi

@@ -1,15 +1,16 @@
 """shockfem: a finite-element impact workbench on FEniCSx (dolfinx) for shock-machine design.
 
-The Python API (``docs/api.md``): ``load_scene``, ``run``, ``resume``, ``load_run`` and the ``Run`` they return.
+The Python API (``docs/api.md``): ``load_scene``, ``run``, ``resume``, ``load_run`` and the ``Run`` they return,
+``sweep`` for a batch of runs.
 They load on first use, so that ``import shockfem`` stays light.
 """
 from .version import __version__
 
-__all__ = ["__version__", "load_scene", "run", "resume", "load_run", "Run"]
+__all__ = ["__version__", "load_scene", "run", "resume", "load_run", "Run", "sweep"]
 
 
 def __getattr__(name):
-    if name in ("load_scene", "run", "resume", "load_run", "Run"):
+    if name in ("load_scene", "run", "resume", "load_run", "Run", "sweep"):
         from . import api
         return getattr(api, name)
     raise AttributeError(f"module 'shockfem' has no attribute {name!r}")

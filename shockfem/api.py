@@ -10,6 +10,8 @@
     run.fields                         # results/bar_2ms/fields.xdmf, for ParaView or pyvista
     again = shockfem.load_run("results/bar_2ms")
     shockfem.resume("results/bar_2ms")     # a run stopped by SIGTERM or a kill goes on from its checkpoint
+    rows = shockfem.sweep("studies/foundation/bar_impact.toml", ['boundary.0.value=[2, 5] m/s'],
+                          "results/bar_sweep")   # a case per level, both cores; rows of cases.csv
 
 A scene is a TOML file or a dictionary of the same tables (units as strings, "5 m/s"); overrides
 are the command line's ``--set`` assignments.  ``run`` writes the same run directory as
@@ -28,6 +30,60 @@ import numpy as np
 
 from .output.history import read_history
 from .scene import Scene, apply_override, load_scene as _load_scene_file, resolve
+
+
+def is_launcher_scene(raw: dict) -> bool:
+    """A gas-gun scene: a [launcher] table and no bodies (a chain's [launcher] fires its first body)."""
+    return "launcher" in raw and "bodies" not in raw and "chain" not in raw
+
+
+def check_raw(raw: dict) -> str:
+    """What ``shockfem check`` does to a raw scene (plain, chain or launcher): read every field through
+    the checker; returns what it is, or raises ``SceneError`` listing every problem."""
+    from .amplifier.chain import is_chain
+    if is_chain(raw):
+        from .amplifier.chain import resolve_chain
+        spec, scene, _ = resolve_chain(raw)
+        return f"chain of {len(scene.bodies)} bodies, {spec.architecture}, fidelity {spec.fidelity}"
+    if is_launcher_scene(raw):
+        from .launcher.scene import resolve_design, resolve_launcher
+        name, gun, _ = resolve_launcher(raw)
+        design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
+        return f"launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design}"
+    scene = resolve(raw)
+    return f"{scene.kinematics}, {len(scene.bodies)} bodies, end time {scene.end_time:.6g} s"
+
+
+def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", generators: str = "",
+          resolution: int = 3, overrides: list[str] | tuple = (), cases_table: str | None = None,
+          executor: str = "local", workers: int | None = None, ranks: int = 1, scheduler: str | None = None,
+          progress: bool = False, echo=print) -> list[dict]:
+    """Run a sweep of the scene file ``scene``: the cases of ``design`` over the factors ``vary``
+    (``"bodies.striker.velocity=[5, 10, 20] m/s"``, as ``shockfem sweep --vary``), or of the CSV table
+    ``cases_table``, each with ``overrides`` first; every case checked before any runs (``SceneError``
+    lists the problems of all); run by ``executor`` (``study/batch.py``: "local" processes or "dask") into
+    ``out_dir/<case>``, skipping cases completed before.  Returns the table's rows (``cases.csv``)."""
+    from .scene import read_toml
+    from .scene.checker import SceneError
+    from .study.batch import run_batch
+    from .study.sweep import cases_from_table, design_cases, parse_vary
+    if cases_table:
+        cases = cases_from_table(scene, cases_table, tuple(overrides))
+    else:
+        cases = design_cases(scene, [parse_vary(v) for v in vary], design, generators, resolution, tuple(overrides))
+    problems = []
+    for case in cases:
+        raw = read_toml(scene)
+        try:
+            for assignment in case.overrides:
+                raw = apply_override(raw, assignment)
+            check_raw(raw)
+        except SceneError as e:
+            problems += [f"{case.name} ({', '.join(f'{k}={v}' for k, v in case.factors.items())}): {p}"
+                         for p in e.problems]
+    if problems:
+        raise SceneError(problems)
+    return run_batch(cases, out_dir, executor, workers, ranks, scheduler, progress, echo)
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,5 @@
 """The ``shockfem`` command: run, check, mesh, metrics, modes, amplifier, programmer, launcher,
-design-machine, study, verify, bench (``shockfem COMMAND --help`` for each).
+design-machine, study, sweep, verify, bench (``shockfem COMMAND --help`` for each).
 
 Exit codes: 0 ok, 2 bad input (every problem listed, no traceback), 3 run stopped as
 unstable (outputs kept), 1 a verification case failed, 130 / 143 interrupted by SIGINT / SIGTERM.
@@ -12,6 +12,7 @@ import os
 import sys
 
 from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, EXIT_UNSTABLE, ModelError, RunInterrupted, UnstableRun
+from .api import check_raw
 from .units import LB
 
 
@@ -145,6 +146,28 @@ def _parser() -> argparse.ArgumentParser:
                     help="smoke: coarse and short (what the tests run); default: the study's answer")
     st.add_argument("--out", help="results directory (default: results/<name>)")
 
+    sw = command("sweep", "run a scene over a design of its fields' levels (or a table of cases), a run directory "
+                          "per case, both cores or a Dask cluster, resumable; the cases' results in one table")
+    sw.add_argument("scene", help="scene file (TOML)")
+    sw.add_argument("--vary", action="append", default=[], metavar="PATH=LEVELS",
+                    help="a factor and its levels, e.g. bodies.striker.velocity=\"[5, 10, 20] m/s\" (repeat for more)")
+    sw.add_argument("--cases", metavar="TABLE.csv", help="instead of --vary: a CSV table, one column per scene path, "
+                                                       "one row per case (a 'case' column names them)")
+    sw.add_argument("--design", choices=("full", "fractional"), default="full",
+                    help="full factorial, or a two-level fractional factorial (pyDOE3)")
+    sw.add_argument("--generators", help="fractional: pyDOE3's generators, e.g. 'a b c abc' (D = ABC)")
+    sw.add_argument("--resolution", type=int, default=3, help="fractional without generators: the smallest design "
+                                                              "of this resolution")
+    sw.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
+                    help="override a scene field in every case")
+    sw.add_argument("--out", help="directory of the case directories and the table (default: results/<scene>_sweep)")
+    sw.add_argument("--executor", choices=("local", "dask"), default="local",
+                    help="local processes, or a Dask distributed cluster (a LocalCluster, or --scheduler)")
+    sw.add_argument("--workers", type=int, help="cases at a time (default: the cores over --ranks)")
+    sw.add_argument("--ranks", type=int, default=1, help="MPI processes per case (mpirun -n RANKS)")
+    sw.add_argument("--scheduler", help="dask: the address of a running scheduler (e.g. tcp://host:8786)")
+    sw.add_argument("--no-progress", action="store_true", help="a line per case instead of a progress bar")
+
     v = command("verify", "verification against exact and published solutions")
     v.add_argument("names", nargs="*", help="cases to run (default: all)")
     v.add_argument("--list", action="store_true", help="list the cases")
@@ -180,11 +203,6 @@ def _chain_raw(args):
     return raw if is_chain(raw) else None
 
 
-def _is_launcher_scene(raw: dict) -> bool:
-    """A gas-gun scene: a [launcher] table and no bodies (a chain's [launcher] fires its first body)."""
-    return "launcher" in raw and "bodies" not in raw and "chain" not in raw
-
-
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     from .scene import SceneError
@@ -205,24 +223,6 @@ def main(argv=None) -> int:
     except RunInterrupted as e:
         print(f"interrupted: {e} (the run's outputs were finished and kept)", file=sys.stderr)
         return EXIT_INTERRUPTED + e.signum
-
-
-def check_raw(raw: dict) -> str:
-    """What ``shockfem check`` does to a raw scene (plain, chain or launcher): read every field through
-    the checker; returns what it is, or raises ``SceneError`` listing every problem."""
-    from .amplifier.chain import is_chain
-    if is_chain(raw):
-        from .amplifier.chain import resolve_chain
-        spec, scene, _ = resolve_chain(raw)
-        return f"chain of {len(scene.bodies)} bodies, {spec.architecture}, fidelity {spec.fidelity}"
-    if _is_launcher_scene(raw):
-        from .launcher.scene import resolve_design, resolve_launcher
-        name, gun, _ = resolve_launcher(raw)
-        design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
-        return f"launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design}"
-    from .scene import resolve
-    scene = resolve(raw)
-    return f"{scene.kinematics}, {len(scene.bodies)} bodies, end time {scene.end_time:.6g} s"
 
 
 def _dispatch(args) -> int:
@@ -278,6 +278,20 @@ def _dispatch(args) -> int:
         return _programmer(args)
     if args.command == "design-machine":
         return _design_machine(args)
+    if args.command == "sweep":
+        from .api import sweep
+        if bool(args.vary) == bool(args.cases):
+            raise ModelError("sweep: give the factors (--vary PATH=LEVELS, repeated) or a table of cases (--cases), "
+                             "one of the two")
+        if args.ranks < 1 or (args.workers is not None and args.workers < 1):
+            raise ModelError("sweep: --ranks and --workers take a whole number of at least 1")
+        name = os.path.splitext(os.path.basename(args.scene))[0]
+        out = args.out or os.path.join("results", f"{name}_sweep")
+        rows = sweep(args.scene, args.vary, out, args.design, args.generators or "", args.resolution, args.set, args.cases,
+                     args.executor, args.workers, args.ranks, args.scheduler, progress=not args.no_progress)
+        done = sum(r["status"] == "completed" for r in rows)
+        print(f"{done} of {len(rows)} cases completed; the table: {os.path.join(out, 'cases.csv')}")
+        return EXIT_OK if done == len(rows) else 1
     if args.command == "study":
         if args.name == "amplifier":
             from .study.amplifier import run_study
