@@ -24,12 +24,17 @@ from __future__ import annotations
 import json
 import os
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 from types import MappingProxyType
 
 import numpy as np
 
-from .output.history import read_history
-from .scene import Scene, apply_override, load_scene as _load_scene_file, resolve
+from .output.history_file import read_history
+
+# the scene layer (and through it numba and dolfinx) loads on first use: load_run reads a run directory
+# without them
+if TYPE_CHECKING:
+    from .scene import Scene
 
 
 def is_launcher_scene(raw: dict) -> bool:
@@ -50,6 +55,7 @@ def check_raw(raw: dict) -> str:
         name, gun, _ = resolve_launcher(raw)
         design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
         return f"launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design}"
+    from .scene import resolve
     scene = resolve(raw)
     return f"{scene.kinematics}, {len(scene.bodies)} bodies, end time {scene.end_time:.6g} s"
 
@@ -63,7 +69,7 @@ def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", gener
     ``cases_table``, each with ``overrides`` first; every case checked before any runs (``SceneError``
     lists the problems of all); run by ``executor`` (``study/batch.py``: "local" processes or "dask") into
     ``out_dir/<case>``, skipping cases completed before.  Returns the table's rows (``cases.csv``)."""
-    from .scene import read_toml
+    from .scene import apply_override, read_toml
     from .scene.checker import SceneError
     from .study.batch import run_batch
     from .study.sweep import cases_from_table, design_cases, parse_vary
@@ -111,6 +117,7 @@ def load_scene(source: str | dict, overrides: list[str] | tuple = ()) -> Scene:
     """A checked scene (SI inside) from a TOML path or a dictionary, with ``--set``-style overrides.
 
     Raises ``shockfem.errors.SceneError`` listing every problem (field, what is wrong, what was given)."""
+    from .scene import apply_override, load_scene as _load_scene_file, resolve
     if isinstance(source, (str, os.PathLike)):
         return _load_scene_file(os.fspath(source), list(overrides))
     raw = source
@@ -129,6 +136,7 @@ def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields:
     ``shockfem.errors.UnstableRun`` when the run goes unstable (its outputs are kept); a
     ``SceneError`` or ``ModelError`` on bad input."""
     from .runner import run_scene
+    from .scene import Scene
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
     run_scene(scene, out_dir, progress=progress, write_fields=fields, quiet=True, on_step=on_step)

@@ -463,7 +463,7 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
             res = run_scene(scene, out_dir, progress=progress, write_fields=True, quiet=not progress,
                             origin={"chain": raw, "fidelity": spec.fidelity})
         wall = res.summary["wall_time_s"]
-        from ..output.history import read_history_csv
+        from ..output.history_file import read_history_csv
         h = read_history_csv(os.path.join(out_dir, "history.csv"))
         for c in scene.contacts:        # an interface's force: its contact's and its pad's
             pad = f"spring.{_pad_name(c.name)}.force_z"

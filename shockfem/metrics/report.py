@@ -22,7 +22,7 @@ from dataclasses import asdict
 
 import numpy as np
 
-from ..output.history import read_history_csv
+from ..output.history_file import read_history_csv
 from ..output.rundir import write_json_atomic
 from . import filters, shapes
 from .pulse import pulse_metrics

@@ -5,7 +5,8 @@ import os
 
 from .figures import pyplot, save
 
-from .history import ENERGY_COLUMNS, read_history_csv
+from .history import ENERGY_COLUMNS
+from .history_file import read_history_csv
 from ..units import G0
 
 

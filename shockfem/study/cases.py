@@ -8,7 +8,7 @@ import time
 from dataclasses import dataclass
 
 from ..errors import ModelError, UnstableRun
-from ..output.history import read_history
+from ..output.history_file import read_history
 from ..runner import run_scene
 from ..scene import resolve
 

@@ -27,7 +27,7 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.signals import acceleration_from_velocity
 from ..metrics.stages import stage_table
-from ..output.history import read_history_csv
+from ..output.history_file import read_history_csv
 from ..runner import run_scene
 from ..scene import resolve
 from .checks import SIZES, check

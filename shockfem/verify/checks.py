@@ -14,7 +14,7 @@ import sys
 
 import numpy as np
 
-from ..output.history import read_history_csv
+from ..output.history_file import read_history_csv
 from .toml_writer import dumps
 
 # Element size of the rods per verification size [m].

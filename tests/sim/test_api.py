@@ -60,3 +60,18 @@ def test_bad_input_is_a_scene_error_naming_the_field(tmp_path):
         shockfem.load_scene(raw)
     with pytest.raises(FileNotFoundError, match="not a run directory"):
         shockfem.load_run(str(tmp_path))
+
+
+def test_load_run_reads_without_dolfinx_or_numba(tmp_path):
+    """``load_run`` is the light reader of run directories (#26): a fresh interpreter reads a run back
+    without importing dolfinx, numba, petsc4py, mpi4py or gmsh."""
+    import subprocess
+    import sys
+    run = shockfem.run(shockfem.load_scene(os.path.join(REPO, "studies", "foundation", "bar_impact.toml"),
+                                           ['scene.end_time="5 us"']), str(tmp_path / "bar"), fields=False)
+    code = ("import sys, shockfem\n"
+            f"r = shockfem.load_run({run.path!r})\n"
+            "assert r.status == 'completed' and len(r.history['time']) > 1\n"
+            "print([m for m in ('dolfinx', 'numba', 'petsc4py', 'mpi4py', 'gmsh') if m in sys.modules])")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "[]"

@@ -15,7 +15,7 @@ import h5py
 import meshio
 import pytest
 
-from shockfem.output.history import read_history_csv
+from shockfem.output.history_file import read_history_csv
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = os.path.join(REPO, "studies", "metrics", "rod_pulse.toml")

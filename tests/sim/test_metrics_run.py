@@ -66,7 +66,7 @@ def test_a_section_accelerometer_reads_the_section_not_a_node_circling_the_axis(
     accelerometer's node a few mm off the axis circles it at omega r, while the cross-section's weighted
     mean (``section``, centred on the axis) has no lateral velocity (under 1e-3 of omega R: what the
     spinning body's elastic motion leaves)."""
-    from shockfem.output.history import read_history_csv
+    from shockfem.output.history_file import read_history_csv
     from shockfem.runner import run_scene
     from shockfem.scene import resolve
     raw = {"scene": {"name": "spin", "kinematics": "3d", "element": "tet", "end_time": "20 us"},

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from shockfem.errors import UnstableRun
-from shockfem.output.history import read_history_csv
+from shockfem.output.history_file import read_history_csv
 from shockfem.runner import run_scene
 from shockfem.scene import resolve
 from shockfem.verify.plasticity_cases import TAYLOR, taylor_scene

@@ -21,7 +21,7 @@ import pytest
 import shockfem
 from shockfem.cli import main
 from shockfem.errors import RunInterrupted
-from shockfem.output.history import read_history_csv
+from shockfem.output.history_file import read_history_csv
 from shockfem.verify import spring_cases
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

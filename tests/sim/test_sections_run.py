@@ -9,7 +9,7 @@ import os
 import numpy as np
 import pytest
 
-from shockfem.output.history import read_history_csv
+from shockfem.output.history_file import read_history_csv
 from shockfem.runner import run_scene
 from shockfem.scene import read_toml, resolve
 
