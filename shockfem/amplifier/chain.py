@@ -217,6 +217,8 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
                      "element": "hex" if gdim == 3 else "quad"},
            "materials": raw.get("materials", {}), "bodies": bodies, "contact": contacts,
            "shock": {"test_articles": [bodies[-1]["name"]], "cfc": "none", **raw.get("shock", {})}}
+    if "outputs" in raw:          # the field and history cadence of the finite-element runs
+        out["outputs"] = raw["outputs"]
     if spec.damping and frequencies:
         for b, f in zip(bodies, frequencies):
             b.setdefault("damping", {"ratio": spec.damping, "frequency": f, "type": "stiffness"})
@@ -251,7 +253,7 @@ def resolve_chain(raw: dict, fidelity: str | None = None):
     bodies = raw.get("bodies")
     if not isinstance(bodies, list) or len(bodies) < 2:
         raise SceneError([f"bodies: a chain needs at least two [[bodies]] in chain order, got {bodies!r}"])
-    ck.unknown(raw, ("chain", "materials", "bodies", "shock", "launcher"), "")
+    ck.unknown(raw, ("chain", "materials", "bodies", "shock", "launcher", "outputs"), "")
     for i, b in enumerate(bodies):
         if not isinstance(b, dict):
             ck.fail(f"bodies[{i}]", f"must be a table, got {b!r}")

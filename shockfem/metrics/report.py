@@ -27,7 +27,7 @@ from ..output.rundir import write_json_atomic
 from . import filters, shapes
 from .pulse import pulse_metrics
 from .signals import acceleration_from_velocity
-from .srs import log_frequencies, shock_response_spectrum
+from .srs import log_frequencies, pulse_band, shock_response_spectrum
 from .stages import stage_table
 from ..units import G0
 
@@ -98,9 +98,13 @@ def channel_metrics(t: np.ndarray, v: np.ndarray, v_body: np.ndarray, shock: dic
         lower, upper, monitored = shapes.tolerance_band(ideal, t_mid)
         arrays.update(ideal=p.sign * ideal(t_mid), lower=p.sign * lower, upper=p.sign * upper,
                       monitored=monitored)
-    f = log_frequencies(*shock["srs_frequencies"], shock["srs_points_per_octave"])
+    band = shock.get("srs_frequencies") or pulse_band(p.duration, dt)
+    f = log_frequencies(*band, shock["srs_points_per_octave"])
     s = shock_response_spectrum(a_raw, dt, f, shock["srs_q"])
-    out["srs"] = {"q": s.q, "frequency": s.frequency.tolist(), "maximax_g": (s.maximax / G0).tolist(),
+    out["srs"] = {"q": s.q, "band": list(band),
+                  "band_from": "the scene" if shock.get("srs_frequencies") else
+                               f"the pulse ({p.duration:.3g} s: up to 10 / duration, down to 0.05 / duration)",
+                  "frequency": s.frequency.tolist(), "maximax_g": (s.maximax / G0).tolist(),
                   "positive_g": (s.positive / G0).tolist(), "negative_g": (s.negative / G0).tolist(),
                   "peak_g": float(s.maximax.max() / G0),
                   "frequency_of_peak": float(s.frequency[np.argmax(s.maximax)]),

@@ -38,6 +38,24 @@ class Spectrum:
         return np.maximum(self.positive, self.negative)
 
 
+# the band of a pulse's spectrum unless the scene gives one: the default shock-test band, widened to
+# take in the pulse's knee and high-frequency plateau (a pulse of duration T reaches the plateau, its
+# peak acceleration, by about 10 / T: a 20 us pulse's knee is near 40 kHz) and, for long pulses, its
+# low-frequency slope 2 pi f dv (below about 0.05 / T)
+DEFAULT_BAND = (10.0, 10000.0)      # [Hz]
+PLATEAU_CYCLES = 10.0
+SLOPE_CYCLES = 0.05
+
+
+def pulse_band(duration: float, dt: float) -> tuple[float, float]:
+    """The SRS band [Hz] for a pulse of ``duration`` [s] in a record sampled every ``dt`` [s]: the
+    default band, reaching up to 10 / duration (never past the record's Nyquist frequency) and down to
+    0.05 / duration."""
+    high = max(DEFAULT_BAND[1], min(PLATEAU_CYCLES / duration, 0.5 / dt))
+    low = min(DEFAULT_BAND[0], SLOPE_CYCLES / duration)
+    return low, high
+
+
 def log_frequencies(f_low: float, f_high: float, per_octave: int = 12) -> np.ndarray:
     """A logarithmic grid from ``f_low`` to ``f_high`` [Hz] with ``per_octave`` points per octave."""
     n = int(math.ceil(per_octave * math.log2(f_high / f_low))) + 1

@@ -35,7 +35,7 @@ def read_shock(ck: Checker, raw: dict, body_regions: dict, kin: str, end_time: f
                              f"(SAE J211) or 'none', got {cfc!r}")
         cfc = 1000
     q = ck.quantity(d, "srs_q", "shock", "dimensionless", default=10.0, positive=True)
-    band = (10.0, 10000.0)
+    band = None            # the metrics take it from the pulse (metrics/srs.pulse_band)
     if "srs_frequencies" in d:
         pair = d["srs_frequencies"]
         if not isinstance(pair, list) or len(pair) != 2:
@@ -80,4 +80,4 @@ def read_shock(ck: Checker, raw: dict, body_regions: dict, kin: str, end_time: f
         spec = PulseSpec(shape, peak, duration)
         if not articles and not meters:
             ck.fail("shock.spec", "a pulse spec needs a test article or an accelerometer to check")
-    return Shock(tuple(articles), axis, int(cfc), q, tuple(band), ppo, tuple(meters), spec)
+    return Shock(tuple(articles), axis, int(cfc), q, tuple(band) if band else None, ppo, tuple(meters), spec)

@@ -296,7 +296,7 @@ class Shock:
     axis: str = ""                            # "" : the last axis (z)
     cfc: int = 1000
     srs_q: float = 10.0
-    srs_frequencies: tuple[float, float] = (10.0, 10000.0)   # [Hz]
+    srs_frequencies: tuple[float, float] | None = None   # [Hz]; None: from the pulse (metrics/srs.pulse_band)
     srs_points_per_octave: int = 12
     accelerometers: tuple[Accelerometer, ...] = ()
     spec: PulseSpec | None = None

@@ -46,7 +46,8 @@ def test_1d_chain_loses_energy_to_waves(tmp_path):
 
 
 def test_axisymmetric_chain_reports_the_same_table(tmp_path):
-    sets = [f'--set=bodies.{b}.element_size="4 mm"' for b in ("m1", "m2", "m3")]
+    # a chain scene takes [outputs] as any scene does: here a field frame every 20 us
+    sets = [f'--set=bodies.{b}.element_size="4 mm"' for b in ("m1", "m2", "m3")] + ['--set=outputs.field_interval="20 us"']
     chain, _ = _run(tmp_path, "axisymmetric", *sets)
     assert [s["pair"] for s in chain["stages"]] == ["m1_m2", "m2_m3"]
     assert chain["stages"][1]["struck"] == "m3" and chain["gain"] > 1.0
@@ -59,6 +60,8 @@ def test_axisymmetric_chain_reports_the_same_table(tmp_path):
     _, _, cells = reader.read_data(reader.num_steps - 1)
     assert set(cells["body"][0]) == {1, 2, 3} and "stress_zz" in cells
     assert all(f'key="{b}"' in fields.read_text() for b in ("m1", "m2", "m3"))
+    summary = json.load(open(tmp_path / "axisymmetric" / "summary.json"))
+    assert reader.num_steps == int(summary["end_time"] / 20e-6) + 1 == 19     # 0, 20, ... 360 us of 373 us
 
 
 def test_bad_chain_lists_its_problems():

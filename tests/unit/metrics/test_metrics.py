@@ -183,3 +183,24 @@ def test_a_body_sliding_on_a_wall_is_no_stage():
     assert len(stages) == 1 and stages[0].striker_before == -2.0 and np.isfinite(stages[0].restitution)
     assert len(sustained) >= 5 and all(ev.pair == "floor" for ev in sustained)
     assert stages[0].as_dict()["velocity_ratio"] is not None
+
+
+def test_srs_band_reaches_the_pulse_asymptotes():
+    """The band a pulse's spectrum takes unless the scene gives one (``srs.pulse_band``): for the issue's
+    20 us half-sine it reaches 500 kHz, where the spectrum has met its plateau (the peak: +1.1% at Q = 10,
+    measured; the test allows 2%), and the default 10 Hz, where it is on its impulse slope 2 pi f dV
+    (undamped: 2e-5 off);
+    a 5 ms pulse keeps the default band, a 50 ms one goes down to 1 Hz; never past Nyquist."""
+    from shockfem.metrics.srs import DEFAULT_BAND, pulse_band
+    D = 20e-6
+    dt = D / 200
+    low, high = pulse_band(D, dt)
+    assert (low, high) == (10.0, pytest.approx(5e5))
+    t = np.arange(0, 40 * D, dt)
+    a = np.where(t <= D, np.sin(np.pi * np.minimum(t, D) / D), 0.0)
+    assert shock_response_spectrum(a, dt, [high], q=10.0).maximax[0] == pytest.approx(1.0, abs=0.02)
+    assert shock_response_spectrum(a, dt, [low], q=math.inf).maximax[0] == pytest.approx(
+        2 * np.pi * low * 2 * D / np.pi, rel=1e-3)
+    assert pulse_band(5e-3, 1e-6) == DEFAULT_BAND
+    assert pulse_band(50e-3, 1e-6) == (pytest.approx(1.0), DEFAULT_BAND[1])
+    assert pulse_band(1e-6, 1e-7)[1] == pytest.approx(0.5 / 1e-7)
