@@ -263,7 +263,8 @@ def _dispatch(args) -> int:
         print(f"wrote {out} (cell tags: body number; facet tags: region number, see the log above)")
         if args.png:
             from .output.render import render_mesh
-            render_mesh(meshed, args.png, scene.name)
+            render_mesh(meshed, args.png, scene.name, body_names=[b.name for b in scene.bodies],
+                        axisymmetric=scene.kinematics == "axisymmetric")
             print(f"wrote {args.png}")
         return EXIT_OK
     if args.command == "metrics":

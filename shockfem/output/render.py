@@ -32,15 +32,55 @@ def _framed(plotter, grid, dim: int, cut: bool):
     return grid
 
 
-def render_mesh(meshed, path: str, title: str = "", cut: bool = True):
-    """A PNG of the mesh with its element edges, coloured by body; 3D meshes are cut open along
-    two half planes through the axis (a quarter removed) to show bores and cavities."""
+def _scale_length(extent: float) -> float:
+    """A round length (1, 2 or 5 times a power of ten) near a quarter of ``extent`` [m]."""
+    target = 0.25 * extent
+    power = 10.0 ** np.floor(np.log10(target))
+    return max((k * power for k in (1.0, 2.0, 5.0) if k * power <= target), default=power)
+
+
+def _annotate(plotter, grid, dim: int, body_names=(), axisymmetric: bool = False):
+    """What a picture needs to be read: the axes (r, z in axisymmetry), a scale bar under the
+    shape with its length, and each shown body's name at its centre."""
+    pv = pyvista()
+    plotter.add_axes(xlabel="r" if axisymmetric else "x", ylabel="z" if axisymmetric else "y",
+                     zlabel="" if axisymmetric else "z", line_width=3)
+    if grid.n_cells == 0:
+        return
+    lo, hi = np.array(grid.bounds[0::2]), np.array(grid.bounds[1::2])
+    extent = float(np.max(hi - lo))
+    length = _scale_length(extent)
+    start = np.array([lo[0], lo[1] - 0.08 * extent, lo[2]])
+    end = start + np.array([length, 0.0, 0.0])
+    plotter.add_mesh(pv.Line(start, end), color="black", line_width=4)
+    label = f"{length * 1e3:g} mm" if length < 1.0 else f"{length:g} m"
+    plotter.add_point_labels([0.5 * (start + end)], [label], font_size=14, shape=None, show_points=False,
+                             always_visible=True)
+    if body_names and "body" in grid.cell_data:
+        centres = grid.cell_centers().points
+        numbers = np.asarray(grid.cell_data["body"])
+        where, names = [], []
+        for k, name in enumerate(body_names):
+            mine = numbers == k + 1
+            if mine.any():
+                where.append(centres[mine].mean(axis=0))
+                names.append(name)
+        if names:
+            plotter.add_point_labels(np.array(where), names, font_size=14, shape_opacity=0.6, show_points=False,
+                                     always_visible=True)
+
+
+def render_mesh(meshed, path: str, title: str = "", cut: bool = True, body_names=(), axisymmetric: bool = False):
+    """A PNG of the mesh with its element edges, coloured by body, with axes, a scale and the bodies'
+    names; 3D meshes are cut open along two half planes through the axis (a quarter removed) to show
+    bores and cavities."""
     pv = pyvista()
     grid = _grid(meshed)
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
     grid = _framed(plotter, grid, meshed.mesh.geometry.dim, cut)
     plotter.add_mesh(grid, scalars="body", show_edges=True, cmap="Pastel1", show_scalar_bar=False,
                      edge_color="#333333", line_width=0.5)
+    _annotate(plotter, grid, meshed.mesh.geometry.dim, body_names, axisymmetric)
     if title:
         plotter.add_text(title, font_size=12)
     plotter.reset_camera()
@@ -49,11 +89,13 @@ def render_mesh(meshed, path: str, title: str = "", cut: bool = True):
     os.replace(partial_path(path), path)
 
 
-def _draw(grid, path: str, label: str, title: str, dim: int, cut: bool):
-    """``grid`` coloured by its cell array ``label``, with edges, framed as ``render_mesh`` frames, to ``path``."""
+def _draw(grid, path: str, label: str, title: str, dim: int, cut: bool, body_names=(), axisymmetric=False):
+    """``grid`` coloured by its cell array ``label``, with edges, framed and annotated as ``render_mesh``
+    does, to ``path``."""
     pv = pyvista()
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
     grid = _framed(plotter, grid, dim, cut)
+    _annotate(plotter, grid, dim, body_names, axisymmetric)
     # no scalar bar: VTK's (9.x wheels) lays out its tick labels through std::regex, which aborts the
     # process here (std::bad_alloc in vtk::is_printf_format); the colour range is written instead
     shown = grid.cell_data[label]
@@ -77,9 +119,13 @@ def render_run(run_dir: str, bodies: list[int] | None = None, cut: bool = True) 
     the highest von Mises stress, warped by its displacement, and ``final_shape.png``, the deformed mesh
     of ``final_shape.xdmf``, both coloured by von Mises.  ``bodies``: the body indices (scene order) to
     show, all by default.  Returns the pictures written (none without the files or von Mises)."""
+    import json
+
     import h5py
     pv = pyvista()
     written = []
+    with open(os.path.join(run_dir, "resolved_scene.json")) as fh:
+        axisymmetric = json.load(fh).get("kinematics") == "axisymmetric"
     for name, picture in (("fields", "peak_stress.png"), ("final_shape", "final_shape.png")):
         xdmf = os.path.join(run_dir, f"{name}.xdmf")
         if not os.path.exists(xdmf):
@@ -90,6 +136,7 @@ def render_run(run_dir: str, bodies: list[int] | None = None, cut: bool = True) 
             frames = [(float(g.attrs["time"]), g["von_mises"][()][shown].max(initial=0.0))
                       for g in h5["frames"].values() if "von_mises" in g]
             dim = 3 if np.ptp(h5["mesh/geometry"][:, 2]) > 0 else 2
+            names = [str(n) for n in h5["mesh/body"].attrs["names"]]
         if not frames:
             continue
         t, peak = max(frames, key=lambda f: f[1])
@@ -103,6 +150,6 @@ def render_run(run_dir: str, bodies: list[int] | None = None, cut: bool = True) 
         grid = grid.extract_cells(np.flatnonzero(shown))
         what = "highest von Mises" if name == "fields" else "final shape"
         _draw(grid, os.path.join(run_dir, picture), label, f"{what}: t = {t * 1e3:.4g} ms (deformed, true scale)",
-              dim, cut)
+              dim, cut, names, axisymmetric)
         written.append(os.path.join(run_dir, picture))
     return written
