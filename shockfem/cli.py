@@ -145,6 +145,9 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--size", choices=("smoke", "default"), default="default",
                     help="smoke: coarse and short (what the tests run); default: the study's answer")
     st.add_argument("--out", help="results directory (default: results/<name>)")
+    st.add_argument("--resume", action="store_true",
+                    help="read back the finite-element cases a stopped or earlier run of the study completed (the "
+                         "same scene), resume those stopped with a checkpoint; the rest runs again")
 
     sw = command("sweep", "run a scene over a design of its fields' levels (or a table of cases), a run directory "
                           "per case, both cores or a Dask cluster, resumable; the cases' results in one table")
@@ -294,6 +297,9 @@ def _dispatch(args) -> int:
         print(f"{done} of {len(rows)} cases completed; the table: {os.path.join(out, 'cases.csv')}")
         return EXIT_OK if done == len(rows) else 1
     if args.command == "study":
+        if args.resume:
+            from .study.cases import RESUME_ENV
+            os.environ[RESUME_ENV] = "1"
         if args.name == "amplifier":
             from .study.amplifier import run_study
         elif args.name == "launcher":

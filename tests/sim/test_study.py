@@ -208,3 +208,26 @@ def test_penetration_study_smoke(tmp_path):
     (short,) = _rows(results, "bending_amplification", duration=0.5)
     (long_,) = _rows(results, "bending_amplification", duration=4.0)
     assert short["amplification [-]"] > 1.2 and 1.0 < long_["amplification [-]"] < 1.1
+
+
+def test_a_resumed_study_reads_back_its_completed_cases(tmp_path, monkeypatch):
+    """``shockfem study --resume`` (``study/cases.RESUME_ENV``): a case whose directory holds a completed
+    run of the same scene is read back, not run (its files untouched, the same summary); a changed scene
+    runs again; without the flag every case runs."""
+    from shockfem.scene import read_toml
+    from shockfem.study import cases
+    raw = read_toml(os.path.join(REPO, "studies", "foundation", "bar_impact.toml"))
+    raw["scene"]["end_time"] = "5 us"
+    first, _, status = cases.run_case("bar", raw, str(tmp_path), print)
+    assert status == "completed"
+    stamp = os.stat(os.path.join(first.path, "summary.json")).st_mtime_ns
+    monkeypatch.setenv(cases.RESUME_ENV, "1")
+    again, _, status = cases.run_case("bar", raw, str(tmp_path), print)
+    assert status == "completed" and again.summary == first.summary
+    assert os.stat(os.path.join(first.path, "summary.json")).st_mtime_ns == stamp
+    raw["scene"]["end_time"] = "6 us"
+    changed, _, _ = cases.run_case("bar", raw, str(tmp_path), print)
+    assert changed.summary["end_time"] == pytest.approx(6e-6)
+    monkeypatch.delenv(cases.RESUME_ENV)
+    cases.run_case("bar", raw, str(tmp_path), print)
+    assert os.stat(os.path.join(first.path, "summary.json")).st_mtime_ns != stamp
