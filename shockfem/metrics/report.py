@@ -9,7 +9,7 @@ filter class.  For every channel (a test article's rigid-body motion, an acceler
 3. the main pulse (``pulse``), its shape (``shapes.classify``) and the tolerance-band check
    against the scene's spec, or against the fitted classical shape when there is no spec
 4. the velocity change of the filtered record against the rigid-body velocity change
-5. the shock response spectrum of the unfiltered acceleration (the filter is a measuring
+5. the shock response spectrum of the acceleration without a filter (the filter is a measuring
    channel's, the spectrum a property of the motion)
 
 and for the run, the stage table of its contact events (``stages``).
@@ -108,7 +108,7 @@ def channel_metrics(t: np.ndarray, v: np.ndarray, v_body: np.ndarray, shock: dic
                   "positive_g": (s.positive / G0).tolist(), "negative_g": (s.negative / G0).tolist(),
                   "peak_g": float(s.maximax.max() / G0),
                   "frequency_of_peak": float(s.frequency[np.argmax(s.maximax)]),
-                  "input": "unfiltered interval-mean acceleration"}
+                  "input": "interval-mean acceleration, no filter"}
     arrays["srs"] = s
     return out, arrays
 
@@ -140,7 +140,7 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
     """Compute the shock metrics of a run directory, add them to its summary.json (key
     ``shock``) and draw the plots; returns the metrics and the lines for the run log.
 
-    ``cfc`` overrides the scene's filter class (0: unfiltered).
+    ``cfc`` overrides the scene's filter class (0: no filter, the scene's "none").
     """
     scene = _read(run_dir, "resolved_scene.json")
     summary = _read(run_dir, "summary.json")

@@ -290,7 +290,7 @@ class PulseSpec:
 @dataclass(frozen=True)
 class Shock:
     """What a shock-test engineer reads off the run (``metrics/``): pulses of the test articles
-    and accelerometers along ``axis``, filtered by CFC class ``cfc`` (0: unfiltered), checked
+    and accelerometers along ``axis``, filtered by CFC class ``cfc`` (0: no filter, the scene's "none"), checked
     against ``spec``; the shock response spectrum at quality factor ``srs_q``."""
     test_articles: tuple[str, ...] = ()
     axis: str = ""                            # "" : the last axis (z)
