@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import sys
 import time
 from dataclasses import dataclass
 
@@ -46,14 +47,16 @@ def run_case(name: str, raw: dict, out_dir: str, echo) -> tuple[CaseRun | None, 
     path = os.path.join(out_dir, name)
     scene = resolve(raw)
     resuming = os.environ.get(RESUME_ENV) == "1"
+    # a study's cases run for minutes: someone at a terminal sees each one's progress bar; logs do not
+    watched = sys.stderr.isatty()
     try:
         if resuming and _completed_before(path, scene):
             echo(f"  {name}: completed before, read back")
         elif resuming and os.path.exists(os.path.join(path, "checkpoint", "latest.json")):
             echo(f"  {name}: resumed from its checkpoint")
-            resume_run(path, progress=False, quiet=True, scene=scene)
+            resume_run(path, progress=watched, quiet=True, scene=scene)
         else:
-            run_scene(scene, path, progress=False, quiet=True)
+            run_scene(scene, path, progress=watched, quiet=True)
     except UnstableRun as exc:
         echo(f"  {name}: unstable: {exc}")
         return None, time.perf_counter() - t0, "unstable"
