@@ -26,7 +26,7 @@ if [ ! -x "$VENV/bin/python" ]; then
   echo "install: venv $VENV (with Debian's dolfinx through --system-site-packages)"
   /usr/bin/python3 -m venv --system-site-packages "$VENV"
 fi
-if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, tqdm, distributed, pyDOE3" 2>/dev/null \
+if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, xdist, tqdm, distributed, pyDOE3" 2>/dev/null \
    || [ pyproject.toml -nt "$VENV/.installed" ] || [ constraints.txt -nt "$VENV/.installed" ]; then
   echo "install: pip install -e .[test,viz,batch]"
   "$VENV/bin/pip" install -q --disable-pip-version-check -c constraints.txt -e ".[test,viz,batch]"

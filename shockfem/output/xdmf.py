@@ -82,15 +82,15 @@ def _item(parent, h5: str, dataset: str, shape, dtype: str = "Float", precision:
     e.text = f"{h5}:{dataset}"
 
 
-def _grid(parent, name: str, mesh_shapes, h5: str, cell_type: str, geometry: str = "/mesh/geometry"):
-    """A uniform grid with the mesh's topology, the given geometry and the body numbers."""
+def _grid(parent, name: str, mesh_shapes, h5: str, cell_type: str):
+    """A uniform grid with the mesh's topology and geometry and the body numbers."""
     (num_points, _), (num_cells, nn) = mesh_shapes
     grid = ElementTree.SubElement(parent, "Grid", Name=name, GridType="Uniform")
     topo = ElementTree.SubElement(grid, "Topology", TopologyType=CELL_TYPES[cell_type][0],
                                   NumberOfElements=str(num_cells), NodesPerElement=str(nn))
     _item(topo, h5, "/mesh/topology", (num_cells, nn), "Int")
     geo = ElementTree.SubElement(grid, "Geometry", GeometryType="XYZ")
-    _item(geo, h5, geometry, (num_points, 3))
+    _item(geo, h5, "/mesh/geometry", (num_points, 3))
     body = ElementTree.SubElement(grid, "Attribute", Name="body", AttributeType="Scalar", Center="Cell")
     _item(body, h5, "/mesh/body", (num_cells,), "Int", 4)
     return grid
@@ -121,13 +121,6 @@ def _document(fields) -> tuple[ElementTree.Element, ElementTree.Element]:
     units = "; ".join(["time: s", "coordinates: m"] + [f"{f.name}: {f.units}" for f in fields])
     domain.append(ElementTree.Comment(f" shockfem fields; units: {units} "))
     return root, domain
-
-
-def _write_xml(root, path: str):
-    ElementTree.indent(root)
-    partial = path + ".partial"
-    ElementTree.ElementTree(root).write(partial, xml_declaration=True, encoding="utf-8")
-    os.replace(partial, path)
 
 
 def _write_mesh(h5: h5py.File, mesh: Mesh):
