@@ -14,3 +14,9 @@ os.environ.setdefault("SHOCKFEM_PICTURES", "0")
 def _mesh_cache(tmp_path_factory, monkeypatch):
     """Keep test meshes out of the repository's meshes/ cache."""
     monkeypatch.setenv("SHOCKFEM_MESH_CACHE", str(tmp_path_factory.getbasetemp() / "meshes"))
+
+
+def pytest_collection_modifyitems(items):
+    """The tests marked ``long`` (minutes each) first: the suite runs on two workers (pytest-xdist), and a
+    long test handed out last would leave one of them idle while it runs."""
+    items.sort(key=lambda item: item.get_closest_marker("long") is None)

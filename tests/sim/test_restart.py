@@ -127,6 +127,7 @@ def test_sigkill_then_resume_from_the_command_line(tmp_path):
     assert "resuming from the checkpoint" in (tmp_path / "cut" / "run.log").read_text()
 
 
+@pytest.mark.long
 def test_resume_under_mpirun(tmp_path):
     """Two ranks stopped by SIGTERM (to mpirun) resume on two ranks to the two-rank run's histories; on
     one rank the resume is refused, naming the count it needs (exit 2)."""

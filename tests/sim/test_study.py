@@ -83,6 +83,7 @@ def test_launcher_study_smoke(tmp_path):
     assert rigid["test article [ft/s]"] == pytest.approx(1600, rel=2e-3) and rigid["gain"] == pytest.approx(4.923, abs=1e-3)
 
 
+@pytest.mark.long
 def test_fixture_study_smoke(tmp_path):
     """The fixture study's closed forms exactly (fixtures.md's table for 10,000 g, 5 ms), the striker
     that gives a payload the rectangle's velocity change through a programmer that keeps them
@@ -151,6 +152,7 @@ def test_fixture_study_smoke(tmp_path):
             assert (tmp_path / "fixture" / png).stat().st_size > 10_000
 
 
+@pytest.mark.long
 def test_penetration_study_smoke(tmp_path):
     """The penetration study at smoke size (the events cut at 12% of their stopping time but never short
     of twice the crater's transit, so that the tunnel's force is reached): the shots completed and balanced, their peak axial force and deceleration those
