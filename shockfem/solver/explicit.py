@@ -488,11 +488,11 @@ class ExplicitSolver:
         not to round-off); ``plastic``, the plastic work in it; ``hourglass``, the hourglass forces' work.
         Collective."""
         m = self.model
-        o = self.owned
+        n = m.num_owned                     # owned nodes come first
         # as the nodal account (``nodal.finish_step``) takes it, so that the bodies sum to its kinetic energy
-        v_n = np.where(self.constrained, self.v, self.v + 0.5 * self.dt * self.a)
-        node_kinetic = 0.5 * self.kinetic_mass[o] * (v_n[o] ** 2).sum(axis=1)
-        kinetic = np.bincount(m.node_body[o], weights=node_kinetic, minlength=len(m.bodies))
+        v_n = np.where(self.constrained[:n], self.v[:n], self.v[:n] + 0.5 * self.dt * self.a[:n])
+        node_kinetic = 0.5 * self.kinetic_mass[:n] * np.einsum("ij,ij->i", v_n, v_n)
+        kinetic = np.bincount(m.node_body[:n], weights=node_kinetic, minlength=len(m.bodies))
         work = self.body_energy[:len(m.bodies)].copy()
         if self.parallel:
             kinetic = self.comm.allreduce(kinetic, op=MPI.SUM)
@@ -580,15 +580,12 @@ class ExplicitSolver:
     def body_means(self):
         """Mass-weighted mean velocity and acceleration of every body at t (``motion``), (bodies, gdim) each."""
         m = self.model
-        o = self.owned
+        n = m.num_owned                     # owned nodes come first
         nb = len(m.bodies)
-        mv = np.zeros((nb, m.gdim))
-        ma = np.zeros((nb, m.gdim))
-        v_n, a_n = self.motion()
-        for i in range(nb):
-            sel = o & (m.node_body == i)
-            mv[i] = (m.mass[sel, None] * v_n[sel]).sum(axis=0)
-            ma[i] = (m.mass[sel, None] * a_n[sel]).sum(axis=0)
+        v_n, a_n = self.motion(slice(0, n))
+        body = m.node_body[:n]
+        mv = np.column_stack([np.bincount(body, weights=m.mass[:n] * v_n[:, k], minlength=nb) for k in range(m.gdim)])
+        ma = np.column_stack([np.bincount(body, weights=m.mass[:n] * a_n[:, k], minlength=nb) for k in range(m.gdim)])
         mv = self.comm.allreduce(mv, op=MPI.SUM) if self.parallel else mv
         ma = self.comm.allreduce(ma, op=MPI.SUM) if self.parallel else ma
         if m.axisymmetric:
