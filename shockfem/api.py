@@ -69,7 +69,7 @@ def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", gener
     ``cases_table``, each with ``overrides`` first; every case checked before any runs (``SceneError``
     lists the problems of all); run by ``executor`` (``study/batch.py``: "local" processes or "dask") into
     ``out_dir/<case>``, skipping cases completed before.  Returns the table's rows (``cases.csv``)."""
-    from .scene import apply_override, read_toml
+    from .scene import apply_overrides, read_toml
     from .scene.checker import SceneError
     from .study.batch import run_batch
     from .study.sweep import cases_from_table, design_cases, parse_vary
@@ -78,12 +78,10 @@ def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", gener
     else:
         cases = design_cases(scene, [parse_vary(v) for v in vary], design, generators, resolution, tuple(overrides))
     problems = []
+    base = read_toml(scene)
     for case in cases:
-        raw = read_toml(scene)
         try:
-            for assignment in case.overrides:
-                raw = apply_override(raw, assignment)
-            check_raw(raw)
+            check_raw(apply_overrides(base, case.overrides))
         except SceneError as e:
             problems += [f"{case.name} ({', '.join(f'{k}={v}' for k, v in case.factors.items())}): {p}"
                          for p in e.problems]
@@ -117,13 +115,10 @@ def load_scene(source: str | dict, overrides: list[str] | tuple = ()) -> Scene:
     """A checked scene (SI inside) from a TOML path or a dictionary, with ``--set``-style overrides.
 
     Raises ``shockfem.errors.SceneError`` listing every problem (field, what is wrong, what was given)."""
-    from .scene import apply_override, load_scene as _load_scene_file, resolve
+    from .scene import apply_overrides, load_scene as _load_scene_file, resolve
     if isinstance(source, (str, os.PathLike)):
         return _load_scene_file(os.fspath(source), list(overrides))
-    raw = source
-    for assignment in overrides:
-        raw = apply_override(raw, assignment)
-    return resolve(raw)
+    return resolve(apply_overrides(source, overrides))
 
 
 def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields: bool = True,

@@ -192,11 +192,8 @@ def _scene(args):
 
 def _raw(args) -> dict:
     """The raw scene of ``args.scene`` with its ``--set`` overrides."""
-    from .scene import apply_override, read_toml
-    raw = read_toml(args.scene)
-    for assignment in args.set:
-        raw = apply_override(raw, assignment)
-    return raw
+    from .scene import apply_overrides, read_toml
+    return apply_overrides(read_toml(args.scene), args.set)
 
 
 def _chain_raw(args):
@@ -355,10 +352,7 @@ def _launcher(args) -> int:
     from .launcher.gun import fire
     from .launcher.output import design_lines, shot_lines, sizing, write_design, write_shot
     from .launcher.scene import resolve_design, resolve_launcher
-    from .scene import apply_override, read_toml
-    raw = read_toml(args.scene)
-    for assignment in args.set:
-        raw = apply_override(raw, assignment)
+    raw = _raw(args)
     name, gun, options = resolve_launcher(raw)
     out = args.out or os.path.join("results", name)
     if args.design or args.trade:

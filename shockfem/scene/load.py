@@ -62,11 +62,16 @@ def apply_override(raw: dict, assignment: str) -> dict:
     return out
 
 
-def load_scene(path: str, overrides: list[str] | tuple = ()) -> Scene:
-    """Read, override and resolve a scene file; raises SceneError listing every problem."""
-    raw = read_toml(path)
+def apply_overrides(raw: dict, overrides) -> dict:
+    """``apply_override`` of each assignment in turn (returns a copy)."""
     for assignment in overrides:
         raw = apply_override(raw, assignment)
+    return raw
+
+
+def load_scene(path: str, overrides: list[str] | tuple = ()) -> Scene:
+    """Read, override and resolve a scene file; raises SceneError listing every problem."""
+    raw = apply_overrides(read_toml(path), overrides)
     try:
         return resolve(raw, base_dir=os.path.dirname(os.path.abspath(path)))
     except SceneError as e:

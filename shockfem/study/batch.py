@@ -101,11 +101,6 @@ def run_case(case: Case, out_dir: str, ranks: int = 1) -> dict:
     return case_row(case, summary or {"status": "failed"}, code, wall, how)
 
 
-# the table's columns from a case's summary.json: (label, unit, reader)
-def _bodies(summary) -> dict:
-    return summary.get("bodies") or {}
-
-
 def case_row(case: Case, summary: dict, exit_code: int, wall: float, how: str) -> dict:
     """A case's row: its name, factors, status and how it ran, then the summary's headline numbers as
     ``{"name [unit]": value}``: steps, end time, energy balance, per body the final velocity, largest von
@@ -121,7 +116,7 @@ def case_row(case: Case, summary: dict, exit_code: int, wall: float, how: str) -
     row.update({"elements": summary["elements"], "steps": summary["steps"], "end time [s]": summary["end_time"],
                 "energy balance error [-]": summary["energy"]["balance_error"],
                 "warnings": len(summary.get("warnings", []))})
-    for name, b in _bodies(summary).items():
+    for name, b in (summary.get("bodies") or {}).items():
         for axis, v in zip(axes, b["velocity_final"]):
             row[f"{name}.velocity_final_{axis} [m/s]"] = v
         row[f"{name}.max_von_mises [Pa]"] = b["max_von_mises"]
