@@ -32,6 +32,9 @@ ctr=$(buildah $S from --pull=never localhost/shockfem)
 buildah $S run --isolation chroot -v "$WORK/results:/app/results" "$ctr" -- \
   /app/.venv/bin/shockfem run studies/foundation/bar_impact.toml
 buildah $S run --isolation chroot "$ctr" -- /app/.venv/bin/shockfem verify free_flight rod_on_wall slotted_ring
+# a whole study into the mounted directory
+buildah $S run --isolation chroot -v "$WORK/results:/app/results" "$ctr" -- \
+  /app/.venv/bin/shockfem study amplifier --size smoke --out results/amplifier
 # a sweep (both cores, then Dask's LocalCluster) into the mounted directory
 buildah $S run --isolation chroot -v "$WORK/results:/app/results" "$ctr" -- \
   /app/.venv/bin/shockfem sweep studies/foundation/bar_impact.toml --vary "boundary.0.value=[2, 5] m/s" \
@@ -41,4 +44,4 @@ buildah $S run --isolation chroot -v "$WORK/results:/app/results" "$ctr" -- \
   --set 'scene.end_time="40 us"' --out results/sweep_dask --executor dask --no-progress
 cat "$WORK/results/sweep_local/cases.csv"
 buildah $S rm "$ctr" >/dev/null
-ls "$WORK/results/bar_impact"
+ls "$WORK/results/bar_impact" "$WORK/results/amplifier"

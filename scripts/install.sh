@@ -8,7 +8,10 @@ cd "$(dirname "$0")/.."
 VENV=${VENV:-.venv}
 APT_PACKAGES="python3-dolfinx python3-petsc4py python3-slepc4py python3-mpi4py python3-h5py
   python3-numba python3-scipy python3-venv python3-pip python3-meshio python3-gmsh
-  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make"
+  openmpi-bin libglu1-mesa libxrender1 libxcursor1 libxft2 libxinerama1 git make
+  libegl1 libegl-mesa0 libgl1-mesa-dri"
+# (the last three: pyvista's VTK draws the runs' pictures off screen through EGL and Mesa's software
+# renderer; without them VTK finds no EGL, no OSMesa and no display, and crashes on its first render)
 if [ "${INSTALL_PARAVIEW:-1}" = 1 ]; then
   APT_PACKAGES="$APT_PACKAGES paraview python3-paraview python3-matplotlib xvfb xauth"
 fi

@@ -37,15 +37,10 @@ if TYPE_CHECKING:
     from .scene import Scene
 
 
-def is_launcher_scene(raw: dict) -> bool:
-    """A gas-gun scene: a [launcher] table and no bodies (a chain's [launcher] fires its first body)."""
-    return "launcher" in raw and "bodies" not in raw and "chain" not in raw
-
-
 def check_raw(raw: dict) -> str:
     """What ``shockfem check`` does to a raw scene (plain, chain or launcher): read every field through
     the checker; returns what it is, or raises ``SceneError`` listing every problem."""
-    from .amplifier.chain import is_chain
+    from .scene import is_chain, is_launcher_scene
     if is_chain(raw):
         from .amplifier.chain import resolve_chain
         spec, scene, _ = resolve_chain(raw)

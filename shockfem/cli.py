@@ -198,7 +198,7 @@ def _raw(args) -> dict:
 
 def _chain_raw(args):
     """The raw chain scene of ``args.scene`` with its overrides, or None for an ordinary scene."""
-    from .amplifier.chain import is_chain
+    from .scene import is_chain
     raw = _raw(args)
     return raw if is_chain(raw) else None
 

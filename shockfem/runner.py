@@ -25,6 +25,7 @@ from .output.cell_fields import von_mises
 from .output.fields import FieldWriter, write_final_shape
 from .output import checkpoint
 from .output.history import HistoryRecorder
+from .output.picture_process import PictureProcess
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene, to_plain
@@ -160,6 +161,8 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
     going on from its checkpoint."""
     origin = {**(origin or {}), "write_fields": write_fields}
     rd = RunDirectory(out_dir, comm, resume=resume is not None)
+    # started now, so that it imports its libraries while this process meshes and steps
+    pictures = PictureProcess() if comm.rank == 0 and write_fields and pictures_wanted() else None
     say = (lambda msg: rd.log(msg, echo=not quiet))
     state = None if resume is None else checkpoint.read_rank(out_dir, resume, comm)
     if resume is None:
@@ -320,10 +323,16 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
                 checkpoint.clear(out_dir)
             rd.write_json("summary.json", summary)
             if comm.rank == 0 and len(history.rows) > 1:
+                if pictures is not None:
+                    # of the deformable bodies (rigid ones carry no stress and may hide the rest)
+                    rigid = {rb.index for rb in model.rigid}
+                    pictures.request(out_dir, [i for i in range(len(model.bodies)) if i not in rigid])
                 plot_histories(out_dir, [b.name for b in scene.bodies])
-                if fields and pictures_wanted():
-                    _pictures(out_dir, solver.model, say)
                 summary["shock"] = _shock_metrics(out_dir, say)
+                if pictures is not None:
+                    pictures.collect(say)
+            elif pictures is not None:
+                pictures.cancel()
             say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
                 f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
                 f"{solver.energy.balance_error:.2e}")
@@ -338,17 +347,6 @@ def pictures_wanted() -> bool:
     """Whether runs draw their deformed shapes (``render.render_run``): unless ``SHOCKFEM_PICTURES=0`` (the
     test suite's setting: about 1.5 s a run; batch users may want it too)."""
     return os.environ.get("SHOCKFEM_PICTURES", "1") != "0"
-
-
-def _pictures(out_dir: str, model, say):
-    """The run's peak-stress and final-shape pictures of its deformable bodies (rigid ones carry no
-    stress and may hide the rest)."""
-    rigid = {rb.index for rb in model.rigid}
-    try:
-        from .output.render import render_run
-        render_run(out_dir, [i for i in range(len(model.bodies)) if i not in rigid])
-    except ImportError as exc:
-        say(f"no pictures of the deformed shape: {exc} (pip install shockfem[viz])")
 
 
 class _StopOnSignal:

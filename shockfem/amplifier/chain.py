@@ -117,10 +117,6 @@ class ChainSpec:
                      for k, e in enumerate(self.restitution))
 
 
-def is_chain(raw: dict) -> bool:
-    return "chain" in raw
-
-
 def _spec(raw: dict, n: int, ck: Checker) -> ChainSpec:
     """The [chain] table of a chain of ``n`` bodies, read through the scene checker ``ck``."""
     c = ck.table(raw, "chain", "chain")

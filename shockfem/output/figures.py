@@ -30,9 +30,10 @@ def pyvista():
     """``pyvista``, ready to render off screen to files."""
     pyplot()                        # pyvista imports matplotlib: set it up (and quiet) first
     import pyvista as pv
-    import vtk
+    # the one VTK module needed, not ``import vtk``, which loads every module VTK has (1.5 s)
+    from vtkmodules.vtkCommonCore import vtkLogger
     if not os.environ.get("DISPLAY"):
-        vtk.vtkLogger.SetStderrVerbosity(vtk.vtkLogger.VERBOSITY_OFF)
+        vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
     return pv
 
 

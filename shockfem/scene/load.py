@@ -10,6 +10,16 @@ from .schema import resolve
 from .specs import Scene
 
 
+def is_chain(raw: dict) -> bool:
+    """A mass-chain scene: a [chain] table (``amplifier/chain.py``)."""
+    return "chain" in raw
+
+
+def is_launcher_scene(raw: dict) -> bool:
+    """A gas-gun scene: a [launcher] table and no bodies (a chain's [launcher] fires its first body)."""
+    return "launcher" in raw and "bodies" not in raw and "chain" not in raw
+
+
 def read_toml(path: str) -> dict:
     if not os.path.exists(path):
         raise SceneError([f"{path}: no such scene file"])

@@ -160,6 +160,8 @@ class ExplicitSolver:
         # for the reactions' work: the mass behind each constrained dof, and which dofs this rank owns
         self._constrained_mass = m.mass[self._constrained_dofs // gdim]
         self._constrained_owned = self._constrained_dofs < m.num_owned * gdim
+        # where each constraint's dofs sit among them (``_prescribed_motion``)
+        self._constraint_positions = [np.searchsorted(self._constrained_dofs, c.dofs) for c in m.constraints]
         self.t = 0.0
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
@@ -488,11 +490,7 @@ class ExplicitSolver:
         not to round-off); ``plastic``, the plastic work in it; ``hourglass``, the hourglass forces' work.
         Collective."""
         m = self.model
-        n = m.num_owned                     # owned nodes come first
-        # as the nodal account (``nodal.finish_step``) takes it, so that the bodies sum to its kinetic energy
-        v_n = np.where(self.constrained[:n], self.v[:n], self.v[:n] + 0.5 * self.dt * self.a[:n])
-        node_kinetic = 0.5 * self.kinetic_mass[:n] * np.einsum("ij,ij->i", v_n, v_n)
-        kinetic = np.bincount(m.node_body[:n], weights=node_kinetic, minlength=len(m.bodies))
+        kinetic = self._body_sums()[2]
         work = self.body_energy[:len(m.bodies)].copy()
         if self.parallel:
             kinetic = self.comm.allreduce(kinetic, op=MPI.SUM)
@@ -517,9 +515,22 @@ class ExplicitSolver:
             a -= self.model.alpha * v       # mass-proportional damping: a force the solver applies implicitly
         if self.model.constraints:
             prescribed_v, prescribed_a = self._prescribed_motion()
-            mask = self.constrained[nodes]
-            v[mask] = prescribed_v[nodes][mask]
-            a[mask] = prescribed_a[nodes][mask]
+            dofs = self._constrained_dofs
+            g = self.model.gdim
+            if isinstance(nodes, slice):
+                start, stop, stride = nodes.indices(len(self.v))
+                assert stride == 1, "motion: a slice of nodes must be contiguous"
+                keep = (dofs >= start * g) & (dofs < stop * g)
+                at = dofs[keep] - start * g             # flat positions in the slice's (nodes, gdim)
+            else:
+                nodes = np.asarray(nodes)
+                order = np.argsort(nodes)
+                node_of = dofs // g
+                pos = np.minimum(np.searchsorted(nodes[order], node_of), max(len(nodes) - 1, 0))
+                keep = nodes[order][pos] == node_of if len(nodes) else np.zeros(len(dofs), dtype=bool)
+                at = order[pos[keep]] * g + dofs[keep] % g
+            v.reshape(-1)[at] = prescribed_v[keep]
+            a.reshape(-1)[at] = prescribed_a[keep]
         return v, a
 
     def reaction_regions(self) -> list[tuple[str, list[int]]]:
@@ -552,11 +563,13 @@ class ExplicitSolver:
                 self._reaction_dofs.append(dofs[dofs < owned])
         if not self._reaction_dofs:
             return []
-        v, a = (q.reshape(-1) for q in self._prescribed_motion())
+        prescribed_v, prescribed_a = self._prescribed_motion()
         forces = (self.f_ext.reshape(-1), self.f_con.reshape(-1), self.f_int.reshape(-1))
         out = np.zeros((len(self._reaction_dofs), m.gdim))
         for k, dofs in enumerate(self._reaction_dofs):
-            push = (m.mass[dofs // m.gdim] * (a[dofs] + m.alpha * v[dofs])
+            at = np.searchsorted(self._constrained_dofs, dofs)      # the held dofs are constrained dofs
+            v, a = prescribed_v[at], prescribed_a[at]
+            push = (m.mass[dofs // m.gdim] * (a + m.alpha * v)
                     - (forces[0][dofs] + forces[1][dofs] - forces[2][dofs]))
             np.add.at(out[k], dofs % m.gdim, push)
         if self.parallel:
@@ -564,28 +577,32 @@ class ExplicitSolver:
         return list(out)
 
     def _prescribed_motion(self) -> tuple[np.ndarray, np.ndarray]:
-        """The constrained dofs' prescribed velocity at t and its rate (central difference over the last
-        step: exact on the piecewise-linear histories), (nodes, gdim) each, zero elsewhere; kept per step."""
+        """The prescribed velocity at t and its rate (central difference over the last step: exact on the
+        piecewise-linear histories) of every constrained dof (``_constrained_dofs``, in their order);
+        evaluated once per step (the history asks for it several times)."""
         if self._prescribed_at != self.step:
-            v = np.zeros_like(self.v)
-            a = np.zeros_like(self.a)
+            n = len(self._constrained_dofs)
+            v, a = np.zeros(n), np.zeros(n)
             h = 0.5 * self.dt if self.dt > 0 else 1e-9
             before, after = max(self.t - h, 0.0), self.t + h
-            for con in self.model.constraints:
-                v.reshape(-1)[con.dofs] = con.value(self.t)
-                a.reshape(-1)[con.dofs] = (con.value(after) - con.value(before)) / (after - before)
+            for con, at in zip(self.model.constraints, self._constraint_positions):
+                v[at] = con.value(self.t)
+                a[at] = (con.value(after) - con.value(before)) / (after - before)
             self._prescribed, self._prescribed_at = (v, a), self.step
         return self._prescribed
+
+    def _body_sums(self):
+        """This rank's per-body sums of m v and m a of the motion at t, and of the kinetic energy as the
+        nodal account takes it (``nodal.body_sums``)."""
+        m = self.model
+        v_held, a_held = self._prescribed_motion()
+        return nodal.body_sums(self.v, self.a, self.dt, m.alpha, m.mass, self.kinetic_mass, self.constrained,
+                               m.node_body, len(m.bodies), m.num_owned, self._constrained_dofs, v_held, a_held)
 
     def body_means(self):
         """Mass-weighted mean velocity and acceleration of every body at t (``motion``), (bodies, gdim) each."""
         m = self.model
-        n = m.num_owned                     # owned nodes come first
-        nb = len(m.bodies)
-        v_n, a_n = self.motion(slice(0, n))
-        body = m.node_body[:n]
-        mv = np.column_stack([np.bincount(body, weights=m.mass[:n] * v_n[:, k], minlength=nb) for k in range(m.gdim)])
-        ma = np.column_stack([np.bincount(body, weights=m.mass[:n] * a_n[:, k], minlength=nb) for k in range(m.gdim)])
+        mv, ma, _ = self._body_sums()
         mv = self.comm.allreduce(mv, op=MPI.SUM) if self.parallel else mv
         ma = self.comm.allreduce(ma, op=MPI.SUM) if self.parallel else ma
         if m.axisymmetric:

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from numba import njit
 
 # fastmath without its "no NaN / no Inf" assumptions: with them LLVM folds math.isfinite to True and the
@@ -97,3 +99,38 @@ def finish_step(a, v, f_int, f_ext, f_con, inv_mass, mass, constrained, dt, num_
             if not math.isfinite(an) and bad < 0:
                 bad = n
     return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con, kinetic, bad
+
+
+@njit(cache=True)
+def body_sums(v, a, dt, alpha, mass, kinetic_mass, constrained, node_body, num_bodies, num_owned, dofs, v_held,
+              a_held):
+    """Per body, over the owned nodes, in one pass (what the history records at every sample):
+    momentum sum m v and force sum m a of the motion at t (``ExplicitSolver.motion``: v_{n+1/2} + dt/2 a,
+    a - alpha v where free; the prescribed ``v_held`` / ``a_held`` at the constrained ``dofs``, flat, sorted),
+    and the kinetic energy as ``finish_step`` counts it (a constrained dof at its velocity v).
+    Returns (mv, ma, kinetic): (bodies, gdim), (bodies, gdim), (bodies,)."""
+    gdim = v.shape[1]
+    mv = np.zeros((num_bodies, gdim))
+    ma = np.zeros((num_bodies, gdim))
+    kinetic = np.zeros(num_bodies)
+    for n in range(num_owned):
+        b = node_body[n]
+        m = mass[n]
+        vv = 0.0
+        for i in range(gdim):
+            v_t = v[n, i] + 0.5 * dt * a[n, i]
+            mv[b, i] += m * v_t
+            ma[b, i] += m * (a[n, i] - alpha * v_t)
+            vk = v[n, i] if constrained[n, i] else v_t
+            vv += vk * vk
+        kinetic[b] += 0.5 * kinetic_mass[n] * vv
+    for k in range(len(dofs)):         # the held dofs: their prescribed motion replaces the free one
+        n = dofs[k] // gdim
+        if n >= num_owned:
+            break
+        i = dofs[k] % gdim
+        b = node_body[n]
+        v_t = v[n, i] + 0.5 * dt * a[n, i]
+        mv[b, i] += mass[n] * (v_held[k] - v_t)
+        ma[b, i] += mass[n] * (a_held[k] - (a[n, i] - alpha * v_t))
+    return mv, ma, kinetic
