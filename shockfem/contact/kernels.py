@@ -405,3 +405,93 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
         active += _respond(i, s, g, n, rel, mass[s], node_stiffness[i], no_master, n, zeta, soft_scale, dt,
                            friction, f, ff, ft, gap, offset, stiff)
     return active
+
+
+# ------------------------------------------------------------------ the pair's bookkeeping, compiled
+# A pair's step around its passes was some twenty numpy expressions on the surface nodes (gathers,
+# box test, refresh test, sums, work, copies, the step limit, the scatter): 60 us a step on a
+# 3,200-element contact case whose element pass takes 170 us.  These four passes do the same.
+
+@njit(cache=True)
+def gather_local(values, local, slot, out):
+    """out[slot[i]] = values[local[i]]: a rank's owned surface nodes into the compact array."""
+    for i in range(len(local)):
+        for c in range(values.shape[1]):
+            out[slot[i], c] = values[local[i], c]
+
+
+@njit(cache=True)
+def add_local(compact, slot, local, out):
+    """out[local[i]] += compact[slot[i]]: compact forces onto the rank's owned nodes."""
+    for i in range(len(local)):
+        for c in range(out.shape[1]):
+            out[local[i], c] += compact[slot[i], c]
+
+
+@njit(cache=True)
+def boxes_gap(x, nodes_a, nodes_b):
+    """The gap between the bounding boxes of two node sets of ``x``: the largest of the per-axis gaps
+    (<= 0 where the boxes overlap)."""
+    gap = -np.inf
+    for c in range(x.shape[1]):
+        lo_a = hi_a = x[nodes_a[0], c]
+        for s in nodes_a:
+            lo_a = min(lo_a, x[s, c])
+            hi_a = max(hi_a, x[s, c])
+        lo_b = hi_b = x[nodes_b[0], c]
+        for s in nodes_b:
+            lo_b = min(lo_b, x[s, c])
+            hi_b = max(hi_b, x[s, c])
+        gap = max(gap, lo_a - hi_b, lo_b - hi_a)
+    return gap
+
+
+@njit(cache=True)
+def travel(x, x_before):
+    """The largest coordinate change of any node between ``x_before`` and ``x``."""
+    most = 0.0
+    for i in range(x.shape[0]):
+        for c in range(x.shape[1]):
+            most = max(most, abs(x[i, c] - x_before[i, c]))
+    return most
+
+
+@njit(cache=True)
+def totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a):
+    """After the passes: the normal and friction forces on surface a, the work of each over the step
+    (trapezoidal with the last step's forces, at v_{n+1/2}), omega^2 of the active springs
+    (max stiff / m, 0 if none), and ``sizes``: the magnitudes of the two forces on a, and on a the largest
+    node pressure |f_i| / A_i, the summed |f_i| and the loaded area.  Keeps this step's forces as the
+    next one's old ones."""
+    gdim = f.shape[1]
+    force_a = np.zeros(gdim)
+    friction_a = np.zeros(gdim)
+    max_pressure = 0.0
+    load = 0.0
+    loaded_area = 0.0
+    for j in range(len(nodes_a)):
+        i = nodes_a[j]
+        size2 = 0.0
+        for c in range(gdim):
+            force_a[c] += f[i, c]
+            friction_a[c] += ff[i, c]
+            size2 += f[i, c] * f[i, c]
+        if size2 > 0.0:
+            size = np.sqrt(size2)
+            max_pressure = max(max_pressure, size / area_a[j])
+            load += size
+            loaded_area += area_a[j]
+    work = 0.0
+    friction_work = 0.0
+    omega2 = 0.0
+    for i in range(f.shape[0]):
+        for c in range(gdim):
+            work += (f_old[i, c] + f[i, c]) * v[i, c]
+            friction_work += (ff_old[i, c] + ff[i, c]) * v[i, c]
+            f_old[i, c] = f[i, c]
+            ff_old[i, c] = ff[i, c]
+        if stiff[i] > 0.0:
+            omega2 = max(omega2, stiff[i] / mass[i])
+    sizes = np.array([np.sqrt(np.sum(force_a * force_a)), np.sqrt(np.sum(friction_a * friction_a)), max_pressure,
+                      load, loaded_area])
+    return force_a, friction_a, work, friction_work, omega2, sizes

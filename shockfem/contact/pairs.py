@@ -169,6 +169,8 @@ class ContactPair:
         self.f = np.zeros((n, gdim))              # normal forces on the compact nodes [N]
         self.ff = np.zeros((n, gdim))             # friction forces [N]
         self.stiff = np.zeros(n)                  # row sums of the active springs' stiffness [N/m]
+        # on a, this step: |force|, |friction|, largest node pressure, summed |f_i|, loaded area (``account``)
+        self._step_sizes = np.zeros(5)
         self._f_old = np.zeros((n, gdim))
         self._ff_old = np.zeros((n, gdim))
         self.work = 0.0                      # work done by the normal contact forces on the bodies [J]
@@ -194,14 +196,12 @@ class ContactPair:
         x = self.x
         if self.b is None:
             return bool(self.passes[0].gaps(x).min() > self.margin)
-        pa, pb = x[self.passes[0].slaves], x[self.passes[1].slaves]
-        gap = np.maximum(pa.min(axis=0) - pb.max(axis=0), pb.min(axis=0) - pa.max(axis=0))
-        return bool(gap.max() > self.margin)
+        return kernels.boxes_gap(x, self.passes[0].slaves, self.passes[1].slaves) > self.margin
 
     def _refresh(self):
         if self.b is None:
             return
-        if self.x_search is not None and np.abs(self.x - self.x_search).max() < 0.25 * self.margin:
+        if self.x_search is not None and kernels.travel(self.x, self.x_search) < 0.25 * self.margin:
             return
         for p in self.passes:
             p.search(self.x, self.reach)
@@ -215,8 +215,8 @@ class ContactPair:
         ``v`` is v_{n+1/2} of the step of size ``dt`` just taken: the work of the contact forces
         over that step is counted here, trapezoidally, as the solver counts it.  Returns the
         step limit of the active penalty springs (inf if none)."""
-        self.x = self.exchange.gather(x)
-        self.v = self.exchange.gather(v)
+        self.exchange.gather(x, self.x)
+        self.exchange.gather(v, self.v)
         self.f[:] = 0.0
         self.ff[:] = 0.0
         self.stiff[:] = 0.0
@@ -238,15 +238,13 @@ class ContactPair:
                 p.ft[:] = 0.0
         self.active = active
         self.max_penetration = max(self.max_penetration, deepest)
-        self.force_a = self.f[self.nodes_a].sum(axis=0)
-        self.friction_a = self.ff[self.nodes_a].sum(axis=0)
+        self.force_a, self.friction_a, work, friction_work, omega2, self._step_sizes = kernels.totals(
+            self.f, self.ff, self._f_old, self._ff_old, self.v, self.stiff, self.mass, self.nodes_a, self.area_a)
         if self._offset0 is not None and self.preload is None and t >= self.spec.interference_time:
             self.preload = self._pressure()
-        self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * self.v))
-        self.friction_work += 0.5 * dt * float(np.sum((self._ff_old + self.ff) * self.v))
-        self._f_old[:] = self.f
-        self._ff_old[:] = self.ff
-        return self._stable_step() if self.stiff.any() else np.inf     # active or arriving springs
+        self.work += 0.5 * dt * work
+        self.friction_work += 0.5 * dt * friction_work
+        return self._stable_step(omega2) if omega2 > 0.0 else np.inf     # active or arriving springs
 
     def _push_out_overlaps(self, t: float):
         """LS-DYNA's interference option: the penetration each node started with counts in full after
@@ -267,29 +265,28 @@ class ContactPair:
         return {"time": self.spec.interference_time, "force_on_a": self.force_a.tolist(), "normal_load": load,
                 "area": area, "mean_pressure": load / area}
 
-    def _stable_step(self) -> float:
-        """2 / omega of the active springs alone, omega^2 <= max_i stiff_i / m_i (Gershgorin), shortened
-        by the contact damping: (2 / omega)(sqrt(1 + zeta^2) - zeta) (Belytschko et al., eq. 6.2.28)."""
-        omega2 = float(np.max(self.stiff / self.mass))
+    def _stable_step(self, omega2: float) -> float:
+        """2 / omega of the active springs alone, omega^2 <= max_i stiff_i / m_i (Gershgorin, ``omega2``),
+        shortened by the contact damping: (2 / omega)(sqrt(1 + zeta^2) - zeta) (Belytschko et al., eq. 6.2.28)."""
         zeta = self.spec.damping
         return 2.0 / np.sqrt(omega2) * (np.sqrt(1.0 + zeta * zeta) - zeta)
 
     def add_forces(self, f: np.ndarray):
         """Add this pair's forces on the nodes this rank owns into the solver's array ``f``."""
-        self.exchange.add_to(self.f + self.ff, f)
+        self.exchange.add_to(self.f, f)
+        self.exchange.add_to(self.ff, f)
 
     def account(self, dt: float, t: float, body_velocities):
         """After a step ending at t: impulse, peak forces, open/closed intervals, restitution velocities.
         Collective when contact opens or closes (``body_velocities`` reduces over ranks)."""
         self.impulse += dt * (self.force_a + self.friction_a)
-        force = float(np.linalg.norm(self.force_a))
+        force, friction, pressure, load, loaded_area = self._step_sizes.tolist()
         if self.active > 0:
-            load = np.linalg.norm(self.f[self.nodes_a], axis=1)
-            self.max_pressure = max(self.max_pressure, float(np.max(load / self.area_a)))
-            if force > self.max_force:
-                self.pressure_at_max_force = float(load.sum() / self.area_a[load > 0].sum())
+            self.max_pressure = max(self.max_pressure, pressure)
+            if force > self.max_force and loaded_area > 0:
+                self.pressure_at_max_force = load / loaded_area
         self.max_force = max(self.max_force, force)
-        self.max_friction = max(self.max_friction, float(np.linalg.norm(self.friction_a)))
+        self.max_friction = max(self.max_friction, friction)
         closed = self.active > 0
         if closed and (not self.intervals or self.intervals[-1][1] is not None):
             self.intervals.append([t, None])
@@ -308,8 +305,8 @@ class ContactPair:
 
     def start(self, x: np.ndarray, v: np.ndarray) -> tuple[int, float]:
         """At t = 0: take every initial penetration as its node's zero; returns (nodes, deepest [m])."""
-        self.x = self.exchange.gather(x)
-        self.v = self.exchange.gather(v)
+        self.exchange.gather(x, self.x)
+        self.exchange.gather(v, self.v)
         if self._boxes_apart():
             return self.initial_overlap
         self._refresh()

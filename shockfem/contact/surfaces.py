@@ -25,6 +25,7 @@ from ..geometry import region_facets
 from ..model import Model
 from ..model.kinematics import BASIX_CELLS
 from ..materials.layout import P_LAMBDA, P_MU
+from . import kernels
 
 TWO_PI = 2.0 * math.pi
 # tensor-ordered hexahedron (vertex k at (k & 1, k >> 1 & 1, k >> 2 & 1)) as six tetrahedra
@@ -178,14 +179,16 @@ class NodeExchange:
             if len(self.order) != self.size:
                 raise RuntimeError("contact surface nodes are not owned exactly once over the ranks")
 
-    def gather(self, values: np.ndarray) -> np.ndarray:
-        """(local nodes, k) -> (compact nodes, k): every rank gets every value.  Collective."""
+    def gather(self, values: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+        """(local nodes, k) -> (compact nodes, k): every rank gets every value (into ``out`` if given).
+        Collective."""
         k = values.shape[1]
-        mine = np.ascontiguousarray(values[self.local])
-        out = np.empty((self.size, k))
+        if out is None:
+            out = np.empty((self.size, k))
         if self.comm.size == 1:
-            out[self.slot] = mine
+            kernels.gather_local(values, self.local, self.slot, out)
             return out
+        mine = np.ascontiguousarray(values[self.local])
         received = np.empty((self.size, k))
         self.comm.Allgatherv(mine, [received, self.counts * k, None, MPI.DOUBLE])
         out[self.order] = received
@@ -193,4 +196,4 @@ class NodeExchange:
 
     def add_to(self, compact: np.ndarray, local: np.ndarray):
         """Add compact values into the owned local nodes of this rank."""
-        local[self.local] += compact[self.slot]
+        kernels.add_local(compact, self.slot, self.local, local)
