@@ -453,7 +453,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
         "wall_time_s": wall,
         "element_cycles_per_s": elements * solver.step / wall if wall > 0 else 0.0,
         "phase_times_s": {"internal_force": solver.times.internal_force, "update": solver.times.update,
-                          "energy": solver.times.energy, "step_total": solver.times.total},
+                          "contact": solver.times.contact, "energy": solver.times.energy, "step_total": solver.times.total},
         "energy": {"initial_total": e.initial, "kinetic": e.kinetic, "internal": e.internal,
                    "plastic": e.plastic, "bulk_viscosity": e.bulk_viscosity,
                    "damping": e.damping, "hourglass": e.hourglass,

@@ -283,6 +283,24 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
     bn = np.zeros(3)
     rel = np.zeros(3)
     active = 0
+    # a bounding sphere of every facet: a candidate further from its centre than the sphere, widened by
+    # the reach beyond an edge and the depth, can take the node neither within, nor beyond its edge, nor
+    # ahead of it, so its projection (a Newton solve on a bilinear quad) is skipped.  In 3D the search
+    # lists ~25 candidates a node, of which a few are near: 3D rod on rod at 3.5 mm, 1.26 -> 0.2 ms a step
+    centre = np.zeros((facets.shape[0], gdim))
+    cull2 = np.zeros(facets.shape[0])
+    for j in range(facets.shape[0]):
+        for d in range(gdim):
+            for q in range(nf):
+                centre[j, d] += x[facets[j, q], d] / nf
+        r2 = 0.0
+        for q in range(nf):
+            e2 = 0.0
+            for d in range(gdim):
+                e2 += (x[facets[j, q], d] - centre[j, d]) ** 2
+            r2 = max(r2, e2)
+        reach = (1.0 + 5.0 * _REACH_BEYOND_EDGE) * math.sqrt(r2) + depth
+        cull2[j] = reach * reach
     for i in range(slaves.shape[0]):
         s = slaves[i]
         gap[i] = 0.0
@@ -299,6 +317,11 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
             for q in range(nf):
                 mine = mine or facets[j, q] == s
             if mine:
+                continue
+            dist2 = 0.0
+            for d in range(gdim):
+                dist2 += (x[s, d] - centre[j, d]) ** 2
+            if dist2 > cull2[j]:
                 continue
             g, outside = _project(facets[j], x, s, w, n)
             if g <= -depth or g >= depth:

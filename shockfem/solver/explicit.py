@@ -96,9 +96,12 @@ class RigidState:
 
 @dataclass
 class PhaseTimes:
-    """Wall time spent in each phase of the step [s] (for ``shockfem bench``)."""
+    """Wall time spent in each phase of the step [s] (for ``shockfem bench``): the nodal update (velocity,
+    constraints, position), the internal force (the element pass), contact (and loads, springs, liquids,
+    target), and the rest (acceleration, energy bookkeeping, contact accounting)."""
     internal_force: float = 0.0
     update: float = 0.0
+    contact: float = 0.0
     energy: float = 0.0
     total: float = 0.0
 
@@ -389,6 +392,7 @@ class ExplicitSolver:
         t2 = time.perf_counter()
         self._external_force(self.t)
         self._contact_forces(dt)
+        t_contact = time.perf_counter()
 
         # acceleration a_{n+1}, second halves of the work increments, kinetic energy
         w_int2, w_ext2, w_con2, kinetic, bad = nodal.finish_step(
@@ -416,7 +420,8 @@ class ExplicitSolver:
         t3 = time.perf_counter()
         self.times.update += t1 - t0
         self.times.internal_force += t2 - t1
-        self.times.energy += t3 - t2
+        self.times.contact += t_contact - t2
+        self.times.energy += t3 - t_contact
         self.times.total += t3 - t0
 
     def _advance_rigid(self, rb, rs: RigidState, dt: float, dt_avg: float):
