@@ -148,28 +148,14 @@ def speed_against_error(echo=print) -> list[dict]:
     return out
 
 
-# The two-rod contact case: equal steel rods R 25 mm, L 100 mm (L = 4 D), the striker at 10 m/s onto the
-# target at rest, penalty contact (default scale 0.1, damping 0.1), 200 us.  Thick rods ring, so the target
-# does not leave at 10 m/s: its mean speed at 200 us converges, at about first order, to 9.32 m/s.
-# Provenance: axisymmetric runs of this case at 2.5 / 1.25 / 0.625 / 0.3125 mm gave 9.5762 / 9.4621 /
-# 9.3965 / 9.3611 m/s (differences 0.114, 0.066, 0.035: order 0.9); Richardson's extrapolation of the last
-# three, 9.361 - 0.035 / (2^0.9 - 1) = 9.32.  CalculiX 2.20's explicit C3D8R quarter model gives 9.49 at 1.25 mm.
-TWO_RODS = {"radius": 0.025, "length": 0.1, "speed": 10.0, "end_time": 200e-6, "converged_speed": 9.32}
 CONTACT_SIZES = {"axisymmetric": (0.0025, 0.00125, 0.000625), "3d": (0.005, 0.0035, 0.0025)}
 QUICK_CONTACT_SIZES = {"axisymmetric": (0.0025,), "3d": (0.005,)}
-
-
-def two_rods_scene(h: float, kinematics: str = "axisymmetric") -> dict:
-    from .verify.contact_cases import _rod_pair_scene
-    c = TWO_RODS
-    raw = _rod_pair_scene(h, kinematics, radius=c["radius"], length=c["length"], end_time=c["end_time"])
-    raw["bodies"][0]["velocity"][-1] = -c["speed"]
-    return raw
 
 
 def contact_bench(quick: bool = False, echo=print) -> list[dict]:
     """The two-rod contact case at three sizes, axisymmetric and 3D: wall time of the time loop, element-cycles
     per second, the phases' shares, and the error of the target's final speed against its converged value."""
+    from .verify.contact_cases import TWO_RODS, two_rods_scene
     from .verify.scenes import solve
     c = TWO_RODS
     echo(f"speed against error: two steel rods R {c['radius'] * 1e3:g} mm, L {c['length'] * 1e3:g} mm, "

@@ -24,6 +24,7 @@ from . import kinematics as kin
 from ..elements import one_point
 from ..elements.cells import cell_orientation
 from ..materials import layout
+from . import mass_scaling
 from .materials import parameter_table
 
 
@@ -107,6 +108,7 @@ class Model:
     safety_factor: float = 0.9                  # of the stable step
     plastic: bool = False                       # does any deformable body yield?
     point_state: bool = False                   # a state at every point (plastic bodies, slotted rings)
+    mass_scaling: "mass_scaling.MassScaling | None" = None   # what the scaling added, if the scene asked for it
 
     @property
     def comm(self):
@@ -202,10 +204,21 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     params, curves = parameter_table([scene.material_of(b) for b in scene.bodies],
                                      [b.damping or scene.damping for b in scene.bodies], scene.bulk_viscosity,
                                      [slot_width(b, scene.kinematics) for b in scene.bodies])
-    cell_rho = params[cell_material, layout.P_RHO]
-    mass = _lumped_mass(V, cell_rho, scene, gdim)
-
     rigid_ids = [i for i, b in enumerate(scene.bodies) if b.rigid]
+    scaling = None
+    if scene.mass_scaling_step > 0:
+        # elements below the target step get rows of their own with a higher density
+        steps = mass_scaling.element_steps(X0, dofmap, cell_name, params[cell_body, layout.P_WAVE_SPEED],
+                                           scene.safety_factor)
+        deformable = (cell_body >= 0) & ~np.isin(cell_body, rigid_ids)
+        params, curves, cell_material, factor = mass_scaling.scale_rows(params, curves, cell_body, steps,
+                                                                        scene.mass_scaling_step, deformable)
+    mass = _lumped_mass(V, params[cell_material, layout.P_RHO], scene, gdim)
+    if scene.mass_scaling_step > 0:
+        scaling = _mass_scaling_report(scene, comm, mass - _lumped_mass(V, params[cell_body, layout.P_RHO], scene,
+                                                                          gdim),
+                                       mass, node_body, cell_body, factor, imap.size_local, cell_map.size_local)
+
     owned_cells = np.arange(cell_map.size_local, dtype=np.int32)
     kernel_cells = owned_cells[~np.isin(cell_body[owned_cells], rigid_ids)]
 
@@ -238,10 +251,35 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                   accelerometers=tuple(scene.shock.accelerometers),
                   sections=tuple(scene.outputs.sections), gravity=scene.gravity,
                   thickness=scene.thickness, safety_factor=scene.safety_factor, plastic=plastic,
-                  point_state=plastic or bool(slotted))
+                  point_state=plastic or bool(slotted), mass_scaling=scaling)
     model.rigid = [_rigid_body(model, i) for i in rigid_ids]
     _add_boundaries(model, scene)
     return model
+
+
+def _mass_scaling_report(scene: Scene, comm, added: np.ndarray, mass: np.ndarray, node_body, cell_body, factor,
+                         owned_nodes: int, owned_cells: int) -> mass_scaling.MassScaling:
+    """The added mass per body, over all ranks; refuses (ModelError) a scaling above the scene's limit."""
+    report = mass_scaling.MassScaling(scene.mass_scaling_step)
+    report.largest_factor = comm.allreduce(float(factor.max(initial=1.0)), op=MPI.MAX)
+    over = []
+    for i, body in enumerate(scene.bodies):
+        nodes = node_body[:owned_nodes] == i
+        added_i = comm.allreduce(float(added[:owned_nodes][nodes].sum()), op=MPI.SUM)
+        total = comm.allreduce(float(mass[:owned_nodes][nodes].sum()), op=MPI.SUM)
+        report.cells[body.name] = comm.allreduce(int((factor[:owned_cells][cell_body[:owned_cells] == i] > 1).sum()),
+                                                 op=MPI.SUM)
+        report.added_mass[body.name] = added_i
+        report.share[body.name] = added_i / max(total - added_i, 1e-300)
+        if report.share[body.name] > scene.mass_scaling_limit:
+            over.append(f"{body.name} +{report.share[body.name]:.1%}")
+    if over:
+        from ..errors import ModelError
+        raise ModelError(f"scene.mass_scaling_step = {scene.mass_scaling_step:.4g} s would add more mass than "
+                         f"scene.mass_scaling_limit = {scene.mass_scaling_limit:g} allows ({', '.join(over)} of the "
+                         f"body's mass): lower the step, refine less or coarsen the small elements, or raise the "
+                         f"limit if that inertia is acceptable")
+    return report
 
 
 def _rigid_body(model: Model, index: int) -> RigidBody:
@@ -384,5 +422,7 @@ def describe(model: Model, sc: Scene) -> str:
         if b.damping and not b.rigid:
             lines.append(f"  damping of {b.name}: stiffness, {b.damping.ratio:.3g} of critical at "
                          f"{b.damping.frequency:.6g} Hz (beta = {b.damping.coefficients()[1]:.4g} s)")
+    if model.mass_scaling is not None:
+        lines.append("  " + model.mass_scaling.describe())
     return "\n".join(lines)
 

@@ -165,7 +165,8 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     s = ck.table(raw, "scene", "scene")
     ck.unknown(s, ("name", "kinematics", "element", "end_time", "safety_factor", "thickness",
                    "energy_error_limit", "integration", "hourglass", "hourglass_coefficient", "gravity",
-                   "bulk_viscosity_quadratic", "bulk_viscosity_linear", "curve_elements", "checkpoint_interval"),
+                   "bulk_viscosity_quadratic", "bulk_viscosity_linear", "curve_elements", "checkpoint_interval",
+                   "mass_scaling_step", "mass_scaling_limit"),
                "scene")
     name = s.get("name", "scene")
     if not isinstance(name, str) or not name.strip() or name.strip(".") == "" or any(c in name for c in "/\\"):
@@ -185,6 +186,10 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     # simulated time between checkpoints (``output/checkpoint.py``); 0: only when a signal stops the run
     checkpoint = ck.quantity(s, "checkpoint_interval", "scene", "time", default=end_time / 10,
                              nonnegative=True)
+    # mass scaling (``model/mass_scaling.py``): the smallest step the run takes (safety factor included),
+    # and the largest share of a body's mass it may add before the run is refused
+    ms_step = ck.quantity(s, "mass_scaling_step", "scene", "time", default=0.0, nonnegative=True)
+    ms_limit = ck.quantity(s, "mass_scaling_limit", "scene", "dimensionless", default=0.05, positive=True)
     curve = s.get("curve_elements", 24)
     if not isinstance(curve, int) or isinstance(curve, bool) or not 6 <= curve <= 360:
         ck.fail("scene.curve_elements", f"must be a whole number of elements round a circle in [6, 360], got {curve!r}")
@@ -375,7 +380,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
                  materials, tuple(bodies),
                  tuple(boundaries), tuple(contacts), damping, outputs, tuple(springs),
                  gravity if any(gravity) else (), bulk_viscosity, shock, tuple(cavities), penetration, curve,
-                 checkpoint)
+                 checkpoint, ms_step, ms_limit)
 
 
 def _section_cuts(ck: Checker, o: dict, bodies) -> tuple[SectionCuts, ...]:

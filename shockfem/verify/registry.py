@@ -25,6 +25,7 @@ from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
                                 penetration_yaw)
 from .section_cases import section_stress
+from .mass_scaling_cases import mass_scaling
 from .hard_cases import HARD
 
 
@@ -43,6 +44,7 @@ CASES = {
     "hertz_spheres": hertz_spheres,
     "rod_on_rod_3d": rod_on_rod_3d,
     "contact_parallel": contact_parallel,
+    "mass_scaling": mass_scaling,
     "spring_oscillator": spring_oscillator,
     "sliding_block": sliding_block,
     "tunnel_slide": tunnel_slide,
