@@ -174,6 +174,7 @@ class ExplicitSolver:
         self.times = PhaseTimes()
         self.rigid_states = [RigidState(rb.center0.copy(), np.zeros(gdim)) for rb in m.rigid]
         self._prescribed_at = -1        # the step ``_prescribed_motion`` was last evaluated at
+        self._body_sums_at = None       # (step, t) ``_body_sums`` was last evaluated at
         self._reaction_dofs = None      # ``reactions``' held dofs by region, made at its first call
         self._set_initial_velocity()
         if initial_velocity is not None:
@@ -600,9 +601,13 @@ class ExplicitSolver:
         """This rank's per-body sums of m v and m a of the motion at t, and of the kinetic energy as the
         nodal account takes it (``nodal.body_sums``)."""
         m = self.model
-        v_held, a_held = self._prescribed_motion()
-        return nodal.body_sums(self.v, self.a, self.dt, m.alpha, m.mass, self.kinetic_mass, self.constrained,
-                               m.node_body, len(m.bodies), m.num_owned, self._constrained_dofs, v_held, a_held)
+        if self._body_sums_at != (self.step, self.t):     # once per step: the history asks for it twice
+            v_held, a_held = self._prescribed_motion()
+            self._body_sums_kept = nodal.body_sums(self.v, self.a, self.dt, m.alpha, m.mass, self.kinetic_mass,
+                                                   self.constrained, m.node_body, len(m.bodies), m.num_owned,
+                                                   self._constrained_dofs, v_held, a_held)
+            self._body_sums_at = (self.step, self.t)
+        return tuple(q.copy() for q in self._body_sums_kept)
 
     def body_means(self):
         """Mass-weighted mean velocity and acceleration of every body at t (``motion``), (bodies, gdim) each."""
