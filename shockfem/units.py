@@ -57,7 +57,12 @@ class UnitError(ValueError):
 
 @functools.lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    ureg = pint.UnitRegistry()
+    try:
+        # pint's parsed definitions kept in the user's cache directory: building the registry from its
+        # text takes 0.29 s of every run's start, from the cache 0.07 s
+        ureg = pint.UnitRegistry(cache_folder=":auto:")
+    except Exception:              # no writable cache directory (a read-only home): build it from the text
+        ureg = pint.UnitRegistry()
     # "g" is gram in pint; shock engineers write accelerations in standard gravities as "gn"
     # or "g0" (pint's own name is "g_n"); we accept "gee" too so that "10000 gee" is unambiguous.
     # Outputs write the unit as "g" ("11,344 g"): a standard gravity, never a gram.

@@ -209,6 +209,10 @@ def run_batch(cases: list[Case], out_dir: str, executor: str = "local", workers:
                                      pure=False) for i, c in enumerate(cases)]
             for future in dask_completed(futures):
                 finished(future.result())
+            # the results are in: let the scheduler forget them before the workers go, or it warns that
+            # closing the cluster loses computed tasks "which will be recomputed elsewhere" (they are not)
+            client.cancel(futures)
+            del futures
             if not scheduler:
                 client.cluster.close()
     if bar is not None:
