@@ -49,6 +49,8 @@ class _History:
     region: str
 
     def value(self, t: float) -> float:
+        if len(self.values) == 1:        # a constant (fixed, symmetry, the axis): no interpolation (np.interp
+            return float(self.values[0])  # on a scalar costs 10 us, and the solver asks every step)
         return float(np.interp(t, self.times, self.values))
 
 

@@ -496,7 +496,7 @@ class ExplicitSolver:
         not to round-off); ``plastic``, the plastic work in it; ``hourglass``, the hourglass forces' work.
         Collective."""
         m = self.model
-        kinetic = self._body_sums()[2]
+        kinetic = self._body_sums()[2].copy()
         work = self.body_energy[:len(m.bodies)].copy()
         if self.parallel:
             kinetic = self.comm.allreduce(kinetic, op=MPI.SUM)
@@ -607,7 +607,7 @@ class ExplicitSolver:
                                                    self.constrained, m.node_body, len(m.bodies), m.num_owned,
                                                    self._constrained_dofs, v_held, a_held)
             self._body_sums_at = (self.step, self.t)
-        return tuple(q.copy() for q in self._body_sums_kept)
+        return self._body_sums_kept          # kept for the step: callers copy before changing them
 
     def body_means(self):
         """Mass-weighted mean velocity and acceleration of every body at t (``motion``), (bodies, gdim) each."""
@@ -615,8 +615,9 @@ class ExplicitSolver:
         mv, ma, _ = self._body_sums()
         mv = self.comm.allreduce(mv, op=MPI.SUM) if self.parallel else mv
         ma = self.comm.allreduce(ma, op=MPI.SUM) if self.parallel else ma
+        v_mean, a_mean = mv / m.body_mass[:, None], ma / m.body_mass[:, None]
         if m.axisymmetric:
             # the centre of mass of a body of revolution stays on its axis: the mean of the nodes' radial
             # motion is the body breathing, not moving
-            mv[:, 0] = ma[:, 0] = 0.0
-        return mv / m.body_mass[:, None], ma / m.body_mass[:, None]
+            v_mean[:, 0] = a_mean[:, 0] = 0.0
+        return v_mean, a_mean
