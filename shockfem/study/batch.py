@@ -72,12 +72,13 @@ def _command(case: Case, path: str, ranks: int, resume: bool) -> list[str]:
     return launcher + shockfem + [case.scene, "--out", path, "--no-progress", *sets]
 
 
-def run_case(case: Case, out_dir: str, ranks: int = 1) -> dict:
-    """Run ``case`` into ``out_dir/<name>`` unless it is done already; its row (``case_row``).  What an
-    executor's worker runs: a process of its own, its result read back from the run directory."""
+def run_case(case: Case, out_dir: str, ranks: int = 1, rerun: bool = False) -> dict:
+    """Run ``case`` into ``out_dir/<name>`` unless it is done already (``rerun``: from the start whatever its
+    directory holds); its row (``case_row``).  What an executor's worker runs: a process of its own, its
+    result read back from the run directory."""
     path = os.path.join(out_dir, case.name)
     os.makedirs(path, exist_ok=True)
-    same = _read_json(os.path.join(path, "case.json")) == case.definition()
+    same = not rerun and _read_json(os.path.join(path, "case.json")) == case.definition()
     summary = _read_json(os.path.join(path, "summary.json")) if same else None
     if summary and summary.get("status") == "completed":
         return case_row(case, summary, 0, 0.0, "skipped: completed before")
@@ -174,10 +175,11 @@ def _dask_client(workers: int, scheduler: str | None):
 
 
 def run_batch(cases: list[Case], out_dir: str, executor: str = "local", workers: int | None = None,
-              ranks: int = 1, scheduler: str | None = None, progress: bool = True, echo=print) -> list[dict]:
-    """Run every case (``run_case``) with ``executor`` (``EXECUTORS``), ``workers`` at a time (default:
-    the cores over the ranks a case takes); returns the rows in the cases' order, also written to
-    ``out_dir`` as they come (``write_table``)."""
+              ranks: int = 1, scheduler: str | None = None, progress: bool = True, echo=print,
+              rerun: bool = False) -> list[dict]:
+    """Run every case (``run_case``; ``rerun``: none skipped or resumed) with ``executor`` (``EXECUTORS``),
+    ``workers`` at a time (default: the cores over the ranks a case takes); returns the rows in the cases'
+    order, also written to ``out_dir`` as they come (``write_table``)."""
     if executor not in EXECUTORS:
         raise ValueError(f"executor: one of {', '.join(EXECUTORS)}, got {executor!r}")
     os.makedirs(out_dir, exist_ok=True)
@@ -200,13 +202,13 @@ def run_batch(cases: list[Case], out_dir: str, executor: str = "local", workers:
 
     if executor == "local":
         with ThreadPoolExecutor(max_workers=workers) as pool:
-            for future in as_completed([pool.submit(run_case, c, out_dir, ranks) for c in cases]):
+            for future in as_completed([pool.submit(run_case, c, out_dir, ranks, rerun) for c in cases]):
                 finished(future.result())
     else:
         from distributed import as_completed as dask_completed
         with _dask_client(workers, scheduler) as client:
-            futures = [client.submit(run_case, c, os.path.abspath(out_dir), ranks, key=f"shockfem-{c.name}-{i}",
-                                     pure=False) for i, c in enumerate(cases)]
+            futures = [client.submit(run_case, c, os.path.abspath(out_dir), ranks, rerun,
+                                     key=f"shockfem-{c.name}-{i}", pure=False) for i, c in enumerate(cases)]
             for future in dask_completed(futures):
                 finished(future.result())
             # the results are in: let the scheduler forget them before the workers go, or it warns that

@@ -1,5 +1,9 @@
 """A study's finite-element case: a raw scene run into a run directory of its own (``shockfem run``'s:
-XDMF fields, histories, summary, the pictures of its deformed shape), and the run read back."""
+XDMF fields, histories, summary, the pictures of its deformed shape), and the run read back.
+
+``run_case`` runs one case in this process (a design iteration that needs the last case's answer before
+it can set up the next); ``run_cases`` runs a set of independent cases (a design of experiments) as a
+table through the batch runner (``batch.py``): each its own ``shockfem run`` process, both cores."""
 from __future__ import annotations
 
 import json
@@ -12,6 +16,8 @@ from ..errors import ModelError, UnstableRun
 from ..output.history_file import read_history
 from ..runner import resume_run, run_scene
 from ..scene import resolve, to_plain
+from ..scene.toml_writer import dumps
+from .batch import Case, run_batch
 
 
 @dataclass(frozen=True)
@@ -67,3 +73,48 @@ def run_case(name: str, raw: dict, out_dir: str, echo) -> tuple[CaseRun | None, 
         summary = json.load(fh)
     result = CaseRun(path, summary, read_history(os.path.join(path, "history.csv"))[0])
     return result, time.perf_counter() - t0, summary["status"]
+
+
+def _plain(value):
+    """A raw scene with numpy numbers made Python's (for the TOML writer)."""
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    return value.item() if hasattr(value, "item") else value
+
+
+def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
+              factors: list[dict] | None = None) -> list[tuple[CaseRun | None, float, str]]:
+    """Run independent cases ``(name, raw scene)`` into ``out_dir/<name>`` as a table (``batch.run_batch``,
+    the local executor: as many at a time as there are cores), each scene written beside its run as
+    ``<name>/scene.toml``; ``out_dir`` gets the batch's ``cases.csv`` (``factors``: each case's levels for
+    it).  Returns what ``run_case`` returns for each, in order.  With ``RESUME_ENV`` set, the completed
+    cases are read back and the stopped ones resumed (the batch's own rule: same scene file, same
+    overrides); without it every case runs from the start."""
+    batch = []
+    for k, (name, raw) in enumerate(cases):
+        resolve(raw)                              # a bad scene is the study's bug: say so before running any
+        path = os.path.join(out_dir, name)
+        os.makedirs(path, exist_ok=True)
+        scene_file = os.path.join(path, "scene.toml")
+        text = dumps(_plain(raw))
+        if not (os.path.exists(scene_file) and open(scene_file).read() == text):
+            with open(scene_file, "w") as fh:
+                fh.write(text)
+        batch.append(Case(name, scene_file, (), (factors or [{}] * len(cases))[k]))
+    rows = run_batch(batch, out_dir, "local", progress=sys.stderr.isatty(), echo=lambda m: None,
+                     rerun=os.environ.get(RESUME_ENV) != "1")
+    out = []
+    for (name, _), row in zip(cases, rows):
+        path = os.path.join(out_dir, name)
+        status = "not meshed" if row["exit code"] == 2 else row["status"]
+        how = "" if row["how"] == "run" else f", {row['how']}"
+        echo(f"  {name}: {status}{how} ({row['wall time [s]']:.0f} s)"
+             + (f": {row['diagnosis']}" if status != "completed" and row["diagnosis"] else ""))
+        result = None
+        if status == "completed":
+            with open(os.path.join(path, "summary.json")) as fh:
+                result = CaseRun(path, json.load(fh), read_history(os.path.join(path, "history.csv"))[0])
+        out.append((result, float(row["wall time [s]"]), status))
+    return out

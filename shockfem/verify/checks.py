@@ -15,7 +15,7 @@ import sys
 import numpy as np
 
 from ..output.history_file import read_history_csv
-from .toml_writer import dumps
+from ..scene.toml_writer import dumps
 
 # Element size of the rods per verification size [m].
 SIZES = {"coarse": 2.0, "default": 1.0, "fine": 0.5}

@@ -11,7 +11,7 @@ import numpy as np
 from ...output.figures import pyplot
 from ...metrics.flexure import station_travel, tail_flexure
 from ...units import FT, to_si
-from ..cases import run_case
+from ..cases import run_cases
 from ..doe import effect_columns, effects, fold_over, fractional_factorial, lenth, physical_coefficients, significant
 from ...parts.catalog import ogive
 from ...scene.library import initial_yield_stress
@@ -71,13 +71,17 @@ def screening(rep: Report, ctx: Context):
     coded, names, levels = design_runs(ctx.cfg["centre_points"], fold)
     length = article_length()
     rows, results = [], []
-    for name, x, lv in zip(names, coded, levels):
+    # the runs are independent: one table for the batch runner, as many at a time as there are cores
+    scenes = []
+    for name, lv in zip(names, levels):
         yaw, fc, spin, speed = (v * f[5] for v, f in zip(lv, FACTORS))
-        end = event_end(fc, speed, ctx.cfg)
         ctx.echo(f"  {name}: {_label(lv)}")
-        raw = shot_scene(name, "3d", ctx.cfg["h_3d"], fc, speed, end, ctx.cfg["history"], yaw, spin,
-                         sections=ctx.cfg["sections"], curve_elements=ctx.cfg["curve_elements"])
-        fe, wall, status = run_case(name, raw, ctx.out_dir, ctx.echo)
+        scenes.append((name, shot_scene(name, "3d", ctx.cfg["h_3d"], fc, speed, event_end(fc, speed, ctx.cfg),
+                                        ctx.cfg["history"], yaw, spin, sections=ctx.cfg["sections"],
+                                        curve_elements=ctx.cfg["curve_elements"])))
+    factors = [{f"{f[0]} [{f[4]}]": v for f, v in zip(FACTORS, lv)} for lv in levels]
+    for name, x, lv, (fe, wall, status) in zip(names, coded, levels, run_cases(scenes, ctx.out_dir, ctx.echo,
+                                                                                factors)):
         r = responses(fe, length) if fe is not None else None
         results.append(r)
         rows.append([name] + [int(c) for c in x] + lv + [status]
