@@ -102,6 +102,10 @@ def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
         if not (os.path.exists(scene_file) and open(scene_file).read() == text):
             with open(scene_file, "w") as fh:
                 fh.write(text)
+            # a changed scene at the same path: the batch, which knows a case by its file and overrides,
+            # must not take the run of the old one for this one
+            if os.path.exists(os.path.join(path, "case.json")):
+                os.remove(os.path.join(path, "case.json"))
         batch.append(Case(name, scene_file, (), (factors or [{}] * len(cases))[k]))
     rows = run_batch(batch, out_dir, "local", progress=sys.stderr.isatty(), echo=lambda m: None,
                      rerun=os.environ.get(RESUME_ENV) != "1")

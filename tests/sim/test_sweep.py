@@ -107,3 +107,8 @@ def test_a_study_runs_its_independent_cases_as_a_table(tmp_path, monkeypatch):
     run_cases([("fast", raw)], out, said.append)
     assert json.load(open(os.path.join(out, "batch.json")))[0]["how"] == "skipped: completed before"
     assert said[-1].startswith("  fast: completed, skipped: completed before")
+    # a changed scene under the same name runs again, --resume or not
+    changed = apply_overrides(raw, ['scene.end_time="25 us"'])
+    third = run_cases([("fast", changed)], out, said.append)
+    assert json.load(open(os.path.join(out, "batch.json")))[0]["how"] == "run"
+    assert third[0][0].summary["end_time"] == pytest.approx(25e-6)
