@@ -1,9 +1,13 @@
 """A minimal TOML writer for the scenes shockfem generates (tables, arrays of tables,
-strings, numbers, booleans and flat lists) - enough to hand a scene to the CLI."""
+strings, numbers (numpy's too), booleans and flat lists) - enough to hand a scene to the CLI."""
 from __future__ import annotations
+
+import numpy as np
 
 
 def _value(v) -> str:
+    if isinstance(v, (np.generic, np.ndarray)):      # numbers a study computed with numpy
+        v = v.tolist()
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, (int, float)):

@@ -521,22 +521,12 @@ class ExplicitSolver:
             a -= self.model.alpha * v       # mass-proportional damping: a force the solver applies implicitly
         if self.model.constraints:
             prescribed_v, prescribed_a = self._prescribed_motion()
-            dofs = self._constrained_dofs
-            g = self.model.gdim
-            if isinstance(nodes, slice):
-                start, stop, stride = nodes.indices(len(self.v))
-                assert stride == 1, "motion: a slice of nodes must be contiguous"
-                keep = (dofs >= start * g) & (dofs < stop * g)
-                at = dofs[keep] - start * g             # flat positions in the slice's (nodes, gdim)
-            else:
-                nodes = np.asarray(nodes)
-                order = np.argsort(nodes)
-                node_of = dofs // g
-                pos = np.minimum(np.searchsorted(nodes[order], node_of), max(len(nodes) - 1, 0))
-                keep = nodes[order][pos] == node_of if len(nodes) else np.zeros(len(dofs), dtype=bool)
-                at = order[pos[keep]] * g + dofs[keep] % g
-            v.reshape(-1)[at] = prescribed_v[keep]
-            a.reshape(-1)[at] = prescribed_a[keep]
+            held = self.constrained[nodes]
+            # the held entries' flat dofs, and where each sits among the constrained dofs
+            flat = (np.arange(len(self.v))[nodes][:, None] * self.model.gdim + np.arange(self.model.gdim))[held]
+            at = np.searchsorted(self._constrained_dofs, flat)
+            v[held] = prescribed_v[at]
+            a[held] = prescribed_a[at]
         return v, a
 
     def reaction_regions(self) -> list[tuple[str, list[int]]]:
@@ -566,14 +556,15 @@ class ExplicitSolver:
             self._reaction_dofs = []
             for region, _ in self.reaction_regions():
                 dofs = np.unique(np.concatenate([c.dofs for c in m.constraints if c.region == region]))
-                self._reaction_dofs.append(dofs[dofs < owned])
+                dofs = dofs[dofs < owned]
+                # with where each sits among the constrained dofs (``_prescribed_motion``'s order)
+                self._reaction_dofs.append((dofs, np.searchsorted(self._constrained_dofs, dofs)))
         if not self._reaction_dofs:
             return []
         prescribed_v, prescribed_a = self._prescribed_motion()
         forces = (self.f_ext.reshape(-1), self.f_con.reshape(-1), self.f_int.reshape(-1))
         out = np.zeros((len(self._reaction_dofs), m.gdim))
-        for k, dofs in enumerate(self._reaction_dofs):
-            at = np.searchsorted(self._constrained_dofs, dofs)      # the held dofs are constrained dofs
+        for k, (dofs, at) in enumerate(self._reaction_dofs):
             v, a = prescribed_v[at], prescribed_a[at]
             push = (m.mass[dofs // m.gdim] * (a + m.alpha * v)
                     - (forces[0][dofs] + forces[1][dofs] - forces[2][dofs]))

@@ -118,13 +118,13 @@ def body_sums(v, a, dt, alpha, mass, kinetic_mass, constrained, node_body, num_b
     # 3,362 nodes)
     sv = np.zeros(3)
     sa = np.zeros(3)
+    h = 0.5 * dt
     n = 0
     while n < num_owned:
         b = node_body[n]
         sv0 = sv1 = sv2 = sa0 = sa1 = sa2 = ke = 0.0
         while n < num_owned and node_body[n] == b:
             m = mass[n]
-            h = 0.5 * dt
             vv = 0.0
             v_t = v[n, 0] + h * a[n, 0]
             sv0 += m * v_t

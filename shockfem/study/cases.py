@@ -75,13 +75,12 @@ def run_case(name: str, raw: dict, out_dir: str, echo) -> tuple[CaseRun | None, 
     return result, time.perf_counter() - t0, summary["status"]
 
 
-def _plain(value):
-    """A raw scene with numpy numbers made Python's (for the TOML writer)."""
-    if isinstance(value, dict):
-        return {k: _plain(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
-    return value.item() if hasattr(value, "item") else value
+def _text(path: str) -> str | None:
+    try:
+        with open(path) as fh:
+            return fh.read()
+    except OSError:
+        return None
 
 
 def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
@@ -98,8 +97,8 @@ def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
         path = os.path.join(out_dir, name)
         os.makedirs(path, exist_ok=True)
         scene_file = os.path.join(path, "scene.toml")
-        text = dumps(_plain(raw))
-        if not (os.path.exists(scene_file) and open(scene_file).read() == text):
+        text = dumps(raw)
+        if _text(scene_file) != text:
             with open(scene_file, "w") as fh:
                 fh.write(text)
             # a changed scene at the same path: the batch, which knows a case by its file and overrides,
