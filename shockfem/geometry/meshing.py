@@ -330,11 +330,15 @@ def build_mesh(scene: Scene, comm=MPI.COMM_WORLD, cache_dir: str | None = None,
             gmsh.model.add(scene.name)
             region_ids = _build_gmsh_model(scene)
             os.makedirs(cache_dir, exist_ok=True)
+            # each file written beside and renamed into place, the regions first: a run started beside
+            # this one (a study's table on both cores) that finds the mesh finds both files whole
+            tmp = f"{regions_path}.tmp{os.getpid()}"
+            with open(tmp, "w") as fh:
+                json.dump(region_ids, fh, indent=1)
+            os.replace(tmp, regions_path)
             tmp = msh_path + f".tmp{os.getpid()}.msh"
             gmsh.write(tmp)
             os.replace(tmp, msh_path)
-            with open(regions_path, "w") as fh:
-                json.dump(region_ids, fh, indent=1)
             # the run goes on from the file, as every later run will: the file's coordinates are rounded,
             # and a run must be the same whether it meshed or found the mesh cached (a run resumed from a
             # checkpoint finds it cached, and must see the mesh it was checkpointed on)

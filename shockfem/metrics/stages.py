@@ -160,3 +160,15 @@ def stage_table(h: dict, bodies: dict[str, float], contacts: list[dict], axis: s
             abs(vb1 if struck != "wall" else va1) / launch if launch else float("nan"),
             float(vib[i_end]), float(vib[i_end] / e_launch) if e_launch else float("nan"), ev.peak_force))
     return sorted(stages, key=lambda s: s.start)
+
+
+def first_impacts(stages) -> dict[str, float]:
+    """Each pair's restitution at its first impact between bodies, in time order (``stages``: the
+    stage table's rows, as ``Stage`` or as dicts): later events of a pair are re-contacts of bodies
+    already moving together, whose closing speed is too small for a meaningful ratio."""
+    first: dict[str, float] = {}
+    for st in stages:
+        st = st if isinstance(st, dict) else asdict(st)
+        if st["struck"] != "wall":
+            first.setdefault(st["pair"], st["restitution"])
+    return first

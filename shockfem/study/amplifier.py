@@ -36,9 +36,10 @@ from ..amplifier.gain import chain_gain, cylinder_size, design, stack_gain
 from ..amplifier.interfaces import (flat_face_stress, hertz_yield_speed, pad_for_force,
                                     reduced_mass)
 from ..errors import UnstableRun
-from ..metrics.stages import stage_table
+from ..metrics.stages import first_impacts, stage_table
 from ..scene.library import LIBRARY, property_si
 from ..units import FT, LB, to_si
+from .cases import run_chain_cases
 from .report import Report
 
 FTS, FT3 = FT, FT ** 3              # ft/s and cubic feet in SI
@@ -111,21 +112,31 @@ def sizing_claims(rep: Report):
     return design("launched-chain", 12 * LB, 1600 * FTS, 325 * FTS, 0.9, 5)
 
 
-def _pair(fidelity, ratio, speed, h, out_dir, elastic):
-    """Striker of length ratio * L2 on a target L2 = 100 mm, both R = 10 mm; the stage."""
+def _pair_raw(fidelity, ratio, speed, h, elastic) -> dict:
+    """Striker of length ratio * L2 on a target L2 = 100 mm, both R = 10 mm."""
     L2 = 0.1
     bodies = [_cylinder("striker", 0.01, ratio * L2, h), _cylinder("target", 0.01, L2, h)]
     raw = _chain_raw(f"pair_{ratio:g}", bodies, speed, fidelity)
     if elastic:
         raw["materials"] = {"steel": {"density": "7850 kg/m^3", "youngs_modulus": "210 GPa", "poisson_ratio": 0.3}}
-    chain = run_chain_scene(raw, out_dir, fidelity, progress=False, echo=lambda *a: None)
-    return chain
+    return raw
 
 
-def restitution_sweep(rep: Report, size: str, out_dir: str):
+def pair_cases(size: str) -> list[tuple[str, dict, tuple[str, float]]]:
+    """Section 2's runs: (name, chain scene, (model, striker length ratio))."""
+    cases = []
+    for elastic, speed in ((True, 1.0), (False, 60.0)):
+        for fidelity in ("1d", "axisymmetric"):
+            key = f"{fidelity}, {'elastic 1 m/s' if elastic else 'elastic-plastic 60 m/s'}"
+            for ratio in SIZES[size]["ratios"]:
+                cases.append((f"pairs/{fidelity}_{speed:g}_{ratio:g}",
+                              _pair_raw(fidelity, ratio, speed, SIZES[size]["h_pair"], elastic), (key, ratio)))
+    return cases
+
+
+def restitution_sweep(rep: Report, size: str, runs: "ChainRuns"):
     plt = pyplot()
     rep.heading("2. Apparent restitution against natural-frequency ratio")
-    cfg = SIZES[size]
     c0 = math.sqrt(210e9 / 7850)
     rep.text("Two steel cylinders of radius 10 mm: the target 100 mm long, the striker L1 = ratio x 100 mm, 2% "
              "structural damping. The first free-free longitudinal frequency of a cylinder is about c0 / 2L, so "
@@ -134,22 +145,24 @@ def restitution_sweep(rep: Report, size: str, out_dir: str):
              "rate effects). Restitution from the stage table (mean velocities before and after); contact "
              "duration over the target's natural period 2 L2 / c0.")
     rows, curves = [], {}
-    for elastic, speed in ((True, 1.0), (False, 60.0)):
-        for fidelity in ("1d", "axisymmetric"):
-            key = f"{fidelity}, {'elastic 1 m/s' if elastic else 'elastic-plastic 60 m/s'}"
-            curves[key] = []
-            for ratio in cfg["ratios"]:
-                t0 = time.perf_counter()
-                chain = _pair(fidelity, ratio, speed, cfg["h_pair"],
-                              os.path.join(out_dir, "pairs", f"{fidelity}_{speed:g}_{ratio:g}"), elastic)
-                s = chain["stages"][0]
-                duration = (s["end"] - s["start"]) / (2 * 0.1 / c0)
-                curves[key].append((1 / ratio, s["restitution"], duration))
-                rows.append([key, ratio, 1 / ratio, s["restitution"], duration, s["vibration_share"],
-                             time.perf_counter() - t0])
+    for name, raw, (key, ratio) in pair_cases(size):
+        curves.setdefault(key, [])
+        chain, problem = runs.run(name, raw)
+        if chain is None:
+            rows.append([key, ratio, 1 / ratio, "stopped: " + problem[:60], "-", "-", "-"])
+            continue
+        s = chain["stages"][0]
+        duration = (s["end"] - s["start"]) / (2 * 0.1 / c0)
+        curves[key].append((1 / ratio, s["restitution"], duration))
+        rows.append([key, ratio, 1 / ratio, s["restitution"], duration, s["vibration_share"], chain["wall_time_s"]])
     rep.table("restitution_sweep", ["model", "L1/L2", "f_striker/f_target", "restitution", "contact / target period",
                "energy left ringing", "wall [s]"], rows,
               ["{}", "{:g}", "{:.3g}", "{:.4f}", "{:.3f}", "{:.1%}", "{:.1f}"])
+    stopped = sum(isinstance(r[3], str) for r in rows)
+    if stopped:             # the readings compare whole curves: a curve with holes would mislead
+        rep.text(f"Reading: {stopped} of the {len(rows)} runs stopped (above): the sweep is read only when every "
+                 "run completes.")
+        return rows
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for key, pts in curves.items():
         fr, e, d = zip(*pts)
@@ -200,39 +213,42 @@ def _sweep_reading(rep: Report, curves: dict) -> str:
     return "; ".join(words) + "."
 
 
-def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
-    rep.heading("3. The five-mass design at each fidelity")
-    cfg = SIZES[size]
+def _design_sizes(d) -> list[dict]:
+    """The design's masses as cylinders with L = D."""
     rho = property_si(MATERIAL, "density", "density")
-    sizes = [cylinder_size(m, rho, 1.0) for m in d.masses]
+    return [cylinder_size(m, rho, 1.0) for m in d.masses]
+
+
+def design_cases(d, size: str) -> list[tuple[str, dict, str]]:
+    """Section 3's runs: (name, chain scene, label) of the five-mass design at each fidelity."""
+    bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], 0.02) for k, s in enumerate(_design_sizes(d))]
+    # long enough for a lossy chain to part: the rigid timing at e = 0.2 (the chain's default), tripled
+    end = 3 * default_end_time(_chain_raw("five_mass", bodies, d.launch_speed, "rigid"))
+    cases = []
+    for fidelity, h in SIZES[size]["design"]:
+        label = fidelity if fidelity in ("rigid", "1d") else f"{fidelity} ({h * 1e3:g} mm)"
+        raw = _chain_raw("five_mass", [dict(b, element_size=h) for b in bodies], d.launch_speed, fidelity,
+                         end_time=end)
+        cases.append(("design/" + label.replace(" ", "_").replace("(", "").replace(")", ""), raw, label))
+    return cases
+
+
+def design_at_fidelities(rep: Report, d, size: str, runs: "ChainRuns"):
+    rep.heading("3. The five-mass design at each fidelity")
+    sizes = _design_sizes(d)
     rep.text(f"Launched chain, 12 lb at 1600 ft/s from 325 ft/s, e = 0.9 assumed, {MATERIAL} cylinders with "
              "L = D. The rigid model uses the assumed restitution; the others find their own.")
     rep.table("design_masses", ["mass", "kg", "lb", "diameter [mm]", "length [mm]"],
               [[k + 1, m, m / LB, s["diameter"] * 1e3, s["length"] * 1e3]
                for k, (m, s) in enumerate(zip(d.masses, sizes))], ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.4g}"])
-    bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], 0.0) for k, s in enumerate(sizes)]
-    # long enough for a lossy chain to part: the rigid timing at e = 0.2 (the chain's default), tripled
-    end = 3 * default_end_time(_chain_raw("five_mass", [dict(b, element_size=0.02) for b in bodies],
-                                          d.launch_speed, "rigid"))
-    runs = []
-    for fidelity, h in cfg["design"]:
-        for b in bodies:
-            b["element_size"] = h
-        label = fidelity if fidelity in ("rigid", "1d") else f"{fidelity} ({h * 1e3:g} mm)"
-        try:
-            chain = run_chain_scene(_chain_raw("five_mass", bodies, d.launch_speed, fidelity, end_time=end),
-                                    os.path.join(out_dir, "design", label.replace(" ", "_").replace("(", "")
-                                                 .replace(")", "")), fidelity, progress=False, echo=lambda *a: None)
-            runs.append((label, chain, None))
-        except UnstableRun as e:
-            runs.append((label, None, e.diagnosis))
+    runs = [(label, *runs.run(name, raw)) for name, raw, label in design_cases(d, size)]
     rows = []
     finest = next((c for _, c, _ in reversed(runs) if c and c["gain"] is not None), None)
     for label, chain, problem in runs:
         if chain is None:
             rows.append([label, "stopped: " + problem[:80], "-", "-", "-", "-"])
             continue
-        es = ", ".join(f"{e:.3f}" for e in first_impacts(chain["stages"]))
+        es = ", ".join(f"{e:.3f}" for e in first_impacts(chain["stages"]).values())
         if chain["contact_at_end"]:
             es += " (still in contact at the end)"
         ratio = max(chain["stress_over_yield"].values(), default=float("nan"))
@@ -247,7 +263,7 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
     rep.table("design_fidelities", ["fidelity", "restitution per stage", "gain", "gain vs finest", "peak stress / yield", "wall [s]"],
               rows, ["{}", "{}", "{:.3f}", "{:+.1%}", "{:.2f}", "{:.3g}"])
     if finest:
-        es = first_impacts(finest["stages"])
+        es = list(first_impacts(finest["stages"]).values())
         worst = max(finest["stress_over_yield"].values(), default=float("nan"))
         short = rep.value("design.finest_gain_over_rigid", finest["gain"] / d.gain)
         yielding = [k for k, v in finest["stress_over_yield"].items() if v > 1.0]
@@ -261,18 +277,6 @@ def design_at_fidelities(rep: Report, d, size: str, out_dir: str):
                     "stay elastic (crowned faces, pads, tuned lengths, stronger materials) before e = 0.9 can be "
                     "assumed: section 6." if yielding else "no interface yields."))
     return runs
-
-
-def first_impacts(stages) -> list[float]:
-    """Restitution of each pair's first impact between bodies, in time order: later events of a
-    pair are re-contacts of bodies already moving together, whose closing speed is too small for
-    a meaningful ratio."""
-    first: dict[str, float] = {}
-    for st in stages:
-        st = st if isinstance(st, dict) else dataclasses.asdict(st)
-        if st["struck"] != "wall":
-            first.setdefault(st["pair"], st["restitution"])
-    return list(first.values())
 
 
 def _steel_bar(name, diameter, length, speed=0.0, plastic=True) -> Bar:
@@ -335,7 +339,7 @@ def paper_rods(rep: Report, size: str):
                          damping_frequency=[b.c0 / (2 * b.length) for b in bars], tethers=tethers)
             contacts = [{"name": i.name, "a": names[k], "b": names[k + 1]} for k, i in enumerate(ifaces)]
             stages = stage_table(r.history, r.masses, contacts, "z", ("z",))
-            es = first_impacts(stages)
+            es = list(first_impacts(stages).values())
             last = r.history[f"{names[-1]}.v_z"]
             rows.append([speed, label, ", ".join(f"{e:.2f}" for e in es), float(last.max()) / speed,
                          float(last[-1]) / speed, rigid_gain,
@@ -367,14 +371,44 @@ def paper_rods(rep: Report, size: str):
     return rows
 
 
-def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
+def _plate_variants(d, size: str) -> list[tuple[str, list[dict]]]:
+    """Every body at one length / diameter ratio (the stack's envelope is then the same whatever the
+    ratio: D^2 L is fixed by the mass), and every body of one diameter, the test article's as a thick
+    plate (L = D / 4): a stack that fits one bore, long rods above a plate."""
+    cfg = SIZES[size]
+    rho = property_si(MATERIAL, "density", "density")
+    variants = [(f"L/D {a:g}", [cylinder_size(m, rho, a) for m in d.masses]) for a in cfg["plate_aspects"]]
+    if cfg["plate_bore"]:
+        bore = cylinder_size(d.masses[-1], rho, 0.25)["diameter"]
+        variants.append((f"one bore {bore * 1e3:.0f} mm",
+                         [{"diameter": bore, "length": m / rho / (math.pi * bore ** 2 / 4)} for m in d.masses]))
+    return variants
+
+
+def plate_cases(d, size: str) -> list[tuple[str, dict, tuple[str, str, list[dict]]]]:
+    """Section 5's runs: (name, chain scene, (model, bodies, their sizes))."""
+    cases = []
+    for elastic, speed in ((True, 10.0), (False, d.launch_speed)):
+        key = "elastic, 10 m/s" if elastic else f"elastic-plastic, {speed:.4g} m/s"
+        for shape, sizes in _plate_variants(d, size):
+            bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"],
+                                min(SIZES[size]["plate_h"], s["length"] / 4)) for k, s in enumerate(sizes)]
+            raw = _chain_raw(shape.replace(" ", "_").replace("/", ""), bodies, speed, "axisymmetric", gap=1e-3)
+            if elastic:
+                raw["materials"] = {"steel": {"density": "7850 kg/m^3", "youngs_modulus": "210 GPa",
+                                              "poisson_ratio": 0.3}}
+            raw["chain"]["end_time"] = 3 * default_end_time(raw)
+            label = f"{'elastic' if elastic else 'plastic'}_{shape.replace(' ', '_').replace('/', '')}"
+            cases.append((f"plates/{label}", raw, (key, shape, sizes)))
+    return cases
+
+
+def cylinders_vs_plates(rep: Report, d, size: str, runs: "ChainRuns"):
     """The five-mass design's masses as cylinders of several length / diameter ratios, down to
     thick plates: gain against the volume the stack occupies (axisymmetric, elastic and
     elastic-plastic)."""
     plt = pyplot()
     rep.heading("5. Cylinders against thick plates")
-    cfg = SIZES[size]
-    rho = property_si(MATERIAL, "density", "density")
     rep.text("The five masses of section 3 at several length / diameter ratios, from long cylinders to thick "
              "plates, and all of one diameter (a stack that fits one bore: long rods above a thick plate); "
              "launched chain, axisymmetric, 2% damping, 1 mm gaps. Occupied volume: the envelope of the "
@@ -382,40 +416,20 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
              "steel at 10 m/s (the geometry's own losses: waves and radial modes) and "
              f"{MATERIAL} at the design's {d.launch_speed:.4g} m/s (with yielding). Each body is damped 2% at its "
              "own first mode, and its elements are a quarter of its length, at most "
-             f"{cfg['plate_h'] * 1e3:g} mm. Restitution: each pair's first impact.")
-    # every body at one length / diameter ratio (the stack's envelope is then the same whatever the
-    # ratio: D^2 L is fixed by the mass), and every body of one diameter, the test article's as a
-    # thick plate (L = D / 4): a stack that fits one bore, long rods above a plate
-    variants = [(f"L/D {a:g}", [cylinder_size(m, rho, a) for m in d.masses]) for a in cfg["plate_aspects"]]
-    if cfg["plate_bore"]:
-        bore = cylinder_size(d.masses[-1], rho, 0.25)["diameter"]
-        variants.append((f"one bore {bore * 1e3:.0f} mm",
-                         [{"diameter": bore, "length": m / rho / (math.pi * bore ** 2 / 4)} for m in d.masses]))
+             f"{SIZES[size]['plate_h'] * 1e3:g} mm. Restitution: each pair's first impact.")
     rows, curves = [], {}
-    for elastic, speed in ((True, 10.0), (False, d.launch_speed)):
-        key = "elastic, 10 m/s" if elastic else f"elastic-plastic, {speed:.4g} m/s"
-        curves[key] = []
-        for shape, sizes in variants:
-            bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], min(cfg["plate_h"], s["length"] / 4))
-                      for k, s in enumerate(sizes)]
-            raw = _chain_raw(shape.replace(" ", "_").replace("/", ""), bodies, speed, "axisymmetric", gap=1e-3)
-            if elastic:
-                raw["materials"] = {"steel": {"density": "7850 kg/m^3", "youngs_modulus": "210 GPa",
-                                              "poisson_ratio": 0.3}}
-            raw["chain"]["end_time"] = 3 * default_end_time(raw)
-            label = f"{'elastic' if elastic else 'plastic'}_{shape.replace(' ', '_').replace('/', '')}"
-            try:
-                chain = run_chain_scene(raw, os.path.join(out_dir, "plates", label), "axisymmetric", progress=False,
-                                        echo=lambda *a: None)
-            except UnstableRun as e:
-                rows.append([key, shape, "-", "-", "-", "stopped: " + e.diagnosis[:60], "-"])
-                continue
-            envelope = math.pi / 4 * max(s["diameter"] for s in sizes) ** 2 * sum(s["length"] for s in sizes)
-            es = ", ".join(f"{e:.2f}" for e in first_impacts(chain["stages"]))
-            worst = max(chain["stress_over_yield"].values(), default=None)
-            rows.append([key, shape, envelope * 1e3, chain["gain"], es,
-                         "elastic" if worst is None else worst, chain["wall_time_s"]])
-            curves[key].append((envelope * 1e3, chain["gain"], shape))
+    for name, raw, (key, shape, sizes) in plate_cases(d, size):
+        curves.setdefault(key, [])
+        chain, problem = runs.run(name, raw)
+        if chain is None:
+            rows.append([key, shape, "-", "-", "-", "stopped: " + problem[:60], "-"])
+            continue
+        envelope = math.pi / 4 * max(s["diameter"] for s in sizes) ** 2 * sum(s["length"] for s in sizes)
+        es = ", ".join(f"{e:.2f}" for e in first_impacts(chain["stages"]).values())
+        worst = max(chain["stress_over_yield"].values(), default=None)
+        rows.append([key, shape, envelope * 1e3, chain["gain"], es,
+                     "elastic" if worst is None else worst, chain["wall_time_s"]])
+        curves[key].append((envelope * 1e3, chain["gain"], shape))
     rep.table("cylinders_vs_plates", ["model", "bodies", "occupied volume [L]", "gain", "restitution per stage", "peak stress / yield",
                "wall [s]"], rows, ["{}", "{}", "{:.4g}", "{:.3f}", "{}", "{:.2f}", "{:.3g}"])
     fig, ax = plt.subplots(figsize=(6, 4))
@@ -442,18 +456,60 @@ def cylinders_vs_plates(rep: Report, d, size: str, out_dir: str):
     return rows
 
 
-def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
+@dataclasses.dataclass(frozen=True)
+class PadDesign:
+    """Section 6's pads: the stiffest linear pad on each struck face that holds its stress at ALLOWABLE x
+    yield, sized on the closing speeds of a rigid chain with the pads' own restitution."""
+    restitution: float              # of rigid bodies on a pad damped PAD_DAMPING
+    closing_speeds: list            # of the rigid chain at that restitution, per stage [m/s]
+    pads: list                      # ``interfaces.pad_for_force``'s, per stage
+    thickness: list                 # PAD_SPACE x each pad's travel [m]
+    sequenced_gap: float            # the gap that lets each stage end before the next begins [m]
+
+
+def pad_design(d) -> PadDesign:
+    Y = property_si(MATERIAL, "yield_stress", "pressure")
+    masses = list(d.masses)
+    areas = [math.pi * s["diameter"] ** 2 / 4 for s in _design_sizes(d)]
+    e_pad = rigid.pad_restitution(PAD_DAMPING)
+    dvs = rigid.first_closing_speeds(masses, d.launch_speed, e_pad)
+    pads = [pad_for_force(dv, reduced_mass(masses[k], masses[k + 1]), ALLOWABLE * Y * areas[k + 1])
+            for k, dv in enumerate(dvs)]
+    # the struck body, accelerated over the contact to about its final speed, moves some 0.6 v tau
+    # before the pad lets go
+    v_after = [dvs[0]] + [rigid.launched_chain(masses, d.launch_speed, e_pad).first_pass[k]
+                          for k in range(1, len(masses))]
+    sequenced = max(0.6 * v_after[k + 1] * p.duration for k, p in enumerate(pads))
+    return PadDesign(e_pad, dvs, pads, [PAD_SPACE * p.travel for p in pads], sequenced)
+
+
+def padded_cases(d, size: str) -> list[tuple[str, dict, tuple[str, float]]]:
+    """Section 6's runs: (name, chain scene, (label, gap [m])): the padded design with 1 mm gaps (rigid, 1d,
+    axisymmetric) and with the gaps that keep its stages in sequence (1d, axisymmetric)."""
+    pd, h = pad_design(d), SIZES[size]["pad_h"]
+    bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], h) for k, s in enumerate(_design_sizes(d))]
+    cases = []
+    for gap in (1e-3, pd.sequenced_gap):
+        for fidelity in ("rigid", "1d", "axisymmetric") if gap == 1e-3 else ("1d", "axisymmetric"):
+            raw = _chain_raw("padded", bodies, d.launch_speed, fidelity, gap=gap)
+            raw["chain"].update({"pad_stiffness": [p.stiffness for p in pd.pads], "pad_thickness": pd.thickness,
+                                 "pad_damping": PAD_DAMPING})
+            label = fidelity if fidelity != "axisymmetric" else f"axisymmetric ({h * 1e3:g} mm)"
+            cases.append((f"padded/{fidelity}_gap_{gap * 1e3:.0f}mm", raw, (label, gap)))
+    return cases
+
+
+def elastic_interfaces(rep: Report, d, size: str, runs_of: "ChainRuns"):
     """What keeps the five-mass design elastic: flat faces and crowned faces against yield, then
     pads sized to a face stress below yield, run at every fidelity; the effective restitution per
     stage against the assumed 0.9, 0.8 and 0.75."""
     rep.heading("6. Interfaces that keep the design elastic")
-    cfg = SIZES[size]
     mat = LIBRARY[MATERIAL]
     rho, E = to_si(mat["density"], "density"), to_si(mat["youngs_modulus"], "pressure")
     nu, Y = float(mat["poisson_ratio"]), to_si(mat["yield_stress"], "pressure")
     c0, e_star = math.sqrt(E / rho), E / (2 * (1 - nu ** 2))
     masses = list(d.masses)
-    sizes = [cylinder_size(m, rho, 1.0) for m in masses]
+    sizes = _design_sizes(d)
     areas = [math.pi * s["diameter"] ** 2 / 4 for s in sizes]
     n = len(masses)
     pairs = [(k, k + 1) for k in range(n - 1)]
@@ -472,14 +528,8 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
                      hertz_yield_speed(reduced_mass(masses[a], masses[b]), crown, e_star, Y)])
     rep.table("flat_face_stress", ["stage", "closing speed [m/s]", "flat-face stress [MPa]", "/ yield", "flat faces elastic up to [m/s]",
                "crown R = 10 D yields at [m/s]"], rows, ["{}", "{:.1f}", "{:.0f}", "{:.2f}", "{:.1f}", "{:.2f}"])
-    # pads: the stiffest linear pad that holds the face stress at ALLOWABLE x yield, sized on the
-    # closing speeds of a rigid chain with the pads' own restitution
-    zeta = PAD_DAMPING
-    e_pad = rigid.pad_restitution(zeta)
-    dvs_pad = rigid.first_closing_speeds(masses, d.launch_speed, e_pad)
-    pads = [pad_for_force(dv, reduced_mass(masses[a], masses[b]), ALLOWABLE * Y * areas[b])
-            for (a, b), dv in zip(pairs, dvs_pad)]
-    thickness = [PAD_SPACE * p.travel for p in pads]
+    pd = pad_design(d)
+    zeta, e_pad, dvs_pad, pads, sequenced = PAD_DAMPING, pd.restitution, pd.closing_speeds, pd.pads, pd.sequenced_gap
     rep.text(f"Pads: a linear elastic pad on each struck face, {zeta:.0%} damped (restitution of rigid bodies on "
              f"it {e_pad:.4f}), as stiff as keeps the face stress at {ALLOWABLE:.0%} of yield: k = (F / dv)^2 / M* "
              f"with F = {ALLOWABLE:g} Y A (closing speeds of the rigid chain at e = {e_pad:.3f}). Its travel, "
@@ -495,31 +545,17 @@ def elastic_interfaces(rep: Report, d, size: str, out_dir: str):
     rep.table("pads", ["stage", "closing speed [m/s]", "pad stiffness [MN/m]", "travel [mm]", "energy [kJ]", "contact [ms]",
                "contact / struck period", "ideal spring volume [L]"], prow,
               ["{}", "{:.1f}", "{:.4g}", "{:.1f}", "{:.4g}", "{:.3f}", "{:.2g}", "{:.3g}"])
-    h = cfg["pad_h"]
-    bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], h) for k, s in enumerate(sizes)]
-    # gaps that let each stage end before the next begins: the struck body, accelerated over the
-    # contact to about its final speed, moves some 0.6 v tau before the pad lets go
-    v_after = [dvs_pad[0]] + [rigid.launched_chain(masses, d.launch_speed, e_pad).first_pass[k]
-                              for k in range(1, n)]
-    sequenced = max(0.6 * v_after[k + 1] * p.duration for k, p in enumerate(pads))
     runs = []
-    for gap in (1e-3, sequenced):
-        for fidelity in ("rigid", "1d", "axisymmetric") if gap == 1e-3 else ("1d", "axisymmetric"):
-            raw = _chain_raw("padded", bodies, d.launch_speed, fidelity, gap=gap)
-            raw["chain"].update({"pad_stiffness": [p.stiffness for p in pads], "pad_thickness": thickness,
-                                 "pad_damping": zeta})
-            label = fidelity if fidelity != "axisymmetric" else f"axisymmetric ({h * 1e3:g} mm)"
-            where = os.path.join(out_dir, "padded", f"{fidelity}_gap_{gap * 1e3:.0f}mm")
-            try:
-                chain = run_chain_scene(raw, where, fidelity, progress=False, echo=lambda *a: None)
-            except UnstableRun as err:
-                runs.append([label, gap * 1e3, "stopped: " + err.diagnosis[:80], "-", "-", "-", "-", "-"])
-                continue
-            es = first_impacts(chain["stages"])
-            runs.append([label, gap * 1e3, ", ".join(f"{e:.3f}" for e in es),
-                         "yes" if contacts_overlap(chain["stages"]) else "no",
-                         rigid.effective_restitution(masses, d.launch_speed, chain["gain"]), chain["gain"],
-                         max(chain["stress_over_yield"].values(), default=float("nan")), chain["wall_time_s"]])
+    for name, raw, (label, gap) in padded_cases(d, size):
+        chain, problem = runs_of.run(name, raw)
+        if chain is None:
+            runs.append([label, gap * 1e3, "stopped: " + problem[:80], "-", "-", "-", "-", "-"])
+            continue
+        es = list(first_impacts(chain["stages"]).values())
+        runs.append([label, gap * 1e3, ", ".join(f"{e:.3f}" for e in es),
+                     "yes" if contacts_overlap(chain["stages"]) else "no",
+                     rigid.effective_restitution(masses, d.launch_speed, chain["gain"]), chain["gain"],
+                     max(chain["stress_over_yield"].values(), default=float("nan")), chain["wall_time_s"]])
     for e in ASSUMED_RESTITUTION:
         g = rigid.launched_chain(masses, d.launch_speed, e).final[-1] / d.launch_speed
         runs.append([f"rigid, e = {e:g} assumed", "-", ", ".join([f"{e:.3f}"] * (n - 1)), "no", e, g, "-", "-"])
@@ -572,20 +608,59 @@ def contacts_overlap(stages) -> bool:
     return any(b[0] < a[1] for a, b in zip(spans, spans[1:]))
 
 
+class ChainRuns:
+    """The study's chain runs, each into ``out_dir/<name>``: its finite-element ones (every section's)
+    run first, all together as one table on both cores (``cases.run_chain_cases``: ``cases.csv`` beside
+    the report, ``--resume`` reads back completed ones), longest first so that both cores finish together;
+    the rigid and 1d ones run in this process when a section asks for them (a fraction of a second each,
+    where a process of their own would spend seconds starting)."""
+
+    def __init__(self, cases: list[tuple[str, dict]], out_dir: str, echo):
+        self.out_dir = out_dir
+        fe = [(name, raw) for name, raw in cases if raw["chain"]["fidelity"] in ("axisymmetric", "3d")]
+        fe.sort(key=lambda case: -_work(case[1]))
+        self.table = run_chain_cases(fe, out_dir, echo) if fe else {}
+
+    def run(self, name: str, raw: dict) -> tuple[dict | None, str | None]:
+        """The chain's results (``summary.json``'s ``chain``) or None, and why it stopped."""
+        if name in self.table:
+            chain, _, status, diagnosis = self.table[name]
+            return chain, None if chain else f"{status}: {diagnosis}"
+        try:
+            return run_chain_scene(raw, os.path.join(self.out_dir, name), progress=False, echo=lambda *a: None), None
+        except UnstableRun as e:
+            return None, f"unstable: {e.diagnosis}"
+
+
+def _work(raw: dict) -> float:
+    """A finite-element chain run's work, in proportion: its elements times its steps, (section area /
+    h^2) x (end time / h) for bodies of steel alike (the step is h over the wave speed)."""
+    end = raw["chain"].get("end_time") or default_end_time(raw)
+    h = min(b["element_size"] for b in raw["bodies"])
+    area = sum(b["radius"] * b["length"] for b in raw["bodies"])
+    return area / h ** 2 * end / h * (2 * math.pi * max(b["radius"] for b in raw["bodies"]) / h
+                                      if raw["chain"]["fidelity"] == "3d" else 1.0)
+
+
 def run_study(size: str = "default", out_dir: str = "results/amplifier", echo=print) -> str:
     t0 = time.perf_counter()
     rep = Report(out_dir, "Velocity amplifier study (white paper task 3)")
     rep.text(f"`shockfem study amplifier --size {size}`; every number below was computed by this run.")
-    echo("1/6 sizing claims (closed forms)")
+    echo("1/7 sizing claims (closed forms)")
     d = sizing_claims(rep)
-    echo("2/6 restitution against frequency ratio (1d and axisymmetric pairs)")
-    restitution_sweep(rep, size, out_dir)
-    echo("3/6 the five-mass design at each fidelity")
-    design_at_fidelities(rep, d, size, out_dir)
-    echo("4/6 the white paper's diminishing rods (1d)")
+    cases = [case[:2] for case in pair_cases(size) + design_cases(d, size) + plate_cases(d, size)
+             + padded_cases(d, size)]
+    fe = sum(raw["chain"]["fidelity"] in ("axisymmetric", "3d") for _, raw in cases)
+    echo(f"2/7 the finite-element chain runs of sections 2, 3, 5 and 6: {fe} cases as one table, both cores")
+    runs = ChainRuns(cases, out_dir, echo)
+    echo("3/7 restitution against frequency ratio (1d and axisymmetric pairs)")
+    restitution_sweep(rep, size, runs)
+    echo("4/7 the five-mass design at each fidelity")
+    design_at_fidelities(rep, d, size, runs)
+    echo("5/7 the white paper's diminishing rods (1d)")
     paper_rods(rep, size)
-    echo("5/6 cylinders against thick plates (axisymmetric)")
-    cylinders_vs_plates(rep, d, size, out_dir)
-    echo("6/6 interfaces that keep the design elastic (pads; rigid, 1d, axisymmetric)")
-    elastic_interfaces(rep, d, size, out_dir)
+    echo("6/7 cylinders against thick plates (axisymmetric)")
+    cylinders_vs_plates(rep, d, size, runs)
+    echo("7/7 interfaces that keep the design elastic (pads; rigid, 1d, axisymmetric)")
+    elastic_interfaces(rep, d, size, runs)
     return rep.finish(t0, echo)

@@ -31,6 +31,8 @@ from dataclasses import dataclass, field
 import h5py
 import numpy as np
 
+from ..metrics.stages import first_impacts
+
 EXECUTORS = ("local", "dask")
 TIMEOUT_S = 24 * 3600          # a case that runs longer than a day is taken as hung
 
@@ -111,6 +113,8 @@ def case_row(case: Case, summary: dict, exit_code: int, wall: float, how: str) -
     row.update({f"{k} [as given]": v for k, v in case.factors.items()})
     row.update({"status": summary.get("status"), "exit code": exit_code, "how": how,
                 "wall time [s]": round(wall, 3), "diagnosis": summary.get("diagnosis") or ""})
+    if summary.get("chain"):
+        row.update(chain_columns(summary["chain"]))
     if "steps" not in summary:
         return row
     axes = ("r", "z") if summary.get("kinematics") == "axisymmetric" else "xyz"
@@ -135,6 +139,19 @@ def case_row(case: Case, summary: dict, exit_code: int, wall: float, how: str) -
     for name, c in (summary.get("contacts") or {}).items():
         row[f"contact.{name}.max_normal_force [N]"] = c.get("max_normal_force")
         row[f"contact.{name}.max_penetration [m]"] = c.get("max_penetration")
+    return row
+
+
+def chain_columns(chain: dict) -> dict:
+    """A chain run's headline numbers (``summary.json``'s ``chain``, ``amplifier/chain.py``): its
+    fidelity, the test article's final speed and the gain, each pair's restitution at its first impact,
+    each body's peak stress over its yield, and whether a contact was still closed at the end."""
+    row = {"chain.fidelity": chain["fidelity"], "chain.test_article_speed [m/s]": chain["test_article_speed"],
+           "chain.gain [-]": chain["gain"], "chain.contact_at_end": chain["contact_at_end"]}
+    for pair, e in first_impacts(chain["stages"]).items():
+        row[f"chain.{pair}.restitution [-]"] = e
+    for body, ratio in chain["stress_over_yield"].items():
+        row[f"chain.{body}.peak_stress_over_yield [-]"] = ratio
     return row
 
 

@@ -3,7 +3,9 @@ XDMF fields, histories, summary, the pictures of its deformed shape), and the ru
 
 ``run_case`` runs one case in this process (a design iteration that needs the last case's answer before
 it can set up the next); ``run_cases`` runs a set of independent cases (a design of experiments) as a
-table through the batch runner (``batch.py``): each its own ``shockfem run`` process, both cores."""
+table through the batch runner (``batch.py``): each its own ``shockfem run`` process, both cores;
+``run_chain_cases`` does the same for chain scenes (``amplifier/chain.py``), read back as their chain
+results."""
 from __future__ import annotations
 
 import json
@@ -12,6 +14,7 @@ import sys
 import time
 from dataclasses import dataclass
 
+from ..amplifier.chain import resolve_chain
 from ..errors import ModelError, UnstableRun
 from ..output.history_file import read_history
 from ..runner import resume_run, run_scene
@@ -83,17 +86,11 @@ def _text(path: str) -> str | None:
         return None
 
 
-def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
-              factors: list[dict] | None = None) -> list[tuple[CaseRun | None, float, str]]:
-    """Run independent cases ``(name, raw scene)`` into ``out_dir/<name>`` as a table (``batch.run_batch``,
-    the local executor: as many at a time as there are cores), each scene written beside its run as
-    ``<name>/scene.toml``; ``out_dir`` gets the batch's ``cases.csv`` (``factors``: each case's levels for
-    it).  Returns what ``run_case`` returns for each, in order.  With ``RESUME_ENV`` set, the completed
-    cases are read back and the stopped ones resumed (the batch's own rule: same scene file, same
-    overrides); without it every case runs from the start."""
+def _run_table(cases: list[tuple[str, dict]], out_dir: str, factors: list[dict] | None, echo) -> list[dict]:
+    """Write each case's scene as ``out_dir/<name>/scene.toml`` and run them all as a table
+    (``batch.run_batch``, the local executor: as many at a time as there are cores); the batch's rows."""
     batch = []
     for k, (name, raw) in enumerate(cases):
-        resolve(raw)                              # a bad scene is the study's bug: say so before running any
         path = os.path.join(out_dir, name)
         os.makedirs(path, exist_ok=True)
         scene_file = os.path.join(path, "scene.toml")
@@ -106,18 +103,55 @@ def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
             if os.path.exists(os.path.join(path, "case.json")):
                 os.remove(os.path.join(path, "case.json"))
         batch.append(Case(name, scene_file, (), (factors or [{}] * len(cases))[k]))
-    rows = run_batch(batch, out_dir, "local", progress=sys.stderr.isatty(), echo=lambda m: None,
+    # a terminal shows the batch's progress bar, a log its line per case as each ends
+    return run_batch(batch, out_dir, "local", progress=sys.stderr.isatty(), echo=echo,
                      rerun=os.environ.get(RESUME_ENV) != "1")
+
+
+def _status(row: dict) -> str:
+    return "not meshed" if row["exit code"] == 2 else row["status"]
+
+
+def _say(echo, name: str, row: dict):
+    """A case that did not complete, with why (the batch has shown each case's status as it ended)."""
+    if _status(row) != "completed":
+        echo(f"  {name}: {_status(row)}" + (f": {row['diagnosis']}" if row["diagnosis"] else ""))
+
+
+def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
+              factors: list[dict] | None = None) -> list[tuple[CaseRun | None, float, str]]:
+    """Run independent cases ``(name, raw scene)`` into ``out_dir/<name>`` as a table (``batch.run_batch``,
+    the local executor: as many at a time as there are cores), each scene written beside its run as
+    ``<name>/scene.toml``; ``out_dir`` gets the batch's ``cases.csv`` (``factors``: each case's levels for
+    it).  Returns what ``run_case`` returns for each, in order.  With ``RESUME_ENV`` set, the completed
+    cases are read back and the stopped ones resumed (the batch's own rule: same scene file, same
+    overrides); without it every case runs from the start."""
+    for _, raw in cases:
+        resolve(raw)                              # a bad scene is the study's bug: say so before running any
     out = []
-    for (name, _), row in zip(cases, rows):
-        path = os.path.join(out_dir, name)
-        status = "not meshed" if row["exit code"] == 2 else row["status"]
-        how = "" if row["how"] == "run" else f", {row['how']}"
-        echo(f"  {name}: {status}{how} ({row['wall time [s]']:.0f} s)"
-             + (f": {row['diagnosis']}" if status != "completed" and row["diagnosis"] else ""))
-        result = None
-        if status == "completed":
+    for (name, _), row in zip(cases, _run_table(cases, out_dir, factors, echo)):
+        _say(echo, name, row)
+        path, result = os.path.join(out_dir, name), None
+        if _status(row) == "completed":
             with open(os.path.join(path, "summary.json")) as fh:
                 result = CaseRun(path, json.load(fh), read_history(os.path.join(path, "history.csv"))[0])
-        out.append((result, float(row["wall time [s]"]), status))
+        out.append((result, float(row["wall time [s]"]), _status(row)))
+    return out
+
+
+def run_chain_cases(cases: list[tuple[str, dict]], out_dir: str,
+                    echo) -> dict[str, tuple[dict | None, float, str, str]]:
+    """Run independent chain scenes ``(name, raw chain scene)`` (``amplifier/chain.py``, each at its
+    ``chain.fidelity``) into ``out_dir/<name>`` as a table, as ``run_cases`` does; by name: (the chain's
+    results, ``summary.json``'s ``chain``, or None; the case's wall time; its status; its diagnosis)."""
+    for _, raw in cases:
+        resolve_chain(raw)                        # a bad scene is the study's bug: say so before running any
+    out = {}
+    for (name, _), row in zip(cases, _run_table(cases, out_dir, None, echo)):
+        _say(echo, name, row)
+        chain = None
+        if _status(row) == "completed":
+            with open(os.path.join(out_dir, name, "summary.json")) as fh:
+                chain = json.load(fh)["chain"]
+        out[name] = (chain, float(row["wall time [s]"]), _status(row), row["diagnosis"])
     return out

@@ -106,9 +106,43 @@ def test_a_study_runs_its_independent_cases_as_a_table(tmp_path, monkeypatch):
     monkeypatch.setenv(RESUME_ENV, "1")
     run_cases([("fast", raw)], out, said.append)
     assert json.load(open(os.path.join(out, "batch.json")))[0]["how"] == "skipped: completed before"
-    assert said[-1].startswith("  fast: completed, skipped: completed before")
+    assert said[-1].startswith("  fast: completed (skipped: completed before")
     # a changed scene under the same name runs again, --resume or not
     changed = apply_overrides(raw, ['scene.end_time="25 us"'])
     third = run_cases([("fast", changed)], out, said.append)
     assert json.load(open(os.path.join(out, "batch.json")))[0]["how"] == "run"
     assert third[0][0].summary["end_time"] == pytest.approx(25e-6)
+
+
+def test_chain_scenes_run_as_a_table(tmp_path, monkeypatch):
+    """``study.cases.run_chain_cases`` (the amplifier study's runs): a chain scene at the rigid, 1d and
+    axisymmetric fidelities as a table gives the chain results the same scene gives run in this process,
+    and the table carries each case's gain and each pair's first restitution; with ``--resume`` the
+    completed cases are read back, not run."""
+    from shockfem.amplifier.chain import run_chain_scene
+    from shockfem.scene import read_toml
+    from shockfem.study.cases import RESUME_ENV, run_chain_cases
+    raw = read_toml(os.path.join(REPO, "studies", "amplifier", "three_rods.toml"))
+    for body in raw["bodies"]:
+        body["element_size"] = "5 mm"
+    cases = [(fidelity, {**raw, "chain": {**raw["chain"], "fidelity": fidelity}})
+             for fidelity in ("rigid", "1d", "axisymmetric")]
+    said = []
+    out = tmp_path / "table"
+    table = run_chain_cases(cases, str(out), said.append)
+    assert [table[f][2] for f, _ in cases] == ["completed"] * 3, said
+    for fidelity, scene in cases:
+        here = run_chain_scene(scene, str(tmp_path / "here" / fidelity), progress=False, echo=lambda *a: None)
+        there = table[fidelity][0]
+        assert there["fidelity"] == fidelity
+        assert there["gain"] == pytest.approx(here["gain"], rel=1e-12)
+        assert [s["restitution"] for s in there["stages"]] == pytest.approx(
+            [s["restitution"] for s in here["stages"]], rel=1e-12)
+    rows = {r["case"]: r for r in csv.DictReader(open(out / "cases.csv"))}
+    # the rigid model at e = 0.9: each pair restitutes 0.9 at its first impact
+    assert float(rows["rigid"]["chain.m1_m2.restitution [-]"]) == pytest.approx(0.9, rel=1e-9)
+    assert float(rows["axisymmetric"]["chain.gain [-]"]) == pytest.approx(table["axisymmetric"][0]["gain"], rel=1e-12)
+    assert rows["axisymmetric"]["elements"] and not rows["1d"].get("elements")
+    monkeypatch.setenv(RESUME_ENV, "1")
+    run_chain_cases(cases, str(out), said.append)
+    assert {r["how"] for r in json.load(open(out / "batch.json"))} == {"skipped: completed before"}
