@@ -322,7 +322,7 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
             if status == "completed" and comm.rank == 0:
                 checkpoint.clear(out_dir)
             rd.write_json("summary.json", summary)
-            if comm.rank == 0 and len(history.rows) > 1:
+            if comm.rank == 0 and history.count > 1:
                 if pictures is not None:
                     # of the deformable bodies (rigid ones carry no stress and may hide the rest)
                     rigid = {rb.index for rb in model.rigid}

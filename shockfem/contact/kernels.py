@@ -262,7 +262,6 @@ def _respond(i, s, g, n, rel, m_eff, k, master, w, zeta, soft_scale, dt, frictio
     return 1
 
 
-@njit(cache=True, fastmath=True)
 def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
                    depth, friction, f, ff, ft, gap, offset, stiff):
     """One pass of node-to-facet contact; normal forces are added to ``f``, friction to ``ff``.
@@ -273,23 +272,41 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
     decay]; ft : (ns, 3) tangential force history; gap : (ns,) out, the signed gap of each slave
     (0 if none); stiff : (nodes,) in/out, row sums of the active springs (see the module docstring).
 
+    Two compiled halves: ``closest_facets`` (the search's candidates narrowed to the facet that takes
+    each slave: the work, which MPI ranks divide by slave) and ``facet_responses`` (the springs, in
+    slave order: cheap, and run whole on every rank so that the forces are summed as in one process).
     Returns the number of active slaves.
     """
+    best = np.empty(slaves.shape[0], dtype=np.int64)
+    best_g = np.empty(slaves.shape[0])
+    closest_facets(slaves, np.arange(slaves.shape[0]), facets, candidate_facets(cand_seg), cand_ptr, cand_seg, x,
+                   depth, best, best_g)
+    return facet_responses(slaves, facets, facet_stiffness, best, best_g, x, v, mass, zeta, soft_scale, dt,
+                           friction, f, ff, ft, gap, offset, stiff)
+
+
+def candidate_facets(cand_seg):
+    """The facets some candidate list holds (``closest_facets``' ``near``)."""
+    return np.unique(cand_seg).astype(np.int64)
+
+
+@njit(cache=True, fastmath=True)
+def closest_facets(slaves, rows, facets, near, cand_ptr, cand_seg, x, depth, best_out, best_g_out):
+    """For each slave of ``rows`` (indices into ``slaves``: all of them in one process, a rank's own
+    under MPI), the master facet that takes it and its signed gap: ``best_out[i]`` (-1 if none) and
+    ``best_g_out[i]``.  ``near``: the facets the candidate lists of ``rows`` hold (their bounding spheres
+    are computed, not the whole surface's)."""
     gdim = x.shape[1]
     nf = facets.shape[1]
     w = np.zeros(4)
     n = np.zeros(3)
-    bw = np.zeros(4)
-    bn = np.zeros(3)
-    rel = np.zeros(3)
-    active = 0
     # a bounding sphere of every facet: a candidate further from its centre than the sphere, widened by
     # the reach beyond an edge and the depth, can take the node neither within, nor beyond its edge, nor
     # ahead of it, so its projection (a Newton solve on a bilinear quad) is skipped.  In 3D the search
     # lists ~26 candidates a node, of which a few are near: the 3D two-rod case at 3.5 mm, 1.26 -> 0.66 ms a step
     centre = np.zeros((facets.shape[0], gdim))
     cull2 = np.zeros(facets.shape[0])
-    for j in range(facets.shape[0]):
+    for j in near:
         for d in range(gdim):
             for q in range(nf):
                 centre[j, d] += x[facets[j, q], d] / nf
@@ -301,9 +318,8 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
             r2 = max(r2, e2)
         reach = (1.0 + 5.0 * _REACH_BEYOND_EDGE) * math.sqrt(r2) + depth
         cull2[j] = reach * reach
-    for i in range(slaves.shape[0]):
+    for i in rows:
         s = slaves[i]
-        gap[i] = 0.0
         best = -1
         best_g = -1e300
         near_within = False          # some facet takes the node's projection and is near it
@@ -340,22 +356,41 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
             best, best_g = beyond, beyond_g
         if best < 0 and ahead >= 0:
             best, best_g = ahead, ahead_g     # _respond counts its spring if it is arriving
-        if best < 0:
+        best_out[i] = best
+        best_g_out[i] = best_g
+
+
+@njit(cache=True, fastmath=True)
+def facet_responses(slaves, facets, facet_stiffness, best, best_g, x, v, mass, zeta, soft_scale, dt, friction,
+                    f, ff, ft, gap, offset, stiff):
+    """Every slave's spring on the facet ``closest_facets`` found for it (``best``, its gap ``best_g``), in
+    slave order; arguments and return as ``node_to_facets``."""
+    gdim = x.shape[1]
+    nf = facets.shape[1]
+    bw = np.zeros(4)
+    bn = np.zeros(3)
+    rel = np.zeros(3)
+    active = 0
+    for i in range(slaves.shape[0]):
+        s = slaves[i]
+        gap[i] = 0.0
+        b = best[i]
+        if b < 0:
             offset[i] = 0.0
             _forget(ft, i)
             continue
-        _project(facets[best], x, s, bw, bn)
+        _project(facets[b], x, s, bw, bn)
         mm = 0.0
         for q in range(nf):
-            mm += bw[q] * mass[facets[best, q]]
+            mm += bw[q] * mass[facets[b, q]]
         ms = mass[s]
         m_eff = ms * mm / (ms + mm)
         rel[2] = 0.0
         for d in range(gdim):
             rel[d] = v[s, d]
             for q in range(nf):
-                rel[d] -= bw[q] * v[facets[best, q], d]
-        active += _respond(i, s, best_g, bn, rel, m_eff, facet_stiffness[best], facets[best], bw, zeta,
+                rel[d] -= bw[q] * v[facets[b, q], d]
+        active += _respond(i, s, best_g[i], bn, rel, m_eff, facet_stiffness[b], facets[b], bw, zeta,
                            soft_scale, dt, friction, f, ff, ft, gap, offset, stiff)
     return active
 

@@ -15,6 +15,7 @@ start are reported and not pushed out: each slave node's initial penetration is 
 from __future__ import annotations
 
 import numpy as np
+from mpi4py import MPI
 from scipy.spatial import cKDTree
 
 from ..errors import ModelError
@@ -64,28 +65,61 @@ def node_stiffness(surface: Surface, facets: np.ndarray, nodes: np.ndarray, scal
 
 
 class _Pass:
-    """Slave nodes of one surface against the facets of another (compact node numbers)."""
+    """Slave nodes of one surface against the facets of another (compact node numbers).
 
-    def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray):
+    Under MPI every rank holds both surfaces whole (gathered each step) and the pair's whole state, and
+    takes its own slaves (``rows``: those whose node it owns) through the costly half of the pass, the
+    search of each slave's facet (``kernels.closest_facets``); the ranks then share what each found
+    (two numbers a slave) and every rank runs the springs of all slaves in slave order
+    (``kernels.facet_responses``), so that forces, friction histories and the step limit are summed as
+    in one process: the same bits on any number of ranks."""
+
+    def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray, rows: np.ndarray, comm):
         self.slaves = slaves
         self.facets = facets
         self.stiffness = stiffness
+        self.rows = rows
         self.gap = np.zeros(len(slaves))
         self.offset = np.zeros(len(slaves))
         self.ft = np.zeros((len(slaves), 3))          # tangential (friction) force history
         self.cand_ptr = np.zeros(len(slaves) + 1, dtype=np.int64)
         self.cand_seg = np.zeros(0, dtype=np.int64)
+        self.near = np.zeros(0, dtype=np.int64)       # the facets the candidate lists hold
+        self.best = np.full(len(slaves), -1, dtype=np.int64)    # each slave's facet (-1: none), its gap
+        self.best_g = np.zeros(len(slaves))
+        self.comm = comm if comm.size > 1 else None
+        if self.comm is not None:
+            self.counts = np.array(comm.allgather(len(rows)))
+            self.order = np.concatenate(comm.allgather(rows))
 
     def search(self, x: np.ndarray, reach: float):
         centre = x[self.facets].mean(axis=1)
-        hits = cKDTree(centre).query_ball_point(x[self.slaves], reach)
-        self.cand_ptr = np.concatenate([[0], np.cumsum([len(h) for h in hits])]).astype(np.int64)
+        hits = cKDTree(centre).query_ball_point(x[self.slaves[self.rows]], reach)
+        counts = np.zeros(len(self.slaves), dtype=np.int64)
+        counts[self.rows] = [len(h) for h in hits]
+        self.cand_ptr = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+        # ``rows`` is sorted, so its lists follow one another as the pointers say
         self.cand_seg = np.array([j for h in hits for j in h], dtype=np.int64)
+        self.near = kernels.candidate_facets(self.cand_seg)
 
     def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
-        return kernels.node_to_facets(self.slaves, self.facets, self.stiffness, self.cand_ptr, self.cand_seg,
-                                      x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, self.ft,
-                                      self.gap, self.offset, stiff)
+        kernels.closest_facets(self.slaves, self.rows, self.facets, self.near, self.cand_ptr, self.cand_seg, x,
+                               depth, self.best, self.best_g)
+        if self.comm is not None:
+            self._share_closest()
+        return kernels.facet_responses(self.slaves, self.facets, self.stiffness, self.best, self.best_g, x, v, mass,
+                                       zeta, soft_scale, dt, friction, f, ff, self.ft, self.gap, self.offset, stiff)
+
+    def _share_closest(self):
+        """Every rank's slaves' facets and gaps to every rank (a facet number is exact as a double).
+        Collective."""
+        mine = np.empty((len(self.rows), 2))
+        mine[:, 0] = self.best[self.rows]
+        mine[:, 1] = self.best_g[self.rows]
+        every = np.empty((len(self.slaves), 2))
+        self.comm.Allgatherv(mine, [every, self.counts * 2, None, MPI.DOUBLE])
+        self.best[self.order] = every[:, 0].astype(np.int64)
+        self.best_g[self.order] = every[:, 1]
 
 
 class _RigidPass:
@@ -153,9 +187,15 @@ class ContactPair:
             self.depth = float(sizes.max())
         else:
             rigid = [model.bodies[s.body].rigid for s in (self.a, self.b)]
-            self.passes = [_Pass(self.nodes_a, compact[1], master_stiffness(self.b, self.a, seg_scale, rigid[1])),
-                           _Pass(np.unique(compact[1]), compact[0],
-                                 master_stiffness(self.a, self.b, seg_scale, rigid[0]))]
+            # under MPI a rank searches for the slaves it owns (``_Pass``)
+            owned = np.zeros(len(self.global_nodes), dtype=bool)
+            owned[self.exchange.slot] = True
+            slaves_b = np.unique(compact[1])
+            self.passes = [_Pass(slaves, facets, master_stiffness(master, slave, seg_scale, rigid_master),
+                                 np.flatnonzero(owned[slaves]), model.comm)
+                           for slaves, facets, master, slave, rigid_master in
+                           ((self.nodes_a, compact[1], self.b, self.a, rigid[1]),
+                            (slaves_b, compact[0], self.a, self.b, rigid[0]))]
             # a node counts as penetrating only within `depth` of the surface (half the smallest facet
             # is a safe bound for a single step's travel); the search reaches a facet size beyond that
             self.depth = 0.5 * float(sizes.min())

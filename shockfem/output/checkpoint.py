@@ -41,7 +41,8 @@ import numpy as np
 from ..errors import ModelError
 from .rundir import CHECKPOINT_DIRECTORY as DIRECTORY, write_json_atomic
 
-FORMAT = 1
+# 2: a contact pass keeps the facets its candidate lists hold (``near``) and the slaves its rank takes
+FORMAT = 2
 
 # objects whose state is not the run's: built again from the scene on resume
 _REBUILT_MODULES = ("shockfem.model", "shockfem.scene", "shockfem.geometry")

@@ -3,7 +3,7 @@ accelerometers' displacement, velocity and acceleration, contact forces, stresse
 (``sections``), energies; HDF5 and CSV.
 
 Columns carry their units in the header (``bar.v_z [m/s]``).  Only rank 0 writes; a run streams the
-CSV row by row (flushed every half second), so a killed run leaves it readable to its last samples, and
+CSV a block of rows every half second, so a killed run leaves it readable to its last samples, and
 rewrites the HDF5 file whole as it goes (written beside and renamed into place, every 2 s or more seldom:
 its writing kept under 2% of the wall time), so a kill leaves it whole to its last snapshot.
 Whole-file snapshots rather than HDF5's own append (SWMR): a SWMR file whose writer was killed stays
@@ -89,8 +89,10 @@ class HistoryRecorder:
                               f"(plane fit over each section)")
         self.columns += [(f"energy.{k}", "J") for k in ENERGY_COLUMNS]
         self.columns += [("energy.balance_error", "-"), ("dt", "s")]
-        self.rows: list[list[float]] = []
-        self._array = np.zeros((0, len(self.columns)))
+        # the rows so far, in an array that doubles as it fills; ``count`` of them are the history
+        self._rows = np.empty((1024, len(self.columns)))
+        self.count = 0
+        self._streamed = 0                # rows written to the streamed CSV
         self._h5 = h5_path if solver.comm.rank == 0 else None
         self._snapshot_due = 0.0
         self._stream = None
@@ -104,58 +106,84 @@ class HistoryRecorder:
     def resume(self, rows: np.ndarray):
         """Take the rows a checkpoint kept as the history so far (a resumed run): the streamed CSV starts
         again from them (its rows beyond the checkpoint are written again as the run goes on)."""
-        self.rows = [list(r) for r in rows]
-        self._array = np.array(rows, dtype=float).reshape(-1, len(self.columns))
+        rows = np.asarray(rows, dtype=float).reshape(-1, len(self.columns))
+        self._rows = np.empty((max(1024, 2 * len(rows)), len(self.columns)))
+        self._rows[:len(rows)] = rows
+        self.count = len(rows)
         if self._stream is not None:
-            self._csv.writerows(rows.tolist())
-            self._stream.flush()
+            self._write_stream()
 
     def _header(self) -> list[str]:
         return [f"{n} [{u}]" for n, u in self.columns]
 
     def record(self):
+        """A row at the solver's time t: written into the history's array, streamed to the CSV a block at
+        a time (every FLUSH_EVERY_S), and the HDF5 snapshot renewed when due.  Collective."""
         s = self.solver
+        if self.count == len(self._rows):
+            self._rows = np.concatenate([self._rows, np.empty_like(self._rows)])
+        row = self._rows[self.count]
+        row[0] = s.t
         v, a = s.body_means()
-        e = s.energy
-        row = [s.t]
+        k = 1
+        gdim = v.shape[1]
         for vb, ab in zip(v, a):
-            row += list(vb) + list(ab)
+            row[k:k + gdim] = vb
+            row[k + gdim:k + 2 * gdim] = ab
+            k += 2 * gdim
         energies = s.body_energies()
-        for i in range(len(v)):
-            row += [float(energies[k][i]) for k in BODY_ENERGIES]
-        reactions = s.reactions()
-        for (region, components), force in zip(self.reactions, reactions):
-            row += [float(force[c]) for c in components]
+        for name in BODY_ENERGIES:          # per body, its energies in BODY_ENERGIES' order
+            row[k + BODY_ENERGIES.index(name):k + len(BODY_ENERGIES) * len(v):len(BODY_ENERGIES)] = energies[name]
+        k += len(BODY_ENERGIES) * len(v)
+        for (region, components), force in zip(self.reactions, s.reactions()):
+            row[k:k + len(components)] = force[components]
+            k += len(components)
         for meter in self.meters:
-            row += [float(q) for q in meter.motion().reshape(-1)]
+            motion = meter.motion().reshape(-1)
+            row[k:k + len(motion)] = motion
+            k += len(motion)
         for pair in s.contacts:
-            row += list(pair.force_a) + list(pair.friction_a)
+            row[k:k + gdim] = pair.force_a
+            row[k + gdim:k + 2 * gdim] = pair.friction_a
+            k += 2 * gdim
         for spring in s.springs:
-            row += list(spring.tension * spring.direction)
+            row[k:k + gdim] = spring.tension * spring.direction
+            k += gdim
         for cavity in s.cavities:
-            row += [cavity.pressure, cavity.volume, cavity.outflow, cavity.orifice_area()]
+            row[k:k + 4] = cavity.pressure, cavity.volume, cavity.outflow, cavity.orifice_area()
+            k += 4
         if s.target is not None:
             tg = s.target
-            row += [tg.depth] + list(tg.force) + [tg.axial_force, -tg.work]
+            row[k] = tg.depth
+            row[k + 1:k + 1 + gdim] = tg.force
+            row[k + 1 + gdim:k + 3 + gdim] = tg.axial_force, -tg.work
+            k += 3 + gdim
             if s.model.gdim == 3:
-                row += [tg.spin, tg.torque]
+                row[k:k + 2] = tg.spin, tg.torque
+                k += 2
         for sec in self.sections:
-            row += sec.record()
-        row += [getattr(e, k) for k in ENERGY_COLUMNS] + [e.balance_error, s.dt]
-        self.rows.append(row)
-        if self._stream is not None:
-            self._csv.writerow([float(c) for c in row])
-            if time.perf_counter() - self._flushed > FLUSH_EVERY_S:
-                self._stream.flush()
-                self._flushed = time.perf_counter()
+            values = sec.record()
+            row[k:k + len(values)] = values
+            k += len(values)
+        e = s.energy
+        row[k:k + len(ENERGY_COLUMNS)] = [getattr(e, name) for name in ENERGY_COLUMNS]
+        row[k + len(ENERGY_COLUMNS):] = e.balance_error, s.dt
+        self.count += 1
+        if self._stream is not None and time.perf_counter() - self._flushed > FLUSH_EVERY_S:
+            self._write_stream()
         if self._h5 is not None and time.perf_counter() >= self._snapshot_due:
             self._snapshot(self._h5)
 
+    def _write_stream(self):
+        """The rows not yet streamed, to the CSV, flushed (the csv module's float repr: exact)."""
+        self._csv.writerows(self._rows[self._streamed:self.count].tolist())
+        self._streamed = self.count
+        self._stream.flush()
+        self._flushed = time.perf_counter()
+
     def array(self) -> np.ndarray:
-        """The rows so far as one array (rows converted once: the snapshots ask for it again and again)."""
-        if len(self.rows) > len(self._array):
-            self._array = np.vstack([self._array, np.array(self.rows[len(self._array):])])
-        return self._array
+        """The rows so far, (count, columns): a view of the history's own array."""
+        return self._rows[:self.count]
 
     def column(self, name: str) -> np.ndarray:
         names = [c[0] for c in self.columns]
@@ -182,6 +210,7 @@ class HistoryRecorder:
             return
         self._snapshot(h5_path)
         if self._stream is not None:
+            self._write_stream()
             self._stream.close()
             self._stream = None
             return

@@ -265,10 +265,15 @@ def sliding_block(size, workdir):
 
 
 def contact_parallel(size, workdir):
-    """Contact under mpirun -n 2 gives the one-process results: body-to-body (rod on rod) and a
-    rigid floor with friction and gravity (the sliding block)."""
+    """Contact under mpirun -n 2 gives the one-process results: body-to-body (rod on rod, axisymmetric,
+    and the two-rod case in 3D, whose ranks each search for their own slaves' facets) and a rigid floor
+    with friction and gravity (the sliding block)."""
+    three_d = two_rods_scene(0.005 * SIZES[size], "3d")
+    three_d["scene"]["name"] = "two_rods_3d"
     return [parallel_agreement(_rod_pair_scene(0.0005 * SIZES[size]), "contact_parallel.rod_on_rod", workdir,
                                ["striker.v_z", "target.v_z", "energy.contact", "energy.internal"]),
+            parallel_agreement(three_d, "contact_parallel.two_rods_3d", workdir,
+                               ["striker.v_z", "target.v_z", "target.v_x", "energy.contact"]),
             parallel_agreement(_sliding_block_scene(size), "contact_parallel.sliding_block", workdir,
                                ["block.v_x", "block.v_y", "energy.contact"])]
 
