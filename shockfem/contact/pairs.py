@@ -69,9 +69,10 @@ class _Pass:
 
     Under MPI every rank holds both surfaces whole (gathered each step) and the pair's whole state, and
     takes its own slaves (``rows``: those whose node it owns) through the costly half of the pass, the
-    search of each slave's facet (``kernels.closest_facets``); the ranks then share what each found
-    (two numbers a slave) and every rank runs the springs of all slaves in slave order
-    (``kernels.facet_responses``), so that forces, friction histories and the step limit are summed as
+    search of each slave's facet (``find``: ``kernels.closest_facets``); the ranks then share what each
+    found (``share_closest``: two numbers a slave) and every rank runs the springs of all slaves in slave
+    order (``respond``
+    : ``kernels.facet_responses``), so that forces, friction histories and the step limit are summed as
     in one process: the same bits on any number of ranks."""
 
     def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray, rows: np.ndarray, comm):
@@ -90,7 +91,8 @@ class _Pass:
         self.comm = comm if comm.size > 1 else None
         if self.comm is not None:
             self.counts = np.array(comm.allgather(len(rows)))
-            self.order = np.concatenate(comm.allgather(rows))
+            self.order = np.concatenate(comm.allgather(rows))      # rank by rank
+            self.offsets = np.concatenate([[0], np.cumsum(self.counts)])
 
     def search(self, x: np.ndarray, reach: float):
         centre = x[self.facets].mean(axis=1)
@@ -102,24 +104,36 @@ class _Pass:
         self.cand_seg = np.array([j for h in hits for j in h], dtype=np.int64)
         self.near = kernels.candidate_facets(self.cand_seg)
 
-    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
+    def find(self, x: np.ndarray, depth: float):
+        """Each of this rank's slaves' facet and gap (``best``, ``best_g``; the other ranks' slaves come
+        from ``share_closest``)."""
         kernels.closest_facets(self.slaves, self.rows, self.facets, self.near, self.cand_ptr, self.cand_seg, x,
                                depth, self.best, self.best_g)
-        if self.comm is not None:
-            self._share_closest()
+
+    def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
+        """The springs of every slave on the facet found for it; the number active."""
         return kernels.facet_responses(self.slaves, self.facets, self.stiffness, self.best, self.best_g, x, v, mass,
                                        zeta, soft_scale, dt, friction, f, ff, self.ft, self.gap, self.offset, stiff)
 
-    def _share_closest(self):
-        """Every rank's slaves' facets and gaps to every rank (a facet number is exact as a double).
-        Collective."""
-        mine = np.empty((len(self.rows), 2))
-        mine[:, 0] = self.best[self.rows]
-        mine[:, 1] = self.best_g[self.rows]
-        every = np.empty((len(self.slaves), 2))
-        self.comm.Allgatherv(mine, [every, self.counts * 2, None, MPI.DOUBLE])
-        self.best[self.order] = every[:, 0].astype(np.int64)
-        self.best_g[self.order] = every[:, 1]
+
+def share_closest(passes: list, comm):
+    """Every rank's slaves' facets and gaps (``_Pass.find``) to every rank, the passes' together in one
+    exchange (a facet number is exact as a double): each rank finds its own slaves of every pass before
+    any waits, so that a partition that gives one rank surface a and the other surface b keeps both
+    busy.  Collective."""
+    mine = np.concatenate([np.column_stack([p.best[p.rows], p.best_g[p.rows]]) for p in passes])
+    counts = sum(p.counts for p in passes)
+    every = np.empty((sum(len(p.slaves) for p in passes), 2))
+    comm.Allgatherv(mine, [every, counts * 2, None, MPI.DOUBLE])
+    # rank by rank, each pass's rows in turn
+    start = 0
+    for r in range(comm.size):
+        for p in passes:
+            n = p.counts[r]
+            rows = p.order[p.offsets[r]:p.offsets[r] + n]
+            p.best[rows] = every[start:start + n, 0].astype(np.int64)
+            p.best_g[rows] = every[start:start + n, 1]
+            start += n
 
 
 class _RigidPass:
@@ -151,7 +165,10 @@ class _RigidPass:
         gap = self.radius - dist if self.inside else dist - self.radius
         return np.where(along >= 0.0, gap, np.inf) if self.kind == kernels.TUNNEL else gap
 
-    def forces(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
+    def find(self, x: np.ndarray, depth: float):
+        """Nothing to search: the surface is analytic (``respond`` does it all, on every rank)."""
+
+    def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         return kernels.node_to_rigid(self.slaves, self.stiffness, self.kind, self.point + self.t * self.velocity,
                                      self.direction, self.radius, self.inside, self.velocity, x, v, mass, zeta,
                                      soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset, stiff)
@@ -180,6 +197,7 @@ class ContactPair:
         self.soft_scale = spec.penalty_scale if spec.penalty == "soft" else 0.0
         self.friction = np.array(spec.friction, dtype=float)
         sizes = np.concatenate([s.size for s in surfaces])
+        self.parallel = model.comm.size > 1
         if self.b is None:
             self.passes = [_RigidPass(model, spec, self.nodes_a,
                                       node_stiffness(self.a, compact[0], self.nodes_a, seg_scale))]
@@ -249,6 +267,14 @@ class ContactPair:
         self.searches += 1
 
     # --------------------------------------------------------------- forces
+    def _find(self):
+        """Every pass's search of its slaves' facets (under MPI each rank its own, then shared).
+        Collective under MPI."""
+        for p in self.passes:
+            p.find(self.x, self.depth)
+        if self.parallel and self.b is not None:      # a rigid surface's pass searches nothing
+            share_closest(self.passes, self.model.comm)
+
     def compute(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> float:
         """Contact forces at the current positions (collective: gathers the surface nodes).
 
@@ -267,11 +293,12 @@ class ContactPair:
                 p.t = t
         if self._offset0 is not None:
             self._push_out_overlaps(t)
-        if not self._boxes_apart():
+        if not self._boxes_apart():                 # the same answer on every rank: each holds all of x
             self._refresh()
+            self._find()
             for p in self.passes:
-                active += p.forces(self.x, self.v, self.mass, self.spec.damping, self.soft_scale, dt, self.depth,
-                                   self.friction, self.f, self.ff, self.stiff)
+                active += p.respond(self.x, self.v, self.mass, self.spec.damping, self.soft_scale, dt, self.depth,
+                                    self.friction, self.f, self.ff, self.stiff)
                 deepest = max(deepest, -p.gap.min())
         else:
             for p in self.passes:
@@ -351,9 +378,10 @@ class ContactPair:
             return self.initial_overlap
         self._refresh()
         no_friction = np.zeros(3)
+        self._find()
         for p in self.passes:
             p.offset[:] = -1e300          # accept any initial penetration as the zero
-            p.forces(self.x, self.v, self.mass, 0.0, 0.0, 0.0, self.depth, no_friction, self.f, self.ff, self.stiff)
+            p.respond(self.x, self.v, self.mass, 0.0, 0.0, 0.0, self.depth, no_friction, self.f, self.ff, self.stiff)
             p.offset[:] = np.minimum(p.gap, 0.0)
         self.f[:] = 0.0
         self.ff[:] = 0.0
