@@ -71,9 +71,8 @@ class _Pass:
     takes its own slaves (``rows``: those whose node it owns) through the costly half of the pass, the
     search of each slave's facet (``find``: ``kernels.closest_facets``); the ranks then share what each
     found (``share_closest``: two numbers a slave) and every rank runs the springs of all slaves in slave
-    order (``respond``
-    : ``kernels.facet_responses``), so that forces, friction histories and the step limit are summed as
-    in one process: the same bits on any number of ranks."""
+    order (``respond``: ``kernels.facet_responses``), so that forces, friction histories and the step
+    limit are summed as in one process: the same bits on any number of ranks."""
 
     def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray, rows: np.ndarray, comm):
         self.slaves = slaves
