@@ -125,6 +125,8 @@ def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields:
     ``plastic``, ... [J], ``balance_error``) and ``step.messages``.  Raises
     ``shockfem.errors.UnstableRun`` when the run goes unstable (its outputs are kept); a
     ``SceneError`` or ``ModelError`` on bad input."""
+    from .mpi_start import start_mpi
+    start_mpi()
     from .runner import run_scene
     from .scene import Scene
     if not isinstance(scene, Scene):
@@ -137,6 +139,8 @@ def resume(out_dir: str, progress: bool = False, on_step=None) -> Run:
     """Continue the stopped run in ``out_dir`` from its last checkpoint (``docs/outputs.md``) and return
     its ``Run``: the same as a run that was never stopped.  Raises ``ModelError`` when there is nothing to
     resume (a completed run, no checkpoint) or it cannot be (another number of MPI processes)."""
+    from .mpi_start import start_mpi
+    start_mpi()
     from .runner import resume_run
     resume_run(out_dir, progress=progress, quiet=True, on_step=on_step)
     return load_run(out_dir)
