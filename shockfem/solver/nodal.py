@@ -47,6 +47,11 @@ def update_velocity(v, a, dt_avg, alpha, mass, num_owned):
     return dissipated
 
 
+# The passes below run over the dofs as one flat loop (the arrays are C-contiguous (nodes, gdim)), the
+# owned ones first and without a test of ownership inside: a loop over nodes with one over the gdim
+# components inside, and the ownership test in it, kept LLVM from vectorising the sums (finish_step on
+# 3,362 nodes: 27.5 -> 19.0 us, docs/performance.md).
+
 @njit(cache=True, fastmath=True)
 def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
     """x_{n+1} = x_n + dt v_{n+1/2} (and u likewise).
@@ -56,18 +61,22 @@ def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
     forces); ``finish_step`` adds the halves with the forces at t_{n+1}.
     """
     gdim = v.shape[1]
+    xf, uf, vf = x.reshape(-1), u.reshape(-1), v.reshape(-1)
+    fi, fe, fc = f_int.reshape(-1), f_ext.reshape(-1), f_con.reshape(-1)
     w_int = 0.0
     w_ext = 0.0
     w_con = 0.0
-    for n in range(v.shape[0]):
-        for i in range(gdim):
-            du = dt * v[n, i]
-            x[n, i] += du
-            u[n, i] += du
-            if n < num_owned:
-                w_int += du * f_int[n, i]
-                w_ext += du * f_ext[n, i]
-                w_con += du * f_con[n, i]
+    for k in range(num_owned * gdim):
+        du = dt * vf[k]
+        xf[k] += du
+        uf[k] += du
+        w_int += du * fi[k]
+        w_ext += du * fe[k]
+        w_con += du * fc[k]
+    for k in range(num_owned * gdim, vf.shape[0]):
+        du = dt * vf[k]
+        xf[k] += du
+        uf[k] += du
     return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con
 
 
@@ -80,24 +89,30 @@ def finish_step(a, v, f_int, f_ext, f_con, inv_mass, mass, constrained, dt, num_
     Returns (half internal, external and contact work, kinetic energy, first non-finite node or -1).
     """
     gdim = v.shape[1]
+    af, vf, cf = a.reshape(-1), v.reshape(-1), constrained.reshape(-1)
+    fi, fe, fc = f_int.reshape(-1), f_ext.reshape(-1), f_con.reshape(-1)
     w_int = 0.0
     w_ext = 0.0
     w_con = 0.0
     kinetic = 0.0
     bad = -1
-    for n in range(v.shape[0]):
-        for i in range(gdim):
-            an = (f_ext[n, i] + f_con[n, i] - f_int[n, i]) * inv_mass[n]
-            a[n, i] = an
-            if n < num_owned:
-                du = dt * v[n, i]
-                w_int += du * f_int[n, i]
-                w_ext += du * f_ext[n, i]
-                w_con += du * f_con[n, i]
-                vn = v[n, i] if constrained[n, i] else v[n, i] + 0.5 * dt * an
-                kinetic += 0.5 * mass[n] * vn * vn
-            if not math.isfinite(an) and bad < 0:
-                bad = n
+    for k in range(num_owned * gdim):
+        n = k // gdim
+        an = (fe[k] + fc[k] - fi[k]) * inv_mass[n]
+        af[k] = an
+        if not math.isfinite(an) and bad < 0:
+            bad = n
+        du = dt * vf[k]
+        w_int += du * fi[k]
+        w_ext += du * fe[k]
+        w_con += du * fc[k]
+        vn = vf[k] if cf[k] else vf[k] + 0.5 * dt * an
+        kinetic += 0.5 * mass[n] * vn * vn
+    for k in range(num_owned * gdim, vf.shape[0]):
+        an = (fe[k] + fc[k] - fi[k]) * inv_mass[k // gdim]
+        af[k] = an
+        if not math.isfinite(an) and bad < 0:
+            bad = k // gdim
     return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con, kinetic, bad
 
 
