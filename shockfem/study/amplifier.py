@@ -31,7 +31,7 @@ from ..output.figures import pyplot
 
 from ..amplifier import rigid
 from ..amplifier.bars import Bar, Interface, Tether, run_bars
-from ..amplifier.chain import default_end_time, run_chain_scene
+from ..amplifier.chain import default_end_time, parting_end_time, run_chain_scene
 from ..amplifier.gain import chain_gain, cylinder_size, design, stack_gain
 from ..amplifier.interfaces import (flat_face_stress, hertz_yield_speed, pad_for_force,
                                     reduced_mass)
@@ -222,8 +222,7 @@ def _design_sizes(d) -> list[dict]:
 def design_cases(d, size: str) -> list[tuple[str, dict, str]]:
     """Section 3's runs: (name, chain scene, label) of the five-mass design at each fidelity."""
     bodies = [_cylinder(f"m{k + 1}", s["diameter"] / 2, s["length"], 0.02) for k, s in enumerate(_design_sizes(d))]
-    # long enough for a lossy chain to part: the rigid timing at e = 0.2 (the chain's default), tripled
-    end = 3 * default_end_time(_chain_raw("five_mass", bodies, d.launch_speed, "rigid"))
+    end = parting_end_time(_chain_raw("five_mass", bodies, d.launch_speed, "rigid"))
     cases = []
     for fidelity, h in SIZES[size]["design"]:
         label = fidelity if fidelity in ("rigid", "1d") else f"{fidelity} ({h * 1e3:g} mm)"
@@ -241,7 +240,8 @@ def design_at_fidelities(rep: Report, d, size: str, runs: "ChainRuns"):
     rep.table("design_masses", ["mass", "kg", "lb", "diameter [mm]", "length [mm]"],
               [[k + 1, m, m / LB, s["diameter"] * 1e3, s["length"] * 1e3]
                for k, (m, s) in enumerate(zip(d.masses, sizes))], ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.4g}"])
-    runs = [(label, *runs.run(name, raw)) for name, raw, label in design_cases(d, size)]
+    cases = design_cases(d, size)
+    runs = [(label, *runs.run(name, raw)) for name, raw, label in cases]
     rows = []
     finest = next((c for _, c, _ in reversed(runs) if c and c["gain"] is not None), None)
     for label, chain, problem in runs:
@@ -276,6 +276,12 @@ def design_at_fidelities(rep: Report, d, size: str, runs: "ChainRuns"):
                     "plastic work and into bodies that keep moving together, and the interfaces must be made to "
                     "stay elastic (crowned faces, pads, tuned lengths, stronger materials) before e = 0.9 can be "
                     "assumed: section 6." if yielding else "no interface yields."))
+    # the pictures of the finest finite-element run, the last in the table (rigid and 1d have no mesh)
+    meshed = [(name, label) for (name, raw, label), (_, chain, _) in zip(cases, runs)
+              if chain and raw["chain"]["fidelity"] in ("axisymmetric", "3d")]
+    if meshed:
+        name, label = meshed[-1]
+        rep.run_pictures(name, f"The five-mass design, {label},", "the r-z half-section, m1 at the top, the chain moving along -z")
     return runs
 
 
@@ -397,7 +403,7 @@ def plate_cases(d, size: str) -> list[tuple[str, dict, tuple[str, str, list[dict
             if elastic:
                 raw["materials"] = {"steel": {"density": "7850 kg/m^3", "youngs_modulus": "210 GPa",
                                               "poisson_ratio": 0.3}}
-            raw["chain"]["end_time"] = 3 * default_end_time(raw)
+            raw["chain"]["end_time"] = parting_end_time(raw)
             label = f"{'elastic' if elastic else 'plastic'}_{shape.replace(' ', '_').replace('/', '')}"
             cases.append((f"plates/{label}", raw, (key, shape, sizes)))
     return cases

@@ -39,7 +39,7 @@ SIZING = Sizing()
 SIZES = {"smoke": {"payloads": (10,), "architectures": ("launched-chain",), "trade": 0, "starts": 1,
                    "fidelities": ("rigid",)},
          "default": {"payloads": (10, 50, 100), "architectures": ("launched-chain", "stack-on-anvil"), "trade": 6,
-                     "starts": 3, "fidelities": ("rigid", "1d")}}
+                     "starts": 3, "fidelities": ("rigid", "1d", "axisymmetric")}}
 
 
 def launched(arch: str, article: float = ARTICLE) -> tuple[float, float, object]:
@@ -274,6 +274,9 @@ def coupled(rep: Report, designs: dict, cfg, out_dir: str):
              + (": at " + ", ".join(r[0] for r in lost) + " the flat-faced steel stages lose more than half the rigid "
                 "gain, as the amplifier study (`shockfem study amplifier`, section 3) finds" if lost else "")
              + ". `studies/launcher/gun_and_chain.toml` is this run as a scene.")
+    if "axisymmetric" in cfg["fidelities"]:
+        rep.run_pictures("gun_and_chain/axisymmetric", "The chain fired by the gun, axisymmetric,",
+                         "the r-z half-section, m1 at the top, the chain moving along -z; the gun is lumped")
 
 
 def run_study(size: str = "default", out_dir: str = "results/launcher", echo=print) -> str:

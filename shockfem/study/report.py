@@ -64,6 +64,23 @@ class Report:
         self.lines += [f"![{caption}]({filename})", "", f"*{caption}*", ""]
         self.write()
 
+    def run_pictures(self, run: str, subject: str, shown: str = ""):
+        """The deformed shape of the run in ``run`` (a directory beside the report) at its highest von
+        Mises stress and at its end (the run's ``peak_stress.png`` and ``final_shape.png``), captioned
+        with ``subject`` ("The five-mass design, axisymmetric (10 mm),") and ``shown`` (what the picture
+        shows or leaves out); a sentence instead where the run drew none (``SHOCKFEM_PICTURES=0``, or a
+        run that stopped early)."""
+        pictures = (("peak_stress.png", "at its highest von Mises stress"), ("final_shape.png", "at the end of its run"))
+        drawn = [(name, when) for name, when in pictures if os.path.exists(self.path(f"{run}/{name}"))]
+        for name, when in drawn:
+            self.figure(f"{run}/{name}", f"{subject} {when}: deformed at true scale, coloured by von Mises stress"
+                        + (f"; {shown}" if shown else ""))
+        missing = [name for name, when in pictures if (name, when) not in drawn]
+        self.text((f"No {' or '.join(missing)} of {subject[:1].lower() + subject[1:].rstrip(',')} in `{run}/` (runs draw them unless "
+                   "`SHOCKFEM_PICTURES=0`; a run that stopped early draws none). " if missing else "")
+                  + f"Its fields over time: `{run}/fields.xdmf` "
+                  "and `final_shape.xdmf`, which ParaView opens with its default reader (`docs/outputs.md`).")
+
     def finish(self, started: float, echo=print) -> str:
         """Close a study: its wall time since ``started`` (``time.perf_counter()``) in the report and in
         ``results.json`` (``wall_time_s``); echo and return the report's path."""

@@ -318,10 +318,7 @@ def coupled(rep: Report, m, cfg, out_dir: str, echo):
                  f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s "
                  f"({pulse.peak / f.peak - 1:+.1%} on the peak). Run directory: `coupled/fixture/` (fields.xdmf, "
                  "final_shape.png).")
-        rep.figure("coupled/fixture/peak_stress.png", "The end-to-end run's fixture at its highest von Mises stress: "
-                   "piston and article, deformed at true scale")
-        rep.figure("coupled/fixture/final_shape.png", "The end-to-end run's fixture at its end: piston and article, "
-                   "deformed, von Mises stress")
+        rep.run_pictures("coupled/fixture", "The end-to-end run's fixture", "piston and article")
         rep.value("coupled_band_passed", bool(band.passed))
         rep.value("coupled_peak_g", pulse.peak / G0)
         rep.value("coupled_velocity_change", pulse.velocity_change)

@@ -3,6 +3,7 @@
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -11,9 +12,9 @@ import pytest
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def _study(name, out):
+def _study(name, out, **env):
     p = subprocess.run([sys.executable, "-m", "shockfem", "study", name, "--size", "smoke", "--out", str(out)],
-                       capture_output=True, text=True, timeout=900)
+                       capture_output=True, text=True, timeout=900, env={**os.environ, **env})
     assert p.returncode == 0, p.stderr
     results = json.loads((out / "results.json").read_text())
     return results, (out / "report.md").read_text()
@@ -30,7 +31,8 @@ def _rows(results, table, **where):
 
 
 def test_amplifier_study_smoke(tmp_path):
-    results, report = _study("amplifier", tmp_path / "amplifier")
+    # pictures on (the suite turns them off): the report shows the finest design run's deformed shapes
+    results, report = _study("amplifier", tmp_path / "amplifier", SHOCKFEM_PICTURES="1")
     for section in ("## 1. The white paper's sizing claim", "## 2. Apparent restitution",
                     "## 3. The five-mass design", "## 4. The white paper's diminishing rods",
                     "## 5. Cylinders against thick plates", "## 6. Interfaces that keep the design elastic"):
@@ -63,6 +65,9 @@ def test_amplifier_study_smoke(tmp_path):
     # the readings' numbers are recorded with the tables, and the readings follow them
     values = results["values"]
     assert values["design.finest_gain_over_rigid"] < 0.9 and "does not amplify as the rigid model" in report
+    for picture in ("peak_stress.png", "final_shape.png"):
+        assert f"](design/axisymmetric_30_mm/{picture})" in report
+        assert (tmp_path / "amplifier" / "design" / "axisymmetric_30_mm" / picture).stat().st_size > 20_000
 
 
 def test_launcher_study_smoke(tmp_path):
@@ -197,6 +202,10 @@ def test_penetration_study_smoke(tmp_path):
     assert deceleration["effect B"] > deceleration["Lenth margin (95%)"] > 0
     assert os.path.getsize(tmp_path / "penetration" / "doe.png") > 10_000
     assert os.path.exists(tmp_path / "penetration" / "doe_run2" / "fields.xdmf")
+    # the deformed shapes of the shot, the cased shot and the design's worst-bending run (here, with the
+    # suite's SHOCKFEM_PICTURES=0, the sentence saying where their fields are instead)
+    for run in ("shot_5ksi/", "shot_cased_5ksi/", "doe_run"):
+        assert re.search(rf"in `{run}\d?/?` \(runs draw them unless `SHOCKFEM_PICTURES=0`", report)
     # section 3: a half-sine force of one axial period rings the article above its quasi-static stress;
     # one of four periods loads it nearly quasi-statically; the one-mode shock spectrum of the half-sine at
     # one period is its exact 1.73 (Q infinite)

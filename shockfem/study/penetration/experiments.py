@@ -104,6 +104,9 @@ def screening(rep: Report, ctx: Context):
     _analysis(rep, coded[:8], factorial, centres)
     _doe_figure(rep, factorial, levels)
     _along_figure(rep, factorial, levels, length)
+    worst = max(range(8), key=lambda k: factorial[k]["bending"])
+    rep.run_pictures(names[worst], f"The design's run of the largest bending stress, {names[worst]} "
+                     f"({_label(levels[worst])}),", "the 3D article; the concrete is the load on the nose, not a mesh")
     if fold:
         if any(r is None for r in results[8:16]):
             rep.text("A run of the fold-over half did not complete: the interactions stay aliased.")

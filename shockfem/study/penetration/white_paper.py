@@ -11,7 +11,7 @@ from ...output.figures import pyplot
 from ...parts.catalog import ogive
 from ...penetration.forrestal import depth_of
 from ...scene.library import initial_yield_stress, property_si
-from ...units import G0
+from ...units import FT, G0
 from ..cases import run_case
 from ..fixture.common import ARTICLE, DURATION, PEAK, article_dims
 from ..report import Report
@@ -76,6 +76,9 @@ def white_paper_shot(rep: Report, ctx: Context):
             "dies with the speed.")
 
     if ctx.shots:
+        first = next(iter(ctx.shots))
+        rep.run_pictures(f"shot_{first.replace(' ', '')}", f"The article at {SPEED / FT:.0f} ft/s into {first} concrete",
+                         "the r-z half-section, nose down; the concrete is the load on the nose, not a mesh")
         _along_body(rep, ctx)
     _cased_shot(rep, ctx)
 
@@ -167,6 +170,7 @@ def _cased_shot(rep: Report, ctx: Context):
           f"the unit a shock test stands in for, sees {payload_peak:,.0f} g peak (CFC 1000) against the case's "
           f"{ch['projectile']['pulse']['peak_g']:,.0f} g and the solid article's {solid_peak:,.0f} g: the "
           "pulse a shock test must reproduce is the payload's, passed to it through the cavity's floor.")
+    rep.run_pictures("shot_cased_5ksi", "The cased article and its payload", "the r-z half-section, nose down")
 
 
 def _shot_figure(rep: Report, ctx: Context):

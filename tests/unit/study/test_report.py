@@ -15,3 +15,24 @@ def test_tables_and_values_land_in_results_json(tmp_path):
                                       "rows": [["a", 1.23456, 0.5], ["b", None, 2.0]]}   # full precision; NaN -> null
     assert results["values"] == {"best": 1.23456} and results["title"] == "T"
     assert "| a | 1.23 | 0.5 |" in (tmp_path / "report.md").read_text()
+
+
+def test_run_pictures_show_what_the_run_drew(tmp_path):
+    """A run's two pictures go into the report where it drew them; where it drew one or none (the
+    suite's SHOCKFEM_PICTURES=0) the report says which are missing instead of linking to nothing."""
+    rep = Report(str(tmp_path), "T")
+    (tmp_path / "full").mkdir()
+    for name in ("peak_stress.png", "final_shape.png"):
+        (tmp_path / "full" / name).write_bytes(b"png")
+    (tmp_path / "half").mkdir()
+    (tmp_path / "half" / "final_shape.png").write_bytes(b"png")
+    rep.run_pictures("full", "The design,", "the r-z half-section")
+    rep.run_pictures("half", "The other run,")
+    rep.run_pictures("none", "The third run,")
+    text = (tmp_path / "report.md").read_text()
+    assert "![The design, at its highest von Mises stress: deformed at true scale" in text
+    assert "](full/peak_stress.png)" in text and "](full/final_shape.png)" in text
+    assert "](half/final_shape.png)" in text and "](half/peak_stress.png)" not in text
+    assert "No peak_stress.png of the other run in `half/`" in text
+    assert "No peak_stress.png or final_shape.png of the third run in `none/`" in text
+    assert "](none/" not in text and "No " not in text.split("The other run,")[0]
