@@ -13,7 +13,7 @@ APT_PACKAGES="python3-dolfinx python3-petsc4py python3-slepc4py python3-mpi4py p
 # (the last three: pyvista's VTK draws the runs' pictures off screen through EGL and Mesa's software
 # renderer; without them VTK finds no EGL, no OSMesa and no display, and crashes on its first render)
 if [ "${INSTALL_PARAVIEW:-1}" = 1 ]; then
-  APT_PACKAGES="$APT_PACKAGES paraview python3-paraview python3-matplotlib xvfb xauth"
+  APT_PACKAGES="$APT_PACKAGES paraview python3-paraview python3-matplotlib xvfb xauth x11-utils"
 fi
 missing=""
 for p in $APT_PACKAGES; do

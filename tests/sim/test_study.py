@@ -12,9 +12,9 @@ import pytest
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def _study(name, out, **env):
+def _study(name, out):
     p = subprocess.run([sys.executable, "-m", "shockfem", "study", name, "--size", "smoke", "--out", str(out)],
-                       capture_output=True, text=True, timeout=900, env={**os.environ, **env})
+                       capture_output=True, text=True, timeout=900)
     assert p.returncode == 0, p.stderr
     results = json.loads((out / "results.json").read_text())
     return results, (out / "report.md").read_text()
@@ -31,8 +31,7 @@ def _rows(results, table, **where):
 
 
 def test_amplifier_study_smoke(tmp_path):
-    # pictures on (the suite turns them off): the report shows the finest design run's deformed shapes
-    results, report = _study("amplifier", tmp_path / "amplifier", SHOCKFEM_PICTURES="1")
+    results, report = _study("amplifier", tmp_path / "amplifier")
     for section in ("## 1. The white paper's sizing claim", "## 2. Apparent restitution",
                     "## 3. The five-mass design", "## 4. The white paper's diminishing rods",
                     "## 5. Cylinders against thick plates", "## 6. Interfaces that keep the design elastic"):
@@ -65,9 +64,10 @@ def test_amplifier_study_smoke(tmp_path):
     # the readings' numbers are recorded with the tables, and the readings follow them
     values = results["values"]
     assert values["design.finest_gain_over_rigid"] < 0.9 and "does not amplify as the rigid model" in report
-    for picture in ("peak_stress.png", "final_shape.png"):
-        assert f"](design/axisymmetric_30_mm/{picture})" in report
-        assert (tmp_path / "amplifier" / "design" / "axisymmetric_30_mm" / picture).stat().st_size > 20_000
+    # the finest design run's deformed shapes (tests/unit/study/test_report.py: the pictures where a run drew
+    # them; here, with the suite's SHOCKFEM_PICTURES=0, the sentence saying where its fields are)
+    assert re.search(r"No peak_stress.png or final_shape.png of the five-mass design, axisymmetric \(30 mm\) in "
+                     r"`design/axisymmetric_30_mm/`", report)
 
 
 def test_launcher_study_smoke(tmp_path):
