@@ -1,4 +1,7 @@
 import os
+import subprocess
+import sys
+import time
 
 import pytest
 
@@ -20,3 +23,23 @@ def pytest_collection_modifyitems(items):
     """The tests marked ``long`` (minutes each) first: the suite runs on two workers (pytest-xdist), and a
     long test handed out last would leave one of them idle while it runs."""
     items.sort(key=lambda item: item.get_closest_marker("long") is None)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_sessionstart(session):
+    """numba's kernels compiled once, before pytest-xdist starts its workers (``tests/warm_kernels.py``, one
+    process per group, both cores): on a clean checkout the first tests' processes would each compile them.
+    Only for a suite on workers (``-n``, as ``make test``); not in the workers themselves, nor with
+    ``SHOCKFEM_WARM=0``."""
+    workers = getattr(session.config.option, "numprocesses", None)
+    if not workers or hasattr(session.config, "workerinput") or os.environ.get("SHOCKFEM_WARM", "1") == "0":
+        return
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "warm_kernels.py")
+    t0 = time.perf_counter()
+    groups = [subprocess.Popen([sys.executable, script, group], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               text=True) for group in ("axisymmetric", "3d")]
+    for group, proc in zip(("axisymmetric", "3d"), groups):
+        out, _ = proc.communicate()
+        if proc.returncode != 0:          # the tests that run these kernels will say what is wrong
+            sys.stderr.write(f"warm_kernels.py {group} failed:\n{out[-2000:]}\n")
+    sys.stderr.write(f"numba kernels compiled or loaded in {time.perf_counter() - t0:.0f} s (tests/warm_kernels.py)\n")
