@@ -20,7 +20,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import signal
+
+from .recursive import lfilter
 
 # Smallwood's and ISO 18431-4's advice: about 10 samples per cycle at the highest frequency.
 SAMPLES_PER_CYCLE = 10
@@ -87,7 +88,7 @@ def oscillator_response(a: np.ndarray, dt: float, frequency: float, q: float,
     tail = int(math.ceil(1.0 / (frequency * h))) + 1
     x = np.concatenate([x, np.zeros(tail)])
     b, den = smallwood_coefficients(frequency, q, h)
-    return signal.lfilter(b, den, x), h
+    return lfilter(b, den, x), h
 
 
 def shock_response_spectrum(a: np.ndarray, dt: float, frequencies, q: float = 10.0,
