@@ -170,7 +170,7 @@ def _cased_shot(rep: Report, ctx: Context):
           f"the unit a shock test stands in for, sees {payload_peak:,.0f} g peak (CFC 1000) against the case's "
           f"{ch['projectile']['pulse']['peak_g']:,.0f} g and the solid article's {solid_peak:,.0f} g: the "
           "pulse a shock test must reproduce is the payload's, passed to it through the cavity's floor.")
-    rep.run_pictures("shot_cased_5ksi", "The cased article and its payload", "the r-z half-section, nose down")
+    rep.run_pictures(raw["scene"]["name"], "The cased article and its payload", "the r-z half-section, nose down")
 
 
 def _shot_figure(rep: Report, ctx: Context):
