@@ -3,6 +3,8 @@ axisymmetric, against Forrestal's closed form and the shock tester's 10,000 g / 
 along the body against its inertia relief; the cased article with its payload at 5 ksi."""
 from __future__ import annotations
 
+import os
+
 import numpy as np
 
 from ...metrics.filters import cfc_filter
@@ -76,8 +78,8 @@ def white_paper_shot(rep: Report, ctx: Context):
             "dies with the speed.")
 
     if ctx.shots:
-        first = next(iter(ctx.shots))
-        rep.run_pictures(f"shot_{first.replace(' ', '')}", f"The article at {SPEED / FT:.0f} ft/s into {first} concrete",
+        first, (shot, _) = next(iter(ctx.shots.items()))
+        rep.run_pictures(os.path.relpath(shot.path, ctx.out_dir), f"The article at {SPEED / FT:.0f} ft/s into {first} concrete",
                          "the r-z half-section, nose down; the concrete is the load on the nose, not a mesh")
         _along_body(rep, ctx)
     _cased_shot(rep, ctx)
@@ -170,7 +172,7 @@ def _cased_shot(rep: Report, ctx: Context):
           f"the unit a shock test stands in for, sees {payload_peak:,.0f} g peak (CFC 1000) against the case's "
           f"{ch['projectile']['pulse']['peak_g']:,.0f} g and the solid article's {solid_peak:,.0f} g: the "
           "pulse a shock test must reproduce is the payload's, passed to it through the cavity's floor.")
-    rep.run_pictures(raw["scene"]["name"], "The cased article and its payload", "the r-z half-section, nose down")
+    rep.run_pictures(os.path.relpath(fe.path, ctx.out_dir), "The cased article and its payload", "the r-z half-section, nose down")
 
 
 def _shot_figure(rep: Report, ctx: Context):
