@@ -76,7 +76,7 @@ def check_vertex_order(vertices: np.ndarray):
 # transposed transform of the cell's force coefficients.
 
 @njit(cache=True, fastmath=True, inline="always")
-def _walsh4(y0, y1, y2, y3):
+def walsh4(y0, y1, y2, y3):
     a0 = y0 + y1
     a1 = y1 - y0
     a2 = y2 + y3
@@ -85,7 +85,7 @@ def _walsh4(y0, y1, y2, y3):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _unwalsh4(c0, c1, c2, c3):
+def unwalsh4(c0, c1, c2, c3):
     """f_a = c0 + c1 xi_a + c2 eta_a + c3 xi_a eta_a at the four vertices."""
     lo = c0 - c2
     dlo = c1 - c3
@@ -95,168 +95,25 @@ def _unwalsh4(c0, c1, c2, c3):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _walsh8(y0, y1, y2, y3, y4, y5, y6, y7):
-    a0, a1, a2, a3 = _walsh4(y0, y1, y2, y3)
-    b0, b1, b2, b3 = _walsh4(y4, y5, y6, y7)
+def walsh8(y0, y1, y2, y3, y4, y5, y6, y7):
+    a0, a1, a2, a3 = walsh4(y0, y1, y2, y3)
+    b0, b1, b2, b3 = walsh4(y4, y5, y6, y7)
     return a0 + b0, a1 + b1, a2 + b2, a3 + b3, b0 - a0, b1 - a1, b2 - a2, b3 - a3
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _inverse_2x2(j00, j01, j10, j11):
+def inverse_2x2(j00, j01, j10, j11):
     det = j00 * j11 - j01 * j10
     idet = 1.0 / det
     return det, j11 * idet, -j01 * idet, -j10 * idet, j00 * idet
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _step_length(nodes, bb):
+def step_length(nodes, bb):
     """c times the stable step of a uniform-strain element with lumped mass, 2 / sqrt(n b:b), from
     Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b (a square of side h: h / sqrt(2),
     LS-DYNA's area / longest diagonal; a cube: h / sqrt(3))."""
     return 2.0 / math.sqrt(nodes * bb)
-
-
-def _quad_kernel(elastic_only: bool):
-    """``quad_one_point`` compiled for ``elastic_only`` (a constant of the closure)."""
-
-    @njit(cache=True, fastmath=True)
-    def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
-                       hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f,
-                       body_energy):
-        """One-point quads (plane strain or axisymmetric): stress update and internal force.
-
-        Arguments as ``full_integration.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
-        hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
-        hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
-        stiffness form accumulates them; both forms need them for the trapezoidal work);
-        body_energy : (rows of params, 3) accumulates, per row (one per body), the work of the stresses
-        dt V (sigma_n + sigma_n+1)/2 : d, the hourglass work and the plastic work over the step [J].
-
-        Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
-        """
-        two_pi = 2.0 * math.pi
-        hdt = 0.5 * dt
-        dt_stable = 1e300
-        critical_cell = -1
-        damping_power = 0.0
-        viscosity_power = 0.0
-        plastic_work = 0.0
-        hourglass_power = 0.0
-        bad_cell = -1
-        for ci in range(cells.shape[0]):
-            c = cells[ci]
-            m = cell_material[c]
-            lam = params[m, P_LAMBDA]
-            mu = params[m, P_MU]
-            beta = params[m, P_BETA]
-            n0 = dofmap[c, 0]
-            n1 = dofmap[c, 1]
-            n2 = dofmap[c, 2]
-            n3 = dofmap[c, 3]
-            # transforms of x and v: (sum, sum xi ., sum eta ., sum xi eta .) per component
-            sx, j00, j01, hx0 = _walsh4(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0])
-            sy, j10, j11, hx1 = _walsh4(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1])
-            svx, v00, v01, hv0 = _walsh4(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0])
-            svy, v10, v11, hv1 = _walsh4(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1])
-            # J = sum_a x_a dN0_a^T with dN0_a = xi_a / 2; Jv likewise from v
-            j00 *= 0.5
-            j01 *= 0.5
-            j10 *= 0.5
-            j11 *= 0.5
-            v00 *= 0.5
-            v01 *= 0.5
-            v10 *= 0.5
-            v11 *= 0.5
-            r = 0.25 * sx
-            vr = 0.25 * svx
-            # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
-            det, i00, i01, i10, i11 = _inverse_2x2(j00 - hdt * v00, j01 - hdt * v01, j10 - hdt * v10, j11 - hdt * v11)
-            l00 = v00 * i00 + v01 * i10
-            l01 = v00 * i01 + v01 * i11
-            l10 = v10 * i00 + v11 * i10
-            l11 = v10 * i01 + v11 * i11
-            d2 = vr / (r - hdt * vr) if axisymmetric else 0.0
-            d0 = l00
-            d1 = l11
-            d5 = 0.5 * (l01 + l10)
-            # the material update at the centre (objective rotation, slotted ring, law)
-            w12 = 0.5 * (l01 - l10)
-            a0, a1, a2, a5 = sigma[c, 0, 0], sigma[c, 0, 1], sigma[c, 0, 2], sigma[c, 0, 5]
-            s_np1, d, wp = update_stress(params, curves, m, state, c, 0, (a0, a1, a2, 0.0, 0.0, a5),
-                                         (d0, d1, d2, 0.0, 0.0, d5), (0.0, 0.0, w12), dt, r if axisymmetric else 0.0,
-                                         elastic_only)
-            sigma[c, 0, 0] = s_np1[0]
-            sigma[c, 0, 1] = s_np1[1]
-            sigma[c, 0, 2] = s_np1[2]
-            sigma[c, 0, 5] = s_np1[5]
-            # end-of-step configuration: volume and J^-1
-            det, i00, i01, i10, i11 = _inverse_2x2(j00, j01, j10, j11)
-            det *= cell_sign[c]
-            if det <= 0.0:
-                bad_cell = c
-            vol = det * (two_pi * r if axisymmetric else thickness)
-            plastic_work += vol * wp
-            body_energy[m, 2] += vol * wp
-            body_energy[m, 0] += 0.5 * dt * vol * ((a0 + s_np1[0]) * d[0] + (a1 + s_np1[1]) * d[1]
-                                                   + (a2 + s_np1[2]) * d[2] + 2.0 * (a5 + s_np1[5]) * d[5])
-            # hourglass rate q = h.v - L_end (h.x), and resultant Q
-            e00 = v00 * i00 + v01 * i10
-            e01 = v00 * i01 + v01 * i11
-            e10 = v10 * i00 + v11 * i10
-            e11 = v10 * i01 + v11 * i11
-            q0 = hv0 - e00 * hx0 - e01 * hx1
-            q1 = hv1 - e10 * hx0 - e11 * hx1
-            bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
-            ls = _step_length(4.0, bb)
-            trd = d[0] + d[1] + d[2]
-            pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC],
-                                params[m, P_Q_LINEAR])
-            (s0, s1, s2, _, _, s5), pd, pv = viscous_stress(params, m, s_np1, d, pq)
-            damping_power += vol * pd
-            viscosity_power += vol * pv
-            o0 = hourglass[c, 0]
-            o1 = hourglass[c, 1]
-            if hourglass_form == 1:
-                cv = hourglass_coefficient * params[m, P_RHO] * params[m, P_WAVE_SPEED] * vol * math.sqrt(bb) / 4.0
-                Q0 = cv * q0
-                Q1 = cv * q1
-            else:
-                # the resultant turns with the material (the centre's in-plane rotation) and grows
-                k = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 16.0
-                r00, r01, _, r10, r11, _, _, _, _ = cayley_matrix(0.0, 0.0, w12, dt)
-                Q0 = r00 * o0 + r01 * o1 + k * dt * q0
-                Q1 = r10 * o0 + r11 * o1 + k * dt * q1
-            hourglass[c, 0] = Q0
-            hourglass[c, 1] = Q1
-            # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
-            cell_hourglass = 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
-            hourglass_power += cell_hourglass
-            body_energy[m, 1] += dt * cell_hourglass
-            # f_a = S b_a + h_a Q (+ hoop N_a), S = V sigma - Q (h.x)^T, b_a = J^-T dN0_a: with
-            # M = J^-1 S^T the force is M^T dN0_a, i.e. the transposed transform of (hoop, M/2, Q).
-            t00 = vol * s0 - Q0 * hx0
-            t01 = vol * s5 - Q0 * hx1
-            t10 = vol * s5 - Q1 * hx0
-            t11 = vol * s1 - Q1 * hx1
-            hoop = 0.25 * vol * s2 / r if axisymmetric else 0.0
-            f00, f10, f20, f30 = _unwalsh4(hoop, 0.5 * (i00 * t00 + i01 * t01), 0.5 * (i10 * t00 + i11 * t01), Q0)
-            f01, f11, f21, f31 = _unwalsh4(0.0, 0.5 * (i00 * t10 + i01 * t11), 0.5 * (i10 * t10 + i11 * t11), Q1)
-            f[n0, 0] += f00
-            f[n1, 0] += f10
-            f[n2, 0] += f20
-            f[n3, 0] += f30
-            f[n0, 1] += f01
-            f[n1, 1] += f11
-            f[n2, 1] += f21
-            f[n3, 1] += f31
-            dtc = viscous_step(ls, params[m, P_WAVE_SPEED], ls, trd, params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR],
-                               beta)
-            if dtc < dt_stable:
-                dt_stable = dtc
-                critical_cell = c
-        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
-
-    return quad_one_point
 
 
 def _hex_kernel(elastic_only: bool):
@@ -265,10 +122,10 @@ def _hex_kernel(elastic_only: bool):
     @njit(cache=True, fastmath=True)
     def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
                       hourglass_coefficient, params, curves, state, sigma, hourglass, f, body_energy):
-        """One-point hexahedra: stress update and internal force (see ``quad_one_point``).
+        """One-point hexahedra: stress update and internal force (see ``one_point_quads.quad_one_point``).
 
         hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
-        xi eta zeta), 3 components each.  Returns what ``quad_one_point`` returns.
+        xi eta zeta), 3 components each.  Returns what ``one_point_quads.quad_one_point`` returns.
         """
         hdt = 0.5 * dt
         dt_stable = 1e300
@@ -288,17 +145,17 @@ def _hex_kernel(elastic_only: bool):
             n4, n5, n6, n7 = dofmap[c, 4], dofmap[c, 5], dofmap[c, 6], dofmap[c, 7]
             # transforms of x and v per component (tuples stay in registers; small arrays would not):
             # entries 1, 2, 4 are 4 J[i, :] (dN0_a = xi_a / 4); 3, 6, 5, 7 the hourglass projections
-            tx = _walsh8(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0],
+            tx = walsh8(x_np1[n0, 0], x_np1[n1, 0], x_np1[n2, 0], x_np1[n3, 0],
                          x_np1[n4, 0], x_np1[n5, 0], x_np1[n6, 0], x_np1[n7, 0])
-            ty = _walsh8(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1],
+            ty = walsh8(x_np1[n0, 1], x_np1[n1, 1], x_np1[n2, 1], x_np1[n3, 1],
                          x_np1[n4, 1], x_np1[n5, 1], x_np1[n6, 1], x_np1[n7, 1])
-            tz = _walsh8(x_np1[n0, 2], x_np1[n1, 2], x_np1[n2, 2], x_np1[n3, 2],
+            tz = walsh8(x_np1[n0, 2], x_np1[n1, 2], x_np1[n2, 2], x_np1[n3, 2],
                          x_np1[n4, 2], x_np1[n5, 2], x_np1[n6, 2], x_np1[n7, 2])
-            ux = _walsh8(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0],
+            ux = walsh8(v_half[n0, 0], v_half[n1, 0], v_half[n2, 0], v_half[n3, 0],
                          v_half[n4, 0], v_half[n5, 0], v_half[n6, 0], v_half[n7, 0])
-            uy = _walsh8(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1],
+            uy = walsh8(v_half[n0, 1], v_half[n1, 1], v_half[n2, 1], v_half[n3, 1],
                          v_half[n4, 1], v_half[n5, 1], v_half[n6, 1], v_half[n7, 1])
-            uz = _walsh8(v_half[n0, 2], v_half[n1, 2], v_half[n2, 2], v_half[n3, 2],
+            uz = walsh8(v_half[n0, 2], v_half[n1, 2], v_half[n2, 2], v_half[n3, 2],
                          v_half[n4, 2], v_half[n5, 2], v_half[n6, 2], v_half[n7, 2])
             j00, j01, j02 = 0.25 * tx[1], 0.25 * tx[2], 0.25 * tx[4]
             j10, j11, j12 = 0.25 * ty[1], 0.25 * ty[2], 0.25 * ty[4]
@@ -355,7 +212,7 @@ def _hex_kernel(elastic_only: bool):
             e22 = v20 * i02 + v21 * i12 + v22 * i22
             bb = 0.5 * (i00 * i00 + i01 * i01 + i02 * i02 + i10 * i10 + i11 * i11 + i12 * i12
                         + i20 * i20 + i21 * i21 + i22 * i22)          # b:b, sum_a dN0_a dN0_a^T = I / 2
-            ls = _step_length(8.0, bb)
+            ls = step_length(8.0, bb)
             trd = d0 + d1 + d2
             # the viscosity's length is LS-DYNA's volume / largest face, sqrt(3) ls for a cube
             pq = bulk_viscosity(params[m, P_RHO], params[m, P_WAVE_SPEED], math.sqrt(3.0) * ls, trd,
@@ -428,8 +285,8 @@ def _hex_kernel(elastic_only: bool):
                 m0 = 0.25 * (i00 * ta + i01 * tb + i02 * tc)
                 m1 = 0.25 * (i10 * ta + i11 * tb + i12 * tc)
                 m2 = 0.25 * (i20 * ta + i21 * tb + i22 * tc)
-                lo = _unwalsh4(-m2, m0 - Qc[i], m1 - Qb[i], Qa[i] - Qd[i])
-                hi = _unwalsh4(m2, m0 + Qc[i], m1 + Qb[i], Qa[i] + Qd[i])
+                lo = unwalsh4(-m2, m0 - Qc[i], m1 - Qb[i], Qa[i] - Qd[i])
+                hi = unwalsh4(m2, m0 + Qc[i], m1 + Qb[i], Qa[i] + Qd[i])
                 f[n0, i] += lo[0]
                 f[n1, i] += lo[1]
                 f[n2, i] += lo[2]
@@ -448,16 +305,8 @@ def _hex_kernel(elastic_only: bool):
     return hex_one_point
 
 
-# Each kernel is compiled twice, with ``elastic_only`` a constant of the closure (numba caches the two
-# apart: its cache key holds the closure's values).  For meshes of elastic rows without slots the
+# The hex kernel is compiled twice, with ``elastic_only`` a constant of the closure (numba caches the
+# two apart: its cache key holds the closure's values).  For meshes of elastic rows without slots the
 # loop then holds no call to a law: a call left in the loop, even one never taken, cost a third of
-# the quad kernel's speed (docs/performance.md).
-KERNELS = {(2, flag): _quad_kernel(flag) for flag in (True, False)}
-KERNELS.update({(3, flag): _hex_kernel(flag) for flag in (True, False)})
-
-
-def one_point_kernel(gdim: int, elastic_only: bool):
-    """The one-point kernel of a mesh of dimension ``gdim``: ``quad_one_point`` (2) or ``hex_one_point``
-    (3), in its copy for ``elastic_only`` (``materials.update.is_elastic_only(params)``: every row
-    elastic without slots) or for any law."""
-    return KERNELS[gdim, bool(elastic_only)]
+# the quad kernel's speed (docs/performance.md).  ``kernels.one_point_kernel`` picks a mesh's pass.
+HEX_KERNELS = {flag: _hex_kernel(flag) for flag in (True, False)}

@@ -7,7 +7,7 @@ from dolfinx import fem, mesh
 
 from shockfem import compat
 from shockfem.model import kinematics as kin
-from shockfem.elements import cells as ec, one_point
+from shockfem.elements import cells as ec, kernels, one_point
 from shockfem.materials import layout
 
 from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
@@ -35,11 +35,11 @@ def _run(kinematics, dofmap, sign, x, v, dt, sigma, hourglass, form=STIFFNESS, c
     mats = np.zeros(len(dofmap), np.int32)
     p = _params() if params is None else params
     if kinematics == "3d":
-        out = one_point.one_point_kernel(3, elastic_only)(cells, dofmap, mats, sign, x, v, dt, form, coefficient, p,
+        out = kernels.one_point_kernel(3, elastic_only)(cells, dofmap, mats, sign, x, v, dt, form, coefficient, p,
                                                           NO_CURVES, NO_STATE, sigma, hourglass, f,
                                                           np.zeros((len(p), 3)))
     else:
-        out = one_point.one_point_kernel(2, elastic_only)(cells, dofmap, mats, sign, x, v, dt,
+        out = kernels.one_point_kernel(2, elastic_only)(cells, dofmap, mats, sign, x, v, dt,
                                                           kinematics == "axisymmetric", 0.7, form, coefficient, p,
                                                           NO_CURVES, NO_STATE, sigma, hourglass, f,
                                                           np.zeros((len(p), 3)))

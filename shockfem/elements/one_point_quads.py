@@ -1,0 +1,320 @@
+"""One-point quads (plane strain and axisymmetric) in SIMD lanes: several cells at once.
+
+The element is ``one_point.py``'s (Flanagan & Belytschko's hourglass control, the ring volume and
+hoop term in axisymmetry).  Per cell it takes two 2x2 inverses, two Cayley rotations, Hooke's law,
+the bulk viscosity, square roots and divisions, one after the other: scalar code leaves most of a
+CPU's vector units idle.  A CPU does four of each at once (AVX: four doubles a register) if the
+compiler sees the same arithmetic over consecutive array entries, so the pass runs in blocks of
+``LANES`` cells:
+
+1. gather (scalar, indirect through the dofmap): each cell's node positions and velocities, its
+   stress and hourglass resultant and its row's constants into row ``r`` of the scratch array ``W``
+   at ``S[r * LANES + k]``, k the cell's lane;
+2. kinematics lanes (vectorised, ``_rates``): Jacobians, the mid-step strain rate and spin, the
+   hourglass projections, into the scratch array ``K``;
+3. the material update at the centre (``materials.update``): for elastic rows without slots in lanes
+   too (``_elastic``); for any other law cell by cell (scalar: the laws hold state and branches);
+4. response lanes (vectorised, ``_response``): the viscous stresses, the hourglass resultant, the
+   nodal forces, the energies and the stable step, into ``V``;
+5. scatter (scalar): forces into the nodes, stresses and resultants into their arrays, the energy
+   sums and the smallest step in cell order.
+
+Numba's LLVM vectorises the lane loops only under two conditions, found with its vectorizer's
+remarks (``docs/performance.md``): numba's Python error model off (``error_model="numpy"``:
+otherwise every division carries a zero test that raises) and each lane loop in a function of its
+own, not inlined, called once a block.  The lanes therefore raise nothing: a cell of zero area gives
+infinite forces and NaNs, which the pass reports as an inverted cell (its volume is not positive) or
+the nodal pass as a non-finite state (``solver.nodal``).  The lane bodies are the element's formulas
+written once, for both the elastic and the general pass.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
+from ..materials.objective import cayley_matrix
+from ..materials.update import elastic_update_stress, update_stress
+from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
+from .one_point import inverse_2x2, step_length, unwalsh4, walsh4
+
+# Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
+# arrays leave the first-level cache and the pass runs at half the scalar code's speed.
+LANES = 32
+
+# Rows of W, gathered: node positions x, y and velocities u, w (four nodes each), the stress at t_n
+# (11, 22, 33, 12), the hourglass resultant of the last step, the row's constants, the orientation.
+_X, _Y, _U, _W, _S, _O = 0, 4, 8, 12, 16, 20
+_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = 22, 23, 24, 25, 26, 27, 28, 29
+W_ROWS = 30
+# Rows of K: Jacobian J and velocity Jacobian Jv at the centre (row-major), hourglass projections h.x
+# and rates h.v, the centre's radius, the strain rate (11, 22, 33, 12) and spin W12 on the mid-step
+# configuration, then from the material update the stress at t_n+1 (11, 22, 33, 12) and plastic work
+# density.  (The update may change the hoop rate: a slotted ring's metal takes what its slots leave.)
+_J, _JV, _HX, _HV, _R, _D, _SPIN, _SN, _WP = (W_ROWS + r for r in (0, 4, 8, 10, 12, 13, 17, 18, 22))
+K_ROWS = 23
+# Rows of V: nodal forces (x of the four nodes, then y), the hourglass resultant, the signed volume
+# factor (<= 0: inverted), the stresses' work over the step, the hourglass, damping and bulk viscosity
+# powers, the cell's stable step and its plastic work.
+_FX, _FY, _Q, _DET, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = (W_ROWS + K_ROWS + r
+                                                                for r in (0, 4, 8, 10, 11, 12, 13, 14, 15, 16))
+V_ROWS = 17
+ROWS = W_ROWS + K_ROWS + V_ROWS
+
+
+def _lane_function(py_func, name: str, axisymmetric: bool):
+    """``py_func`` compiled as a lane function, named for its kinematics.  The two copies of a closure
+    would otherwise share a name, and numba's symbol for a function called from another is its name
+    and a per-process counter: a kernel compiled in one process and linking a copy loaded from the
+    cache that another process compiled could call the other kinematics' copy (seen: plane-strain
+    forces from the axisymmetric lanes)."""
+    py_func.__name__ = py_func.__qualname__ = f"quad_{name}_{'axisymmetric' if axisymmetric else 'plane'}"
+    return njit(cache=True, fastmath=True, error_model="numpy", inline="never")(py_func)
+
+
+def _rates_lanes(axisymmetric: bool):
+    """The kinematics lanes for ``axisymmetric`` (a constant of the closure)."""
+
+    def rates(S, nb, dt):
+        B = LANES
+        hdt = 0.5 * dt
+        for k in range(nb):
+            # transforms of x and v: (sum, sum xi ., sum eta ., sum xi eta .) per component
+            sx, j00, j01, hx0 = walsh4(S[_X * B + k], S[(_X + 1) * B + k], S[(_X + 2) * B + k], S[(_X + 3) * B + k])
+            sy, j10, j11, hx1 = walsh4(S[_Y * B + k], S[(_Y + 1) * B + k], S[(_Y + 2) * B + k], S[(_Y + 3) * B + k])
+            su, v00, v01, hv0 = walsh4(S[_U * B + k], S[(_U + 1) * B + k], S[(_U + 2) * B + k], S[(_U + 3) * B + k])
+            sw, v10, v11, hv1 = walsh4(S[_W * B + k], S[(_W + 1) * B + k], S[(_W + 2) * B + k], S[(_W + 3) * B + k])
+            # J = sum_a x_a dN0_a^T with dN0_a = xi_a / 2; Jv likewise from v
+            j00, j01, j10, j11 = 0.5 * j00, 0.5 * j01, 0.5 * j10, 0.5 * j11
+            v00, v01, v10, v11 = 0.5 * v00, 0.5 * v01, 0.5 * v10, 0.5 * v11
+            r = 0.25 * sx
+            vr = 0.25 * su
+            # strain rate on the mid-step configuration: L = Jv J_mid^-1, J_mid = J - dt/2 Jv
+            _, i00, i01, i10, i11 = inverse_2x2(j00 - hdt * v00, j01 - hdt * v01, j10 - hdt * v10, j11 - hdt * v11)
+            l00 = v00 * i00 + v01 * i10
+            l01 = v00 * i01 + v01 * i11
+            l10 = v10 * i00 + v11 * i10
+            l11 = v10 * i01 + v11 * i11
+            S[_J * B + k] = j00
+            S[(_J + 1) * B + k] = j01
+            S[(_J + 2) * B + k] = j10
+            S[(_J + 3) * B + k] = j11
+            S[_JV * B + k] = v00
+            S[(_JV + 1) * B + k] = v01
+            S[(_JV + 2) * B + k] = v10
+            S[(_JV + 3) * B + k] = v11
+            S[_HX * B + k] = hx0
+            S[(_HX + 1) * B + k] = hx1
+            S[_HV * B + k] = hv0
+            S[(_HV + 1) * B + k] = hv1
+            S[_R * B + k] = r
+            S[_D * B + k] = l00
+            S[(_D + 1) * B + k] = l11
+            S[(_D + 2) * B + k] = vr / (r - hdt * vr) if axisymmetric else 0.0
+            S[(_D + 3) * B + k] = 0.5 * (l01 + l10)
+            S[_SPIN * B + k] = 0.5 * (l01 - l10)
+
+    return _lane_function(rates, "rates", axisymmetric)
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="never")
+def _elastic(S, nb, dt):
+    """The material update of elastic rows without slots, in lanes (``materials.update.update_stress``)."""
+    B = LANES
+    for k in range(nb):
+        s = elastic_update_stress(
+            (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]),
+            (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k]),
+            (0.0, 0.0, S[_SPIN * B + k]), dt, S[_LAM * B + k], S[_MU * B + k])
+        S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], S[(_SN + 3) * B + k] = s[0], s[1], s[2], s[5]
+        S[_WP * B + k] = 0.0
+
+
+def _response_lanes(axisymmetric: bool):
+    """The response lanes for ``axisymmetric`` (a constant of the closure)."""
+
+    def response(S, nb, dt, thickness, hourglass_form, hourglass_coefficient):
+        B = LANES
+        for k in range(nb):
+            j00, j01, j10, j11 = S[_J * B + k], S[(_J + 1) * B + k], S[(_J + 2) * B + k], S[(_J + 3) * B + k]
+            v00, v01, v10, v11 = S[_JV * B + k], S[(_JV + 1) * B + k], S[(_JV + 2) * B + k], S[(_JV + 3) * B + k]
+            hx0, hx1 = S[_HX * B + k], S[(_HX + 1) * B + k]
+            r = S[_R * B + k]
+            d = (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k])
+            a0, a1, a2, a5 = S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], S[(_S + 3) * B + k]
+            s_np1 = (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0, S[(_SN + 3) * B + k])
+            o0, o1 = S[_O * B + k], S[(_O + 1) * B + k]
+            lam, mu, rho, wave_speed = S[_LAM * B + k], S[_MU * B + k], S[_RHO * B + k], S[_C * B + k]
+            q_quadratic, q_linear, beta = S[_Q1 * B + k], S[_Q2 * B + k], S[_BETA * B + k]
+            # end-of-step configuration: volume and J^-1
+            det, i00, i01, i10, i11 = inverse_2x2(j00, j01, j10, j11)
+            det *= S[_SIGN * B + k]
+            vol = det * (2.0 * math.pi * r if axisymmetric else thickness)
+            S[_DET * B + k] = det
+            S[_PLASTIC * B + k] = vol * S[_WP * B + k]
+            S[_WORK * B + k] = 0.5 * dt * vol * ((a0 + s_np1[0]) * d[0] + (a1 + s_np1[1]) * d[1]
+                                                 + (a2 + s_np1[2]) * d[2] + 2.0 * (a5 + s_np1[5]) * d[5])
+            # hourglass rate q = h.v - L_end (h.x), and resultant Q
+            e00 = v00 * i00 + v01 * i10
+            e01 = v00 * i01 + v01 * i11
+            e10 = v10 * i00 + v11 * i10
+            e11 = v10 * i01 + v11 * i11
+            q0 = S[_HV * B + k] - e00 * hx0 - e01 * hx1
+            q1 = S[(_HV + 1) * B + k] - e10 * hx0 - e11 * hx1
+            bb = i00 * i00 + i01 * i01 + i10 * i10 + i11 * i11      # b:b = sum_a |J^-T dN0_a|^2
+            ls = step_length(4.0, bb)
+            trd = d[0] + d[1] + d[2]
+            pq = bulk_viscosity(rho, wave_speed, ls, trd, q_quadratic, q_linear)
+            (s0, s1, s2, _, _, s5), pd, pv = viscous_stress_of(s_np1, d, pq, lam, mu, beta)
+            S[_DAMP * B + k] = vol * pd
+            S[_VISC * B + k] = vol * pv
+            if hourglass_form == 1:
+                cv = hourglass_coefficient * rho * wave_speed * vol * math.sqrt(bb) / 4.0
+                Q0 = cv * q0
+                Q1 = cv * q1
+            else:
+                # the resultant turns with the material (the centre's in-plane rotation) and grows
+                kh = hourglass_coefficient * (lam + 2.0 * mu) * vol * bb / 16.0
+                r00, r01, _, r10, r11, _, _, _, _ = cayley_matrix(0.0, 0.0, S[_SPIN * B + k], dt)
+                Q0 = r00 * o0 + r01 * o1 + kh * dt * q0
+                Q1 = r10 * o0 + r11 * o1 + kh * dt * q1
+            S[_Q * B + k] = Q0
+            S[(_Q + 1) * B + k] = Q1
+            # trapezoidal, like the solver's work of all internal forces: (Q_n + Q_n+1)/2 . q
+            S[_HG * B + k] = 0.5 * ((o0 + Q0) * q0 + (o1 + Q1) * q1)
+            # f_a = S b_a + h_a Q (+ hoop N_a), S = V sigma - Q (h.x)^T, b_a = J^-T dN0_a: with
+            # M = J^-1 S^T the force is M^T dN0_a, i.e. the transposed transform of (hoop, M/2, Q).
+            t00 = vol * s0 - Q0 * hx0
+            t01 = vol * s5 - Q0 * hx1
+            t10 = vol * s5 - Q1 * hx0
+            t11 = vol * s1 - Q1 * hx1
+            hoop = 0.25 * vol * s2 / r if axisymmetric else 0.0
+            (S[_FX * B + k], S[(_FX + 1) * B + k], S[(_FX + 2) * B + k], S[(_FX + 3) * B + k]) = unwalsh4(
+                hoop, 0.5 * (i00 * t00 + i01 * t01), 0.5 * (i10 * t00 + i11 * t01), Q0)
+            (S[_FY * B + k], S[(_FY + 1) * B + k], S[(_FY + 2) * B + k], S[(_FY + 3) * B + k]) = unwalsh4(
+                0.0, 0.5 * (i00 * t10 + i01 * t11), 0.5 * (i10 * t10 + i11 * t11), Q1)
+            S[_DT * B + k] = viscous_step(ls, wave_speed, ls, trd, q_quadratic, q_linear, beta)
+
+    return _lane_function(response, "response", axisymmetric)
+
+
+_RATES = {flag: _rates_lanes(flag) for flag in (True, False)}
+_RESPONSE = {flag: _response_lanes(flag) for flag in (True, False)}
+_RATES_AXISYMMETRIC, _RATES_PLANE = _RATES[True], _RATES[False]
+_RESPONSE_AXISYMMETRIC, _RESPONSE_PLANE = _RESPONSE[True], _RESPONSE[False]
+
+
+def _quad_kernel(elastic_only: bool):
+    """``quad_one_point`` compiled for ``elastic_only`` (a constant of the closure: the elastic copy
+    updates the stress in lanes and holds no call to a law)."""
+
+    @njit(cache=True, fastmath=True)
+    def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
+                       hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f,
+                       body_energy):
+        """One-point quads (plane strain or axisymmetric): stress update and internal force.
+
+        Arguments as ``full_integration.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
+        hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
+        hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
+        stiffness form accumulates them; both forms need them for the trapezoidal work);
+        body_energy : (rows of params, 3) accumulates, per row (one per body), the work of the stresses
+        dt V (sigma_n + sigma_n+1)/2 : d, the hourglass work and the plastic work over the step [J].
+
+        Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
+        """
+        B = LANES
+        S = np.zeros(ROWS * B)
+        dt_stable = 1e300
+        critical_cell = -1
+        damping_power = 0.0
+        viscosity_power = 0.0
+        plastic_work = 0.0
+        hourglass_power = 0.0
+        bad_cell = -1
+        n = cells.shape[0]
+        for start in range(0, n, B):
+            count = min(B, n - start)
+            for k in range(count):
+                c = cells[start + k]
+                m = cell_material[c]
+                for a in range(4):
+                    node = dofmap[c, a]
+                    S[(_X + a) * B + k] = x_np1[node, 0]
+                    S[(_Y + a) * B + k] = x_np1[node, 1]
+                    S[(_U + a) * B + k] = v_half[node, 0]
+                    S[(_W + a) * B + k] = v_half[node, 1]
+                S[_S * B + k] = sigma[c, 0, 0]
+                S[(_S + 1) * B + k] = sigma[c, 0, 1]
+                S[(_S + 2) * B + k] = sigma[c, 0, 2]
+                S[(_S + 3) * B + k] = sigma[c, 0, 5]
+                S[_O * B + k] = hourglass[c, 0]
+                S[(_O + 1) * B + k] = hourglass[c, 1]
+                S[_LAM * B + k] = params[m, P_LAMBDA]
+                S[_MU * B + k] = params[m, P_MU]
+                S[_BETA * B + k] = params[m, P_BETA]
+                S[_RHO * B + k] = params[m, P_RHO]
+                S[_C * B + k] = params[m, P_WAVE_SPEED]
+                S[_Q1 * B + k] = params[m, P_Q_QUADRATIC]
+                S[_Q2 * B + k] = params[m, P_Q_LINEAR]
+                S[_SIGN * B + k] = cell_sign[c]
+            if axisymmetric:
+                _RATES_AXISYMMETRIC(S, count, dt)
+            else:
+                _RATES_PLANE(S, count, dt)
+            if elastic_only:
+                _elastic(S, count, dt)
+            else:
+                # the material update at the centre, cell by cell (objective rotation, slotted ring, law)
+                for k in range(count):
+                    c = cells[start + k]
+                    s_np1, d, wp = update_stress(
+                        params, curves, cell_material[c], state, c, 0,
+                        (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]),
+                        (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k]),
+                        (0.0, 0.0, S[_SPIN * B + k]), dt, S[_R * B + k] if axisymmetric else 0.0, False)
+                    S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k] = s_np1[0], s_np1[1], s_np1[2]
+                    S[(_SN + 3) * B + k] = s_np1[5]
+                    S[(_D + 2) * B + k] = d[2]
+                    S[_WP * B + k] = wp
+            if axisymmetric:
+                _RESPONSE_AXISYMMETRIC(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
+            else:
+                _RESPONSE_PLANE(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
+            # scatter, in cell order: the same sums as a cell-by-cell loop
+            for k in range(count):
+                c = cells[start + k]
+                m = cell_material[c]
+                for a in range(4):
+                    node = dofmap[c, a]
+                    f[node, 0] += S[(_FX + a) * B + k]
+                    f[node, 1] += S[(_FY + a) * B + k]
+                sigma[c, 0, 0] = S[_SN * B + k]
+                sigma[c, 0, 1] = S[(_SN + 1) * B + k]
+                sigma[c, 0, 2] = S[(_SN + 2) * B + k]
+                sigma[c, 0, 5] = S[(_SN + 3) * B + k]
+                hourglass[c, 0] = S[_Q * B + k]
+                hourglass[c, 1] = S[(_Q + 1) * B + k]
+                if S[_DET * B + k] <= 0.0:
+                    bad_cell = c
+                cell_hourglass = S[_HG * B + k]
+                cell_plastic = S[_PLASTIC * B + k]
+                plastic_work += cell_plastic
+                body_energy[m, 2] += cell_plastic
+                body_energy[m, 0] += S[_WORK * B + k]
+                body_energy[m, 1] += dt * cell_hourglass
+                hourglass_power += cell_hourglass
+                damping_power += S[_DAMP * B + k]
+                viscosity_power += S[_VISC * B + k]
+                dtc = S[_DT * B + k]
+                if dtc < dt_stable:
+                    dt_stable = dtc
+                    critical_cell = c
+        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+
+    return quad_one_point
+
+
+QUAD_KERNELS = {flag: _quad_kernel(flag) for flag in (True, False)}
