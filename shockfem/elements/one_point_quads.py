@@ -8,24 +8,26 @@ compiler sees the same arithmetic over consecutive array entries, so the pass ru
 ``LANES`` cells:
 
 1. gather (scalar, indirect through the dofmap): each cell's node positions and velocities, its
-   stress and hourglass resultant and its row's constants into row ``r`` of the scratch array ``W``
-   at ``S[r * LANES + k]``, k the cell's lane;
-2. kinematics lanes (vectorised, ``_rates``): Jacobians, the mid-step strain rate and spin, the
-   hourglass projections, into the scratch array ``K``;
+   stress and hourglass resultant and its row's constants into rows of one scratch array ``S``, row
+   ``r`` of lane k at ``S[r * LANES + k]``;
+2. kinematics lanes (vectorised, ``_rates_lanes``): Jacobians, the mid-step strain rate and spin, the
+   hourglass projections, into further rows;
 3. the material update at the centre (``materials.update``): for elastic rows without slots in lanes
    too (``_elastic``); for any other law cell by cell (scalar: the laws hold state and branches);
-4. response lanes (vectorised, ``_response``): the viscous stresses, the hourglass resultant, the
-   nodal forces, the energies and the stable step, into ``V``;
+4. response lanes (vectorised, ``_response_lanes``): the viscous stresses, the hourglass resultant,
+   the nodal forces, the energies and the stable step, into further rows;
 5. scatter (scalar): forces into the nodes, stresses and resultants into their arrays, the energy
    sums and the smallest step in cell order.
 
-Numba's LLVM vectorises the lane loops only under two conditions, found with its vectorizer's
-remarks (``docs/performance.md``): numba's Python error model off (``error_model="numpy"``:
-otherwise every division carries a zero test that raises) and each lane loop in a function of its
-own, not inlined, called once a block.  The lanes therefore raise nothing: a cell of zero area gives
-infinite forces and NaNs, which the pass reports as an inverted cell (its volume is not positive) or
-the nodal pass as a non-finite state (``solver.nodal``).  The lane bodies are the element's formulas
-written once, for both the elastic and the general pass.
+Numba's LLVM vectorises a lane loop only when (found with its vectorizer's remarks,
+``docs/performance.md``): numba's Python error model is off (``error_model="numpy"``: otherwise every
+division carries a zero test that raises); the loop is in a function of its own, not inlined, called
+once a block; its trip count is an argument (a constant 32 gets the loop unrolled first, and the
+unrolled loop is not vectorised); it holds no inner loop (LLVM vectorises innermost loops); and it
+reads and writes one array (no runtime alias checks to fail).  The lanes therefore raise nothing: a
+cell of zero area gives infinite forces and NaNs, which the pass reports as an inverted cell (its
+volume is not positive) or the nodal pass as a non-finite state (``solver.nodal``).  The lane bodies
+are the element's formulas written once, for both the elastic and the general copy.
 """
 from __future__ import annotations
 

@@ -12,10 +12,7 @@ from numba import njit
 from .layout import P_LAMBDA, P_MU
 
 
-# inlined (numba IR) wherever called: the quads' lanes (elements.one_point_quads) vectorise only
-# code compiled under their own error model, with no calls left in the loop
-@njit(cache=True, fastmath=True, inline="always")
-def hooke(d, lam, mu):
+def _hooke(d, lam, mu):
     """C : d for a symmetric d given and returned as (11, 22, 33, 23, 13, 12)."""
     d0, d1, d2, d3, d4, d5 = d
     ltr = lam * (d0 + d1 + d2)
@@ -23,7 +20,15 @@ def hooke(d, lam, mu):
             2.0 * mu * d3, 2.0 * mu * d4, 2.0 * mu * d5)
 
 
-@njit(cache=True, fastmath=True, inline="always")
+# One formula, compiled twice: called by the laws (``hooke``), and inlined at numba's IR level
+# (``hooke_inlined``) into the elements' lanes, which vectorise only with no call left in the loop and
+# every line under their own error model.  Inlined into the laws as well, it made the cold compile of
+# the first plastic run 1.6x longer (numba's IR inlining cost grows with nesting).
+hooke = njit(cache=True, fastmath=True)(_hooke)
+hooke_inlined = njit(cache=True, fastmath=True, inline="always")(_hooke)
+
+
+@njit(cache=True, fastmath=True)
 def elastic_step(s, d, lam, mu, dt):
     """sigma + dt C : d, the elastic stress over one step in the rotated frame."""
     c0, c1, c2, c3, c4, c5 = hooke(d, lam, mu)

@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .elastic import elastic_step
+from .elastic import elastic_step, hooke_inlined
 from .laws import law_update
 from .layout import ELASTIC, J2, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH
 from .objective import cayley_matrix, rotate_back_stress, rotate_symmetric
@@ -38,12 +38,12 @@ from .slotted import slotted_hoop_rate
 @njit(cache=True, fastmath=True, inline="always")
 def update_stress(params, curves, m, state, c, p, s, d, w, dt, r, elastic_only):
     """One point of material row ``m`` over one step (module docstring)."""
+    q = cayley_matrix(w[0], w[1], w[2], dt)
+    s = rotate_symmetric(s, q)
     if elastic_only:
         # the constants by index, not through the row view params[m]: a view costs an atomic
         # reference count up and down per call, 5% of the elastic quad kernel (docs/performance.md)
-        return elastic_update_stress(s, d, w, dt, params[m, P_LAMBDA], params[m, P_MU]), d, 0.0
-    q = cayley_matrix(w[0], w[1], w[2], dt)
-    s = rotate_symmetric(s, q)
+        return elastic_step(s, d, params[m, P_LAMBDA], params[m, P_MU], dt), d, 0.0
     if params[m, P_LAW] == J2 and params[m, P_KINEMATIC] > 0.0:
         rotate_back_stress(state, c, p, q)
     if r > 0.0 and params[m, P_SLOT_WIDTH] > 0.0:
@@ -56,9 +56,13 @@ def update_stress(params, curves, m, state, c, p, s, d, w, dt, r, elastic_only):
 
 @njit(cache=True, fastmath=True, inline="always")
 def elastic_update_stress(s, d, w, dt, lam, mu):
-    """``update_stress`` of an elastic row without slots, from its Lame constants: rotate, then Hooke.
-    The elastic lanes (``elements.one_point_quads``) call it with each lane's constants."""
-    return elastic_step(rotate_symmetric(s, cayley_matrix(w[0], w[1], w[2], dt)), d, lam, mu, dt)
+    """``update_stress`` of an elastic row without slots, from its Lame constants: rotate, then
+    ``elastic.elastic_step`` (written out here with the inlined Hooke's law: the elements' lanes call
+    this, and vectorise only with every line inlined)."""
+    s = rotate_symmetric(s, cayley_matrix(w[0], w[1], w[2], dt))
+    c = hooke_inlined(d, lam, mu)
+    return (s[0] + dt * c[0], s[1] + dt * c[1], s[2] + dt * c[2], s[3] + dt * c[3], s[4] + dt * c[4],
+            s[5] + dt * c[5])
 
 
 def is_elastic_only(params: np.ndarray) -> bool:

@@ -136,6 +136,9 @@ class ExplicitSolver:
         self.target = ConcreteTarget(m, m.penetration) if m.penetration else None
         self.f_gravity = (m.mass[:, None] * np.asarray(m.gravity)[None, :] if m.gravity
                           else None)
+        # whether f_ext or f_con can be non-zero; if not, the nodal passes leave them unread
+        self.forces_applied = bool(m.loads or self.f_gravity is not None or self.contacts or self.springs
+                                   or self.cavities or self.target is not None)
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # state per point (plastic strain, its rate, back stress, slot closure); a stub if no body needs one
         self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, STATE_SIZE)
@@ -382,7 +385,7 @@ class ExplicitSolver:
 
         # position, and the first halves of the work increments (forces at t_n)
         w_int, w_ext, w_con = nodal.update_position(self.x, self.u, self.v, dt, self.f_int, self.f_ext,
-                                                    self.f_con, m.num_owned)
+                                                    self.f_con, self.forces_applied, m.num_owned)
         self.t += dt
         self.dt = dt
         self.step += 1
@@ -397,7 +400,7 @@ class ExplicitSolver:
 
         # acceleration a_{n+1}, second halves of the work increments, kinetic energy
         w_int2, w_ext2, w_con2, kinetic, bad = nodal.finish_step(
-            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.inv_mass, self.kinetic_mass, self.constrained,
+            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.forces_applied, self.inv_mass, self.kinetic_mass, self.constrained,
             dt, m.num_owned)
         if self.parallel:
             w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic = self.comm.allreduce(

@@ -53,12 +53,13 @@ def update_velocity(v, a, dt_avg, alpha, mass, num_owned):
 # 3,362 nodes: 27.5 -> 19.0 us, docs/performance.md).
 
 @njit(cache=True, fastmath=True)
-def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
+def update_position(x, u, v, dt, f_int, f_ext, f_con, applied, num_owned):
     """x_{n+1} = x_n + dt v_{n+1/2} (and u likewise).
 
     Returns the first halves of the trapezoidal work increments over the step,
     (1/2 du . f_int_n, 1/2 du . f_ext_n, 1/2 du . f_con_n) summed over owned nodes (f_con: contact
-    forces); ``finish_step`` adds the halves with the forces at t_{n+1}.
+    forces); ``finish_step`` adds the halves with the forces at t_{n+1}.  ``applied`` False says f_ext
+    and f_con are zero (no loads, gravity, contact, springs, liquids or target): they are not read.
     """
     gdim = v.shape[1]
     xf, uf, vf = x.reshape(-1), u.reshape(-1), v.reshape(-1)
@@ -66,13 +67,21 @@ def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
     w_int = 0.0
     w_ext = 0.0
     w_con = 0.0
-    for k in range(num_owned * gdim):
-        du = dt * vf[k]
-        xf[k] += du
-        uf[k] += du
-        w_int += du * fi[k]
-        w_ext += du * fe[k]
-        w_con += du * fc[k]
+    if applied:
+        for k in range(num_owned * gdim):
+            du = dt * vf[k]
+            xf[k] += du
+            uf[k] += du
+            w_int += du * fi[k]
+            w_ext += du * fe[k]
+            w_con += du * fc[k]
+    else:
+        # two arrays fewer through memory: this pass is bandwidth-bound (docs/performance.md)
+        for k in range(num_owned * gdim):
+            du = dt * vf[k]
+            xf[k] += du
+            uf[k] += du
+            w_int += du * fi[k]
     for k in range(num_owned * gdim, vf.shape[0]):
         du = dt * vf[k]
         xf[k] += du
@@ -81,10 +90,11 @@ def update_position(x, u, v, dt, f_int, f_ext, f_con, num_owned):
 
 
 @njit(cache=True, fastmath=FINITE_SAFE_FASTMATH)
-def finish_step(a, v, f_int, f_ext, f_con, inv_mass, mass, constrained, dt, num_owned):
+def finish_step(a, v, f_int, f_ext, f_con, applied, inv_mass, mass, constrained, dt, num_owned):
     """a_{n+1} = M^-1 (f_ext + f_con - f_int), the second halves of the work increments, and the
     kinetic energy 1/2 m |v_{n+1}|^2 with v_{n+1} = v_{n+1/2} + dt/2 a_{n+1} (constrained dofs,
-    flagged in ``constrained`` (nodes, gdim), keep their prescribed velocity).
+    flagged in ``constrained`` (nodes, gdim), keep their prescribed velocity).  ``applied`` as in
+    ``update_position`` (False: f_ext and f_con are zero and not read; the same numbers).
 
     Returns (half internal, external and contact work, kinetic energy, first non-finite node or -1).
     """
@@ -96,18 +106,30 @@ def finish_step(a, v, f_int, f_ext, f_con, inv_mass, mass, constrained, dt, num_
     w_con = 0.0
     kinetic = 0.0
     bad = -1
-    for k in range(num_owned * gdim):
-        n = k // gdim
-        an = (fe[k] + fc[k] - fi[k]) * inv_mass[n]
-        af[k] = an
-        if not math.isfinite(an) and bad < 0:
-            bad = n
-        du = dt * vf[k]
-        w_int += du * fi[k]
-        w_ext += du * fe[k]
-        w_con += du * fc[k]
-        vn = vf[k] if cf[k] else vf[k] + 0.5 * dt * an
-        kinetic += 0.5 * mass[n] * vn * vn
+    if applied:
+        for k in range(num_owned * gdim):
+            n = k // gdim
+            an = (fe[k] + fc[k] - fi[k]) * inv_mass[n]
+            af[k] = an
+            if not math.isfinite(an) and bad < 0:
+                bad = n
+            du = dt * vf[k]
+            w_int += du * fi[k]
+            w_ext += du * fe[k]
+            w_con += du * fc[k]
+            vn = vf[k] if cf[k] else vf[k] + 0.5 * dt * an
+            kinetic += 0.5 * mass[n] * vn * vn
+    else:
+        for k in range(num_owned * gdim):
+            n = k // gdim
+            an = -fi[k] * inv_mass[n]
+            af[k] = an
+            if not math.isfinite(an) and bad < 0:
+                bad = n
+            du = dt * vf[k]
+            w_int += du * fi[k]
+            vn = vf[k] if cf[k] else vf[k] + 0.5 * dt * an
+            kinetic += 0.5 * mass[n] * vn * vn
     for k in range(num_owned * gdim, vf.shape[0]):
         an = (fe[k] + fc[k] - fi[k]) * inv_mass[k // gdim]
         af[k] = an

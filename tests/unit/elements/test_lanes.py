@@ -1,0 +1,93 @@
+"""The one-point passes in lanes (quads and hexes): their two copies, the blocks, an inverted cell.
+
+Provenance: the elastic copy updates the stress in lanes (``materials.update.elastic_update_stress``),
+the general copy cell by cell through ``update_stress``: the same arithmetic for elastic rows; only the
+compiler's order of operations may differ (fastmath), so every output must agree to round-off: 1e-13
+of its largest entry (the differences seen are below 1e-15).  Against the scalar kernels these passes
+replaced (``git show 4c4bad2:shockfem/elements/one_point.py``) both copies agreed to 4.7e-16 (quads)
+and 1.6e-15 (hexes) on 50k and 1k shuffled cells (session 22).  The forces themselves are checked
+against the one-point UFL form in ``test_one_point.py``.
+"""
+import numpy as np
+import pytest
+
+from shockfem.elements import kernels, one_point, one_point_hexes, one_point_quads
+from shockfem.materials import layout
+
+from element_helpers import NO_CURVES, NO_STATE, steel_params
+
+STIFFNESS, VISCOUS = one_point.HOURGLASS_FORMS["stiffness"], one_point.HOURGLASS_FORMS["viscous"]
+
+
+def _grid(shape, seed=3):
+    """A perturbed grid of quads (2 numbers in ``shape``) or hexes (3) in tensor vertex order, r >= 1 mm."""
+    rng = np.random.default_rng(seed)
+    axes = [np.linspace(0.001, 0.05, shape[0] + 1)] + [np.linspace(0.0, 0.08, n + 1) for n in shape[1:]]
+    x = np.stack(np.meshgrid(*axes, indexing="ij"), -1).reshape(-1, len(shape))
+    x += rng.normal(size=x.shape) * 3e-4
+    index = np.arange(len(x)).reshape([n + 1 for n in shape])
+    corners = [(a & 1, (a >> 1) & 1, (a >> 2) & 1)[:len(shape)] for a in range(2 ** len(shape))]
+    cells = np.stack([index[tuple(slice(c, c + n) for c, n in zip(corner, shape))].ravel() for corner in corners], 1)
+    return x, np.ascontiguousarray(cells, dtype=np.int32)
+
+
+def _params():
+    """Two elastic rows, the second damped, both with bulk viscosity."""
+    p = np.vstack([steel_params(), steel_params(E=70e9, rho=2700.0, beta=2e-8)])
+    p[:, layout.P_Q_QUADRATIC], p[:, layout.P_Q_LINEAR] = 1.5, 0.06
+    return p
+
+
+def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None):
+    n, gdim = len(dofmap), x.shape[1]
+    rng = np.random.default_rng(5)
+    sigma = rng.normal(size=(n, 1, 6)) * 1e7
+    if gdim == 2:
+        sigma[..., 3:5] = 0.0
+    hourglass = rng.normal(size=(n, 2 if gdim == 2 else 12)) * 10.0
+    f = np.zeros_like(x)
+    body_energy = np.zeros((2, 3))
+    materials = (np.arange(n) % 3 == 0).astype(np.int32)
+    sign = np.ones(n) if sign is None else sign
+    kernel = kernels.one_point_kernel(gdim, elastic_only)
+    geometry = (axisymmetric, 0.7) if gdim == 2 else ()
+    out = kernel(cells, dofmap, materials, sign, x, v, 2e-7, *geometry, form, 0.1, _params(), NO_CURVES, NO_STATE,
+                 sigma, hourglass, f, body_energy)
+    return out, {"f": f, "sigma": sigma, "hourglass": hourglass, "body_energy": body_energy}
+
+
+CASES = [((9, 7), True), ((9, 7), False), ((4, 3, 5), None)]     # quads axisymmetric, plane strain; hexes
+
+
+@pytest.mark.parametrize("shape, axisymmetric", CASES)
+@pytest.mark.parametrize("form", [STIFFNESS, VISCOUS])
+def test_elastic_lanes_agree_with_the_update_cell_by_cell(shape, axisymmetric, form):
+    """Shuffled cells (full blocks of LANES and a partial one), velocities that compress some cells and
+    stretch others, two rows: every output to round-off, the critical cell exactly."""
+    x, dofmap = _grid(shape)
+    lanes = (one_point_quads if len(shape) == 2 else one_point_hexes).LANES
+    assert len(dofmap) % lanes != 0 and len(dofmap) > lanes
+    cells = np.random.default_rng(7).permutation(len(dofmap)).astype(np.int32)
+    v = np.random.default_rng(11).normal(size=x.shape) * 20.0
+    ref_out, ref = _run(False, x, dofmap, cells, v, form, axisymmetric)
+    out, got = _run(True, x, dofmap, cells, v, form, axisymmetric)
+    for name in ref:
+        assert np.abs(got[name] - ref[name]).max() <= 1e-13 * np.abs(ref[name]).max(), name
+    dt_stable, critical, damping, viscosity, plastic, hourglass_power, bad = out
+    assert critical == ref_out[1] and bad == ref_out[6] == -1 and plastic == 0.0
+    assert viscosity > 0.0 and damping > 0.0           # both viscous terms ran
+    for a, b in zip((dt_stable, damping, viscosity, hourglass_power),
+                    (ref_out[0], ref_out[2], ref_out[3], ref_out[5])):
+        assert abs(a - b) <= 1e-13 * abs(b)
+
+
+@pytest.mark.parametrize("shape", [(9, 7), (4, 3, 5)])
+@pytest.mark.parametrize("elastic_only", [True, False])
+def test_an_inverted_cell_is_reported(shape, elastic_only):
+    """A cell of negative volume (its orientation flipped) is reported by both copies."""
+    x, dofmap = _grid(shape)
+    cells = np.arange(len(dofmap), dtype=np.int32)
+    sign = np.ones(len(dofmap))
+    sign[40] = -1.0
+    out, _ = _run(elastic_only, x, dofmap, cells, np.zeros_like(x), STIFFNESS, sign=sign)
+    assert out[6] == 40
