@@ -40,6 +40,8 @@ import math
 import numpy as np
 from numba import njit
 
+from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
+
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
 
@@ -111,3 +113,47 @@ def step_length(nodes, bb):
     Flanagan & Belytschko's bound omega_max^2 <= n c^2 b:b (a square of side h: h / sqrt(2),
     LS-DYNA's area / longest diagonal; a cube: h / sqrt(3))."""
     return 2.0 / math.sqrt(nodes * bb)
+
+
+# What the passes (``one_point_quads.py``, ``one_point_hexes.py``) share around their lanes.  Each keeps
+# a cell's row constants in 8 consecutive scratch rows (lambda, mu, beta, rho, wave speed, the bulk
+# viscosity's quadratic and linear coefficients, the orientation) and reports 7 consecutive rows per
+# cell (signed volume, for a quad its signed area factor; the stresses' work; hourglass, damping and
+# bulk viscosity powers; stable step; plastic work); lane k of row r is ``S[r * B + k]``.
+
+@njit(cache=True, fastmath=True, inline="always")
+def gather_constants(S, row, B, k, params, m, sign):
+    """Row ``m``'s constants and the cell's orientation into rows ``row``..``row`` + 7 of lane k."""
+    S[row * B + k] = params[m, P_LAMBDA]
+    S[(row + 1) * B + k] = params[m, P_MU]
+    S[(row + 2) * B + k] = params[m, P_BETA]
+    S[(row + 3) * B + k] = params[m, P_RHO]
+    S[(row + 4) * B + k] = params[m, P_WAVE_SPEED]
+    S[(row + 5) * B + k] = params[m, P_Q_QUADRATIC]
+    S[(row + 6) * B + k] = params[m, P_Q_LINEAR]
+    S[(row + 7) * B + k] = sign
+
+
+# (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell)
+# before the first cell: what a pass returns
+NO_TOTALS = (1e300, -1, 0.0, 0.0, 0.0, 0.0, -1)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def add_cell_totals(totals, S, row, B, k, c, m, dt, body_energy):
+    """``totals`` with cell c's reported rows (``row``..``row`` + 6 of lane k) added, in cell order, and its
+    row ``m``'s energies into ``body_energy`` (the stresses' work, the hourglass work, the plastic work)."""
+    dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell = totals
+    if S[row * B + k] <= 0.0:
+        bad_cell = int(c)
+    cell_hourglass = S[(row + 2) * B + k]
+    cell_plastic = S[(row + 6) * B + k]
+    body_energy[m, 0] += S[(row + 1) * B + k]
+    body_energy[m, 1] += dt * cell_hourglass
+    body_energy[m, 2] += cell_plastic
+    dtc = S[(row + 5) * B + k]
+    if dtc < dt_stable:
+        dt_stable = dtc
+        critical_cell = int(c)
+    return (dt_stable, critical_cell, damping_power + S[(row + 3) * B + k], viscosity_power + S[(row + 4) * B + k],
+            plastic_work + cell_plastic, hourglass_power + cell_hourglass, bad_cell)

@@ -16,11 +16,10 @@ import numpy as np
 from numba import njit
 
 from ..materials.algebra import inverse_3x3
-from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import step_length, unwalsh4, walsh8
+from .one_point import NO_TOTALS, add_cell_totals, gather_constants, step_length, unwalsh4, walsh8
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -29,14 +28,14 @@ LANES = 16
 # each), the stress at t_n (11, 22, 33, 23, 13, 12), the hourglass resultants of the last step (mode-
 # major, 3 components a mode), the row's constants, the orientation.
 _X, _Y, _Z, _U, _V, _W, _S, _O = 0, 8, 16, 24, 32, 40, 48, 54
-_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = 66, 67, 68, 69, 70, 71, 72, 73
+_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(66, 74)   # ``one_point.gather_constants``'s order
 # Kinematics: J and Jv at the centre (row-major), hourglass projections h.x and rates h.v (mode-major),
 # the strain rate and spin (W23, W13, W12) on the mid-step configuration; from the material update
 # the stress at t_n+1 and the plastic work density.
 _J, _JV, _HX, _HV, _D, _SPIN, _SN, _WP = 74, 83, 92, 104, 116, 122, 125, 131
 # Response: nodal forces (x of the eight nodes, then y, then z), hourglass resultants, the volume (<= 0:
 # inverted), the stresses' work, the hourglass, damping and bulk viscosity powers, the stable step,
-# the plastic work.
+# the plastic work (``one_point.add_cell_totals``'s order from the volume).
 _F, _Q, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = 132, 156, 168, 169, 170, 171, 172, 173, 174
 ROWS = 175
 
@@ -55,6 +54,13 @@ def _load3(S, row, B, k):
     return S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k]
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def _walsh8_rows(S, row, B, k):
+    """``one_point.walsh8`` of the eight nodes' values in rows ``row``..``row`` + 7 of lane k."""
+    return walsh8(S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], S[(row + 3) * B + k],
+                  S[(row + 4) * B + k], S[(row + 5) * B + k], S[(row + 6) * B + k], S[(row + 7) * B + k])
+
+
 @njit(cache=True, fastmath=True, error_model="numpy", inline="never")
 def _rates(S, nb, dt):
     """The kinematics lanes (module docstring)."""
@@ -63,18 +69,8 @@ def _rates(S, nb, dt):
     for k in range(nb):
         # transforms of x and v per component: entries 1, 2, 4 are 4 J[i, :] (dN0_a = xi_a / 4);
         # 3, 6, 5, 7 the hourglass projections
-        tx = walsh8(S[_X * B + k], S[(_X + 1) * B + k], S[(_X + 2) * B + k], S[(_X + 3) * B + k],
-                    S[(_X + 4) * B + k], S[(_X + 5) * B + k], S[(_X + 6) * B + k], S[(_X + 7) * B + k])
-        ty = walsh8(S[_Y * B + k], S[(_Y + 1) * B + k], S[(_Y + 2) * B + k], S[(_Y + 3) * B + k],
-                    S[(_Y + 4) * B + k], S[(_Y + 5) * B + k], S[(_Y + 6) * B + k], S[(_Y + 7) * B + k])
-        tz = walsh8(S[_Z * B + k], S[(_Z + 1) * B + k], S[(_Z + 2) * B + k], S[(_Z + 3) * B + k],
-                    S[(_Z + 4) * B + k], S[(_Z + 5) * B + k], S[(_Z + 6) * B + k], S[(_Z + 7) * B + k])
-        ux = walsh8(S[_U * B + k], S[(_U + 1) * B + k], S[(_U + 2) * B + k], S[(_U + 3) * B + k],
-                    S[(_U + 4) * B + k], S[(_U + 5) * B + k], S[(_U + 6) * B + k], S[(_U + 7) * B + k])
-        uy = walsh8(S[_V * B + k], S[(_V + 1) * B + k], S[(_V + 2) * B + k], S[(_V + 3) * B + k],
-                    S[(_V + 4) * B + k], S[(_V + 5) * B + k], S[(_V + 6) * B + k], S[(_V + 7) * B + k])
-        uz = walsh8(S[_W * B + k], S[(_W + 1) * B + k], S[(_W + 2) * B + k], S[(_W + 3) * B + k],
-                    S[(_W + 4) * B + k], S[(_W + 5) * B + k], S[(_W + 6) * B + k], S[(_W + 7) * B + k])
+        tx, ty, tz = _walsh8_rows(S, _X, B, k), _walsh8_rows(S, _Y, B, k), _walsh8_rows(S, _Z, B, k)
+        ux, uy, uz = _walsh8_rows(S, _U, B, k), _walsh8_rows(S, _V, B, k), _walsh8_rows(S, _W, B, k)
         j00, j01, j02 = 0.25 * tx[1], 0.25 * tx[2], 0.25 * tx[4]
         j10, j11, j12 = 0.25 * ty[1], 0.25 * ty[2], 0.25 * ty[4]
         j20, j21, j22 = 0.25 * tz[1], 0.25 * tz[2], 0.25 * tz[4]
@@ -276,13 +272,7 @@ def _hex_kernel(elastic_only: bool):
         """
         B = LANES
         S = np.zeros(ROWS * B)
-        dt_stable = 1e300
-        critical_cell = -1
-        damping_power = 0.0
-        viscosity_power = 0.0
-        plastic_work = 0.0
-        hourglass_power = 0.0
-        bad_cell = -1
+        totals = NO_TOTALS
         n = cells.shape[0]
         for start in range(0, n, B):
             count = min(B, n - start)
@@ -301,14 +291,7 @@ def _hex_kernel(elastic_only: bool):
                     S[(_S + i) * B + k] = sigma[c, 0, i]
                 for i in range(12):
                     S[(_O + i) * B + k] = hourglass[c, i]
-                S[_LAM * B + k] = params[m, P_LAMBDA]
-                S[_MU * B + k] = params[m, P_MU]
-                S[_BETA * B + k] = params[m, P_BETA]
-                S[_RHO * B + k] = params[m, P_RHO]
-                S[_C * B + k] = params[m, P_WAVE_SPEED]
-                S[_Q1 * B + k] = params[m, P_Q_QUADRATIC]
-                S[_Q2 * B + k] = params[m, P_Q_LINEAR]
-                S[_SIGN * B + k] = cell_sign[c]
+                gather_constants(S, _LAM, B, k, params, m, cell_sign[c])
             _rates(S, count, dt)
             if elastic_only:
                 _elastic(S, count, dt)
@@ -337,22 +320,8 @@ def _hex_kernel(elastic_only: bool):
                     sigma[c, 0, i] = S[(_SN + i) * B + k]
                 for i in range(12):
                     hourglass[c, i] = S[(_Q + i) * B + k]
-                if S[_VOL * B + k] <= 0.0:
-                    bad_cell = c
-                cell_hourglass = S[_HG * B + k]
-                cell_plastic = S[_PLASTIC * B + k]
-                plastic_work += cell_plastic
-                body_energy[m, 2] += cell_plastic
-                body_energy[m, 0] += S[_WORK * B + k]
-                body_energy[m, 1] += dt * cell_hourglass
-                hourglass_power += cell_hourglass
-                damping_power += S[_DAMP * B + k]
-                viscosity_power += S[_VISC * B + k]
-                dtc = S[_DT * B + k]
-                if dtc < dt_stable:
-                    dt_stable = dtc
-                    critical_cell = c
-        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+                totals = add_cell_totals(totals, S, _VOL, B, k, c, m, dt, body_energy)
+        return totals
 
     return hex_one_point
 

@@ -36,11 +36,10 @@ import math
 import numpy as np
 from numba import njit
 
-from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import inverse_2x2, step_length, unwalsh4, walsh4
+from .one_point import NO_TOTALS, add_cell_totals, gather_constants, inverse_2x2, step_length, unwalsh4, walsh4
 
 # Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
 # arrays leave the first-level cache and the pass runs at half the scalar code's speed.
@@ -49,7 +48,7 @@ LANES = 32
 # Rows of W, gathered: node positions x, y and velocities u, w (four nodes each), the stress at t_n
 # (11, 22, 33, 12), the hourglass resultant of the last step, the row's constants, the orientation.
 _X, _Y, _U, _W, _S, _O = 0, 4, 8, 12, 16, 20
-_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = 22, 23, 24, 25, 26, 27, 28, 29
+_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(22, 30)   # ``one_point.gather_constants``'s order
 W_ROWS = 30
 # Rows of K: Jacobian J and velocity Jacobian Jv at the centre (row-major), hourglass projections h.x
 # and rates h.v, the centre's radius, the strain rate (11, 22, 33, 12) and spin W12 on the mid-step
@@ -57,9 +56,9 @@ W_ROWS = 30
 # density.  (The update may change the hoop rate: a slotted ring's metal takes what its slots leave.)
 _J, _JV, _HX, _HV, _R, _D, _SPIN, _SN, _WP = (W_ROWS + r for r in (0, 4, 8, 10, 12, 13, 17, 18, 22))
 K_ROWS = 23
-# Rows of V: nodal forces (x of the four nodes, then y), the hourglass resultant, the signed volume
+# Response rows: nodal forces (x of the four nodes, then y), the hourglass resultant, the signed volume
 # factor (<= 0: inverted), the stresses' work over the step, the hourglass, damping and bulk viscosity
-# powers, the cell's stable step and its plastic work.
+# powers, the cell's stable step and its plastic work (``one_point.add_cell_totals``'s order from _DET).
 _FX, _FY, _Q, _DET, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = (W_ROWS + K_ROWS + r
                                                                 for r in (0, 4, 8, 10, 11, 12, 13, 14, 15, 16))
 V_ROWS = 17
@@ -202,10 +201,8 @@ def _response_lanes(axisymmetric: bool):
     return _lane_function(response, "response", axisymmetric)
 
 
-_RATES = {flag: _rates_lanes(flag) for flag in (True, False)}
-_RESPONSE = {flag: _response_lanes(flag) for flag in (True, False)}
-_RATES_AXISYMMETRIC, _RATES_PLANE = _RATES[True], _RATES[False]
-_RESPONSE_AXISYMMETRIC, _RESPONSE_PLANE = _RESPONSE[True], _RESPONSE[False]
+_RATES_AXISYMMETRIC, _RATES_PLANE = _rates_lanes(True), _rates_lanes(False)
+_RESPONSE_AXISYMMETRIC, _RESPONSE_PLANE = _response_lanes(True), _response_lanes(False)
 
 
 def _quad_kernel(elastic_only: bool):
@@ -229,13 +226,7 @@ def _quad_kernel(elastic_only: bool):
         """
         B = LANES
         S = np.zeros(ROWS * B)
-        dt_stable = 1e300
-        critical_cell = -1
-        damping_power = 0.0
-        viscosity_power = 0.0
-        plastic_work = 0.0
-        hourglass_power = 0.0
-        bad_cell = -1
+        totals = NO_TOTALS
         n = cells.shape[0]
         for start in range(0, n, B):
             count = min(B, n - start)
@@ -254,14 +245,7 @@ def _quad_kernel(elastic_only: bool):
                 S[(_S + 3) * B + k] = sigma[c, 0, 5]
                 S[_O * B + k] = hourglass[c, 0]
                 S[(_O + 1) * B + k] = hourglass[c, 1]
-                S[_LAM * B + k] = params[m, P_LAMBDA]
-                S[_MU * B + k] = params[m, P_MU]
-                S[_BETA * B + k] = params[m, P_BETA]
-                S[_RHO * B + k] = params[m, P_RHO]
-                S[_C * B + k] = params[m, P_WAVE_SPEED]
-                S[_Q1 * B + k] = params[m, P_Q_QUADRATIC]
-                S[_Q2 * B + k] = params[m, P_Q_LINEAR]
-                S[_SIGN * B + k] = cell_sign[c]
+                gather_constants(S, _LAM, B, k, params, m, cell_sign[c])
             if axisymmetric:
                 _RATES_AXISYMMETRIC(S, count, dt)
             else:
@@ -299,22 +283,8 @@ def _quad_kernel(elastic_only: bool):
                 sigma[c, 0, 5] = S[(_SN + 3) * B + k]
                 hourglass[c, 0] = S[_Q * B + k]
                 hourglass[c, 1] = S[(_Q + 1) * B + k]
-                if S[_DET * B + k] <= 0.0:
-                    bad_cell = c
-                cell_hourglass = S[_HG * B + k]
-                cell_plastic = S[_PLASTIC * B + k]
-                plastic_work += cell_plastic
-                body_energy[m, 2] += cell_plastic
-                body_energy[m, 0] += S[_WORK * B + k]
-                body_energy[m, 1] += dt * cell_hourglass
-                hourglass_power += cell_hourglass
-                damping_power += S[_DAMP * B + k]
-                viscosity_power += S[_VISC * B + k]
-                dtc = S[_DT * B + k]
-                if dtc < dt_stable:
-                    dt_stable = dtc
-                    critical_cell = c
-        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell
+                totals = add_cell_totals(totals, S, _DET, B, k, c, m, dt, body_energy)
+        return totals
 
     return quad_one_point
 

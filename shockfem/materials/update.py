@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .elastic import elastic_step, hooke_inlined
+from .elastic import elastic_step, elastic_step_inlined
 from .laws import law_update
 from .layout import ELASTIC, J2, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH
 from .objective import cayley_matrix, rotate_back_stress, rotate_symmetric
@@ -56,13 +56,10 @@ def update_stress(params, curves, m, state, c, p, s, d, w, dt, r, elastic_only):
 
 @njit(cache=True, fastmath=True, inline="always")
 def elastic_update_stress(s, d, w, dt, lam, mu):
-    """``update_stress`` of an elastic row without slots, from its Lame constants: rotate, then
-    ``elastic.elastic_step`` (written out here with the inlined Hooke's law: the elements' lanes call
-    this, and vectorise only with every line inlined)."""
-    s = rotate_symmetric(s, cayley_matrix(w[0], w[1], w[2], dt))
-    c = hooke_inlined(d, lam, mu)
-    return (s[0] + dt * c[0], s[1] + dt * c[1], s[2] + dt * c[2], s[3] + dt * c[3], s[4] + dt * c[4],
-            s[5] + dt * c[5])
+    """``update_stress`` of an elastic row without slots, from its Lame constants: rotate, then Hooke
+    (the inlined ``elastic.elastic_step``: the elements' lanes call this, and vectorise only with every
+    line inlined)."""
+    return elastic_step_inlined(rotate_symmetric(s, cayley_matrix(w[0], w[1], w[2], dt)), d, lam, mu, dt)
 
 
 def is_elastic_only(params: np.ndarray) -> bool:

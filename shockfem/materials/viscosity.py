@@ -14,7 +14,7 @@ import math
 
 from numba import njit
 
-from .elastic import hooke_inlined
+from .elastic import hooke
 from .layout import P_BETA, P_LAMBDA, P_MU
 
 
@@ -67,7 +67,7 @@ def viscous_stress_of(s, d, q, lam, mu, beta):
     s0, s1, s2, s3, s4, s5 = s
     damping = 0.0
     if beta > 0.0:
-        v0, v1, v2, v3, v4, v5 = hooke_inlined(d, lam, mu)
+        v0, v1, v2, v3, v4, v5 = hooke(d, lam, mu)
         v0, v1, v2, v3, v4, v5 = beta * v0, beta * v1, beta * v2, beta * v3, beta * v4, beta * v5
         damping = v0 * d[0] + v1 * d[1] + v2 * d[2] + 2.0 * (v3 * d[3] + v4 * d[4] + v5 * d[5])
         s0, s1, s2, s3, s4, s5 = s0 + v0, s1 + v1, s2 + v2, s3 + v3, s4 + v4, s5 + v5
