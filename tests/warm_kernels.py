@@ -39,9 +39,23 @@ def _scene(name: str) -> dict:
     return read_toml(os.path.join(REPO, "studies", name))
 
 
+def _warm_halo_kernels():
+    """The kernels only a contact pair under MPI calls (``contact/halo.py``), with the types it calls them
+    with, so that two ranks do not compile them at once."""
+    import numpy as np
+    from shockfem.contact import kernels
+    x, nodes = np.zeros((2, 3)), np.arange(2, dtype=np.int64)
+    rows = np.zeros((2, 6))
+    kernels.pack_rows(x, x, nodes, rows)
+    kernels.unpack_rows(rows, nodes, x, x)
+    kernels.records_by_rank(np.zeros((1, kernels.record_width(4))), np.zeros(2, dtype=np.int64), 4, 0, 2)
+
+
 def main(group: str) -> int:
     from shockfem.runner import run_scene
     from shockfem.scene import resolve
+    if group == "3d":
+        _warm_halo_kernels()
     with tempfile.TemporaryDirectory() as out:
         os.environ.setdefault("SHOCKFEM_MESH_CACHE", os.path.join(out, "meshes"))
         for k, name in enumerate(GROUPS[group]):

@@ -202,19 +202,6 @@ def _forget(ft, i):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _add_rows(stiff, s, master, w, k, has_friction):
-    """Add a spring's absolute stiffness row sums to ``stiff``: k (1 + sum w) at the slave s,
-    k w_q (1 + sum w) at the master nodes; doubled with friction (a tangential spring of the same k)."""
-    weight_sum = 0.0
-    for q in range(master.shape[0]):
-        weight_sum += w[q]
-    row = (2.0 if has_friction else 1.0) * (1.0 + weight_sum) * k
-    stiff[s] += row
-    for q in range(master.shape[0]):
-        stiff[master[q]] += row * w[q]
-
-
-@njit(cache=True, fastmath=True, inline="always")
 def _arriving(g, g_dot, dt):
     """A node still outside (g >= 0) that closes fast enough to cross the surface within two steps.
     Its spring counts in the stable step already: the solver takes each step at the limit of the
@@ -225,16 +212,25 @@ def _arriving(g, g_dot, dt):
     return g + 2.0 * dt * g_dot < 0.0
 
 
-@njit(cache=True, fastmath=True)
-def _respond(i, s, g, n, rel, m_eff, k, master, w, zeta, soft_scale, dt, friction, f, ff, ft, gap, offset,
-             stiff):
-    """Penalty and friction response of slave i (node s) found at gap g (|g| < depth checked by the
-    caller) along the unit normal n, with velocity ``rel`` relative to the contact point and
-    effective mass m_eff.  The reaction goes to the ``master`` nodes with weights ``w`` (none for a
-    rigid surface).  A node in front (g >= 0) takes no force; its spring counts in ``stiff`` if it
-    is arriving.  Returns 1 if the spring is active, else 0."""
-    gdim = f.shape[1]
-    nm = master.shape[0]
+@njit(cache=True, fastmath=True, inline="always")
+def _row(w, nm, k, has_friction):
+    """A spring's absolute stiffness row sum at the slave, k (1 + sum w); at master node q it is that
+    times w_q.  Doubled with friction (a tangential spring of the same k)."""
+    weight_sum = 0.0
+    for q in range(nm):
+        weight_sum += w[q]
+    return (2.0 if has_friction else 1.0) * (1.0 + weight_sum) * k
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _response(i, g, n, rel, m_eff, k, w, nm, zeta, soft_scale, dt, friction, ft, gap, offset):
+    """Penalty and friction response of slave i found at gap g (|g| < depth checked by the caller)
+    along the unit normal n, with velocity ``rel`` relative to the contact point and effective mass
+    m_eff, against ``nm`` master nodes of weights ``w`` (none for a rigid surface).  Updates the
+    slave's own state (gap, offset, friction history) and returns (active, row, fn, t0, t1, t2): 1 if
+    the spring is active; its stiffness row sum (``_row``; 0 if it does not count: a node in front
+    that is not arriving); the normal force (0 if none: a node in front takes none, and contact never
+    pulls); the friction force.  The caller adds them to the nodes (``_add_response``)."""
     gap[i] = g
     g = _beyond_initial(g, offset, i)
     g_dot = rel[0] * n[0] + rel[1] * n[1] + rel[2] * n[2]
@@ -242,29 +238,52 @@ def _respond(i, s, g, n, rel, m_eff, k, master, w, zeta, soft_scale, dt, frictio
     if g >= 0.0:
         _forget(ft, i)
         if _arriving(g, g_dot, dt):
-            _add_rows(stiff, s, master, w, _spring(k, -1.0, 0.0, m_eff, 0.0, soft_scale, dt)[1], has_friction)
-        return 0
+            return 0, _row(w, nm, _spring(k, -1.0, 0.0, m_eff, 0.0, soft_scale, dt)[1], has_friction), 0.0, \
+                0.0, 0.0, 0.0
+        return 0, 0.0, 0.0, 0.0, 0.0, 0.0
     fn, k = _spring(k, g, g_dot, m_eff, zeta, soft_scale, dt)
-    _add_rows(stiff, s, master, w, k, has_friction)
+    row = _row(w, nm, k, has_friction)
     if fn <= 0.0:
         _forget(ft, i)
-        return 1
-    for d in range(gdim):
-        f[s, d] += fn * n[d]
-        for q in range(nm):
-            f[master[q], d] -= w[q] * fn * n[d]
+        return 1, row, 0.0, 0.0, 0.0, 0.0
+    t0 = t1 = t2 = 0.0
     if has_friction:
-        t = _friction(ft, i, n, rel, fn, k, dt, friction)
-        for d in range(gdim):
-            ff[s, d] += t[d]
-            for q in range(nm):
-                ff[master[q], d] -= w[q] * t[d]
-    return 1
+        t0, t1, t2 = _friction(ft, i, n, rel, fn, k, dt, friction)
+    return 1, row, fn, t0, t1, t2
+
+
+# A facet spring's record (``facet_springs`` -> ``add_springs``), one row of doubles: the order key
+# (the pair's slave number: pass 0's slaves first), the slave node, the normal force fn >= 0, the
+# stiffness row sum, the unit normal (3), the friction force (3), then the facet's nodes and their
+# weights (nf each).  Under MPI a record travels to the ranks owning its facet's nodes (node
+# numbers are exact as doubles), and each rank adds the records it holds in key order: the order in
+# which one process adds them, so a node's force is the same sum on any number of ranks.
+R_KEY, R_SLAVE, R_FORCE, R_ROW, R_NORMAL, R_FRICTION, R_MASTER = 0, 1, 2, 3, 4, 7, 10
+
+
+def record_width(nf: int) -> int:
+    """Doubles in the record of a spring on a facet of ``nf`` nodes."""
+    return R_MASTER + 2 * nf
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _add_to_node(node, share, n, row, fn, t0, t1, t2, has_friction, f, ff, stiff):
+    """Add a spring's response (``_response``) to one of its nodes, ``share`` of it: 1 at the slave,
+    -w_q at master node q (the reaction, shared by the facet's shape functions)."""
+    if row > 0.0:
+        stiff[node] += row * abs(share)
+    if fn > 0.0:
+        for d in range(f.shape[1]):
+            f[node, d] += share * fn * n[d]
+        if has_friction:
+            t = (t0, t1, t2)
+            for d in range(f.shape[1]):
+                ff[node, d] += share * t[d]
 
 
 def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, mass, zeta, soft_scale, dt,
                    depth, friction, f, ff, ft, gap, offset, stiff):
-    """One pass of node-to-facet contact; normal forces are added to ``f``, friction to ``ff``.
+    """One pass of node-to-facet contact in one process; normal forces are added to ``f``, friction to ``ff``.
 
     slaves : (ns,) slave node numbers; facets : (nm, 2|3|4) master facets, outward order;
     facet_stiffness : (nm,) penalty stiffness [N/m]; cand_ptr, cand_seg : CSR candidate facets
@@ -272,17 +291,21 @@ def node_to_facets(slaves, facets, facet_stiffness, cand_ptr, cand_seg, x, v, ma
     decay]; ft : (ns, 3) tangential force history; gap : (ns,) out, the signed gap of each slave
     (0 if none); stiff : (nodes,) in/out, row sums of the active springs (see the module docstring).
 
-    Two compiled halves: ``closest_facets`` (the search's candidates narrowed to the facet that takes
-    each slave: the work, which MPI ranks divide by slave) and ``facet_responses`` (the springs, in
-    slave order: cheap, and run whole on every rank so that the forces are summed as in one process).
+    The pair runs the three halves apart: ``closest_facets`` (the search's candidates narrowed to the
+    facet that takes each slave: the work, which MPI ranks divide by slave), ``facet_springs`` (each
+    slave's spring, as a record) and ``add_springs`` (the records added to the nodes in slave order).
     Returns the number of active slaves.
     """
+    rows = np.arange(slaves.shape[0])
     best = np.empty(slaves.shape[0], dtype=np.int64)
     best_g = np.empty(slaves.shape[0])
-    closest_facets(slaves, np.arange(slaves.shape[0]), facets, candidate_facets(cand_seg), cand_ptr, cand_seg, x,
-                   depth, best, best_g)
-    return facet_responses(slaves, facets, facet_stiffness, best, best_g, x, v, mass, zeta, soft_scale, dt,
-                           friction, f, ff, ft, gap, offset, stiff)
+    closest_facets(slaves, rows, facets, candidate_facets(cand_seg), cand_ptr, cand_seg, x, depth, best, best_g)
+    records = np.empty((slaves.shape[0], record_width(facets.shape[1])))
+    active, count = facet_springs(slaves, rows, facets, facet_stiffness, best, best_g, x, v, mass, zeta, soft_scale,
+                                  dt, friction, ft, gap, offset, 0, records)
+    add_springs(records[:count], np.ones(x.shape[0], dtype=np.bool_), facets.shape[1],
+                friction[MU_S] > 0.0 or friction[MU_D] > 0.0, f, ff, stiff)
+    return active
 
 
 def candidate_facets(cand_seg):
@@ -355,23 +378,26 @@ def closest_facets(slaves, rows, facets, near, cand_ptr, cand_seg, x, depth, bes
         if best < 0 and not near_within and beyond >= 0:
             best, best_g = beyond, beyond_g
         if best < 0 and ahead >= 0:
-            best, best_g = ahead, ahead_g     # _respond counts its spring if it is arriving
+            best, best_g = ahead, ahead_g     # _response counts its spring if it is arriving
         best_out[i] = best
         best_g_out[i] = best_g
 
 
 @njit(cache=True, fastmath=True)
-def facet_responses(slaves, facets, facet_stiffness, best, best_g, x, v, mass, zeta, soft_scale, dt, friction,
-                    f, ff, ft, gap, offset, stiff):
-    """Every slave's spring on the facet ``closest_facets`` found for it (``best``, its gap ``best_g``), in
-    slave order; arguments and return as ``node_to_facets``."""
+def facet_springs(slaves, rows, facets, facet_stiffness, best, best_g, x, v, mass, zeta, soft_scale, dt, friction,
+                  ft, gap, offset, key0, records):
+    """The spring of each slave of ``rows`` on the facet ``closest_facets`` found for it (``best``, its gap
+    ``best_g``), written to ``records`` (one row a spring that acts or counts, key ``key0`` + slave index;
+    see ``R_KEY``); the slaves' own state (gap, offset, friction history) is updated here.  Returns the
+    number of active slaves and of records written."""
     gdim = x.shape[1]
     nf = facets.shape[1]
     bw = np.zeros(4)
     bn = np.zeros(3)
     rel = np.zeros(3)
     active = 0
-    for i in range(slaves.shape[0]):
+    count = 0
+    for i in rows:
         s = slaves[i]
         gap[i] = 0.0
         b = best[i]
@@ -390,13 +416,57 @@ def facet_responses(slaves, facets, facet_stiffness, best, best_g, x, v, mass, z
             rel[d] = v[s, d]
             for q in range(nf):
                 rel[d] -= bw[q] * v[facets[b, q], d]
-        active += _respond(i, s, best_g[i], bn, rel, m_eff, facet_stiffness[b], facets[b], bw, zeta,
-                           soft_scale, dt, friction, f, ff, ft, gap, offset, stiff)
-    return active
+        act, row, fn, t0, t1, t2 = _response(i, best_g[i], bn, rel, m_eff, facet_stiffness[b], bw, nf, zeta,
+                                             soft_scale, dt, friction, ft, gap, offset)
+        active += act
+        if row > 0.0:
+            r = records[count]
+            r[R_KEY] = key0 + i
+            r[R_SLAVE] = s
+            r[R_FORCE] = fn
+            r[R_ROW] = row
+            for d in range(3):
+                r[R_NORMAL + d] = bn[d]
+            r[R_FRICTION], r[R_FRICTION + 1], r[R_FRICTION + 2] = t0, t1, t2
+            for q in range(nf):
+                r[R_MASTER + q] = facets[b, q]
+                r[R_MASTER + nf + q] = bw[q]
+            count += 1
+    return active, count
 
 
 @njit(cache=True, fastmath=True)
-def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass, zeta,
+def add_springs(records, owned, nf, has_friction, f, ff, stiff):
+    """Add facet springs' records (``facet_springs``), in their order, to the nodes of ``owned``."""
+    master = np.zeros(nf, dtype=np.int64)
+    w = np.zeros(nf)
+    n = np.zeros(3)
+    for j in range(records.shape[0]):
+        r = records[j]
+        for q in range(nf):
+            master[q] = np.int64(r[R_MASTER + q])
+            w[q] = r[R_MASTER + nf + q]
+        for d in range(3):
+            n[d] = r[R_NORMAL + d]
+        row, fn, t0, t1, t2 = r[R_ROW], r[R_FORCE], r[R_FRICTION], r[R_FRICTION + 1], r[R_FRICTION + 2]
+        s = np.int64(r[R_SLAVE])
+        if owned[s]:
+            _add_to_node(s, 1.0, n, row, fn, t0, t1, t2, has_friction, f, ff, stiff)
+        for q in range(nf):
+            if owned[master[q]]:
+                _add_to_node(master[q], -w[q], n, row, fn, t0, t1, t2, has_friction, f, ff, stiff)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _rigid_response(i, s, g, n, rel, m, k, zeta, soft_scale, dt, friction, f, ff, ft, gap, offset, stiff):
+    """Slave i (node s) against a rigid surface: ``_response`` added to the slave alone; 1 if active."""
+    act, row, fn, t0, t1, t2 = _response(i, g, n, rel, m, k, n, 0, zeta, soft_scale, dt, friction, ft, gap, offset)
+    _add_to_node(s, 1.0, n, row, fn, t0, t1, t2, friction[MU_S] > 0.0 or friction[MU_D] > 0.0, f, ff, stiff)
+    return act
+
+
+@njit(cache=True, fastmath=True)
+def node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass, zeta,
                   soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff):
     """Slave nodes against a rigid surface moving at ``velocity``: a plane (kind PLANE) through
     ``point`` with unit normal ``direction`` toward the allowed side, or a cylinder (kind CYLINDER)
@@ -405,14 +475,15 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
     tunnel (kind TUNNEL): that cylinder from ``point`` on along ``direction`` only, nodes inside, each
     node's wall where it entered (a node entering outside the radius, as the tail of a yawed body
     does, is held from going further out, not pushed in: the hole is as wide as it found it).
-    Returns the number of active slaves (``stiff`` as in ``node_to_facets``)."""
+    ``rows``: the slaves to take (all of them in one process, a rank's own under MPI: a rigid surface has
+    no nodes, so each slave's force is its rank's alone).  Returns the number of active slaves (``stiff``
+    as in ``node_to_facets``)."""
     gdim = x.shape[1]
     n = np.zeros(3)
     rel = np.zeros(3)
-    no_master = np.zeros(0, dtype=slaves.dtype)     # a rigid surface takes no reaction
     free = np.zeros(slaves.shape[0])                # a tunnel's nodes: no initial penetration to release
     active = 0
-    for i in range(slaves.shape[0]):
+    for i in rows:
         s = slaves[i]
         g = 0.0
         if kind == PLANE:
@@ -450,8 +521,8 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
                     continue
                 for d in range(gdim):
                     rel[d] = v[s, d] - velocity[d]
-                active += _respond(i, s, g, n, rel, mass[s], node_stiffness[i], no_master, n, zeta, soft_scale,
-                                   dt, friction, f, ff, ft, gap, free, stiff)
+                active += _rigid_response(i, s, g, n, rel, mass[s], node_stiffness[i], zeta, soft_scale, dt, friction,
+                                          f, ff, ft, gap, free, stiff)
                 continue
         gap[i] = 0.0
         if g >= depth or g <= -depth:
@@ -460,8 +531,8 @@ def node_to_rigid(slaves, node_stiffness, kind, point, direction, radius, inside
             continue
         for d in range(gdim):
             rel[d] = v[s, d] - velocity[d]
-        active += _respond(i, s, g, n, rel, mass[s], node_stiffness[i], no_master, n, zeta, soft_scale, dt,
-                           friction, f, ff, ft, gap, offset, stiff)
+        active += _rigid_response(i, s, g, n, rel, mass[s], node_stiffness[i], zeta, soft_scale, dt, friction, f,
+                                  ff, ft, gap, offset, stiff)
     return active
 
 
@@ -487,62 +558,65 @@ def add_local(compact, slot, local, out):
 
 
 @njit(cache=True)
-def boxes_gap(x, nodes_a, nodes_b):
-    """The gap between the bounding boxes of two node sets of ``x``: the largest of the per-axis gaps
-    (<= 0 where the boxes overlap)."""
-    gap = -np.inf
-    for c in range(x.shape[1]):
-        lo_a = hi_a = x[nodes_a[0], c]
-        for s in nodes_a:
-            lo_a = min(lo_a, x[s, c])
-            hi_a = max(hi_a, x[s, c])
-        lo_b = hi_b = x[nodes_b[0], c]
-        for s in nodes_b:
-            lo_b = min(lo_b, x[s, c])
-            hi_b = max(hi_b, x[s, c])
-        gap = max(gap, lo_a - hi_b, lo_b - hi_a)
-    return gap
+def extent(x, nodes):
+    """The bounding box (lo, hi) of the nodes ``nodes`` of ``x`` (lo = +inf, hi = -inf if none)."""
+    lo = np.full(x.shape[1], np.inf)
+    hi = np.full(x.shape[1], -np.inf)
+    for s in nodes:
+        for c in range(x.shape[1]):
+            lo[c] = min(lo[c], x[s, c])
+            hi[c] = max(hi[c], x[s, c])
+    return lo, hi
 
 
 @njit(cache=True)
-def travel(x, x_before):
-    """The largest coordinate change of any node between ``x_before`` and ``x``."""
+def travel(x, x_before, nodes):
+    """The largest coordinate change of the nodes ``nodes`` between ``x_before`` and ``x``."""
     most = 0.0
-    for i in range(x.shape[0]):
+    for i in nodes:
         for c in range(x.shape[1]):
             most = max(most, abs(x[i, c] - x_before[i, c]))
     return most
 
 
 @njit(cache=True)
-def totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a):
-    """After the passes: the normal and friction forces on surface a, the work of each over the step
-    (trapezoidal with the last step's forces, at v_{n+1/2}), omega^2 of the active springs
-    (max stiff / m, 0 if none), and ``sizes``: the magnitudes of the two forces on a, and on a the largest
-    node pressure |f_i| / A_i, the summed |f_i| and the loaded area.  Keeps this step's forces as the
-    next one's old ones."""
+def clear(nodes, f, ff, stiff):
+    """Zero the forces and stiffness row sums of the nodes ``nodes``."""
+    for i in nodes:
+        stiff[i] = 0.0
+        for c in range(f.shape[1]):
+            f[i, c] = 0.0
+            ff[i, c] = 0.0
+
+
+@njit(cache=True)
+def totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a, nodes, active, deepest):
+    """After the passes, over the nodes ``nodes`` (a rank's own; the pair sums the ranks'): the normal
+    and friction forces on surface a (its nodes among them: ``nodes_a``, their areas ``area_a``), the work
+    of each over the step (trapezoidal with the last step's forces, at v_{n+1/2}), omega^2 of the active
+    springs (max stiff / m, 0 if none), and on a the largest node pressure |f_i| / A_i, the summed |f_i|
+    and the loaded area.  Keeps this step's forces as the next one's old ones.  Returns what the pair
+    reduces over the ranks: ``sums`` = [force on a (gdim), friction on a (gdim), work, friction work,
+    summed |f_i|, loaded area, ``active``] and ``peaks`` = [omega^2, largest pressure, ``deepest``]."""
     gdim = f.shape[1]
-    force_a = np.zeros(gdim)
-    friction_a = np.zeros(gdim)
+    sums = np.zeros(2 * gdim + 5)
     max_pressure = 0.0
-    load = 0.0
-    loaded_area = 0.0
     for j in range(len(nodes_a)):
         i = nodes_a[j]
         size2 = 0.0
         for c in range(gdim):
-            force_a[c] += f[i, c]
-            friction_a[c] += ff[i, c]
+            sums[c] += f[i, c]
+            sums[gdim + c] += ff[i, c]
             size2 += f[i, c] * f[i, c]
         if size2 > 0.0:
             size = np.sqrt(size2)
             max_pressure = max(max_pressure, size / area_a[j])
-            load += size
-            loaded_area += area_a[j]
+            sums[2 * gdim + 2] += size
+            sums[2 * gdim + 3] += area_a[j]
     work = 0.0
     friction_work = 0.0
     omega2 = 0.0
-    for i in range(f.shape[0]):
+    for i in nodes:
         for c in range(gdim):
             work += (f_old[i, c] + f[i, c]) * v[i, c]
             friction_work += (ff_old[i, c] + ff[i, c]) * v[i, c]
@@ -550,6 +624,85 @@ def totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a):
             ff_old[i, c] = ff[i, c]
         if stiff[i] > 0.0:
             omega2 = max(omega2, stiff[i] / mass[i])
-    sizes = np.array([np.sqrt(np.sum(force_a * force_a)), np.sqrt(np.sum(friction_a * friction_a)), max_pressure,
-                      load, loaded_area])
-    return force_a, friction_a, work, friction_work, omega2, sizes
+    sums[2 * gdim] = work
+    sums[2 * gdim + 1] = friction_work
+    sums[2 * gdim + 4] = active
+    return sums, np.array([omega2, max_pressure, deepest])
+
+
+@njit(cache=True)
+def survey(x, own_a, own_b, x_search, own_nodes, searched, least):
+    """What ``ContactPair._survey`` reduces over the ranks, into ``least`` (its minima, so that one
+    reduction does): the bounding boxes' lower corners of this rank's slaves of each pass (``own_a``,
+    ``own_b``), their upper corners negated, and the largest travel of this rank's nodes since the last
+    search negated (-inf if there was none: ``searched`` False)."""
+    g = x.shape[1]
+    lo_a, hi_a = extent(x, own_a)
+    lo_b, hi_b = extent(x, own_b)
+    for c in range(g):
+        least[c] = lo_a[c]
+        least[g + c] = lo_b[c]
+        least[2 * g + c] = -hi_a[c]
+        least[3 * g + c] = -hi_b[c]
+    least[4 * g] = -travel(x, x_search, own_nodes) if searched else -np.inf
+
+
+@njit(cache=True)
+def pack_rows(x, v, nodes, out):
+    """out[i] = [x[nodes[i]], v[nodes[i]]]: the positions and velocities a rank sends."""
+    g = x.shape[1]
+    for i in range(len(nodes)):
+        for c in range(g):
+            out[i, c] = x[nodes[i], c]
+            out[i, g + c] = v[nodes[i], c]
+
+
+@njit(cache=True)
+def unpack_rows(rows, nodes, x, v):
+    """x[nodes[i]], v[nodes[i]] = rows[i] (``pack_rows``' other end)."""
+    g = x.shape[1]
+    for i in range(len(nodes)):
+        for c in range(g):
+            x[nodes[i], c] = rows[i, c]
+            v[nodes[i], c] = rows[i, g + c]
+
+
+@njit(cache=True)
+def records_by_rank(records, owner, nf, rank, size):
+    """The records (``R_KEY``) to send to each other rank, one after the other by rank: those with a facet
+    node the rank owns (a record may go to several).  Returns the rows and the count for each rank."""
+    counts = np.zeros(size, dtype=np.int64)
+    for j in range(records.shape[0]):
+        for r in range(size):
+            if r == rank:
+                continue
+            for q in range(nf):
+                if owner[np.int64(records[j, R_MASTER + q])] == r:
+                    counts[r] += 1
+                    break
+    out = np.empty((counts.sum(), records.shape[1]))
+    start = np.zeros(size, dtype=np.int64)
+    for r in range(1, size):
+        start[r] = start[r - 1] + counts[r - 1]
+    for j in range(records.shape[0]):
+        for r in range(size):
+            if r == rank:
+                continue
+            for q in range(nf):
+                if owner[np.int64(records[j, R_MASTER + q])] == r:
+                    out[start[r]] = records[j]
+                    start[r] += 1
+                    break
+    return out, counts
+
+
+@njit(cache=True)
+def verdict(least, margin):
+    """From ``survey``'s reduced minima: (the two slave sets' bounding boxes are further apart than
+    ``margin``, some node has travelled a quarter of it since the last search)."""
+    g = (least.shape[0] - 1) // 4
+    gap = -np.inf
+    for c in range(g):
+        # lo_a - hi_b and lo_b - hi_a (the upper corners are stored negated)
+        gap = max(gap, least[c] + least[3 * g + c], least[g + c] + least[2 * g + c])
+    return gap > margin, -least[4 * g] >= 0.25 * margin

@@ -2,8 +2,11 @@
 
 A pair is two surfaces (two-pass: the nodes of each against the facets of the other, so
 neither side is privileged) or one surface against a rigid analytic surface (plane or
-cylinder).  Every rank holds the pair's surfaces whole and works on compact copies of their
-nodes (``surfaces.NodeExchange``), so a pair computes the same forces on one process or many.
+cylinder).  The pair works on compact arrays of its surfaces' nodes (``surfaces.NodeExchange``).
+Every rank knows the surfaces' facets, but under MPI it holds positions only of the nodes it owns
+and of a halo of other ranks' nodes near its own slaves (``halo.SurfaceHalo``); it searches and
+responds for its own slaves, and adds to its own nodes every spring that acts on them in the pair's
+slave order, so a pair computes the same forces, to the bit, on one process or many.
 
 The search finds, for every slave node, the master facets within reach (a KD-tree on facet
 centres) and is refreshed only when some node of the pair has travelled a quarter of the
@@ -14,6 +17,8 @@ start are reported and not pushed out: each slave node's initial penetration is 
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from mpi4py import MPI
 from scipy.spatial import cKDTree
@@ -22,6 +27,7 @@ from ..errors import ModelError
 from ..model import Model
 from ..scene.specs import Contact
 from . import kernels
+from .halo import SurfaceHalo
 from .surfaces import NodeExchange, Surface, build_surface
 
 
@@ -64,21 +70,29 @@ def node_stiffness(surface: Surface, facets: np.ndarray, nodes: np.ndarray, scal
     return scale * K * A ** 2 / V
 
 
+def _reference_order(model: Model, global_nodes: np.ndarray) -> np.ndarray:
+    """Surface nodes (global numbers) in the order of their reference positions (x first; then the body,
+    for nodes of two bodies that start at one point), which no partition changes: the pair's slave order,
+    in which its forces are summed, is then the same on any number of ranks.  Collective."""
+    exchange = NodeExchange(model, global_nodes)
+    X = exchange.gather(model.X0)
+    body = exchange.gather(model.node_body[:, None].astype(float))[:, 0]
+    return global_nodes[np.lexsort((body,) + tuple(X.T[::-1]))]
+
+
 class _Pass:
     """Slave nodes of one surface against the facets of another (compact node numbers).
 
-    Under MPI every rank holds both surfaces whole (gathered each step) and the pair's whole state, and
-    takes its own slaves (``rows``: those whose node it owns) through the costly half of the pass, the
-    search of each slave's facet (``find``: ``kernels.closest_facets``); the ranks then share what each
-    found (``share_closest``: two numbers a slave) and every rank runs the springs of all slaves in slave
-    order (``respond``: ``kernels.facet_responses``), so that forces, friction histories and the step
-    limit are summed as in one process: the same bits on any number of ranks."""
+    Every rank holds the pass's slave arrays whole but works on its own slaves (``rows``: those whose
+    node it owns): the search of each one's facet (``find``: ``kernels.closest_facets``) and its spring
+    (``respond``: ``kernels.facet_springs``, a record each; the pair adds them to the nodes)."""
 
-    def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray, rows: np.ndarray, comm):
+    def __init__(self, slaves: np.ndarray, facets: np.ndarray, stiffness: np.ndarray, rows: np.ndarray, key0: int):
         self.slaves = slaves
         self.facets = facets
         self.stiffness = stiffness
         self.rows = rows
+        self.key0 = key0                              # this pass's slaves' place in the pair's slave order
         self.gap = np.zeros(len(slaves))
         self.offset = np.zeros(len(slaves))
         self.ft = np.zeros((len(slaves), 3))          # tangential (friction) force history
@@ -87,61 +101,48 @@ class _Pass:
         self.near = np.zeros(0, dtype=np.int64)       # the facets the candidate lists hold
         self.best = np.full(len(slaves), -1, dtype=np.int64)    # each slave's facet (-1: none), its gap
         self.best_g = np.zeros(len(slaves))
-        self.comm = comm if comm.size > 1 else None
-        if self.comm is not None:
-            self.counts = np.array(comm.allgather(len(rows)))
-            self.order = np.concatenate(comm.allgather(rows))      # rank by rank
-            self.offsets = np.concatenate([[0], np.cumsum(self.counts)])
+        self.own = slaves[rows]                       # this rank's slave nodes
+        self.records = np.zeros((len(rows), kernels.record_width(facets.shape[1])))
+        self.count = 0                                # records written this step
 
-    def search(self, x: np.ndarray, reach: float):
-        centre = x[self.facets].mean(axis=1)
-        hits = cKDTree(centre).query_ball_point(x[self.slaves[self.rows]], reach)
+    def search(self, x: np.ndarray, reach: float, known: np.ndarray | None = None):
+        """Each of this rank's slaves' candidate facets: those whose centre is within ``reach`` of it, among
+        the facets whose nodes this rank knows (``known``; all in one process), in facet order."""
+        usable = np.arange(len(self.facets)) if known is None else np.flatnonzero(known[self.facets].all(axis=1))
         counts = np.zeros(len(self.slaves), dtype=np.int64)
-        counts[self.rows] = [len(h) for h in hits]
+        hits = []
+        if len(self.rows) and len(usable):
+            centre = x[self.facets[usable]].mean(axis=1)
+            hits = cKDTree(centre).query_ball_point(x[self.slaves[self.rows]], reach)
+            counts[self.rows] = [len(h) for h in hits]
         self.cand_ptr = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
-        # ``rows`` is sorted, so its lists follow one another as the pointers say
-        self.cand_seg = np.array([j for h in hits for j in h], dtype=np.int64)
+        # ``rows`` is sorted, so its lists follow one another as the pointers say; each list is sorted,
+        # and ``usable`` is, so the candidates come in facet order on any number of ranks
+        self.cand_seg = usable[np.array([j for h in hits for j in h], dtype=np.int64)]
         self.near = kernels.candidate_facets(self.cand_seg)
 
     def find(self, x: np.ndarray, depth: float):
-        """Each of this rank's slaves' facet and gap (``best``, ``best_g``; the other ranks' slaves come
-        from ``share_closest``)."""
+        """Each of this rank's slaves' facet and gap (``best``, ``best_g``)."""
         kernels.closest_facets(self.slaves, self.rows, self.facets, self.near, self.cand_ptr, self.cand_seg, x,
                                depth, self.best, self.best_g)
 
     def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
-        """The springs of every slave on the facet found for it; the number active."""
-        return kernels.facet_responses(self.slaves, self.facets, self.stiffness, self.best, self.best_g, x, v, mass,
-                                       zeta, soft_scale, dt, friction, f, ff, self.ft, self.gap, self.offset, stiff)
-
-
-def share_closest(passes: list, comm):
-    """Every rank's slaves' facets and gaps (``_Pass.find``) to every rank, the passes' together in one
-    exchange (a facet number is exact as a double): each rank finds its own slaves of every pass before
-    any waits, so that a partition that gives one rank surface a and the other surface b keeps both
-    busy.  Collective."""
-    mine = np.concatenate([np.column_stack([p.best[p.rows], p.best_g[p.rows]]) for p in passes])
-    counts = sum(p.counts for p in passes)
-    every = np.empty((sum(len(p.slaves) for p in passes), 2))
-    comm.Allgatherv(mine, [every, counts * 2, None, MPI.DOUBLE])
-    # rank by rank, each pass's rows in turn
-    start = 0
-    for r in range(comm.size):
-        for p in passes:
-            n = p.counts[r]
-            rows = p.order[p.offsets[r]:p.offsets[r] + n]
-            p.best[rows] = every[start:start + n, 0].astype(np.int64)
-            p.best_g[rows] = every[start:start + n, 1]
-            start += n
+        """The springs of this rank's slaves on the facets found for them, as records (``records[:count]``);
+        the number active.  (``f``, ``ff``, ``stiff`` are the pair's: it adds the records to them.)"""
+        active, self.count = kernels.facet_springs(self.slaves, self.rows, self.facets, self.stiffness, self.best,
+                                                   self.best_g, x, v, mass, zeta, soft_scale, dt, friction, self.ft,
+                                                   self.gap, self.offset, self.key0, self.records)
+        return active
 
 
 class _RigidPass:
-    """Nodes of a surface against a rigid plane or cylinder."""
+    """Nodes of a surface against a rigid plane or cylinder (each rank its own: ``rows``)."""
 
-    def __init__(self, model: Model, spec: Contact, slaves: np.ndarray, stiffness: np.ndarray):
+    def __init__(self, model: Model, spec: Contact, slaves: np.ndarray, stiffness: np.ndarray, rows: np.ndarray):
         r = spec.rigid
         gdim = model.gdim
         self.slaves = slaves
+        self.rows = rows
         self.stiffness = stiffness
         self.kind = {"plane": kernels.PLANE, "cylinder": kernels.CYLINDER, "tunnel": kernels.TUNNEL}[r.kind]
         self.point = np.array(r.point, dtype=float)
@@ -156,7 +157,8 @@ class _RigidPass:
         assert len(self.point) == gdim
 
     def gaps(self, x: np.ndarray) -> np.ndarray:
-        p = x[self.slaves] - (self.point + self.t * self.velocity)
+        """The gaps of this rank's slaves."""
+        p = x[self.slaves[self.rows]] - (self.point + self.t * self.velocity)
         if self.kind == kernels.PLANE:
             return p @ self.direction
         along = p @ self.direction
@@ -165,10 +167,11 @@ class _RigidPass:
         return np.where(along >= 0.0, gap, np.inf) if self.kind == kernels.TUNNEL else gap
 
     def find(self, x: np.ndarray, depth: float):
-        """Nothing to search: the surface is analytic (``respond`` does it all, on every rank)."""
+        """Nothing to search: the surface is analytic (``respond`` does it all)."""
 
     def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
-        return kernels.node_to_rigid(self.slaves, self.stiffness, self.kind, self.point + self.t * self.velocity,
+        """This rank's slaves' springs, added to ``f``, ``ff``, ``stiff``; the number active."""
+        return kernels.node_to_rigid(self.slaves, self.rows, self.stiffness, self.kind, self.point + self.t * self.velocity,
                                      self.direction, self.radius, self.inside, self.velocity, x, v, mass, zeta,
                                      soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset, stiff)
 
@@ -186,48 +189,58 @@ class ContactPair:
             if not len(s.facets):
                 raise ModelError(f"contact '{spec.name}': surface '{s.name}' has no boundary facets; check the "
                                  f"region (a facet belongs to one region only)")
-        self.global_nodes = np.unique(np.concatenate([s.facets.ravel() for s in surfaces]))
+        self.global_nodes = _reference_order(model, np.unique(np.concatenate([s.facets.ravel() for s in surfaces])))
         self.exchange = NodeExchange(model, self.global_nodes)
-        compact = [np.searchsorted(self.global_nodes, s.facets) for s in surfaces]
+        by_number = np.argsort(self.global_nodes)
+        compact = [by_number[np.searchsorted(self.global_nodes, s.facets, sorter=by_number)] for s in surfaces]
         self.nodes_a = np.unique(compact[0])
         self.area_a = node_areas(self.a, compact[0], self.nodes_a)      # for contact pressures on a
         self.mass = self.exchange.gather(model.mass[:, None])[:, 0]
         seg_scale = 0.1 if spec.penalty == "soft" else spec.penalty_scale
         self.soft_scale = spec.penalty_scale if spec.penalty == "soft" else 0.0
         self.friction = np.array(spec.friction, dtype=float)
+        self.has_friction = bool(self.friction[0] > 0.0 or self.friction[1] > 0.0)
         sizes = np.concatenate([s.size for s in surfaces])
         self.parallel = model.comm.size > 1
+        # a rank works on the nodes it owns (all of them in one process) and, under MPI, on a halo of the
+        # other ranks' nodes that its slaves' facets hold (``halo.SurfaceHalo``)
+        self.owned = np.zeros(len(self.global_nodes), dtype=bool)
+        self.owned[self.exchange.slot] = True
+        self.own_nodes = np.flatnonzero(self.owned)
+        own_a = self.owned[self.nodes_a]
+        self.own_a, self.own_area_a = self.nodes_a[own_a], self.area_a[own_a]
+        self.halo = SurfaceHalo(model.comm, self.exchange.owners(), gdim) if self.parallel and spec.b else None
         if self.b is None:
             self.passes = [_RigidPass(model, spec, self.nodes_a,
-                                      node_stiffness(self.a, compact[0], self.nodes_a, seg_scale))]
+                                      node_stiffness(self.a, compact[0], self.nodes_a, seg_scale),
+                                      np.flatnonzero(own_a))]
             # a node is caught by a rigid surface up to a facet size behind it
             self.depth = float(sizes.max())
         else:
             rigid = [model.bodies[s.body].rigid for s in (self.a, self.b)]
-            # under MPI a rank searches for the slaves it owns (``_Pass``)
-            owned = np.zeros(len(self.global_nodes), dtype=bool)
-            owned[self.exchange.slot] = True
             slaves_b = np.unique(compact[1])
             self.passes = [_Pass(slaves, facets, master_stiffness(master, slave, seg_scale, rigid_master),
-                                 np.flatnonzero(owned[slaves]), model.comm)
-                           for slaves, facets, master, slave, rigid_master in
-                           ((self.nodes_a, compact[1], self.b, self.a, rigid[1]),
-                            (slaves_b, compact[0], self.a, self.b, rigid[0]))]
+                                 np.flatnonzero(self.owned[slaves]), key0)
+                           for slaves, facets, master, slave, rigid_master, key0 in
+                           ((self.nodes_a, compact[1], self.b, self.a, rigid[1], 0),
+                            (slaves_b, compact[0], self.a, self.b, rigid[0], len(self.nodes_a)))]
+            self.master_nodes = [slaves_b, self.nodes_a]      # the nodes of each pass's master facets
             # a node counts as penetrating only within `depth` of the surface (half the smallest facet
             # is a safe bound for a single step's travel); the search reaches a facet size beyond that
-            self.depth = 0.5 * float(sizes.min())
+        self.depth = 0.5 * float(sizes.min())
         self.margin = float(sizes.max())
         self.smallest_facet = float(sizes.min())
         self.reach = 0.5 * float(sizes.max()) + self.margin
         n = len(self.global_nodes)
         self.x = np.zeros((n, gdim))
         self.v = np.zeros((n, gdim))
-        self.x_search = None
+        self.x_search = np.zeros((n, gdim))        # the positions at the last search (``searches`` > 0)
+        self._least = np.zeros(4 * gdim + 1)        # what ``_survey`` reduces
         self.f = np.zeros((n, gdim))              # normal forces on the compact nodes [N]
         self.ff = np.zeros((n, gdim))             # friction forces [N]
         self.stiff = np.zeros(n)                  # row sums of the active springs' stiffness [N/m]
         # on a, this step: |force|, |friction|, largest node pressure, summed |f_i|, loaded area (``account``)
-        self._step_sizes = np.zeros(5)
+        self._step_sizes = (0.0, 0.0, 0.0, 0.0, 0.0)
         self._f_old = np.zeros((n, gdim))
         self._ff_old = np.zeros((n, gdim))
         self.work = 0.0                      # work done by the normal contact forces on the bodies [J]
@@ -249,42 +262,81 @@ class ContactPair:
         self.v_before = self.v_after = None  # body mean velocities around contact (for restitution)
 
     # --------------------------------------------------------------- search
-    def _boxes_apart(self) -> bool:
-        x = self.x
-        if self.b is None:
-            return bool(self.passes[0].gaps(x).min() > self.margin)
-        return kernels.boxes_gap(x, self.passes[0].slaves, self.passes[1].slaves) > self.margin
+    def _gather(self, x: np.ndarray, v: np.ndarray):
+        """This rank's own surface nodes' positions and velocities into the compact arrays."""
+        self.exchange.gather_own(x, self.x)
+        self.exchange.gather_own(v, self.v)
 
-    def _refresh(self):
+    def _survey(self) -> tuple[bool, bool]:
+        """(the two surfaces' bounding boxes are further apart than the margin, a search is due: some node
+        has travelled a quarter of the margin since the last one), the same on every rank (one reduction
+        of the ranks' boxes and travels: minima and maxima are exact).  Collective under MPI."""
         if self.b is None:
-            return
-        if self.x_search is not None and kernels.travel(self.x, self.x_search) < 0.25 * self.margin:
-            return
+            gaps = self.passes[0].gaps(self.x)
+            nearest = np.array([gaps.min() if len(gaps) else np.inf])
+            if self.parallel:
+                self.model.comm.Allreduce(MPI.IN_PLACE, nearest, op=MPI.MIN)
+            return bool(nearest[0] > self.margin), False
+        least = self._least
+        kernels.survey(self.x, self.passes[0].own, self.passes[1].own, self.x_search, self.own_nodes,
+                       self.searches > 0, least)
+        if self.parallel:
+            self.model.comm.Allreduce(MPI.IN_PLACE, least, op=MPI.MIN)
+        return kernels.verdict(least, self.margin)
+
+    def _search(self):
+        """Each pass's candidate facets for this rank's slaves; under MPI first the near nodes of the other
+        ranks, and after it the halo of the candidates' nodes (``halo.SurfaceHalo``).  Collective under MPI."""
+        known = None
+        if self.halo is not None:
+            # a facet whose centre is within reach of a slave has its nodes within a facet size more
+            widen = 1.01 * (self.reach + self.margin)
+            boxes = []
+            for p in self.passes:
+                lo, hi = kernels.extent(self.x, p.own)
+                boxes.append((lo - widen, hi + widen))
+            known = self.halo.find_near(self.x, boxes, self.master_nodes)
         for p in self.passes:
-            p.search(self.x, self.reach)
-        self.x_search = self.x.copy()
+            p.search(self.x, self.reach, known)
+        if self.halo is not None:
+            self.halo.ask_for(np.unique(np.concatenate([p.facets[p.near].ravel() for p in self.passes])))
+        self.x_search[:] = self.x
         self.searches += 1
 
     # --------------------------------------------------------------- forces
-    def _find(self):
-        """Every pass's search of its slaves' facets (under MPI each rank its own, then shared).
-        Collective under MPI."""
+    def _springs(self, search_due: bool, zeta: float, soft_scale: float, dt: float, friction: np.ndarray) -> int:
+        """Search if due, find each of this rank's slaves' facet, and respond; a facet pass's springs are
+        added to the nodes here (under MPI the records of all ranks that act on this rank's nodes, in the
+        pair's slave order).  Returns the number of active slaves of this rank.  Collective under MPI."""
+        if self.b is not None and search_due:
+            self._search()
+        if self.halo is not None:
+            self.halo.update(self.x, self.v)
+        active = 0
         for p in self.passes:
             p.find(self.x, self.depth)
-        if self.parallel and self.b is not None:      # a rigid surface's pass searches nothing
-            share_closest(self.passes, self.model.comm)
+            active += p.respond(self.x, self.v, self.mass, zeta, soft_scale, dt, self.depth, friction, self.f,
+                                self.ff, self.stiff)
+        if self.b is None:
+            return active
+        nf = self.passes[0].facets.shape[1]
+        if self.halo is None:             # in one process the passes' records are in slave order already
+            for p in self.passes:
+                kernels.add_springs(p.records[:p.count], self.owned, nf, self.has_friction, self.f, self.ff,
+                                    self.stiff)
+        else:
+            records = self.halo.spread(np.concatenate([p.records[:p.count] for p in self.passes]), nf)
+            kernels.add_springs(records, self.owned, nf, self.has_friction, self.f, self.ff, self.stiff)
+        return active
 
     def compute(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> float:
-        """Contact forces at the current positions (collective: gathers the surface nodes).
+        """Contact forces at the current positions on this rank's nodes (collective under MPI).
 
         ``v`` is v_{n+1/2} of the step of size ``dt`` just taken: the work of the contact forces
         over that step is counted here, trapezoidally, as the solver counts it.  Returns the
         step limit of the active penalty springs (inf if none)."""
-        self.exchange.gather(x, self.x)
-        self.exchange.gather(v, self.v)
-        self.f[:] = 0.0
-        self.ff[:] = 0.0
-        self.stiff[:] = 0.0
+        self._gather(x, v)
+        kernels.clear(self.own_nodes, self.f, self.ff, self.stiff)
         active = 0
         deepest = 0.0
         for p in self.passes:
@@ -292,20 +344,27 @@ class ContactPair:
                 p.t = t
         if self._offset0 is not None:
             self._push_out_overlaps(t)
-        if not self._boxes_apart():                 # the same answer on every rank: each holds all of x
-            self._refresh()
-            self._find()
+        apart, search_due = self._survey()          # the same answer on every rank
+        if not apart:
+            active = self._springs(search_due, self.spec.damping, self.soft_scale, dt, self.friction)
             for p in self.passes:
-                active += p.respond(self.x, self.v, self.mass, self.spec.damping, self.soft_scale, dt, self.depth,
-                                    self.friction, self.f, self.ff, self.stiff)
                 deepest = max(deepest, -p.gap.min())
         else:
             for p in self.passes:
                 p.ft[:] = 0.0
-        self.active = active
+        sums, peaks = kernels.totals(self.f, self.ff, self._f_old, self._ff_old, self.v, self.stiff, self.mass,
+                                     self.own_a, self.own_area_a, self.own_nodes, active, deepest)
+        if self.parallel:
+            self.model.comm.Allreduce(MPI.IN_PLACE, sums, op=MPI.SUM)
+            self.model.comm.Allreduce(MPI.IN_PLACE, peaks, op=MPI.MAX)
+        g = self.x.shape[1]
+        self.force_a, self.friction_a = sums[:g], sums[g:2 * g]
+        work, friction_work, load, loaded_area, active = sums[2 * g:].tolist()
+        omega2, max_pressure, deepest = peaks.tolist()
+        self._step_sizes = (math.sqrt(sum(c * c for c in self.force_a.tolist())),
+                            math.sqrt(sum(c * c for c in self.friction_a.tolist())), max_pressure, load, loaded_area)
+        self.active = int(active)
         self.max_penetration = max(self.max_penetration, deepest)
-        self.force_a, self.friction_a, work, friction_work, omega2, self._step_sizes = kernels.totals(
-            self.f, self.ff, self._f_old, self._ff_old, self.v, self.stiff, self.mass, self.nodes_a, self.area_a)
         if self._offset0 is not None and self.preload is None and t >= self.spec.interference_time:
             self.preload = self._pressure()
         self.work += 0.5 * dt * work
@@ -325,8 +384,11 @@ class ContactPair:
 
     def _pressure(self) -> dict:
         """The normal force on surface a, its nodes' normal forces summed by magnitude over a's area
-        (a mean contact pressure; in axisymmetry the area is the swept one, 2 pi r per unit length)."""
-        load = float(np.linalg.norm(self.f[self.nodes_a], axis=1).sum())
+        (a mean contact pressure; in axisymmetry the area is the swept one, 2 pi r per unit length).
+        Collective under MPI."""
+        load = float(np.linalg.norm(self.f[self.own_a], axis=1).sum())
+        if self.parallel:
+            load = self.model.comm.allreduce(load, op=MPI.SUM)
         area = float(self.a.area.sum())
         return {"time": self.spec.interference_time, "force_on_a": self.force_a.tolist(), "normal_load": load,
                 "area": area, "mean_pressure": load / area}
@@ -346,7 +408,7 @@ class ContactPair:
         """After a step ending at t: impulse, peak forces, open/closed intervals, restitution velocities.
         Collective when contact opens or closes (``body_velocities`` reduces over ranks)."""
         self.impulse += dt * (self.force_a + self.friction_a)
-        force, friction, pressure, load, loaded_area = self._step_sizes.tolist()
+        force, friction, pressure, load, loaded_area = self._step_sizes
         if self.active > 0:
             self.max_pressure = max(self.max_pressure, pressure)
             if force > self.max_force and loaded_area > 0:
@@ -370,28 +432,29 @@ class ContactPair:
             self.v_after = body_velocities()
 
     def start(self, x: np.ndarray, v: np.ndarray) -> tuple[int, float]:
-        """At t = 0: take every initial penetration as its node's zero; returns (nodes, deepest [m])."""
-        self.exchange.gather(x, self.x)
-        self.exchange.gather(v, self.v)
-        if self._boxes_apart():
+        """At t = 0: take every initial penetration as its node's zero; returns (nodes, deepest [m]).
+        Collective under MPI."""
+        self._gather(x, v)
+        apart, search_due = self._survey()
+        if apart:
             return self.initial_overlap
-        self._refresh()
-        no_friction = np.zeros(3)
-        self._find()
         for p in self.passes:
             p.offset[:] = -1e300          # accept any initial penetration as the zero
-            p.respond(self.x, self.v, self.mass, 0.0, 0.0, 0.0, self.depth, no_friction, self.f, self.ff, self.stiff)
-            p.offset[:] = np.minimum(p.gap, 0.0)
-        self.f[:] = 0.0
-        self.ff[:] = 0.0
-        self.stiff[:] = 0.0
+        self._springs(search_due, 0.0, 0.0, 0.0, np.zeros(3))
         tiny = -1e-6 * self.depth                 # round-off of coincident meshes is no overlap
-        offsets = [p.offset for p in self.passes]
-        for o in offsets:
-            o[o > tiny] = 0.0
-        nodes = sum(int((o < 0).sum()) for o in offsets)
-        deepest = max(float(-o.min()) for o in offsets) if nodes else 0.0
-        self.initial_overlap = (nodes, deepest)
+        offsets = []
+        for p in self.passes:
+            p.offset[:] = np.minimum(p.gap, 0.0)
+            p.offset[p.offset > tiny] = 0.0
+            offsets.append(p.offset)
+        kernels.clear(self.own_nodes, self.f, self.ff, self.stiff)
+        found = np.array([sum(float((o < 0).sum()) for o in offsets)])
+        deepest = np.array([max(float(-o.min()) for o in offsets)])
+        if self.parallel:
+            self.model.comm.Allreduce(MPI.IN_PLACE, found, op=MPI.SUM)
+            self.model.comm.Allreduce(MPI.IN_PLACE, deepest, op=MPI.MAX)
+        nodes = int(found[0])
+        self.initial_overlap = (nodes, float(deepest[0]) if nodes else 0.0)
         if nodes and self.spec.interference_time > 0.0:
             self._offset0 = [o.copy() for o in offsets]
         return self.initial_overlap

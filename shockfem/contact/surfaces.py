@@ -6,10 +6,10 @@ segment (p0, p1) has the outward normal (t_y, -t_x) / |t|, t = p1 - p0; in 3D th
 The order is fixed once on the reference mesh; kernels recompute normals every step.
 
 Under MPI each rank finds the facets of its own part of the mesh and all ranks then share
-them (global node numbers), so every rank holds the whole surface: contact needs no
-partition-aware search, at the price of gathering the surface nodes each step
-(``NodeExchange``).  Surfaces are a small fraction of the nodes at the sizes shockfem runs;
-docs/theory.md says how this would scale further.
+them (global node numbers) once, so every rank knows the whole surface's facets; the positions of
+its nodes are exchanged each step only where contact needs them (``halo.SurfaceHalo``: a rank's
+slaves' near facets).  Springs, liquid cavities and the penetrated target, whose surfaces are
+small, gather their nodes whole on every rank each step (``NodeExchange.gather``).
 """
 from __future__ import annotations
 
@@ -139,7 +139,8 @@ def _allgather(comm, a: np.ndarray) -> np.ndarray:
 
 
 def build_surface(model: Model, spec: str) -> Surface:
-    """The facets of ``spec`` ("body" or "body.region") from all ranks, in global node numbers.
+    """The facets of ``spec`` ("body" or "body.region") from all ranks, in global node numbers, ordered
+    by their centres in the reference configuration (x first).
 
     Collective.  A facet seen by two ranks (a ghost facet) is kept once.
     """
@@ -152,18 +153,24 @@ def build_surface(model: Model, spec: str) -> Surface:
     imap = model.V.dofmap.index_map
     to_global = imap.local_to_global(np.arange(imap.size_local + imap.num_ghosts, dtype=np.int32))
     glob = to_global[local].reshape(local.shape).astype(np.int64)
+    centre = model.X0[local].mean(axis=1) if len(local) else np.zeros((0, model.gdim))
     comm = model.comm
     glob = _allgather(comm, glob).reshape(-1, local.shape[1])
     area, size, bulk, volume = (_allgather(comm, a) for a in (area, size, bulk, volume))
+    centre = _allgather(comm, centre).reshape(-1, model.gdim)
     _, first = np.unique(np.sort(glob, axis=1), axis=0, return_index=True)
-    keep = np.sort(first)
+    # in the order of their reference centres, which no partition changes: a contact pass's arithmetic
+    # (which facet takes a node on an edge two facets share, in which order sums run) is then the same
+    # on any number of ranks
+    keep = first[np.lexsort(centre[first].T[::-1])]
     return Surface(spec, body, np.ascontiguousarray(glob[keep]), area[keep], size[keep], bulk[keep],
                    volume[keep])
 
 
 class NodeExchange:
     """Copies between a rank's local node arrays and a compact array of chosen global nodes that
-    every rank holds in full (the nodes of the contact surfaces, or of discrete springs)."""
+    every rank holds in full (the nodes of the contact surfaces, or of discrete springs), in the order of
+    ``global_nodes`` (global node numbers, each once)."""
 
     def __init__(self, model: Model, global_nodes: np.ndarray):
         self.comm = model.comm
@@ -172,7 +179,9 @@ class NodeExchange:
         owned_global = imap.local_to_global(np.arange(imap.size_local, dtype=np.int32)).astype(np.int64)
         mine = np.isin(owned_global, global_nodes)
         self.local = np.flatnonzero(mine)                               # owned local nodes
-        self.slot = np.searchsorted(global_nodes, owned_global[mine])   # their place in the compact array
+        by_number = np.argsort(global_nodes)
+        # their places in the compact array
+        self.slot = by_number[np.searchsorted(global_nodes, owned_global[mine], sorter=by_number)]
         if self.comm.size > 1:
             self.counts = np.array(self.comm.allgather(len(self.local)))
             self.order = np.concatenate(self.comm.allgather(self.slot))
@@ -193,6 +202,17 @@ class NodeExchange:
         self.comm.Allgatherv(mine, [received, self.counts * k, None, MPI.DOUBLE])
         out[self.order] = received
         return out
+
+    def gather_own(self, values: np.ndarray, out: np.ndarray):
+        """(local nodes, k) -> this rank's own nodes of the compact array ``out`` (the others untouched)."""
+        kernels.gather_local(values, self.local, self.slot, out)
+
+    def owners(self) -> np.ndarray:
+        """The rank owning each compact node."""
+        owner = np.zeros(self.size, dtype=np.int64)
+        if self.comm.size > 1:
+            owner[self.order] = np.repeat(np.arange(self.comm.size), self.counts)
+        return owner
 
     def add_to(self, compact: np.ndarray, local: np.ndarray):
         """Add compact values into the owned local nodes of this rank."""

@@ -42,7 +42,8 @@ from ..errors import ModelError
 from .rundir import CHECKPOINT_DIRECTORY as DIRECTORY, write_json_atomic
 
 # 2: a contact pass keeps the facets its candidate lists hold (``near``) and the slaves its rank takes
-FORMAT = 2
+# 3: a contact pair's rank keeps only its own nodes and slaves, and its halo (``contact/halo.py``)
+FORMAT = 3
 
 # objects whose state is not the run's: built again from the scene on resume
 _REBUILT_MODULES = ("shockfem.model", "shockfem.scene", "shockfem.geometry")

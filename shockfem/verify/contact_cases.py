@@ -264,16 +264,30 @@ def sliding_block(size, workdir):
     ]
 
 
+def rod_on_plate_scene(h: float) -> dict:
+    """A steel rod (R 8 mm, L 24 mm) at 10 m/s onto a steel plate (60 x 60 x 6 mm) it touches, in 3D, 20 us.
+    On two ranks the partition cuts the plate across (its smallest cut) under the rod: the struck face
+    is split between the ranks, and each rank's slaves lean on facets with nodes the other owns."""
+    plate = {"name": "plate", "material": "steel", "shape": "box", "size": [0.06, 0.06, 0.006], "element_size": h,
+             "position": [-0.03, -0.03, -0.006], "velocity": [0.0, 0.0, 0.0]}
+    rod = {"name": "striker", "material": "steel", "shape": "cylinder", "radius": 0.008, "length": 0.024,
+           "element_size": h, "position": [0.0, 0.0, 0.0], "velocity": [0.0, 0.0, -10.0]}
+    return _scene("rod_on_plate_3d", [rod, plate], {"name": "impact", "a": "striker.bottom", "b": "plate.top"},
+                  2e-5, "3d")
+
+
 def contact_parallel(size, workdir):
-    """Contact under mpirun -n 2 gives the one-process results: body-to-body (rod on rod, axisymmetric,
-    and the two-rod case in 3D, whose ranks each search for their own slaves' facets) and a rigid floor
-    with friction and gravity (the sliding block)."""
+    """Contact under mpirun -n 2 gives the one-process results: body-to-body (rod on rod, axisymmetric;
+    the two-rod case in 3D, whose ranks each hold one rod; a rod on a plate in 3D, whose struck face
+    the ranks share) and a rigid floor with friction and gravity (the sliding block)."""
     three_d = two_rods_scene(0.005 * SIZES[size], "3d")
     three_d["scene"]["name"] = "two_rods_3d"
     return [parallel_agreement(_rod_pair_scene(0.0005 * SIZES[size]), "contact_parallel.rod_on_rod", workdir,
                                ["striker.v_z", "target.v_z", "energy.contact", "energy.internal"]),
             parallel_agreement(three_d, "contact_parallel.two_rods_3d", workdir,
                                ["striker.v_z", "target.v_z", "target.v_x", "energy.contact"]),
+            parallel_agreement(rod_on_plate_scene(0.0015 * SIZES[size]), "contact_parallel.rod_on_plate_3d", workdir,
+                               ["striker.v_z", "plate.v_z", "energy.contact", "energy.internal"]),
             parallel_agreement(_sliding_block_scene(size), "contact_parallel.sliding_block", workdir,
                                ["block.v_x", "block.v_y", "energy.contact"])]
 

@@ -157,7 +157,8 @@ def _rigid(kind, x, direction, point, radius=0.0, inside=False, k=1e7, velocity=
     f = np.zeros_like(x)
     g = np.zeros(len(x))
     vel = np.zeros(x.shape[1]) if velocity is None else np.asarray(velocity, dtype=float)
-    active = kernels.node_to_rigid(np.arange(len(x)), np.full(len(x), k), kind, np.asarray(point, dtype=float),
+    every = np.arange(len(x))
+    active = kernels.node_to_rigid(every, every, np.full(len(x), k), kind, np.asarray(point, dtype=float),
                                    np.asarray(direction, dtype=float), radius, inside, vel, x, v,
                                    np.ones(len(x)), 0.0, 0.0, 0.0, 0.1, NO_FRICTION, f, np.zeros_like(x),
                                    np.zeros((len(x), 3)), g, offset, np.zeros(len(x)))
