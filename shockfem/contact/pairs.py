@@ -227,7 +227,7 @@ class ContactPair:
             self.master_nodes = [slaves_b, self.nodes_a]      # the nodes of each pass's master facets
             # a node counts as penetrating only within `depth` of the surface (half the smallest facet
             # is a safe bound for a single step's travel); the search reaches a facet size beyond that
-        self.depth = 0.5 * float(sizes.min())
+            self.depth = 0.5 * float(sizes.min())
         self.margin = float(sizes.max())
         self.smallest_facet = float(sizes.min())
         self.reach = 0.5 * float(sizes.max()) + self.margin

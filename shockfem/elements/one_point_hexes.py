@@ -3,8 +3,8 @@
 The element is ``one_point.py``'s (Flanagan & Belytschko's four hourglass modes xi eta, eta zeta,
 zeta xi, xi eta zeta, each with a 3-vector resultant); the structure is ``one_point_quads.py``'s:
 gather a block of ``LANES`` cells into rows of one scratch array, the kinematics lanes, the material
-update (in lanes for elastic rows without slots, cell by cell otherwise), the response lanes, scatter
-in cell order.  The same conditions make numba's LLVM vectorise the lanes (numpy error model, each
+update (the elastic trial in lanes, which is the update of elastic rows and of J2 points inside their
+yield surface; the others cell by cell), the response lanes, scatter in cell order.  The same conditions make numba's LLVM vectorise the lanes (numpy error model, each
 lane loop a function of its own called with the lane count); the lanes raise nothing, so a cell of
 zero volume is reported as inverted or the state as non-finite, as for the quads.
 """
@@ -17,7 +17,7 @@ from numba import njit
 
 from ..materials.algebra import inverse_3x3
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_update_stress, update_stress
+from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .one_point import NO_TOTALS, add_cell_totals, gather_constants, step_length, unwalsh4, walsh8
 
@@ -125,7 +125,8 @@ def _row6(S, row, B, k):
 
 @njit(cache=True, fastmath=True, error_model="numpy", inline="never")
 def _elastic(S, nb, dt):
-    """The material update of elastic rows without slots, in lanes (``materials.update.update_stress``)."""
+    """Every cell's elastic trial stress, in lanes (``materials.update.elastic_update_stress``): the update
+    of elastic rows without slots, and of the points ``materials.update.elastic_trial_holds`` accepts."""
     B = LANES
     for k in range(nb):
         s = elastic_update_stress(_row6(S, _S, B, k), _row6(S, _D, B, k),
@@ -293,12 +294,15 @@ def _hex_kernel(elastic_only: bool):
                     S[(_O + i) * B + k] = hourglass[c, i]
                 gather_constants(S, _LAM, B, k, params, m, cell_sign[c])
             _rates(S, count, dt)
-            if elastic_only:
-                _elastic(S, count, dt)
-            else:
-                # the material update at the centre, cell by cell (objective rotation, law)
+            # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
+            # inside their yield surface
+            _elastic(S, count, dt)
+            if not elastic_only:
+                # the others cell by cell (objective rotation, law)
                 for k in range(count):
                     c = cells[start + k]
+                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, _row6(S, _SN, B, k)):
+                        continue
                     s_np1, d, wp = update_stress(params, curves, cell_material[c], state, c, 0, _row6(S, _S, B, k),
                                                  _row6(S, _D, B, k),
                                                  (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),

@@ -12,8 +12,9 @@ compiler sees the same arithmetic over consecutive array entries, so the pass ru
    ``r`` of lane k at ``S[r * LANES + k]``;
 2. kinematics lanes (vectorised, ``_rates_lanes``): Jacobians, the mid-step strain rate and spin, the
    hourglass projections, into further rows;
-3. the material update at the centre (``materials.update``): for elastic rows without slots in lanes
-   too (``_elastic``); for any other law cell by cell (scalar: the laws hold state and branches);
+3. the material update at the centre (``materials.update``): every cell's elastic trial in lanes too
+   (``_elastic``), which is the update of elastic rows without slots and of J2 points inside their yield
+   surface (``elastic_trial_holds``); the others cell by cell (scalar: the laws hold state and branches);
 4. response lanes (vectorised, ``_response_lanes``): the viscous stresses, the hourglass resultant,
    the nodal forces, the energies and the stable step, into further rows;
 5. scatter (scalar): forces into the nodes, stresses and resultants into their arrays, the energy
@@ -37,7 +38,7 @@ import numpy as np
 from numba import njit
 
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_update_stress, update_stress
+from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .one_point import NO_TOTALS, add_cell_totals, gather_constants, inverse_2x2, step_length, unwalsh4, walsh4
 
@@ -122,7 +123,8 @@ def _rates_lanes(axisymmetric: bool):
 
 @njit(cache=True, fastmath=True, error_model="numpy", inline="never")
 def _elastic(S, nb, dt):
-    """The material update of elastic rows without slots, in lanes (``materials.update.update_stress``)."""
+    """Every cell's elastic trial stress, in lanes (``materials.update.elastic_update_stress``): the update
+    of elastic rows without slots, and of the points ``materials.update.elastic_trial_holds`` accepts."""
     B = LANES
     for k in range(nb):
         s = elastic_update_stress(
@@ -250,12 +252,17 @@ def _quad_kernel(elastic_only: bool):
                 _RATES_AXISYMMETRIC(S, count, dt)
             else:
                 _RATES_PLANE(S, count, dt)
-            if elastic_only:
-                _elastic(S, count, dt)
-            else:
-                # the material update at the centre, cell by cell (objective rotation, slotted ring, law)
+            # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
+            # inside their yield surface (most of a plastic body at any time)
+            _elastic(S, count, dt)
+            if not elastic_only:
+                # the others cell by cell (objective rotation, slotted ring, law)
                 for k in range(count):
                     c = cells[start + k]
+                    trial = (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0,
+                             S[(_SN + 3) * B + k])
+                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
+                        continue
                     s_np1, d, wp = update_stress(
                         params, curves, cell_material[c], state, c, 0,
                         (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]),

@@ -97,6 +97,31 @@ def _flow_increment(q_trial, eps, stiffness, curve, npts, dt, D, q, viscoplastic
 
 
 @njit(cache=True, fastmath=True, inline="always")
+def relative_deviator(s, point):
+    """xi = dev(s) - alpha (alpha the point's back stress) and its size q = sqrt(3/2 xi : xi)."""
+    s0, s1, s2, s3, s4, s5 = s
+    b = S_BACK
+    mean = (s0 + s1 + s2) / 3.0
+    x0 = s0 - mean - point[b]
+    x1 = s1 - mean - point[b + 1]
+    x2 = s2 - mean - point[b + 2]
+    x3 = s3 - point[b + 3]
+    x4 = s4 - point[b + 4]
+    x5 = s5 - point[b + 5]
+    return (x0, x1, x2, x3, x4, x5), math.sqrt(1.5 * (x0 * x0 + x1 * x1 + x2 * x2 + 2.0 * (x3 * x3 + x4 * x4 + x5 * x5)))
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def inside_static_yield(curve, npts, point, s):
+    """Whether the trial stress ``s`` lies inside the yield surface of the point's plastic strain without
+    a rate factor.  Such a point takes no return in either rate form (the factor only raises the yield
+    stress): the trial is the law's answer."""
+    _, q_trial = relative_deviator(s, point)
+    sy, _ = piecewise_linear(curve, npts, point[S_EPS])
+    return q_trial <= sy
+
+
+@njit(cache=True, fastmath=True, inline="always")
 def radial_return(row, curve, point, s, d, dt):
     """Return the trial stress ``s`` to the yield surface of the material whose parameter row is
     ``row`` (hardening ``curve``), at the point whose state is ``point`` (updated in place).
@@ -113,14 +138,7 @@ def radial_return(row, curve, point, s, d, dt):
     npts = int(row[P_CURVE_POINTS])
     eps = point[S_EPS]
     b = S_BACK
-    mean = (s0 + s1 + s2) / 3.0
-    x0 = s0 - mean - point[b]
-    x1 = s1 - mean - point[b + 1]
-    x2 = s2 - mean - point[b + 2]
-    x3 = s3 - point[b + 3]
-    x4 = s4 - point[b + 4]
-    x5 = s5 - point[b + 5]
-    q_trial = math.sqrt(1.5 * (x0 * x0 + x1 * x1 + x2 * x2 + 2.0 * (x3 * x3 + x4 * x4 + x5 * x5)))
+    (x0, x1, x2, x3, x4, x5), q_trial = relative_deviator(s, point)
     viscoplastic = D > 0.0 and row[P_RATE_FORM] == VISCOPLASTIC
     scale = 1.0
     if D > 0.0 and not viscoplastic:

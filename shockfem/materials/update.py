@@ -29,8 +29,9 @@ import numpy as np
 from numba import njit
 
 from .elastic import elastic_step, elastic_step_inlined
+from .j2 import inside_static_yield
 from .laws import law_update
-from .layout import ELASTIC, J2, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH
+from .layout import ELASTIC, J2, P_CURVE_POINTS, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH, S_RATE
 from .objective import cayley_matrix, rotate_back_stress, rotate_symmetric
 from .slotted import slotted_hoop_rate
 
@@ -60,6 +61,25 @@ def elastic_update_stress(s, d, w, dt, lam, mu):
     (the inlined ``elastic.elastic_step``: the elements' lanes call this, and vectorise only with every
     line inlined)."""
     return elastic_step_inlined(rotate_symmetric(s, cayley_matrix(w[0], w[1], w[2], dt)), d, lam, mu, dt)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def elastic_trial_holds(params, curves, m, state, c, p, trial):
+    """Whether the elastic trial ``trial`` (``elastic_update_stress``, which the elements' lanes compute for
+    every cell) is ``update_stress``'s answer for row ``m`` at point (c, p), with no plastic work: an
+    elastic row without slots, or a J2 row without kinematic hardening or slots whose trial lies inside
+    the static yield surface (``j2.inside_static_yield``; its plastic strain rate is then set to 0, as
+    the return would).  Otherwise the element runs ``update_stress``."""
+    if params[m, P_SLOT_WIDTH] > 0.0:
+        return False
+    law = params[m, P_LAW]
+    if law == ELASTIC:
+        return True
+    if law == J2 and params[m, P_KINEMATIC] == 0.0:
+        if inside_static_yield(curves[m], int(params[m, P_CURVE_POINTS]), state[c, p], trial):
+            state[c, p, S_RATE] = 0.0
+            return True
+    return False
 
 
 def is_elastic_only(params: np.ndarray) -> bool:

@@ -1,9 +1,13 @@
-"""The one-point passes in lanes (quads and hexes): their two copies, the blocks, an inverted cell.
+"""The one-point passes in lanes (quads and hexes): their two copies, the blocks, the material update,
+an inverted cell.
 
-Provenance: the elastic copy updates the stress in lanes (``materials.update.elastic_update_stress``),
-the general copy cell by cell through ``update_stress``: the same arithmetic for elastic rows; only the
-compiler's order of operations may differ (fastmath), so every output must agree to round-off: 1e-13
-of its largest entry (the differences seen are below 1e-15).  Against the scalar kernels these passes
+Provenance: both copies compute every cell's elastic trial in lanes
+(``materials.update.elastic_update_stress``); the general copy runs ``update_stress`` cell by cell for the
+rows whose trial is not the answer (``materials.update.elastic_trial_holds``).  The reference here is a
+general copy whose rows all take that cell-by-cell path (J2 rows with kinematic hardening, which the lanes
+never accept, and a yield stress no cell reaches): the same arithmetic as the elastic lanes, only the
+compiler's order of operations may differ (fastmath), so every output must agree to round-off: 1e-13 of
+its largest entry (the differences seen are below 1e-15).  Against the scalar kernels these passes
 replaced (``git show 4c4bad2:shockfem/elements/one_point.py``) both copies agreed to 4.7e-16 (quads)
 and 1.6e-15 (hexes) on 50k and 1k shuffled cells (session 22).  The forces themselves are checked
 against the one-point UFL form in ``test_one_point.py``.
@@ -38,7 +42,19 @@ def _params():
     return p
 
 
-def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None):
+def _j2(yield_stress, kinematic):
+    """``_params``' rows made J2 with a flat yield stress [Pa] and a kinematic modulus [Pa]; their curves."""
+    p = _params()
+    p[:, layout.P_LAW] = layout.J2
+    p[:, layout.P_KINEMATIC] = kinematic
+    p[:, layout.P_CURVE_POINTS] = 1
+    curves = np.zeros((2, 1, 2))
+    curves[:, 0, 1] = yield_stress
+    return p, curves
+
+
+def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None, material=None):
+    """One pass; ``material`` = (params, curves) of J2 rows (with a fresh state), else ``_params``' elastic ones."""
     n, gdim = len(dofmap), x.shape[1]
     rng = np.random.default_rng(5)
     sigma = rng.normal(size=(n, 1, 6)) * 1e7
@@ -51,9 +67,12 @@ def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None):
     sign = np.ones(n) if sign is None else sign
     kernel = kernels.one_point_kernel(gdim, elastic_only)
     geometry = (axisymmetric, 0.7) if gdim == 2 else ()
-    out = kernel(cells, dofmap, materials, sign, x, v, 2e-7, *geometry, form, 0.1, _params(), NO_CURVES, NO_STATE,
+    params, curves, state = _params(), NO_CURVES, NO_STATE
+    if material is not None:
+        (params, curves), state = material, np.zeros((n, 1, layout.STATE_SIZE))
+    out = kernel(cells, dofmap, materials, sign, x, v, 2e-7, *geometry, form, 0.1, params, curves, state,
                  sigma, hourglass, f, body_energy)
-    return out, {"f": f, "sigma": sigma, "hourglass": hourglass, "body_energy": body_energy}
+    return out, {"f": f, "sigma": sigma, "hourglass": hourglass, "body_energy": body_energy, "state": state}
 
 
 CASES = [((9, 7), True), ((9, 7), False), ((4, 3, 5), None)]     # quads axisymmetric, plane strain; hexes
@@ -69,8 +88,11 @@ def test_elastic_lanes_agree_with_the_update_cell_by_cell(shape, axisymmetric, f
     assert len(dofmap) % lanes != 0 and len(dofmap) > lanes
     cells = np.random.default_rng(7).permutation(len(dofmap)).astype(np.int32)
     v = np.random.default_rng(11).normal(size=x.shape) * 20.0
-    ref_out, ref = _run(False, x, dofmap, cells, v, form, axisymmetric)
+    # the reference: every cell through update_stress (kinematic hardening), none yielding
+    ref_out, ref = _run(False, x, dofmap, cells, v, form, axisymmetric, material=_j2(1e12, 1e9))
     out, got = _run(True, x, dofmap, cells, v, form, axisymmetric)
+    assert ref_out[4] == 0.0 and not ref["state"].any()
+    del ref["state"], got["state"]
     for name in ref:
         assert np.abs(got[name] - ref[name]).max() <= 1e-13 * np.abs(ref[name]).max(), name
     dt_stable, critical, damping, viscosity, plastic, hourglass_power, bad = out
@@ -91,3 +113,25 @@ def test_an_inverted_cell_is_reported(shape, elastic_only):
     sign[40] = -1.0
     out, _ = _run(elastic_only, x, dofmap, cells, np.zeros_like(x), STIFFNESS, sign=sign)
     assert out[6] == 40
+
+
+@pytest.mark.parametrize("shape, axisymmetric", CASES)
+def test_points_inside_the_yield_surface_take_the_lanes_trial(shape, axisymmetric):
+    """J2 rows without kinematic hardening, a yield stress (50 MPa) that some cells' trial stress exceeds
+    and others' does not: the general copy takes the lanes' trial for the latter
+    (``elastic_trial_holds``) and returns the former cell by cell.  The reference runs every cell through
+    ``update_stress`` (a kinematic modulus of 1e-30 Pa, which the lanes never accept and which changes
+    the return by round-off): every output to 1e-12 of its largest entry (the stresses that yield by a
+    few per cent are returned by the same law)."""
+    x, dofmap = _grid(shape)
+    cells = np.random.default_rng(7).permutation(len(dofmap)).astype(np.int32)
+    v = np.random.default_rng(11).normal(size=x.shape) * 20.0
+    ref_out, ref = _run(False, x, dofmap, cells, v, STIFFNESS, axisymmetric, material=_j2(5e7, 1e-30))
+    out, got = _run(False, x, dofmap, cells, v, STIFFNESS, axisymmetric, material=_j2(5e7, 0.0))
+    yielded = ref["state"][:, 0, layout.S_EPS] > 0.0
+    assert 0.1 < yielded.mean() < 0.9              # both paths ran
+    np.testing.assert_array_equal(got["state"][:, 0, layout.S_EPS] > 0.0, yielded)
+    for name in ref:
+        scale = np.abs(ref[name]).max()
+        assert np.abs(got[name] - ref[name]).max() <= 1e-12 * scale, name
+    assert out[4] == pytest.approx(ref_out[4], rel=1e-12) and out[4] > 0.0
