@@ -17,6 +17,10 @@ one-point kernels, ``is_elastic_only``) says every row is elastic without slots:
 then the elastic law alone, with no call.  ``shockfem verify material_point`` and the unit tests
 drive this very function.
 
+The elements compute every cell's elastic trial in SIMD lanes (``elastic_update_stress``: rotate, then
+Hooke) and ask ``elastic_trial_holds`` whether it is the answer (elastic rows; J2 points without kinematic
+hardening inside their static yield surface); ``update_stress`` runs for the others.
+
 Compiled code: ``update_stress``, the dispatch ``laws.law_update`` and the rotation are inlined into
 each element kernel (numba ``inline="always"``); the laws and the slotted ring are called functions,
 each compiled once.  Numba inlines at its IR level and the cost grows steeply with nesting: with the
