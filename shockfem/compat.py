@@ -48,6 +48,12 @@ def cell_dofs(space, nodes_per_cell: int) -> np.ndarray:
     return np.ascontiguousarray(space.dofmap.list.array.reshape(-1, nodes_per_cell), dtype=np.int32)
 
 
+def geometry_nodes(mesh, nodes_per_cell: int) -> np.ndarray:
+    """(cells, nodes_per_cell): the rows of ``mesh.geometry.x`` of every local cell's nodes (owned, then
+    ghosts), in the cell's order (for a first-order mesh, that of a first-order space's dofs)."""
+    return mesh.geometry.dofmap.array.reshape(-1, nodes_per_cell)
+
+
 def set_cell_values(function, values: np.ndarray, num_cells: int) -> None:
     """Write one value per local cell (``values[:num_cells]``) into a ``cell_space`` function through its
     dofmap, then update the ghosts."""

@@ -28,7 +28,7 @@ from ..model import Model
 from ..scene.specs import Contact
 from . import kernels
 from .halo import SurfaceHalo
-from .surfaces import NodeExchange, Surface, build_surface
+from .surfaces import NodeExchange, Surface, build_surface, reference_key
 
 
 def facet_stiffness(surface: Surface, scale: float, bulk: np.ndarray | float | None = None) -> np.ndarray:
@@ -71,11 +71,12 @@ def node_stiffness(surface: Surface, facets: np.ndarray, nodes: np.ndarray, scal
 
 
 def _reference_order(model: Model, global_nodes: np.ndarray) -> np.ndarray:
-    """Surface nodes (global numbers) in the order of their reference positions (x first; then the body,
-    for nodes of two bodies that start at one point), which no partition changes: the pair's slave order,
-    in which its forces are summed, is then the same on any number of ranks.  Collective."""
+    """Surface nodes (global numbers) in the order of their reference positions (x first, rounded:
+    ``surfaces.reference_key``; then the body, for nodes of two bodies that start at one point), which no
+    partition changes: the pair's slave order, in which its forces are summed, is then the same on any
+    number of ranks.  Collective."""
     exchange = NodeExchange(model, global_nodes)
-    X = exchange.gather(model.X0)
+    X = reference_key(exchange.gather(model.X0))
     body = exchange.gather(model.node_body[:, None].astype(float))[:, 0]
     return global_nodes[np.lexsort((body,) + tuple(X.T[::-1]))]
 

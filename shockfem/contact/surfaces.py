@@ -132,6 +132,34 @@ def _outward_facets(model: Model, facets: np.ndarray) -> tuple[np.ndarray, np.nd
     return np.array(out, dtype=np.int64).reshape(-1, width), np.array(cells, dtype=np.int64)
 
 
+# Reference positions rounded to a picometre.  dolfinx computes a node's coordinates from one of its cells,
+# so they differ by ~1e-17 m from one partition to another; an order built from the rounded ones (which
+# contact needs: ``build_surface``, ``pairs._reference_order``) is the same on any number of ranks.
+REFERENCE_QUANTUM = 1e-12    # [m]
+
+
+def reference_key(X: np.ndarray) -> np.ndarray:
+    """Positions (..., gdim) as whole numbers of ``REFERENCE_QUANTUM`` (exact in a double up to 9 km)."""
+    return np.round(X / REFERENCE_QUANTUM)
+
+
+def _start_at_least(facets: np.ndarray, keys: np.ndarray) -> np.ndarray:
+    """Each facet's nodes (local numbers, outward order) turned to start at its node of least reference
+    position (x, then y, then z): the order a partition does not change (the cell's own vertex order
+    does).  Turning keeps the outward order; a segment (2D) is left as it is (its order is its normal)."""
+    nf = facets.shape[1]
+    if nf < 3 or not len(facets):
+        return facets
+    k = keys[facets]                                    # (facets, nf, gdim)
+    least = np.ones(k.shape[:2], dtype=bool)
+    for d in range(k.shape[2]):
+        column = np.where(least, k[..., d], np.inf)
+        least &= column == column.min(axis=1, keepdims=True)
+    first = np.argmax(least, axis=1)
+    turn = (first[:, None] + np.arange(nf)[None, :]) % nf
+    return np.take_along_axis(facets, turn, axis=1)
+
+
 def _allgather(comm, a: np.ndarray) -> np.ndarray:
     if comm.size == 1:
         return a
@@ -140,12 +168,15 @@ def _allgather(comm, a: np.ndarray) -> np.ndarray:
 
 def build_surface(model: Model, spec: str) -> Surface:
     """The facets of ``spec`` ("body" or "body.region") from all ranks, in global node numbers, ordered
-    by their centres in the reference configuration (x first).
+    by their centres in the reference configuration (x first), each starting at its node of least
+    reference position: orders no partition changes (``reference_key``).
 
     Collective.  A facet seen by two ranks (a ghost facet) is kept once.
     """
     body, facets = _boundary_facets(model, spec)
     local, cells = _outward_facets(model, facets)
+    keys = reference_key(model.X0)
+    local = _start_at_least(local, keys)
     area, size = _facet_geometry(model, local)
     p = model.params[model.cell_material[cells]]
     bulk = p[:, P_LAMBDA] + 2.0 * p[:, P_MU] / 3.0
@@ -153,7 +184,7 @@ def build_surface(model: Model, spec: str) -> Surface:
     imap = model.V.dofmap.index_map
     to_global = imap.local_to_global(np.arange(imap.size_local + imap.num_ghosts, dtype=np.int32))
     glob = to_global[local].reshape(local.shape).astype(np.int64)
-    centre = model.X0[local].mean(axis=1) if len(local) else np.zeros((0, model.gdim))
+    centre = keys[local].sum(axis=1) if len(local) else np.zeros((0, model.gdim))     # nf x the centre, exact
     comm = model.comm
     glob = _allgather(comm, glob).reshape(-1, local.shape[1])
     area, size, bulk, volume = (_allgather(comm, a) for a in (area, size, bulk, volume))

@@ -180,6 +180,17 @@ def _region_shares(V, meshed: MeshedScene, region: str, scene: Scene, gdim: int)
     return a / total
 
 
+def _reference_positions(mesh, dofmap: np.ndarray, num_nodes: int, gdim: int) -> np.ndarray:
+    """The nodes' positions, copied from the mesh's own coordinates.  (``tabulate_dof_coordinates``
+    computes each node's from one of its cells through the coordinate map, 1e-17 m apart from one
+    partition to another: enough for two surfaces that start touching, one of them a layer sum like
+    -0.006 + 2 x 0.003 = 1e-18 m, to start one node inside or outside the other on two ranks and not on
+    one.)"""
+    X0 = np.empty((num_nodes, gdim))
+    X0[dofmap] = mesh.geometry.x[compat.geometry_nodes(mesh, dofmap.shape[1])[:len(dofmap)]][:, :, :gdim]
+    return X0
+
+
 def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     """Turn a meshed scene into the arrays of the explicit solver."""
     mesh = meshed.mesh
@@ -194,7 +205,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
     cell_name = mesh.topology.cell_name()
     nn = {"triangle": 3, "quadrilateral": 4, "tetrahedron": 4, "hexahedron": 8}[cell_name]
     dofmap = np.ascontiguousarray(compat.cell_dofs(V, nn)[:num_cells])
-    X0 = np.ascontiguousarray(V.tabulate_dof_coordinates()[:num_nodes, :gdim])
+    X0 = _reference_positions(mesh, dofmap, num_nodes, gdim)
 
     cell_body = np.full(num_cells, -1, dtype=np.int32)
     cell_body[meshed.cell_tags.indices] = meshed.cell_tags.values - 1
