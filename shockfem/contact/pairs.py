@@ -246,7 +246,8 @@ class ContactPair:
         self._ff_old = np.zeros((n, gdim))
         self.work = 0.0                      # work done by the normal contact forces on the bodies [J]
         self.friction_work = 0.0             # work done by the friction forces [J] (<= 0: dissipated)
-        self.impulse = np.zeros(gdim)        # of the force on surface a [N s]
+        self.impulse = np.zeros(gdim)        # of the force on surface a to t [N s] (``account``)
+        self._load_before = np.zeros(gdim)   # the force on a (normal and friction) at the step's start [N]
         self.force_a = np.zeros(gdim)        # current normal force on surface a [N]
         self.friction_a = np.zeros(gdim)     # current friction force on surface a [N]
         self.max_force = 0.0
@@ -359,6 +360,7 @@ class ContactPair:
             self.model.comm.Allreduce(MPI.IN_PLACE, sums, op=MPI.SUM)
             self.model.comm.Allreduce(MPI.IN_PLACE, peaks, op=MPI.MAX)
         g = self.x.shape[1]
+        self._load_before = self.force_a + self.friction_a
         self.force_a, self.friction_a = sums[:g], sums[g:2 * g]
         work, friction_work, load, loaded_area, active = sums[2 * g:].tolist()
         omega2, max_pressure, deepest = peaks.tolist()
@@ -407,8 +409,14 @@ class ContactPair:
 
     def account(self, dt: float, t: float, body_velocities):
         """After a step ending at t: impulse, peak forces, open/closed intervals, restitution velocities.
-        Collective when contact opens or closes (``body_velocities`` reduces over ranks)."""
-        self.impulse += dt * (self.force_a + self.friction_a)
+        Collective when contact opens or closes (``body_velocities`` reduces over ranks).
+
+        The impulse is the force's trapezoidal integral, dt (f_n + f_n+1) / 2: what the central-difference
+        update puts into the bodies' mean velocities at t (v_n+1/2 takes a_n over (dt_n-1 + dt_n) / 2, and
+        v(t_n+1) = v_n+1/2 + dt_n a_n+1 / 2), so a body that only this pair pushes changes its momentum by
+        exactly the impulse (dt f_n+1 differed by half a step's force at the end, 1e-3 of a Taylor bar's)."""
+        load = self.force_a + self.friction_a
+        self.impulse += 0.5 * dt * (self._load_before + load)
         force, friction, pressure, load, loaded_area = self._step_sizes
         if self.active > 0:
             self.max_pressure = max(self.max_pressure, pressure)
@@ -420,9 +428,9 @@ class ContactPair:
         if closed and (not self.intervals or self.intervals[-1][1] is not None):
             self.intervals.append([t, None])
             if self.v_before is None:
-                # the mean velocities at t_{n+1} already hold half of this step's impulse (and all
-                # of any earlier one): take back what this pair has transferred
-                transferred = self.impulse - 0.5 * dt * (self.force_a + self.friction_a)
+                # the mean velocities at t_{n+1} hold all the impulse so far: take back what this pair
+                # has transferred
+                transferred = self.impulse
                 self.v_before = body_velocities().copy()
                 masses = self.model.body_mass
                 self.v_before[self.a.body] -= transferred / masses[self.a.body]

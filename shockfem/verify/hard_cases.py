@@ -155,7 +155,9 @@ def hard_incompressible(size, workdir):
     change = m * (hist["rod.v_z"][-1] - hist["rod.v_z"][0])
     impulse = s["contacts"]["wall"]["impulse_on_a"][-1]
     wall, n = s["wall_time_s"], s["elements"]
-    return [check("hard_incompressible.wall_impulse_vs_momentum_change [N s]", change, impulse, 0.005, wall, n),
+    # the impulse is integrated as the central-difference update applies the force (``ContactPair.account``):
+    # equal to round-off (3e-15 measured; 1e-9 leaves room for a longer sum, and catches a half step's force)
+    return [check("hard_incompressible.wall_impulse_vs_momentum_change [N s]", change, impulse, 1e-9, wall, n),
             check("hard_incompressible.energy_balance [-, abs]", 0.0, s["energy"]["balance_error"], 0.01, wall, n,
                   absolute=True)]
 

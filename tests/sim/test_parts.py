@@ -209,8 +209,9 @@ def test_a_mesh_gmsh_cannot_make_is_a_clear_error(tmp_path, monkeypatch):
 def test_payload_is_carried_in_the_projectile_cavity(tmp_path):
     """studies/gallery/projectile_payload.toml: the penetrator strikes a rigid plate nose first at
     50 m/s with a payload in its cavity.  The plate's impulse is the momentum both bodies lose, and
-    the cavity's impulse on the payload is the momentum the payload loses (each to 0.5%: the
-    impulses are trapezoid sums of the recorded forces); the payload stays in the cavity."""
+    the cavity's impulse on the payload is the momentum the payload loses (each to round-off: the impulse
+    is integrated as the central-difference update applies the force, measured 5.6e-16 and 3.3e-16; it
+    was up to 0.5% off when it took dt f_n+1); the payload stays in the cavity."""
     import json
     from shockfem.runner import run_scene
     path = next(p for p in GALLERY if p.endswith("projectile_payload.toml"))
@@ -220,8 +221,8 @@ def test_payload_is_carried_in_the_projectile_cavity(tmp_path):
     lost = {k: m[k] * (s["bodies"][k]["velocity_final"][1] + 50.0) for k in m}
     plate = s["contacts"]["nose_on_plate"]["impulse_on_a"][1]
     cavity = s["contacts"]["payload_in_cavity"]["impulse_on_a"][1]
-    assert sum(lost.values()) == pytest.approx(plate, rel=5e-3)
-    assert cavity == pytest.approx(lost["payload"], rel=5e-3) and cavity > 0.1 * m["payload"] * 50.0
+    assert sum(lost.values()) == pytest.approx(plate, rel=1e-12)
+    assert cavity == pytest.approx(lost["payload"], rel=1e-12) and cavity > 0.1 * m["payload"] * 50.0
     assert s["contacts"]["payload_in_cavity"]["max_penetration"] < 1e-4
     assert abs(s["energy"]["balance_error"]) < 1e-3
 
