@@ -670,6 +670,15 @@ def unpack_rows(rows, nodes, x, v):
             v[nodes[i], c] = rows[i, g + c]
 
 
+@njit(cache=True, inline="always")
+def _goes_to(records, j, owner, nf, r):
+    """Whether record j acts on a node that rank r owns (one of its facet's nodes)."""
+    for q in range(nf):
+        if owner[np.int64(records[j, R_MASTER + q])] == r:
+            return True
+    return False
+
+
 @njit(cache=True)
 def records_by_rank(records, owner, nf, rank, size):
     """The records (``R_KEY``) to send to each other rank, one after the other by rank: those with a facet
@@ -677,25 +686,17 @@ def records_by_rank(records, owner, nf, rank, size):
     counts = np.zeros(size, dtype=np.int64)
     for j in range(records.shape[0]):
         for r in range(size):
-            if r == rank:
-                continue
-            for q in range(nf):
-                if owner[np.int64(records[j, R_MASTER + q])] == r:
-                    counts[r] += 1
-                    break
+            if r != rank and _goes_to(records, j, owner, nf, r):
+                counts[r] += 1
     out = np.empty((counts.sum(), records.shape[1]))
     start = np.zeros(size, dtype=np.int64)
     for r in range(1, size):
         start[r] = start[r - 1] + counts[r - 1]
     for j in range(records.shape[0]):
         for r in range(size):
-            if r == rank:
-                continue
-            for q in range(nf):
-                if owner[np.int64(records[j, R_MASTER + q])] == r:
-                    out[start[r]] = records[j]
-                    start[r] += 1
-                    break
+            if r != rank and _goes_to(records, j, owner, nf, r):
+                out[start[r]] = records[j]
+                start[r] += 1
     return out, counts
 
 
