@@ -30,7 +30,7 @@ from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene, to_plain
 from .materials.layout import S_EPS
-from .solver.explicit import ExplicitSolver
+from .solver.explicit import START_UP_STEPS, ExplicitSolver
 
 
 @dataclass
@@ -261,7 +261,7 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
                     f"the energy balance is not finite ({s.energy.balance_error}) at t = {s.t:.6g} s (step "
                     f"{s.step}): an energy term overflowed or went NaN (a material or a load beyond range). "
                     f"Check the scene's magnitudes (density, moduli, speeds, loads).", s.t)
-            if s.step > 20 and s.energy.balance_error > scene.energy_error_limit:
+            if s.step > START_UP_STEPS and s.energy.balance_error > scene.energy_error_limit:
                 raise UnstableRun(
                     f"energy balance error {s.energy.balance_error:.3g} exceeds the limit "
                     f"{scene.energy_error_limit:.3g} at t = {s.t:.6g} s (step {s.step}): energy is being "
