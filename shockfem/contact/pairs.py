@@ -415,8 +415,7 @@ class ContactPair:
         update puts into the bodies' mean velocities at t (v_n+1/2 takes a_n over (dt_n-1 + dt_n) / 2, and
         v(t_n+1) = v_n+1/2 + dt_n a_n+1 / 2), so a body that only this pair pushes changes its momentum by
         exactly the impulse (dt f_n+1 differed by half a step's force at the end, 1e-3 of a Taylor bar's)."""
-        load = self.force_a + self.friction_a
-        self.impulse += 0.5 * dt * (self._load_before + load)
+        self.impulse += 0.5 * dt * (self._load_before + self.force_a + self.friction_a)
         force, friction, pressure, load, loaded_area = self._step_sizes
         if self.active > 0:
             self.max_pressure = max(self.max_pressure, pressure)
