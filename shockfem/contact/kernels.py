@@ -224,7 +224,8 @@ def _row(w, nm, k, has_friction):
 
 # Compiled once and called (LLVM may still inline it), not inlined into each caller at numba's IR level:
 # inlined at its three call sites it took node_to_rigid's compile to 204 s and facet_springs' to 100 s
-# (numba's compile events, the suite's warm-up from an empty cache 484 s against 253 s before).
+# (numba's compile events; the warm-up's axisymmetric group from an empty cache 484 s, against 253 s with
+# the ordinary call).
 @njit(cache=True, fastmath=True)
 def _response(i, g, n, rel, m_eff, k, w, nm, zeta, soft_scale, dt, friction, ft, gap, offset):
     """Penalty and friction response of slave i found at gap g (|g| < depth checked by the caller)
