@@ -6,8 +6,7 @@ from __future__ import annotations
 
 import functools
 import math
-
-import pint
+import sys
 
 # Dimensions a scene field may ask for, as pint dimensionality strings.
 DIMENSIONS = {
@@ -55,8 +54,29 @@ class UnitError(ValueError):
     """A value whose unit cannot be read or has the wrong dimension."""
 
 
+def _pint():
+    """pint, imported when the first string with a unit is read (a scene of bare SI numbers never needs it:
+    0.2 s of a run's start).  pint imports dask when it is installed (``shockfem[batch]``), for quantities
+    that hold dask arrays, which shockfem never makes: 0.1 s more.  dask is hidden from pint's import
+    (``sys.modules`` entry ``None``: "not installed") unless something loaded it already, and shown again
+    at once, so that anything importing dask later gets it."""
+    if "pint" in sys.modules:
+        return sys.modules["pint"]
+    hide = "dask" not in sys.modules
+    if hide:
+        sys.modules["dask"] = None
+    try:
+        import pint
+    finally:
+        if hide and "dask" in sys.modules and sys.modules["dask"] is None:
+            del sys.modules["dask"]
+    return pint
+
+
 @functools.lru_cache(maxsize=1)
-def registry() -> pint.UnitRegistry:
+def registry():
+    """pint's unit registry with shockfem's names for a standard gravity (``gee``, ``gn``)."""
+    pint = _pint()
     try:
         # pint's parsed definitions kept in the user's cache directory: building the registry from its
         # text takes 0.29 s of every run's start, from the cache 0.07 s
@@ -113,7 +133,7 @@ def _parse(value, dimension: str) -> float:
         q = ureg.Quantity(value.strip())
     except Exception:
         raise UnitError(f"cannot read {value!r} as a quantity (write e.g. '{_example(dimension)}')") from None
-    if not isinstance(q, pint.Quantity):
+    if not isinstance(q, _pint().Quantity):
         return float(q)
     want = ureg.Quantity(1, SI_UNITS[dimension] or "dimensionless")
     if q.dimensionality != want.dimensionality:

@@ -15,6 +15,7 @@ it had anything to show) ends it without drawing.
 """
 from __future__ import annotations
 
+import gc
 import json
 import signal
 import subprocess
@@ -78,8 +79,8 @@ class PictureProcess:
 
 def main() -> int:
     try:
-        from .figures import pyvista
-        pyvista()                                   # the slow imports, while the run goes on
+        from .render import warm_up
+        warm_up()                # the slow imports and the first picture's set-up, while the run goes on
         missing = None
     except ImportError as exc:
         missing = exc
@@ -92,7 +93,10 @@ def main() -> int:
     request = json.loads(line)
     from .render import render_run
     written = render_run(request["run_dir"], request["bodies"])
-    print(json.dumps(written))
+    print(json.dumps(written), flush=True)
+    # the run waits for this process to end: without the interpreter's last collections over VTK's and
+    # matplotlib's objects (``cli.console`` says why)
+    gc.freeze()
     return 0
 
 

@@ -46,3 +46,26 @@ def test_nan_and_infinity_are_refused(value):
     """Every scene field goes through to_si, so a NaN or an infinity is refused with its field named."""
     with pytest.raises(UnitError, match="expected a finite length"):
         to_si(value, "length")
+
+
+def test_pint_is_imported_with_the_first_unit_and_dask_stays_loadable():
+    """``units._pint``: a scene of bare SI numbers does not import pint (0.2 s of a run's start); the first
+    string with a unit does, without importing dask (0.1 s, ``shockfem[batch]``), and dask imports normally
+    afterwards when it is installed.  In a fresh interpreter: this test process may hold pint already."""
+    import subprocess
+    import sys
+    code = (
+        "import sys\n"
+        "from shockfem.scene import resolve\n"
+        "from shockfem.verify.contact_cases import two_rods_scene\n"
+        "resolve(two_rods_scene(0.0025, 'axisymmetric'))\n"
+        "print('pint' in sys.modules)\n"
+        "from shockfem.units import to_si\n"
+        "print(to_si('12 lb', 'mass'), 'pint' in sys.modules, 'dask' in sys.modules)\n"
+        "import importlib.util\n"
+        "if importlib.util.find_spec('dask') is not None:\n"
+        "    import dask.array\n"
+        "print('dask' in sys.modules or importlib.util.find_spec('dask') is None)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert out[0] == "False" and out[2:] == ["True", "False", "True"], out
+    assert float(out[1]) == pytest.approx(12 * 0.45359237, rel=1e-12)
