@@ -169,6 +169,10 @@ class ExplicitSolver:
         self.kinetic_mass = m.mass.copy()
         for rb in m.rigid:
             self.kinetic_mass[rb.nodes] = 0.0
+        # the same per dof, shaped as the velocity, for the nodal passes (``nodal``: they vectorise so)
+        self._mass_dofs = np.repeat(m.mass[:, None], gdim, axis=1)
+        self._inv_mass_dofs = np.repeat(self.inv_mass[:, None], gdim, axis=1)
+        self._kinetic_mass_dofs = np.repeat(self.kinetic_mass[:, None], gdim, axis=1)
         self._constrained_dofs = (np.unique(np.concatenate([c.dofs for c in m.constraints]))
                                   if m.constraints else np.zeros(0, dtype=np.int64))
         self.constrained = np.zeros(self.x.shape, dtype=np.bool_)
@@ -373,7 +377,7 @@ class ExplicitSolver:
         v_old = self.v.reshape(-1)[constrained] if m.constraints else None
 
         # velocity v_{n+1/2}; mass-proportional damping taken implicitly
-        e.damping += self._sum(nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, m.mass, m.num_owned))
+        e.damping += self._sum(nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, self._mass_dofs, m.num_owned))
 
         # rigid bodies: velocities that carry their nodes to the rigid-body positions at t_{n+1}
         for rb, rs in zip(m.rigid, self.rigid_states):
@@ -410,7 +414,8 @@ class ExplicitSolver:
 
         # acceleration a_{n+1}, second halves of the work increments, kinetic energy
         w_int2, w_ext2, w_con2, kinetic, bad = nodal.finish_step(
-            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.forces_applied, self.inv_mass, self.kinetic_mass, self.constrained,
+            self.a, self.v, self.f_int, self.f_ext, self.f_con, self.forces_applied, self._inv_mass_dofs,
+            self._kinetic_mass_dofs, self.constrained,
             dt, m.num_owned)
         if self.parallel:
             w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic = self.comm.allreduce(

@@ -113,10 +113,10 @@ def test_a_nan_in_the_state_stops_the_run_as_unstable():
     n = 4
     f = np.zeros((n, 2))
     f[2, 1] = np.inf
-    bad = finish_step(np.zeros((n, 2)), np.zeros((n, 2)), np.zeros((n, 2)), f, np.zeros((n, 2)), True, np.ones(n),
-                      np.ones(n), np.zeros((n, 2), dtype=np.bool_), 1e-6, n)[-1]
+    bad = finish_step(np.zeros((n, 2)), np.zeros((n, 2)), np.zeros((n, 2)), f, np.zeros((n, 2)), True, np.ones((n, 2)),
+                      np.ones((n, 2)), np.zeros((n, 2), dtype=np.bool_), 1e-6, n)[-1]
     assert bad == 2
     # and its loop for runs without applied forces (f_ext, f_con unread), on the internal force
-    bad = finish_step(np.zeros((n, 2)), np.zeros((n, 2)), f, np.zeros((n, 2)), np.zeros((n, 2)), False, np.ones(n),
-                      np.ones(n), np.zeros((n, 2), dtype=np.bool_), 1e-6, n)[-1]
+    bad = finish_step(np.zeros((n, 2)), np.zeros((n, 2)), f, np.zeros((n, 2)), np.zeros((n, 2)), False, np.ones((n, 2)),
+                      np.ones((n, 2)), np.zeros((n, 2), dtype=np.bool_), 1e-6, n)[-1]
     assert bad == 2
