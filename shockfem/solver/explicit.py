@@ -180,8 +180,11 @@ class ExplicitSolver:
         # for the reactions' work: the mass behind each constrained dof, and which dofs this rank owns
         self._constrained_mass = m.mass[self._constrained_dofs // gdim]
         self._constrained_owned = self._constrained_dofs < m.num_owned * gdim
-        # where each constraint's dofs sit among them (``_prescribed_motion``)
+        # where each constraint's dofs sit among them (``advance``, ``_prescribed_motion``)
         self._constraint_positions = [np.searchsorted(self._constrained_dofs, c.dofs) for c in m.constraints]
+        # a step's scratch (``advance``): the constrained dofs' velocities before it and their prescribed ones
+        self._constrained_before = np.zeros(len(self._constrained_dofs))
+        self._constrained_held = np.zeros(len(self._constrained_dofs))
         self.t = 0.0
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
@@ -373,8 +376,8 @@ class ExplicitSolver:
         e = self.energy
         t0 = time.perf_counter()
         dt_avg = 0.5 * (self.dt + dt)
-        constrained = self._constrained_dofs
-        v_old = self.v.reshape(-1)[constrained] if m.constraints else None
+        if m.constraints:
+            nodal.take_dofs(self.v, self._constrained_dofs, self._constrained_before)
 
         # velocity v_{n+1/2}; mass-proportional damping taken implicitly
         e.damping += self._sum(nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, self._mass_dofs, m.num_owned))
@@ -387,13 +390,11 @@ class ExplicitSolver:
         # m (v - v_free) . v_n over the constrained dofs
         reaction_work = 0.0
         if m.constraints:
-            flat = self.v.reshape(-1)
-            v_free = flat[constrained]
-            for con in m.constraints:
-                flat[con.dofs] = con.value(self.t + 0.5 * dt)
-            v_new = flat[constrained]
-            reaction_work = self._sum(float(np.sum((self._constrained_mass * (v_new - v_free)
-                                                    * 0.5 * (v_old + v_new))[self._constrained_owned])))
+            held = self._constrained_held
+            for con, at in zip(m.constraints, self._constraint_positions):     # a later one wins a shared dof
+                held[at] = con.value(self.t + 0.5 * dt)
+            reaction_work = self._sum(nodal.hold_dofs(self.v, self._constrained_dofs, held, self._constrained_mass,
+                                                      self._constrained_owned, self._constrained_before))
         if self.parallel:
             self._v_fn.x.scatter_forward()
 

@@ -91,6 +91,33 @@ def update_position(x, u, v, dt, f_int, f_ext, f_con, applied, num_owned):
     return 0.5 * w_int, 0.5 * w_ext, 0.5 * w_con
 
 
+@njit(cache=True)
+def take_dofs(v, dofs, out):
+    """``out[j] = v.flat[dofs[j]]``: the constrained dofs' velocities before the step changes them."""
+    vf = v.reshape(-1)
+    for j in range(dofs.shape[0]):
+        out[j] = vf[dofs[j]]
+
+
+@njit(cache=True)
+def hold_dofs(v, dofs, held, mass, owned, v_before):
+    """The constrained dofs ``dofs`` (flat) set to their prescribed velocities ``held`` (v_{n+1/2}), after
+    ``update_velocity`` gave them a free one; ``v_before``: their v_{n-1/2} (``take_dofs``), ``mass``: the
+    mass behind each, ``owned``: whether this rank owns it.  Returns the work of the reactions over the
+    step on the owned dofs, m (v - v_free) (v_before + v) / 2: the impulse that holds the dof times its
+    mean velocity."""
+    vf = v.reshape(-1)
+    work = 0.0
+    for j in range(dofs.shape[0]):
+        k = dofs[j]
+        free = vf[k]
+        new = held[j]
+        vf[k] = new
+        if owned[j]:
+            work += mass[j] * (new - free) * 0.5 * (v_before[j] + new)
+    return work
+
+
 @njit(cache=True, fastmath=FINITE_SAFE_FASTMATH)
 def finish_step(a, v, f_int, f_ext, f_con, applied, inv_mass_dofs, kinetic_mass_dofs, constrained, dt, num_owned):
     """a_{n+1} = M^-1 (f_ext + f_con - f_int), the second halves of the work increments, and the
