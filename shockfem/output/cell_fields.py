@@ -68,10 +68,44 @@ def deformation_gradient(X: np.ndarray, x: np.ndarray, dofmap: np.ndarray, cell:
 
 
 def hencky_strain(F: np.ndarray) -> np.ndarray:
-    """h = 1/2 ln(F F^T) of (cells, 3, 3) deformation gradients, stored as (cells, 6) [11, 22, 33, 23, 13, 12]."""
-    w, V = np.linalg.eigh(F @ np.swapaxes(F, 1, 2))
-    h = (V * (0.5 * np.log(w))[:, None, :]) @ np.swapaxes(V, 1, 2)
-    return h[:, (0, 1, 2, 1, 0, 0), (0, 1, 2, 2, 2, 1)]
+    """h = 1/2 ln(F F^T) of (cells, 3, 3) deformation gradients, stored as (cells, 6) [11, 22, 33, 23, 13, 12].
+
+    In 2D (F's third row and column zero but F_33: the hoop or the depth) the third direction is a principal
+    one and the in-plane logarithm has a closed form (``_log_2x2``); otherwise from the eigenvectors."""
+    if F[:, 2, :2].any() or F[:, :2, 2].any():
+        w, V = np.linalg.eigh(F @ np.swapaxes(F, 1, 2))
+        h = (V * (0.5 * np.log(w))[:, None, :]) @ np.swapaxes(V, 1, 2)
+        return h[:, (0, 1, 2, 1, 0, 0), (0, 1, 2, 2, 2, 1)]
+    h = np.zeros((len(F), 6))
+    b11, b22, b12 = _log_2x2(F[:, :2, :2])
+    h[:, 0], h[:, 1], h[:, 5] = 0.5 * b11, 0.5 * b22, 0.5 * b12
+    h[:, 2] = np.log(np.abs(F[:, 2, 2]))
+    return h
+
+
+def _log_2x2(F2: np.ndarray):
+    """ln(B) of B = F2 F2^T, (cells, 2, 2) in-plane gradients, as its entries (11, 22, 12).
+
+    With B's eigenvalues l1,2 = m +- r (m its mean, r = sqrt(((B11 - B22) / 2)^2 + B12^2)), ln(B) = a I + b (B - m I)
+    with a = (ln l1 + ln l2) / 2 = ln |det F2| and b = (ln l1 - ln l2) / (l1 - l2): both vanish from neither
+    eigenvector, so a repeated eigenvalue needs no care but in b, which is atanh(r / m) / r, 1 / m as r -> 0.
+    Where the eigenvalues are far apart (r > m / 2) b is taken from l1 and l2 = det B / l1 instead: atanh near
+    1 loses digits in 1 - r / m.  numpy's ``eigh`` agrees to 1e-15 (``tests/unit/output/test_cell_fields.py``)."""
+    f11, f12, f21, f22 = F2[:, 0, 0], F2[:, 0, 1], F2[:, 1, 0], F2[:, 1, 1]
+    B11, B22, B12 = f11 * f11 + f12 * f12, f21 * f21 + f22 * f22, f11 * f21 + f12 * f22
+    det = np.abs(f11 * f22 - f12 * f21)
+    m = 0.5 * (B11 + B22)
+    r = np.hypot(0.5 * (B11 - B22), B12)
+    x = r / m
+    near = x <= 0.5
+    xs = np.where(near, x, 0.5)
+    # atanh(x) / x, and its series 1 + x^2 / 3 (+ x^4 / 5, below 2e-17 there) where x < 1e-4
+    ratio = np.where(xs > 1e-4, np.arctanh(xs) / np.where(xs > 1e-4, xs, 1.0), 1.0 + xs * xs / 3.0)
+    l1 = m + r
+    l2 = det * det / l1
+    b = np.where(near, ratio / m, np.log(l1 / l2) / np.where(near, 1.0, l1 - l2))
+    a = np.log(det)
+    return a + b * (B11 - m), a + b * (B22 - m), b * B12
 
 
 def cell_fields(solver, names, cells: int | None = None) -> dict[str, np.ndarray]:
