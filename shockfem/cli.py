@@ -240,7 +240,7 @@ def console() -> int:
     collections, then the objects alive are frozen (``gc.freeze``) before the interpreter ends.
 
     Each full collection walks every object that dolfinx, numba and matplotlib made (about a million): three
-    of them took 0.14 s of a 2.1 s ``shockfem run`` as they start, and the interpreter's last ones 0.35-0.4 s
+    of them took 0.14 s of a 2.1 s ``shockfem run`` as they start, and the interpreter's last ones 0.40-0.47 s
     after it.  The young generations still collect as often as before, and with them the garbage a time
     loop makes; at the end, files and MPI are closed, and the memory goes back to the system with the
     process.  ``main`` itself leaves the collector alone: a program that calls it goes on."""

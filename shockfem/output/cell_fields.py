@@ -87,10 +87,12 @@ def _log_2x2(F2: np.ndarray):
     """ln(B) of B = F2 F2^T, (cells, 2, 2) in-plane gradients, as its entries (11, 22, 12).
 
     With B's eigenvalues l1,2 = m +- r (m its mean, r = sqrt(((B11 - B22) / 2)^2 + B12^2)), ln(B) = a I + b (B - m I)
-    with a = (ln l1 + ln l2) / 2 = ln |det F2| and b = (ln l1 - ln l2) / (l1 - l2): both vanish from neither
-    eigenvector, so a repeated eigenvalue needs no care but in b, which is atanh(r / m) / r, 1 / m as r -> 0.
-    Where the eigenvalues are far apart (r > m / 2) b is taken from l1 and l2 = det B / l1 instead: atanh near
-    1 loses digits in 1 - r / m.  numpy's ``eigh`` agrees to 1e-15 (``tests/unit/output/test_cell_fields.py``)."""
+    with a = (ln l1 + ln l2) / 2 = ln |det F2| and b = (ln l1 - ln l2) / (l1 - l2).  Neither needs the
+    eigenvectors, and a repeated eigenvalue needs care only in b: b = atanh(r / m) / r, which is 1 / m as
+    r -> 0 (its series below r / m = 1e-4).  Where the eigenvalues are more than a factor 3 apart (r > m / 2)
+    b comes from l1 and l2 = det B / l1 instead: atanh near 1 loses digits in 1 - r / m.  Against numpy's
+    ``eigh``: 5e-15 on random gradients with det F2 > 0.05 (``tests/unit/output/test_cell_fields.py``); nearer
+    singular, eigh is the less accurate of the two (docs/performance.md)."""
     f11, f12, f21, f22 = F2[:, 0, 0], F2[:, 0, 1], F2[:, 1, 0], F2[:, 1, 1]
     B11, B22, B12 = f11 * f11 + f12 * f12, f21 * f21 + f22 * f22, f11 * f21 + f12 * f22
     det = np.abs(f11 * f22 - f12 * f21)
