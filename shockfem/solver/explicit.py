@@ -178,7 +178,7 @@ class ExplicitSolver:
         self.constrained = np.zeros(self.x.shape, dtype=np.bool_)
         self.constrained.reshape(-1)[self._constrained_dofs] = True
         # for the reactions' work: the mass behind each constrained dof, and which dofs this rank owns
-        self._constrained_mass = m.mass[self._constrained_dofs // gdim]
+        self._constrained_mass = self._mass_dofs.reshape(-1)[self._constrained_dofs]
         self._constrained_owned = self._constrained_dofs < m.num_owned * gdim
         # where each constraint's dofs sit among them (``advance``, ``_prescribed_motion``)
         self._constraint_positions = [np.searchsorted(self._constrained_dofs, c.dofs) for c in m.constraints]
@@ -390,9 +390,7 @@ class ExplicitSolver:
         # m (v - v_free) . v_n over the constrained dofs
         reaction_work = 0.0
         if m.constraints:
-            held = self._constrained_held
-            for con, at in zip(m.constraints, self._constraint_positions):     # a later one wins a shared dof
-                held[at] = con.value(self.t + 0.5 * dt)
+            held = self._prescribed_velocities(self.t + 0.5 * dt, self._constrained_held)
             reaction_work = self._sum(nodal.hold_dofs(self.v, self._constrained_dofs, held, self._constrained_mass,
                                                       self._constrained_owned, self._constrained_before))
         if self.parallel:
@@ -619,14 +617,20 @@ class ExplicitSolver:
         evaluated once per step (the history asks for it several times)."""
         if self._prescribed_at != self.step:
             n = len(self._constrained_dofs)
-            v, a = np.zeros(n), np.zeros(n)
             h = 0.5 * self.dt if self.dt > 0 else 1e-9
             before, after = max(self.t - h, 0.0), self.t + h
-            for con, at in zip(self.model.constraints, self._constraint_positions):
-                v[at] = con.value(self.t)
-                a[at] = (con.value(after) - con.value(before)) / (after - before)
+            v = self._prescribed_velocities(self.t, np.zeros(n))
+            a = ((self._prescribed_velocities(after, np.zeros(n)) - self._prescribed_velocities(before, np.zeros(n)))
+                 / (after - before))
             self._prescribed, self._prescribed_at = (v, a), self.step
         return self._prescribed
+
+    def _prescribed_velocities(self, t: float, out: np.ndarray) -> np.ndarray:
+        """Every constrained dof's prescribed velocity at t into ``out`` (``_constrained_dofs``' order; of two
+        constraints that share a dof, the later one's), which it returns."""
+        for con, at in zip(self.model.constraints, self._constraint_positions):
+            out[at] = con.value(t)
+        return out
 
     def _body_sums(self):
         """This rank's per-body sums of m v and m a of the motion at t, and of the kinetic energy as the
