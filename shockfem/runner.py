@@ -249,7 +249,7 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
                 loop["next_field"] += scene.outputs.field_interval
             # plastic work is dissipated, never given back: a fall beyond round-off is a material update
             # creating energy that the balance cannot see (the plastic term absorbs it)
-            if s.energy.plastic < loop["plastic_before"] - 1e-9 * max(s.energy.peak, s.energy.initial):
+            if s.energy.plastic < loop["plastic_before"] - 1e-9 * s.energy.largest:
                 raise UnstableRun(
                     f"the plastic work fell from {loop['plastic_before']:.6g} J to {s.energy.plastic:.6g} J at "
                     f"t = {s.t:.6g} s (step {s.step}): a material update is creating energy (an element crushed "

@@ -77,10 +77,14 @@ class Energies:
                 + self.bulk_viscosity + self.contact - self.external - self.initial)
 
     @property
+    def largest(self) -> float:
+        """The largest energy in play so far, the initial total if it dominates: the scale of the energy checks."""
+        return max(self.peak, self.initial)
+
+    @property
     def balance_error(self) -> float:
-        """|balance| as a fraction of the largest energy in play (initial total if it dominates)."""
-        ref = max(self.peak, self.initial, 1e-300)
-        return abs(self.balance) / ref
+        """|balance| as a fraction of the largest energy in play."""
+        return abs(self.balance) / max(self.largest, 1e-300)
 
 
 @dataclass(frozen=True)
@@ -493,7 +497,7 @@ class ExplicitSolver:
             dt = min(self.stable_step(), end_time - self.t)
             self.advance(dt)
             e = self.energy
-            if self.step > START_UP_STEPS and e.internal < -ENERGY_CREATED * max(e.peak, e.initial):
+            if self.step > START_UP_STEPS and e.internal < -ENERGY_CREATED * e.largest:
                 self._energy_created()
             yield Step(self.step, self.t, dt, self.dt_stable, replace(self.energy), tuple(self.log_messages[said:]))
             said = len(self.log_messages)
@@ -514,7 +518,7 @@ class ExplicitSolver:
 
     def _energy_created(self):
         e = self.energy
-        largest = max(e.peak, e.initial)
+        largest = e.largest
         energies = self.body_energies()
         stored = energies["internal"] - energies["plastic"]
         body = self.model.bodies[int(np.argmin(stored))].name
