@@ -1,6 +1,9 @@
 """Open a run's fields in ParaView's own Python, as a user's File > Open would, and take a picture.
 
-    xvfb-run -a pvpython scripts/paraview_open.py RUN_DIR/fields.xdmf picture.png [scale]
+    xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython scripts/paraview_open.py RUN_DIR/fields.xdmf picture.png [scale]
+
+``-noreset``: pvpython connects to the X server twice, and a server that resets when the first
+connection closes refuses the second now and then ("bad X server connection", SIGABRT).
 
 Opens the file with ParaView's default reader for .xdmf, prints one JSON line (the reader, the time
 steps, the point and cell arrays, the cell count, the cells of the first body after a Threshold on

@@ -46,13 +46,16 @@ def _run(tmp_path, kinematics, launcher=()):
 
 
 class _Display:
-    """An X server of the test's own for pvpython (Debian's ParaView renders through GLX): a display
-    number no server holds or has just left, used once it takes connections; started again on demand.
-    Not ``xvfb-run -a`` per call: now and then a call found its server not yet up ("bad X server
-    connection", SIGABRT: 3 in 40 calls measured), and under load (both cores busy with the suite's
-    workers) a server that took a socket connection still refused pvpython at times, three times in a
-    row once (CI of 8398768): a server is used once ``xdpyinfo`` completes its X handshake, checked again
-    before each call, and ``_paraview`` tries again on a new server, at most four times."""
+    """An X server of the test's own for pvpython (Debian's ParaView renders through GLX), started with
+    ``-noreset``. Without it an X server resets when its last client disconnects, and pvpython connects
+    twice: a first connection (a probe) closes, the server resets, and pvpython's render window finds its
+    second connection reset by the server ("bad X server connection", SIGABRT). strace showed the reset
+    (ECONNRESET right after the connection's setup request); under load on both cores it failed 8 times
+    in 48 calls on one server without ``-noreset`` and 0 in 30 with it; ``xvfb-run -a`` per call failed 4
+    times in 20, and 0 in 20 with ``-s "-noreset ..."`` (session 26). In CI it broke four tries in a row
+    (CI of c53a380). The server takes a display number no server holds and is used once ``xdpyinfo``
+    completes its X handshake; ``_paraview`` still tries again on a new server if pvpython reports no
+    usable server."""
 
     def __init__(self):
         self.server, self.name = None, None
@@ -64,7 +67,7 @@ class _Display:
                 and not os.path.exists(f"/tmp/.X11-unix/X{n}")]
         number = random.choice(free)
         self.server = subprocess.Popen(["Xvfb", f":{number}", "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
-                                        "-ac"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                                        "-ac", "-noreset"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.name = f":{number}"
         for _ in range(300):           # until an X client completes its handshake, not only a socket connect
             if self.answers():
