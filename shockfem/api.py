@@ -126,7 +126,9 @@ def run(scene: Scene | str | dict, out_dir: str, progress: bool = False, fields:
     ``shockfem.errors.UnstableRun`` when the run goes unstable (its outputs are kept); a
     ``SceneError`` or ``ModelError`` on bad input."""
     from .mpi_start import start_mpi
+    from .dolfinx_start import import_dolfinx
     start_mpi()
+    import_dolfinx()
     from .runner import run_scene
     from .scene import Scene
     if not isinstance(scene, Scene):
@@ -140,7 +142,9 @@ def resume(out_dir: str, progress: bool = False, on_step=None) -> Run:
     its ``Run``: the same as a run that was never stopped.  Raises ``ModelError`` when there is nothing to
     resume (a completed run, no checkpoint) or it cannot be (another number of MPI processes)."""
     from .mpi_start import start_mpi
+    from .dolfinx_start import import_dolfinx
     start_mpi()
+    import_dolfinx()
     from .runner import resume_run
     resume_run(out_dir, progress=progress, quiet=True, on_step=on_step)
     return load_run(out_dir)

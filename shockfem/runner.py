@@ -25,7 +25,7 @@ from .output.cell_fields import von_mises
 from .output.fields import FieldWriter, write_final_shape
 from .output import checkpoint
 from .output.history import HistoryRecorder
-from .output.picture_process import PictureProcess
+from .output.picture_process import PictureProcess, pictures_wanted
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene, to_plain
@@ -161,8 +161,9 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
     going on from its checkpoint."""
     origin = {**(origin or {}), "write_fields": write_fields}
     rd = RunDirectory(out_dir, comm, resume=resume is not None)
-    # started now, so that it imports its libraries while this process meshes and steps
-    pictures = PictureProcess() if comm.rank == 0 and write_fields and pictures_wanted() else None
+    # started now (or taken from ``shockfem run``, which starts it first thing), so that it imports its
+    # libraries while this process meshes and steps
+    pictures = PictureProcess.for_run() if comm.rank == 0 and write_fields and pictures_wanted() else None
     say = (lambda msg: rd.log(msg, echo=not quiet))
     state = None if resume is None else checkpoint.read_rank(out_dir, resume, comm)
     if resume is None:
@@ -341,12 +342,6 @@ def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, q
         finally:
             stop.restore()
     return RunResult(summary, solver, history, out_dir)
-
-
-def pictures_wanted() -> bool:
-    """Whether runs draw their deformed shapes (``render.render_run``): unless ``SHOCKFEM_PICTURES=0`` (the
-    test suite's setting: about 1.5 s a run; batch users may want it too)."""
-    return os.environ.get("SHOCKFEM_PICTURES", "1") != "0"
 
 
 class _StopOnSignal:

@@ -12,11 +12,17 @@ Two reasons for a separate process:
 The process waits on its standard input for one request (a JSON line: run directory and bodies),
 draws, prints the pictures it wrote as a JSON list and ends; an empty input (the run failed before
 it had anything to show) ends it without drawing.
+
+``shockfem run`` starts it first thing (``start_early``), before it imports the solver: the warm-up
+(imports and a first picture, 1.2 s) is longer than a small run's own start, and the run's end waited
+for it.
 """
 from __future__ import annotations
 
+import atexit
 import gc
 import json
+import os
 import signal
 import subprocess
 import sys
@@ -25,13 +31,42 @@ import threading
 WAIT_S = 600.0          # for the drawing, after the request: a few seconds is usual
 
 
+def pictures_wanted() -> bool:
+    """Whether runs draw their deformed shapes (``render.render_run``): unless ``SHOCKFEM_PICTURES=0`` (the
+    test suite's setting: about 1.5 s a run; batch users may want it too)."""
+    return os.environ.get("SHOCKFEM_PICTURES", "1") != "0"
+
+
 class PictureProcess:
     """The picture process of one run (rank 0 only)."""
+
+    _early: "PictureProcess | None" = None      # started by ``start_early``, not yet taken by a run
 
     def __init__(self):
         self._proc = subprocess.Popen([sys.executable, "-m", "shockfem.output.picture_process"],
                                       stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                       text=True)
+
+    @classmethod
+    def start_early(cls):
+        """Start the picture process of the run this process is about to make (``for_run`` takes it); if
+        no run takes it (bad input, say), it is stopped as this process ends."""
+        if cls._early is None:
+            cls._early = cls()
+            atexit.register(cls._stop_untaken)
+
+    @classmethod
+    def for_run(cls) -> "PictureProcess":
+        """The process ``start_early`` started, if it is still waiting, or a new one."""
+        early, cls._early = cls._early, None
+        return early if early is not None and early._proc.poll() is None else cls()
+
+    @classmethod
+    def _stop_untaken(cls):
+        early, cls._early = cls._early, None
+        if early is not None and early._proc.poll() is None:
+            early._proc.kill()
+            early._proc.communicate()
 
     def request(self, run_dir: str, bodies: list[int]):
         """Ask for the run's pictures of ``bodies`` (scene indices), once its files are written; the process

@@ -67,3 +67,22 @@ def test_the_run_finishes_whatever_the_picture_process_does(tmp_path, monkeypatc
         assert pictures == [False, False] and "picture process ended on signal SIGSEGV" in log
     else:
         assert pictures == [True, True] and "no pictures" not in log
+
+
+def test_a_process_started_early_is_the_one_the_run_takes_or_is_stopped():
+    """``shockfem run`` starts the picture process before it imports the solver (``start_early``): the run
+    takes that one (``for_run``), and one no run took is stopped when the command ends (bad input)."""
+    PictureProcess.start_early()
+    early = PictureProcess._early
+    taken = PictureProcess.for_run()
+    assert taken is early and PictureProcess._early is None
+    taken.cancel()
+    assert taken._proc.returncode == 0
+    fresh = PictureProcess.for_run()                      # nothing waiting: a new one
+    assert fresh is not early
+    fresh._proc.kill()
+    fresh._proc.communicate()
+    PictureProcess.start_early()
+    untaken = PictureProcess._early
+    PictureProcess._stop_untaken()
+    assert untaken._proc.returncode == -signal.SIGKILL and PictureProcess._early is None
