@@ -711,3 +711,48 @@ def verdict(least, margin):
         # lo_a - hi_b and lo_b - hi_a (the upper corners are stored negated)
         gap = max(gap, least[c] + least[3 * g + c], least[g + c] + least[2 * g + c])
     return gap > margin, -least[4 * g] >= 0.25 * margin
+
+
+@njit(cache=True)
+def hold_on_plane(x, v, v_before, nodes, mass, area, point, normal, dt, impulse):
+    """A rigid plane as a constraint (LS-DYNA's *RIGIDWALL_PLANAR, frictionless): each of ``nodes`` whose
+    step x + dt v would end behind the plane through ``point`` (its place at the step's end) with unit
+    ``normal`` toward the allowed side gets the normal velocity that puts it on the plane at the step's
+    end; its tangential velocity stays.  ``v`` is v_{n+1/2} after the free update, changed in place.
+    ``v_before``: the nodes' v_{n-1/2}; ``mass`` and ``area`` (the node's share of the surface): per node.
+    ``impulse`` (gdim) is set to the sum of m (v - v_free), the wall's impulse on the nodes.  Returns (the
+    work of that impulse, m (v - v_free) . (v_before + v) / 2 summed, the impulse times the node's mean
+    velocity at t_n, as the reactions' work of a held dof is counted (``nodal.hold_dofs``: a node resting
+    on the wall, at 0 before and after, takes none); the number of nodes held; the sum of the nodes'
+    impulses' sizes; the largest impulse per area; the area of the nodes held).  A node
+    the plane does not stop is left alone: a node is held only while it presses on the wall, and leaves it
+    as soon as its free step does."""
+    gdim = x.shape[1]
+    for d in range(gdim):
+        impulse[d] = 0.0
+    work = 0.0
+    held = 0
+    total = 0.0
+    largest = 0.0
+    loaded = 0.0
+    for j in range(nodes.shape[0]):
+        n = nodes[j]
+        gap = 0.0
+        for d in range(gdim):
+            gap += (x[n, d] + dt * v[n, d] - point[d]) * normal[d]
+        if gap >= 0.0:
+            continue
+        dv = -gap / dt                      # along the normal: the node ends on the plane
+        for d in range(gdim):
+            free = v[n, d]
+            new = free + dv * normal[d]
+            v[n, d] = new
+            change = mass[j] * (new - free)
+            impulse[d] += change
+            work += change * 0.5 * (v_before[j, d] + new)
+        held += 1
+        total += mass[j] * dv
+        loaded += area[j]
+        if area[j] > 0.0:
+            largest = max(largest, mass[j] * dv / area[j])
+    return work, held, total, largest, loaded

@@ -262,6 +262,19 @@ class ContactPair:
         self._offset0 = None                 # the initial penetrations an interference ramp pushes out
         self.preload = None                  # at the end of that ramp: force on a, pressure, area
         self.v_before = self.v_after = None  # body mean velocities around contact (for restitution)
+        # a constraint wall (``hold``): surface a's nodes this rank owns, their masses and areas
+        self.constraint = spec.method == "constraint"
+        if self.constraint:
+            if model.bodies[self.a.body].rigid:
+                raise ModelError(f"contact '{spec.name}': method = \"constraint\" holds a deformable body's "
+                                 f"nodes on the wall; '{model.bodies[self.a.body].name}' is rigid: leave method "
+                                 f"at \"penalty\"")
+            of_a = np.isin(self.exchange.slot, self.nodes_a)
+            self.wall_nodes = self.exchange.local[of_a]
+            self.wall_mass = model.mass[self.wall_nodes]
+            self.wall_area = self.area_a[np.searchsorted(self.nodes_a, self.exchange.slot[of_a])]
+            self._wall_impulse = np.zeros(gdim)
+            self._wall_before = np.zeros((len(self.wall_nodes), gdim))     # their v_{n-1/2} (``take_velocities``)
 
     # --------------------------------------------------------------- search
     def _gather(self, x: np.ndarray, v: np.ndarray):
@@ -331,12 +344,42 @@ class ContactPair:
             kernels.add_springs(records, self.owned, nf, self.has_friction, self.f, self.ff, self.stiff)
         return active
 
+    def take_velocities(self, v: np.ndarray):
+        """A constraint wall's nodes' velocities before the step's update (v_{n-1/2}), for ``hold``'s work."""
+        np.take(v, self.wall_nodes, axis=0, out=self._wall_before)
+
+    def hold(self, x: np.ndarray, v: np.ndarray, dt: float, dt_avg: float, t_end: float) -> float:
+        """A constraint wall's step (``kernels.hold_on_plane``): the nodes of surface a that would cross the
+        wall by ``t_end`` put on it, ``v`` (v_{n+1/2}, before the position update) changed in place.  The
+        impulse goes into the pair's impulse as it is, and its mean force over the step (impulse /
+        ``dt_avg``) is the force on a the history records.  Returns the work of the wall on the bodies
+        [J].  Collective under MPI."""
+        rigid = self.passes[0]
+        work, held, total, largest, loaded = kernels.hold_on_plane(
+            x, v, self._wall_before, self.wall_nodes, self.wall_mass, self.wall_area,
+            rigid.point + t_end * rigid.velocity,
+            rigid.direction, dt, self._wall_impulse)
+        sums = np.concatenate([[work, held, total, loaded], self._wall_impulse])
+        if self.parallel:
+            self.model.comm.Allreduce(MPI.IN_PLACE, sums, op=MPI.SUM)
+            largest = self.model.comm.allreduce(largest, op=MPI.MAX)
+        work, held, total, loaded = sums[:4].tolist()
+        self.impulse += sums[4:]
+        self.force_a = sums[4:] / dt_avg
+        self.active = int(held)
+        self.work += work
+        self._step_sizes = (float(np.linalg.norm(self.force_a)), 0.0, largest / dt_avg, total / dt_avg, loaded)
+        return work
+
     def compute(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> float:
         """Contact forces at the current positions on this rank's nodes (collective under MPI).
 
         ``v`` is v_{n+1/2} of the step of size ``dt`` just taken: the work of the contact forces
         over that step is counted here, trapezoidally, as the solver counts it.  Returns the
-        step limit of the active penalty springs (inf if none)."""
+        step limit of the active penalty springs (inf if none; a constraint wall has none, and no
+        forces: ``hold`` does its work)."""
+        if self.constraint:
+            return np.inf
         self._gather(x, v)
         kernels.clear(self.own_nodes, self.f, self.ff, self.stiff)
         active = 0
@@ -415,7 +458,8 @@ class ContactPair:
         update puts into the bodies' mean velocities at t (v_n+1/2 takes a_n over (dt_n-1 + dt_n) / 2, and
         v(t_n+1) = v_n+1/2 + dt_n a_n+1 / 2), so a body that only this pair pushes changes its momentum by
         exactly the impulse (dt f_n+1 differed by half a step's force at the end, 1e-3 of a Taylor bar's)."""
-        self.impulse += 0.5 * dt * (self._load_before + self.force_a + self.friction_a)
+        if not self.constraint:          # a constraint wall adds its impulses as they are (``hold``)
+            self.impulse += 0.5 * dt * (self._load_before + self.force_a + self.friction_a)
         force, friction, pressure, load, loaded_area = self._step_sizes
         if self.active > 0:
             self.max_pressure = max(self.max_pressure, pressure)
@@ -441,7 +485,18 @@ class ContactPair:
 
     def start(self, x: np.ndarray, v: np.ndarray) -> tuple[int, float]:
         """At t = 0: take every initial penetration as its node's zero; returns (nodes, deepest [m]).
-        Collective under MPI."""
+        A constraint wall refuses nodes that start behind it.  Collective under MPI."""
+        if self.constraint:
+            rigid = self.passes[0]
+            gaps = (x[self.wall_nodes] - rigid.point) @ rigid.direction
+            deepest = float(max(-gaps.min(), 0.0)) if len(gaps) else 0.0
+            if self.parallel:
+                deepest = self.model.comm.allreduce(deepest, op=MPI.MAX)
+            if deepest > 1e-6 * self.smallest_facet:
+                raise ModelError(f"contact '{self.name}': surface '{self.spec.a}' starts up to {deepest * 1e3:.4g} mm "
+                                 f"behind the constraint wall, which would put those nodes on it in the first "
+                                 f"step: move the wall's point or the body")
+            return self.initial_overlap
         self._gather(x, v)
         apart, search_due = self._survey()
         if apart:
@@ -485,7 +540,7 @@ class ContactPair:
         return -rel(after) / before if before != 0 else None
 
     def summary(self) -> dict:
-        return {"surfaces": [self.spec.a, self.spec.b or self.spec.rigid.kind],
+        return {"surfaces": [self.spec.a, self.spec.b or self.spec.rigid.kind], "method": self.spec.method,
                 "penalty": self.spec.penalty, "damping_ratio": self.spec.damping,
                 "friction": {"static": self.spec.friction[0], "dynamic": self.spec.friction[1],
                              "decay": self.spec.friction[2]},

@@ -7,6 +7,13 @@ from .specs import Contact, RigidSurface, Spring
 
 
 PENALTIES = ("segment", "soft")
+# how a contact holds its surfaces apart: penalty springs, or (a rigid wall only) a kinematic constraint that
+# puts every node that would cross the wall on it (LS-DYNA's *RIGIDWALL_PLANAR), for impacts too fast for a
+# penalty to catch
+METHODS = ("penalty", "constraint")
+# the keys of a penalty contact, which a constraint wall does not use
+PENALTY_KEYS = ("penalty", "penalty_scale", "damping", "friction", "friction_dynamic", "friction_decay",
+                "interference")
 CYLINDER_SIDES = ("outside", "inside")
 
 
@@ -68,8 +75,8 @@ def read_contacts(ck: Checker, raw: dict, body_regions: dict, kin: str) -> list[
     """[[contact]] entries: two surfaces (``a``, ``b``) or a surface and a rigid ``wall`` or ``cylinder``."""
     out = []
     for path, c in ck.entries(raw, "contact"):
-        ck.unknown(c, ("name", "a", "b", "wall", "cylinder", "penalty", "penalty_scale", "damping", "friction",
-                       "friction_dynamic", "friction_decay", "interference"), path)
+        ck.unknown(c, ("name", "a", "b", "wall", "cylinder", "method", "penalty", "penalty_scale", "damping",
+                       "friction", "friction_dynamic", "friction_decay", "interference"), path)
         a = surface_spec(ck, c, "a", path, body_regions)
         b = rigid = None
         if sum(k in c for k in ("b", "wall", "cylinder")) != 1:
@@ -90,8 +97,18 @@ def read_contacts(ck: Checker, raw: dict, body_regions: dict, kin: str) -> list[
             ck.fail(f"{path}.friction_dynamic", f"must not exceed the static coefficient friction = {mu_s:g}")
         decay = ck.quantity(c, "friction_decay", path, "slowness", default=0.0, nonnegative=True)
         interference = ck.quantity(c, "interference", path, "time", default=0.0, nonnegative=True)
+        method = ck.choice(c, "method", path, METHODS, default="penalty")
+        if method == "constraint":
+            if "wall" not in c:
+                ck.fail(f"{path}.method", 'a constraint holds nodes on a rigid wall (a plane) only: give wall = '
+                                          '{point, normal}, or leave method at "penalty"')
+            for key in PENALTY_KEYS:
+                if key in c:
+                    ck.fail(f"{path}.{key}", 'not used by method = "constraint" (a frictionless wall that puts '
+                                             'each node crossing it on it): drop it, or leave method at "penalty"')
         name = c.get("name", f"{a}-{b or (rigid.kind if rigid else '?')}")
-        out.append(Contact(str(name), a or "", b, rigid, penalty, scale, zeta, (mu_s, mu_d, decay), interference))
+        out.append(Contact(str(name), a or "", b, rigid, penalty, scale, zeta, (mu_s, mu_d, decay), interference,
+                           method))
     return out
 
 

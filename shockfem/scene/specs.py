@@ -196,6 +196,7 @@ class Contact:
     friction: tuple[float, float, float] = (0.0, 0.0, 0.0)   # mu_static, mu_dynamic, decay [s/m]
     # > 0: initial overlaps are pushed out over this time [s] (a shrink fit's preload); 0: they are the zero
     interference_time: float = 0.0
+    method: str = "penalty"          # penalty | constraint (a rigid wall that puts each node crossing it on it)
 
 
 @dataclass(frozen=True)

@@ -145,6 +145,7 @@ class ExplicitSolver:
         self._said_preload: set[str] = set()
         self.log_messages: list[str] = []
         self.contacts = [ContactPair(m, c) for c in m.contacts]
+        self._walls = [pair for pair in self.contacts if pair.constraint]     # held in ``advance``
         self.springs = [DiscreteSpring(m, c) for c in m.springs]
         self.cavities = [LiquidCavity(m, c) for c in m.cavities]
         self.target = ConcreteTarget(m, m.penetration) if m.penetration else None
@@ -382,6 +383,8 @@ class ExplicitSolver:
         dt_avg = 0.5 * (self.dt + dt)
         if m.constraints:
             nodal.take_dofs(self.v, self._constrained_dofs, self._constrained_before)
+        for pair in self._walls:
+            pair.take_velocities(self.v)
 
         # velocity v_{n+1/2}; mass-proportional damping taken implicitly
         e.damping += self._sum(nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, self._mass_dofs, m.num_owned))
@@ -397,6 +400,10 @@ class ExplicitSolver:
             held = self._prescribed_velocities(self.t + 0.5 * dt, self._constrained_held)
             reaction_work = self._sum(nodal.hold_dofs(self.v, self._constrained_dofs, held, self._constrained_mass,
                                                       self._constrained_owned, self._constrained_before))
+        # constraint walls: the nodes that would cross one by t_{n+1} put on it (its work, taken up by contact)
+        wall_work = 0.0
+        for pair in self._walls:
+            wall_work += pair.hold(self.x, self.v, dt, dt_avg, self.t + dt)
         if self.parallel:
             self._v_fn.x.scatter_forward()
 
@@ -433,7 +440,7 @@ class ExplicitSolver:
         e.plastic += plastic_work
         e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power + viscosity_power) - plastic_work
         e.external += w_ext + w_ext2 + reaction_work
-        e.contact -= w_con + w_con2
+        e.contact -= w_con + w_con2 + wall_work
         for pair in self.contacts:
             pair.account(dt, self.t, lambda: self.body_means()[0])
         e.kinetic = kinetic

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from .foundation_cases import (axisymmetric_vs_3d, bar_wave, body_damping, energy_conservation, free_flight,
                                free_free_frequency, rayleigh_damping)
-from .contact_cases import (contact_parallel, hertz_spheres, rod_on_rod, rod_on_rod_3d,
+from .contact_cases import (contact_parallel, hertz_spheres, rod_on_constraint_wall, rod_on_rod, rod_on_rod_3d,
                             rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)
 from .spring_cases import spring_oscillator
 from .material_point import material_point
@@ -39,6 +39,7 @@ CASES = {
     "body_damping": body_damping,
     "rod_on_rod": rod_on_rod,
     "rod_on_wall": rod_on_wall,
+    "rod_on_constraint_wall": rod_on_constraint_wall,
     "unequal_rods": unequal_rods,
     "thick_rods": thick_rods,
     "hertz_spheres": hertz_spheres,

@@ -61,6 +61,20 @@ def test_unstable_run_stops_with_diagnosis_and_exit_3(tmp_path):
     assert (out / "fields.xdmf").exists() and (out / "history.csv").exists()
 
 
+def test_a_body_starting_behind_a_constraint_wall_is_refused(tmp_path):
+    """A constraint wall would put every node behind it on it in the first step (a jump, not an impact):
+    bad input, named, exit 2."""
+    scene = tmp_path / "behind.toml"
+    scene.write_text(open(SCENE).read().split("[[boundary]]")[0]
+                     + '[[contact]]\nname = "floor"\na = "bar.bottom"\nmethod = "constraint"\n'
+                       'wall = {point = ["0 m", "5 mm"]}\n')
+    p = shockfem("run", str(scene), "--out", str(tmp_path / "run"), "--no-progress", "--set",
+                 'bodies.bar.element_size="2.5 mm"')
+    assert p.returncode == 2, p.stderr
+    assert "contact 'floor': surface 'bar.bottom' starts up to 5 mm behind the constraint wall" in p.stderr
+    assert "Traceback" not in p.stderr
+
+
 def test_bench_quick_reports_speed(tmp_path):
     out = tmp_path / "bench.json"
     p = shockfem("bench", "--quick", "--json", str(out))

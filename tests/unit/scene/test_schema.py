@@ -144,6 +144,24 @@ def test_contact_and_spring_problems_are_listed():
     assert "spring[1].curve: extensions must increase" in text
 
 
+def test_constraint_wall_resolves_and_its_problems_are_listed():
+    """``method = "constraint"``: a rigid plane only, and without the penalty's keys (it has no penalty,
+    damping or friction); a bad method is named with its choices."""
+    raw = _two_bodies()
+    raw["contact"] = [{"a": "bar.bottom", "wall": {"point": ["0 m", "-1 mm"]}, "method": "constraint"}]
+    c = resolve(raw).contacts[0]
+    assert (c.method, c.rigid.kind, c.rigid.point) == ("constraint", "plane", (0.0, -0.001))
+    raw["contact"] = [{"a": "bar", "b": "anvil", "method": "constraint"},
+                      {"a": "bar", "cylinder": {"radius": "10 mm"}, "method": "constraint"},
+                      {"a": "bar", "wall": {}, "method": "constraint", "friction": 0.2, "penalty_scale": 2},
+                      {"a": "bar", "wall": {}, "method": "glue"}]
+    text = "\n".join(_problems(raw))
+    assert text.count('holds nodes on a rigid wall (a plane) only') == 2, text
+    assert 'contact[2].friction: not used by method = "constraint"' in text
+    assert 'contact[2].penalty_scale: not used by method = "constraint"' in text
+    assert "contact[3].method: must be one of penalty, constraint, got 'glue'" in text
+
+
 def _with_material(**fields):
     raw = base()
     raw["materials"]["steel"].update(fields)
