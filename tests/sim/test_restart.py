@@ -4,7 +4,7 @@
 checkpoint missed), in one process and under ``mpirun -n 2``, and for a chain scene through to its
 report.  The scenes cover every stateful part of the loop: rigid bodies, friction and an interference
 preload (the split cone), a liquid cavity (the piston dashpot), a penetrated target with plasticity,
-3D with rotation (the tilted drop) and discrete springs."""
+3D with rotation (the tilted drop), discrete springs and a constraint wall."""
 import json
 import os
 import shutil
@@ -22,7 +22,7 @@ import shockfem
 from shockfem.cli import main
 from shockfem.errors import RunInterrupted
 from shockfem.output.history_file import read_history_csv
-from shockfem.verify import spring_cases
+from shockfem.verify import contact_cases, spring_cases
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 GALLERY = os.path.join(REPO, "studies", "gallery")
@@ -35,12 +35,22 @@ def _spring_scene():
     return raw
 
 
+def _constraint_wall_scene():
+    """A rod on a constraint wall (``verify rod_on_constraint_wall`` at 0.5 mm), in contact from the start:
+    stopped mid-contact, the wall's impulse and its nodes' velocities go through the checkpoint."""
+    raw = contact_cases._scene("rod_on_constraint_wall", [contact_cases._rod("rod", 0.0, -1.0, 0.0005)],
+                               {"name": "wall", "a": "rod.bottom", "method": "constraint",
+                                "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]}}, 5e-5)
+    return raw
+
+
 SCENES = {   # name: (scene, overrides, the step at which a SIGTERM stops it)
     "cone_drop": (os.path.join(GALLERY, "cone_drop.toml"), ['scene.end_time="0.3 ms"'], 900),
     "piston_dashpot": (os.path.join(GALLERY, "piston_dashpot.toml"), ['scene.end_time="0.3 ms"'], 500),
     "penetration": (os.path.join(GALLERY, "penetration.toml"), ['scene.end_time="0.2 ms"'], 500),
     "tilted_drop_3d": (os.path.join(GALLERY, "tilted_drop.toml"), ['scene.end_time="0.1 ms"'], 300),
-    "springs": (None, [], 100),
+    "springs": (_spring_scene, [], 100),
+    "constraint_wall": (_constraint_wall_scene, [], 300),
 }
 
 
@@ -62,6 +72,7 @@ def _same_run(a_dir, b_dir):
         assert a.summary[key] == b.summary[key]
     assert a.summary["energy"] == b.summary["energy"]
     assert a.summary["bodies"] == b.summary["bodies"]
+    assert a.summary["contacts"] == b.summary["contacts"]     # impulses, peaks, intervals, searches
     if a.fields:
         assert _frame_times(a_dir) == _frame_times(b_dir)
     assert not (b_dir / "checkpoint").exists(), "a completed run keeps no checkpoint"
@@ -70,7 +81,7 @@ def _same_run(a_dir, b_dir):
 @pytest.mark.parametrize("name", list(SCENES))
 def test_a_resumed_run_is_the_uninterrupted_run(tmp_path, name):
     path, overrides, stop_at = SCENES[name]
-    scene = shockfem.load_scene(path or _spring_scene(), overrides)
+    scene = shockfem.load_scene(path() if callable(path) else path, overrides)
     shockfem.run(scene, str(tmp_path / "whole"))
 
     def stop(step):
