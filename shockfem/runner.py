@@ -6,7 +6,6 @@ and read their results back from the run directory.
 from __future__ import annotations
 
 import math
-import os
 
 import signal
 import sys
