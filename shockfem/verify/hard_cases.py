@@ -22,7 +22,7 @@ and the case reports that stop as its result (a check that fails) rather than a 
 * ``hard_long_slide``: a steel block pressed on a rigid floor by a 1e4 m/s^2 body force, sliding at
   50 m/s with Coulomb friction mu = 0.3 for 3 ms: it slows at mu g (closed form, within 2%).
 * ``hard_fast_wall``: the copper Taylor bar (R 3.2 mm, L 32.4 mm, 0.8 mm quads) at 1000 m/s onto a rigid
-  wall held as a constraint (``method = "constraint"``), 20 us. With the default penalty wall this run
+  wall held as a constraint (``method = "constraint"``), 20 us. On a penalty wall (``penalty_scale = 1``) this run
   completes with nodes 3.6 mm behind the wall (the penalty lets go of a node deeper than a facet size);
   the constraint puts every node that would cross the wall on it: no node of the bar behind the wall,
   and the wall's impulse is the bar's momentum change (to round-off: each impulse is m (v - v_free)).
