@@ -486,9 +486,9 @@ class ContactPair:
     def start(self, x: np.ndarray, v: np.ndarray) -> tuple[int, float]:
         """At t = 0: take every initial penetration as its node's zero; returns (nodes, deepest [m]).
         A constraint wall refuses nodes that start behind it.  Collective under MPI."""
+        self._gather(x, v)
         if self.constraint:
-            rigid = self.passes[0]
-            gaps = (x[self.wall_nodes] - rigid.point) @ rigid.direction
+            gaps = self.passes[0].gaps(self.x)
             deepest = float(max(-gaps.min(), 0.0)) if len(gaps) else 0.0
             if self.parallel:
                 deepest = self.model.comm.allreduce(deepest, op=MPI.MAX)
@@ -497,7 +497,6 @@ class ContactPair:
                                  f"behind the constraint wall, which would put those nodes on it in the first "
                                  f"step: move the wall's point or the body")
             return self.initial_overlap
-        self._gather(x, v)
         apart, search_due = self._survey()
         if apart:
             return self.initial_overlap
