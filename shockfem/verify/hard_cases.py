@@ -61,12 +61,19 @@ def _face(a: str, b: str) -> dict:
     return {"name": "face", "a": f"{a}.bottom", "b": f"{b}.top"}
 
 
+def _run_result(raw: dict, workdir: str):
+    """The run through ``run_scene``: (its ``RunResult``, None) or (None, the diagnosis)."""
+    try:
+        return run_scene(resolve(raw), workdir, progress=False, quiet=True, write_fields=False), None
+    except UnstableRun as e:
+        return None, e.diagnosis
+
+
 def _run(raw: dict, workdir: str):
     """The run through ``run_scene``: (summary, history columns, None) or (None, None, the diagnosis)."""
-    try:
-        result = run_scene(resolve(raw), workdir, progress=False, quiet=True, write_fields=False)
-    except UnstableRun as e:
-        return None, None, e.diagnosis
+    result, stop = _run_result(raw, workdir)
+    if result is None:
+        return None, None, stop
     h = {name: result.history.column(name) for name, _ in result.history.columns}
     return result.summary, h, None
 
@@ -176,14 +183,12 @@ def hard_fast_wall(size, workdir):
                   [_rod("bar", "copper", 0.0032, 0.0324, h, 0.0, -1000.0)],
                   [{"name": "wall", "a": "bar.bottom", "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]},
                     "method": "constraint"}])
-    try:
-        result = run_scene(resolve(raw), workdir, progress=False, quiet=True, write_fields=False)
-    except UnstableRun as e:
-        return _stopped("hard_fast_wall", e.diagnosis)
+    result, stop = _run_result(raw, workdir)
+    if result is None:
+        return _stopped("hard_fast_wall", stop)
     s, solver = result.summary, result.solver
-    hist = {name: result.history.column(name) for name, _ in result.history.columns}
-    m = s["bodies"]["bar"]["mass"]
-    change = m * (hist["bar.v_z"][-1] - hist["bar.v_z"][0])
+    v = result.history.column("bar.v_z")
+    change = s["bodies"]["bar"]["mass"] * (v[-1] - v[0])
     impulse = s["contacts"]["wall"]["impulse_on_a"][-1]
     behind = max(0.0, -float(solver.comm.allreduce(solver.x[:, 1].min(), op=MPI.MIN)))
     wall, n = s["wall_time_s"], s["elements"]
