@@ -57,14 +57,27 @@ def deformation_gradient(X: np.ndarray, x: np.ndarray, dofmap: np.ndarray, cell:
     third direction is the hoop (F_33 = r / R at the centre) or the plane-strain depth (1)."""
     dN = kin.centre_gradients(cell)                       # (nn, tdim), reference cell
     Xe, xe = X[dofmap], x[dofmap]                         # (cells, nn, gdim)
-    J0 = np.swapaxes(Xe, 1, 2) @ dN                       # dX/dxi (cells, gdim, tdim)
-    J = np.swapaxes(xe, 1, 2) @ dN                        # dx/dxi
+    # sum over the cell's nodes as one matrix product (a stack of small products runs cell by cell)
+    J0 = np.tensordot(Xe, dN, axes=([1], [0]))            # dX/dxi (cells, gdim, tdim)
+    J = np.tensordot(xe, dN, axes=([1], [0]))             # dx/dxi
     gdim = X.shape[1]
     F = np.zeros((len(dofmap), 3, 3))
-    F[:, :gdim, :gdim] = J @ np.linalg.inv(J0)
+    F[:, :gdim, :gdim] = J @ _inverse(J0)
     if gdim == 2:
         F[:, 2, 2] = xe[:, :, 0].mean(axis=1) / Xe[:, :, 0].mean(axis=1) if axisymmetric else 1.0
     return F
+
+
+def _inverse(A: np.ndarray) -> np.ndarray:
+    """The inverses of a stack of square matrices; 2 x 2 ones by the adjugate over the determinant (numpy's
+    batched ``inv`` calls LAPACK matrix by matrix: 15x the time at 100k cells)."""
+    if A.shape[1:] != (2, 2):
+        return np.linalg.inv(A)
+    det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
+    inv = np.empty_like(A)
+    inv[:, 0, 0], inv[:, 1, 1] = A[:, 1, 1] / det, A[:, 0, 0] / det
+    inv[:, 0, 1], inv[:, 1, 0] = -A[:, 0, 1] / det, -A[:, 1, 0] / det
+    return inv
 
 
 def hencky_strain(F: np.ndarray) -> np.ndarray:

@@ -12,8 +12,10 @@ components [-].  *Threshold* on ``body`` selects a body; the file names them.
 cell field, for measuring a deformed part directly (a Taylor bar's length and
 footprint).
 
-Under MPI the ranks' owned nodes and cells are gathered to rank 0, which writes the files: the same
-mesh and values as one process writes, its cells and nodes numbered in the ranks' order.
+Under MPI the ranks' owned nodes and cells are gathered to the last rank (``writer``), which writes the
+files: the same mesh and values as one process writes, its cells and nodes numbered in the ranks' order.
+The last rank, not rank 0: rank 0 streams the history and writes the run directory's other files, and
+every rank waits for the slowest at the step's reductions, so the two outputs' work goes to two ranks.
 """
 from __future__ import annotations
 
@@ -30,8 +32,13 @@ from .xdmf import Field, Mesh, TimeSeries, three_coordinates, xdmf_cells
 NODE_FIELDS = {"displacement": "m", "velocity": "m/s"}
 
 
+def writer(comm) -> int:
+    """The rank that gathers and writes the field files (the module's docstring says why the last)."""
+    return comm.size - 1
+
+
 class _Gathered:
-    """The model's owned nodes and cells of every rank, in rank order, on rank 0 (None elsewhere)."""
+    """The model's owned nodes and cells of every rank, in rank order, on the ``writer`` rank (None elsewhere)."""
 
     def __init__(self, model):
         self.comm = model.comm
@@ -48,8 +55,9 @@ class _Gathered:
     def _stack(self, local: np.ndarray):
         if self.comm.size == 1:
             return local
-        parts = self.comm.gather(np.ascontiguousarray(local), root=0)
-        return np.concatenate(parts) if self.comm.rank == 0 else None
+        root = writer(self.comm)
+        parts = self.comm.gather(np.ascontiguousarray(local), root=root)
+        return np.concatenate(parts) if self.comm.rank == root else None
 
     def nodes(self, values: np.ndarray):
         return self._stack(values[:self.num_nodes])
@@ -58,7 +66,7 @@ class _Gathered:
         return self._stack(values[:self.num_cells])
 
     def mesh(self, points: np.ndarray, body_names) -> Mesh | None:
-        """The mesh on rank 0 with ``points`` (this rank's nodes, gdim coordinates)."""
+        """The mesh on the writer rank with ``points`` (this rank's nodes, gdim coordinates); None elsewhere."""
         gathered = self.nodes(points)
         if gathered is None:
             return None
@@ -72,7 +80,7 @@ def _fields(solver: ExplicitSolver, names) -> list[Field]:
 
 
 def _values(solver: ExplicitSolver, gathered: _Gathered, names) -> dict:
-    """Every requested field's values, gathered (collective; a dict on rank 0, empty elsewhere)."""
+    """Every requested field's values, gathered (collective; a dict on the writer rank, empty elsewhere)."""
     out = {}
     if "displacement" in names:
         out["displacement"] = gathered.nodes(solver.x - solver.model.X0)
@@ -80,7 +88,7 @@ def _values(solver: ExplicitSolver, gathered: _Gathered, names) -> dict:
         out["velocity"] = gathered.nodes(solver.motion()[0])     # at t (the solver holds v_{n+1/2})
     for name, v in cell_fields.cell_fields(solver, names, gathered.num_cells).items():
         out[name] = gathered.cell_values(v)
-    return out if solver.comm.rank == 0 else {}
+    return out if solver.comm.rank == writer(solver.comm) else {}
 
 
 class FieldWriter:
@@ -93,7 +101,7 @@ class FieldWriter:
         self.gathered = _Gathered(solver.model)
         mesh = self.gathered.mesh(solver.model.X0, solver.model.body_names)
         self.series = (TimeSeries(path, mesh, _fields(solver, self.names), resume_after)
-                       if solver.comm.rank == 0 else None)
+                       if solver.comm.rank == writer(solver.comm) else None)
         self.last = resume_after        # the time of the last frame written
 
     def write(self, t: float):

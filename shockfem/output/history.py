@@ -289,4 +289,6 @@ class _Meter:
             local = np.array([(self.mass[:, None] * q).sum(axis=0) for q in (u, v, a)])
         else:
             local = np.array([q[0] for q in (u, v, a)]) if s.comm.rank == self.owner else np.zeros((3, s.model.gdim))
-        return s.comm.allreduce(local, op=MPI.SUM) if s.parallel else local
+        if s.parallel:
+            s.comm.Allreduce(MPI.IN_PLACE, local, op=MPI.SUM)     # a buffer reduction: every sample
+        return local

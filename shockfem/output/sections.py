@@ -129,7 +129,9 @@ class SectionStresses:
         own slabs).  Collective."""
         out = np.zeros((self.count,) + values.shape[1:])
         np.add.at(out, self.slab if slabs is None else slabs, values)
-        return self.solver.comm.allreduce(out, op=MPI.SUM) if self.solver.parallel else out
+        if self.solver.parallel:
+            self.solver.comm.Allreduce(MPI.IN_PLACE, out, op=MPI.SUM)     # a buffer reduction: every sample
+        return out
 
     def current_axis(self) -> np.ndarray:
         """The unit chord from the low end's centre of mass to the high end's, now.  Collective."""

@@ -19,7 +19,7 @@ with its ``units`` and the group with its ``time`` [s].  The XDMF file names the
 every field's unit in a comment, and the body numbers by name in an ``Information`` element (as meshio
 writes gmsh's physical names: meshio reads them as ``field_data``).
 
-Written by one process (the run's rank 0 gathers, ``fields.FieldWriter``): the HDF5 file is opened
+Written by one process (the run's last rank gathers, ``fields.FieldWriter``): the HDF5 file is opened
 to append a frame and closed again, and the XDMF file, which lists only frames whose data is whole,
 is rewritten beside and renamed into place after it: a run killed at any moment leaves both files
 readable to the last frame they list, except a kill inside the HDF5 write itself (a few milliseconds
