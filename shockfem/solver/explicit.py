@@ -294,11 +294,12 @@ class ExplicitSolver:
             largest[0], largest[1] = -dt_stable, bad
             self.comm.Allreduce(MPI.IN_PLACE, largest, op=MPI.MAX)
             dt_local = dt_stable
-            dt_stable, bad = -float(largest[0]), int(largest[1])
+            dt_stable = -float(largest[0])
             critical = critical if dt_local == dt_stable else -1
+            if largest[1] >= 0:         # some rank's cell inverted: every rank stops with that rank's words
+                self._stop_on_every_rank(self._inverted(bad) if bad >= 0 else None)
         if bad >= 0:
-            raise UnstableRun(self._diagnose_cell(bad, "non-positive element volume (the element inverted)"),
-                              self.t, self._body_of_cell(bad), bad)
+            raise self._inverted(bad)
         if np.isfinite(dt_stable) and dt_stable < 1e300:
             self.dt_stable = dt_stable
             self.critical_cell = critical
@@ -378,24 +379,32 @@ class ExplicitSolver:
         bad = ~(np.isfinite(self.x).all(axis=1) & np.isfinite(self.v).all(axis=1))
         return int(np.argmax(bad)) if bad.any() else -1
 
+    def _inverted(self, cell: int) -> UnstableRun:
+        return UnstableRun(self._diagnose_cell(cell, "non-positive element volume (the element inverted)"),
+                           self.t, self._body_of_cell(cell), cell)
+
     def _check_finite(self, node: int):
+        error = self._not_finite(node)
+        if error is not None:
+            raise error
+
+    def _not_finite(self, node: int) -> UnstableRun | None:
+        """The stop for a non-finite state at this rank's ``node`` (None if ``node`` is -1)."""
         if node >= 0:
             body = self.model.bodies[self.model.node_body[node]].name
-            raise UnstableRun(f"the solution is not finite (NaN/Inf): body '{body}', node {node} at "
-                              f"x = {np.array2string(self.x[node], precision=4)} m, t = {self.t:.6g} s "
-                              f"(step {self.step}). The step {self.dt:.3g} s may exceed the stable step "
-                              f"{self.dt_stable:.3g} s: lower scene.safety_factor.", self.t, body)
+            return UnstableRun(f"the solution is not finite (NaN/Inf): body '{body}', node {node} at "
+                               f"x = {np.array2string(self.x[node], precision=4)} m, t = {self.t:.6g} s "
+                               f"(step {self.step}). The step {self.dt:.3g} s may exceed the stable step "
+                               f"{self.dt_stable:.3g} s: lower scene.safety_factor.", self.t, body)
+        return None
 
-    def _not_finite_anywhere(self, node: int):
-        """Stop every rank when some rank's solution is not finite, with the diagnosis of the rank that holds
-        the node (``node``: this rank's first non-finite node, or -1).  Collective."""
-        try:
-            self._check_finite(node)
-            said = None
-        except UnstableRun as e:
-            said = (e.diagnosis, e.body)
-        diagnosis, body = next(d for d in self.comm.allgather(said) if d is not None)
-        raise UnstableRun(diagnosis, self.t, body)
+    def _stop_on_every_rank(self, mine: UnstableRun | None):
+        """Raise on every rank the stop of the first rank that has one (``mine``: this rank's, or None), so
+        that the diagnosis names the node or cell on the rank that holds it.  Collective: called once the
+        ranks' reduction says that some rank has one."""
+        said = None if mine is None else (mine.diagnosis, mine.body, mine.element)
+        diagnosis, body, element = next(d for d in self.comm.allgather(said) if d is not None)
+        raise UnstableRun(diagnosis, self.t, body, element)
 
     # ------------------------------------------------------------ the step
     def stable_step(self) -> float:
@@ -467,7 +476,7 @@ class ExplicitSolver:
             (damping_work, reaction_work, damping_power, hourglass_power, viscosity_power, plastic_work,
              w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic, non_finite) = sums.tolist()
             if non_finite:
-                self._not_finite_anywhere(bad)
+                self._stop_on_every_rank(self._not_finite(bad))
         else:
             self._check_finite(bad)
         if m.rigid:

@@ -1,11 +1,11 @@
 """Two MPI ranks (``mpirun -n 2``): what the ranks agree on in one reduction a step, and the field file the
 last rank writes.
 
-- A non-finite state on one rank stops both, each with the diagnosis of the rank that holds the node: the
-  step's sums and a count of non-finite nodes travel in one buffer reduction (``ExplicitSolver.advance``),
-  so the rank without the node learns of it from the count and takes the other's words
-  (``_not_finite_anywhere``).  Before, both ranks took the larger node number and looked it up in their
-  own arrays.
+- A non-finite state or an inverted cell on one rank stops both, each with the diagnosis of the rank that
+  holds the node or cell: the step's reductions say that some rank has one (a count of non-finite nodes in
+  the step's sums, the highest inverted cell with the stable step), and the ranks then take that rank's
+  words (``ExplicitSolver._stop_on_every_rank``).  Before, both ranks took the larger node or cell number
+  and looked it up in their own arrays.
 - The fields a two-rank run writes (gathered to the last rank, ``output/fields.py``) are the one-process
   run's: the same node positions, displacements and cell values, in the ranks' order.
 """
@@ -17,6 +17,7 @@ import textwrap
 
 import meshio
 import numpy as np
+import pytest
 
 from shockfem.scene.toml_writer import dumps
 from shockfem.verify.contact_cases import two_rods_scene
@@ -24,7 +25,7 @@ from shockfem.verify.contact_cases import two_rods_scene
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1", SHOCKFEM_PICTURES="0")
 
-NAN_ON_RANK_ONE = textwrap.dedent("""
+FAULT_ON_RANK_ONE = textwrap.dedent("""
     import sys
     import numpy as np
     from mpi4py import MPI
@@ -44,15 +45,20 @@ NAN_ON_RANK_ONE = textwrap.dedent("""
         owned = m.X0[:m.num_owned]
         far = np.min(np.linalg.norm(owned[:, None, :] - ghosts[None, :, :], axis=2), axis=1) if len(ghosts) else np.ones(len(owned))
         node = int(np.argmax(far))
-        solver.v[node, 1] = np.nan
-        said = f"body '{m.bodies[m.node_body[node]].name}', node {node}"
+        body = m.bodies[m.node_body[node]].name
+        if sys.argv[3] == "nan":
+            solver.v[node, 1] = np.nan
+            said = f"body '{body}', node {node}"
+        else:       # "invert": the node pushed 20 mm out and up, past the far corner of the cell beyond it
+            solver.x[node] += 0.02
+            said = f"body '{body}', element"
     try:
         for _ in solver.steps(scene.end_time):
             pass
         words = "completed"
     except UnstableRun as e:
         holder = solver.comm.bcast(said, root=1)
-        words = f"stopped at step {solver.step}; holder's node named: {holder in e.diagnosis}; {e.diagnosis}"
+        words = f"stopped at step {solver.step}; holder's words: {holder in e.diagnosis}; {e.diagnosis}"
     with open(f"{sys.argv[2]}.{solver.comm.rank}", "w") as fh:     # a file a rank: mpirun interleaves stdout
         fh.write(f"rank {solver.comm.rank}: {words}")
 """)
@@ -73,19 +79,21 @@ def _scene_file(tmp_path, end_time):
     return path
 
 
-def test_a_nan_on_one_rank_stops_both_with_its_diagnosis(tmp_path):
+@pytest.mark.parametrize("fault, words", [("nan", "not finite"), ("invert", "the element inverted")])
+def test_a_fault_on_one_rank_stops_both_with_its_diagnosis(tmp_path, fault, words):
+    """A NaN velocity, or a node pushed through its cells, on rank 1 only: both ranks stop at step 1 with
+    rank 1's diagnosis (on the tree before, rank 0 looked rank 1's node or cell number up in its own arrays)."""
     scene = _scene_file(tmp_path, 5e-6)
-    script = tmp_path / "nan_on_rank_one.py"
-    script.write_text(NAN_ON_RANK_ONE)
+    script = tmp_path / "fault_on_rank_one.py"
+    script.write_text(FAULT_ON_RANK_ONE)
     said = tmp_path / "said"
-    p = subprocess.run([_mpirun(), "-n", "2", sys.executable, str(script), str(scene), str(said)],
+    p = subprocess.run([_mpirun(), "-n", "2", sys.executable, str(script), str(scene), str(said), fault],
                        capture_output=True, text=True, env=ENV, timeout=600)
     assert p.returncode == 0, p.stderr[-3000:]
     lines = [(tmp_path / f"said.{rank}").read_text() for rank in range(2)]
     for rank, line in enumerate(lines):
-        # both ranks stop at the same (first) step, on rank 1's node
-        assert line.startswith(f"rank {rank}: stopped at step 1; holder's node named: True;"), line
-        assert "not finite" in line
+        assert line.startswith(f"rank {rank}: stopped at step 1; holder's words: True;"), line
+        assert words in line
     assert lines[0].split("; ", 2)[2] == lines[1].split("; ", 2)[2]      # the same words on both ranks
 
 
