@@ -134,6 +134,23 @@ def gather_constants(S, row, B, k, params, m, sign):
     S[(row + 7) * B + k] = sign
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def fill_constants(S, row, B, count, params, m):
+    """Row ``m``'s constants into rows ``row``..``row`` + 6 of lanes 0..count-1: a block of one row's cells
+    (the usual block: a body's cells are numbered together) takes 7 loads instead of 7 a cell."""
+    lam, mu, beta = params[m, P_LAMBDA], params[m, P_MU], params[m, P_BETA]
+    rho, wave_speed = params[m, P_RHO], params[m, P_WAVE_SPEED]
+    q_quadratic, q_linear = params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR]
+    for k in range(count):
+        S[row * B + k] = lam
+        S[(row + 1) * B + k] = mu
+        S[(row + 2) * B + k] = beta
+        S[(row + 3) * B + k] = rho
+        S[(row + 4) * B + k] = wave_speed
+        S[(row + 5) * B + k] = q_quadratic
+        S[(row + 6) * B + k] = q_linear
+
+
 # (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell)
 # before the first cell: what a pass returns
 NO_TOTALS = (1e300, -1, 0.0, 0.0, 0.0, 0.0, -1)

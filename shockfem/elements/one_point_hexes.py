@@ -19,7 +19,7 @@ from ..materials.algebra import inverse_3x3
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import NO_TOTALS, add_cell_totals, gather_constants, step_length, unwalsh4, walsh8
+from .one_point import NO_TOTALS, add_cell_totals, fill_constants, gather_constants, step_length, unwalsh4, walsh8
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -277,11 +277,14 @@ def _hex_kernel(elastic_only: bool):
         n = cells.shape[0]
         for start in range(0, n, B):
             count = min(B, n - start)
+            block_material = np.uint32(cell_material[cells[start]])
+            one_row = True
             for k in range(count):
-                c = cells[start + k]
-                m = cell_material[c]
+                c = np.uint32(cells[start + k])
+                m = np.uint32(cell_material[c])
+                one_row = one_row and m == block_material
                 for a in range(8):
-                    node = dofmap[c, a]
+                    node = np.uint32(dofmap[c, a])
                     S[(_X + a) * B + k] = x_np1[node, 0]
                     S[(_Y + a) * B + k] = x_np1[node, 1]
                     S[(_Z + a) * B + k] = x_np1[node, 2]
@@ -292,7 +295,13 @@ def _hex_kernel(elastic_only: bool):
                     S[(_S + i) * B + k] = sigma[c, 0, i]
                 for i in range(12):
                     S[(_O + i) * B + k] = hourglass[c, i]
-                gather_constants(S, _LAM, B, k, params, m, cell_sign[c])
+                S[_SIGN * B + k] = cell_sign[c]
+            if one_row:
+                fill_constants(S, _LAM, B, count, params, block_material)
+            else:
+                for k in range(count):
+                    c = cells[start + k]
+                    gather_constants(S, _LAM, B, k, params, cell_material[c], cell_sign[c])
             _rates(S, count, dt)
             # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
             # inside their yield surface
@@ -313,10 +322,10 @@ def _hex_kernel(elastic_only: bool):
             _response(S, count, dt, hourglass_form, hourglass_coefficient)
             # scatter, in cell order: the same sums as a cell-by-cell loop
             for k in range(count):
-                c = cells[start + k]
-                m = cell_material[c]
+                c = np.uint32(cells[start + k])
+                m = np.uint32(cell_material[c])
                 for a in range(8):
-                    node = dofmap[c, a]
+                    node = np.uint32(dofmap[c, a])
                     f[node, 0] += S[(_F + a) * B + k]
                     f[node, 1] += S[(_F + 8 + a) * B + k]
                     f[node, 2] += S[(_F + 16 + a) * B + k]

@@ -40,7 +40,7 @@ from numba import njit
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import NO_TOTALS, add_cell_totals, gather_constants, inverse_2x2, step_length, unwalsh4, walsh4
+from .one_point import NO_TOTALS, add_cell_totals, fill_constants, gather_constants, inverse_2x2, step_length, unwalsh4, walsh4
 
 # Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
 # arrays leave the first-level cache and the pass runs at half the scalar code's speed.
@@ -232,11 +232,14 @@ def _quad_kernel(elastic_only: bool):
         n = cells.shape[0]
         for start in range(0, n, B):
             count = min(B, n - start)
+            block_material = np.uint32(cell_material[cells[start]])
+            one_row = True
             for k in range(count):
-                c = cells[start + k]
-                m = cell_material[c]
+                c = np.uint32(cells[start + k])
+                m = np.uint32(cell_material[c])
+                one_row = one_row and m == block_material
                 for a in range(4):
-                    node = dofmap[c, a]
+                    node = np.uint32(dofmap[c, a])
                     S[(_X + a) * B + k] = x_np1[node, 0]
                     S[(_Y + a) * B + k] = x_np1[node, 1]
                     S[(_U + a) * B + k] = v_half[node, 0]
@@ -247,7 +250,13 @@ def _quad_kernel(elastic_only: bool):
                 S[(_S + 3) * B + k] = sigma[c, 0, 5]
                 S[_O * B + k] = hourglass[c, 0]
                 S[(_O + 1) * B + k] = hourglass[c, 1]
-                gather_constants(S, _LAM, B, k, params, m, cell_sign[c])
+                S[_SIGN * B + k] = cell_sign[c]
+            if one_row:
+                fill_constants(S, _LAM, B, count, params, block_material)
+            else:
+                for k in range(count):
+                    c = cells[start + k]
+                    gather_constants(S, _LAM, B, k, params, cell_material[c], cell_sign[c])
             if axisymmetric:
                 _RATES_AXISYMMETRIC(S, count, dt)
             else:
@@ -278,10 +287,10 @@ def _quad_kernel(elastic_only: bool):
                 _RESPONSE_PLANE(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
             # scatter, in cell order: the same sums as a cell-by-cell loop
             for k in range(count):
-                c = cells[start + k]
-                m = cell_material[c]
+                c = np.uint32(cells[start + k])
+                m = np.uint32(cell_material[c])
                 for a in range(4):
-                    node = dofmap[c, a]
+                    node = np.uint32(dofmap[c, a])
                     f[node, 0] += S[(_FX + a) * B + k]
                     f[node, 1] += S[(_FY + a) * B + k]
                 sigma[c, 0, 0] = S[_SN * B + k]
