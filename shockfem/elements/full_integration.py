@@ -85,11 +85,14 @@ def _kernel(elastic_only: bool):
         bad_cell = -1
         for ci in range(cells.shape[0]):
             c = cells[ci]
-            m = cell_material[c]
-            sgn = cell_sign[c]
+            # unsigned copies for indexing: numba wraps a signed index around (a compare and an add per
+            # access); c and m stay as they are for the material update, whose laws are compiled for them
+            cu = np.uint32(c)
+            m = cell_material[cu]
+            sgn = cell_sign[cu]
             beta = params[m, P_BETA]
             for a in range(nn):
-                node = dofmap[c, a]
+                node = np.uint32(dofmap[cu, a])
                 for i in range(gdim):
                     xe[a, i] = x_np1[node, i]
                     ve[a, i] = v_half[node, i]
@@ -137,7 +140,7 @@ def _kernel(elastic_only: bool):
                 d = (d0, d1, d2, 0.5 * (L[q, 1, 2] + L[q, 2, 1]), 0.5 * (L[q, 0, 2] + L[q, 2, 0]),
                      0.5 * (L[q, 0, 1] + L[q, 1, 0]))
                 spin = (0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]), 0.5 * (L[q, 0, 1] - L[q, 1, 0]))
-                s_n = (sigma[c, q, 0], sigma[c, q, 1], sigma[c, q, 2], sigma[c, q, 3], sigma[c, q, 4], sigma[c, q, 5])
+                s_n = (sigma[cu, q, 0], sigma[cu, q, 1], sigma[cu, q, 2], sigma[cu, q, 3], sigma[cu, q, 4], sigma[cu, q, 5])
                 s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0, elastic_only)
                 plastic_work += wmid[q] * wp
                 body_energy[m, 2] += wmid[q] * wp
@@ -145,7 +148,7 @@ def _kernel(elastic_only: bool):
                     (s_n[0] + s_np1[0]) * d[0] + (s_n[1] + s_np1[1]) * d[1] + (s_n[2] + s_np1[2]) * d[2]
                     + 2.0 * ((s_n[3] + s_np1[3]) * d[3] + (s_n[4] + s_np1[4]) * d[4] + (s_n[5] + s_np1[5]) * d[5]))
                 for k in range(6):
-                    sigma[c, q, k] = s_np1[k]
+                    sigma[cu, q, k] = s_np1[k]
                 s, pd, pv = viscous_stress(params, m, s_np1, d, pq)
                 damping_power += wmid[q] * pd
                 viscosity_power += wmid[q] * pv
@@ -161,18 +164,18 @@ def _kernel(elastic_only: bool):
                         w *= two_pi * r
                         hoop = s[2] / r
                         for a in range(nn):
-                            node = dofmap[c, a]
+                            node = np.uint32(dofmap[cu, a])
                             f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + hoop * N[q, a])
                             f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
                     else:
                         w *= thickness
                         for a in range(nn):
-                            node = dofmap[c, a]
+                            node = np.uint32(dofmap[cu, a])
                             f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1])
                             f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1])
                 else:
                     for a in range(nn):
-                        node = dofmap[c, a]
+                        node = np.uint32(dofmap[cu, a])
                         f[node, 0] += w * (s[0] * dNdx[a, 0] + s[5] * dNdx[a, 1] + s[4] * dNdx[a, 2])
                         f[node, 1] += w * (s[5] * dNdx[a, 0] + s[1] * dNdx[a, 1] + s[3] * dNdx[a, 2])
                         f[node, 2] += w * (s[4] * dNdx[a, 0] + s[3] * dNdx[a, 1] + s[2] * dNdx[a, 2])
