@@ -53,8 +53,9 @@ def _j2(yield_stress, kinematic):
     return p, curves
 
 
-def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None, material=None):
-    """One pass; ``material`` = (params, curves) of J2 rows (with a fresh state), else ``_params``' elastic ones."""
+def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None, material=None, rows=None):
+    """One pass; ``material`` = (params, curves) of J2 rows (with a fresh state), else ``_params``' elastic ones;
+    ``rows`` = (elastic params, each cell's row) instead of ``_params`` and every third cell on row 0."""
     n, gdim = len(dofmap), x.shape[1]
     rng = np.random.default_rng(5)
     sigma = rng.normal(size=(n, 1, 6)) * 1e7
@@ -62,12 +63,14 @@ def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None, 
         sigma[..., 3:5] = 0.0
     hourglass = rng.normal(size=(n, 2 if gdim == 2 else 12)) * 10.0
     f = np.zeros_like(x)
-    body_energy = np.zeros((2, 3))
     materials = (np.arange(n) % 3 == 0).astype(np.int32)
+    params, curves, state = _params(), NO_CURVES, NO_STATE
+    if rows is not None:
+        params, materials = rows
+    body_energy = np.zeros((len(params), 3))
     sign = np.ones(n) if sign is None else sign
     kernel = kernels.one_point_kernel(gdim, elastic_only)
     geometry = (axisymmetric, 0.7) if gdim == 2 else ()
-    params, curves, state = _params(), NO_CURVES, NO_STATE
     if material is not None:
         (params, curves), state = material, np.zeros((n, 1, layout.STATE_SIZE))
     out = kernel(cells, dofmap, materials, sign, x, v, 2e-7, *geometry, form, 0.1, params, curves, state,
@@ -101,6 +104,29 @@ def test_elastic_lanes_agree_with_the_update_cell_by_cell(shape, axisymmetric, f
     for a, b in zip((dt_stable, damping, viscosity, hourglass_power),
                     (ref_out[0], ref_out[2], ref_out[3], ref_out[5])):
         assert abs(a - b) <= 1e-13 * abs(b)
+
+
+@pytest.mark.parametrize("shape, axisymmetric", CASES)
+def test_a_block_of_one_row_takes_that_rows_constants(shape, axisymmetric):
+    """A block whose cells share a row fills the row's constants once (``one_point.fill_constants``); a
+    mixed block gathers them cell by cell.  Rows 1 and 2 the same damped aluminium, row 0 steel: every
+    cell on row 1 (one-row blocks) against cells alternating between rows 1 and 2 (mixed blocks) gives
+    the same forces, stresses, resultants, step and powers to the bit; a fill from any other row (steel)
+    or in another order (the constants are 7 different numbers) would not."""
+    x, dofmap = _grid(shape)
+    v = np.random.default_rng(11).normal(size=x.shape) * 20.0
+    cells = np.arange(len(dofmap), dtype=np.int32)
+    p = _params()
+    params = np.ascontiguousarray(np.vstack([p[0], p[1], p[1]]))
+    one_row = np.ones(len(dofmap), dtype=np.int32)
+    mixed = (1 + np.arange(len(dofmap)) % 2).astype(np.int32)
+    for elastic_only in (True, False):
+        out, got = _run(elastic_only, x, dofmap, cells, v, STIFFNESS, axisymmetric, rows=(params, one_row))
+        ref_out, ref = _run(elastic_only, x, dofmap, cells, v, STIFFNESS, axisymmetric, rows=(params, mixed))
+        for name in ("f", "sigma", "hourglass"):
+            assert np.array_equal(got[name], ref[name]), name
+        assert out == ref_out
+        assert out[2] > 0.0          # the damped row's constants ran (steel's beta is 0)
 
 
 @pytest.mark.parametrize("shape", [(9, 7), (4, 3, 5)])
