@@ -140,7 +140,8 @@ def _kernel(elastic_only: bool):
                 d = (d0, d1, d2, 0.5 * (L[q, 1, 2] + L[q, 2, 1]), 0.5 * (L[q, 0, 2] + L[q, 2, 0]),
                      0.5 * (L[q, 0, 1] + L[q, 1, 0]))
                 spin = (0.5 * (L[q, 1, 2] - L[q, 2, 1]), 0.5 * (L[q, 0, 2] - L[q, 2, 0]), 0.5 * (L[q, 0, 1] - L[q, 1, 0]))
-                s_n = (sigma[cu, q, 0], sigma[cu, q, 1], sigma[cu, q, 2], sigma[cu, q, 3], sigma[cu, q, 4], sigma[cu, q, 5])
+                s_n = (sigma[cu, q, 0], sigma[cu, q, 1], sigma[cu, q, 2], sigma[cu, q, 3], sigma[cu, q, 4],
+                       sigma[cu, q, 5])
                 s_np1, d, wp = update_stress(params, curves, m, state, c, q, s_n, d, spin, dt, 0.0, elastic_only)
                 plastic_work += wmid[q] * wp
                 body_energy[m, 2] += wmid[q] * wp

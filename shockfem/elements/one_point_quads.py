@@ -40,7 +40,8 @@ from numba import njit
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import NO_TOTALS, add_cell_totals, fill_constants, gather_constants, inverse_2x2, step_length, unwalsh4, walsh4
+from .one_point import (NO_TOTALS, add_cell_totals, fill_constants, gather_constants, inverse_2x2, step_length,
+                        unwalsh4, walsh4)
 
 # Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
 # arrays leave the first-level cache and the pass runs at half the scalar code's speed.
@@ -232,6 +233,8 @@ def _quad_kernel(elastic_only: bool):
         n = cells.shape[0]
         for start in range(0, n, B):
             count = min(B, n - start)
+            # cell, row and node numbers as unsigned: numba wraps a signed index around (a compare and an add
+            # on every load and store of the gather and scatter; docs/performance.md, session 28)
             block_material = np.uint32(cell_material[cells[start]])
             one_row = True
             for k in range(count):
