@@ -116,39 +116,41 @@ def step_length(nodes, bb):
 
 
 # What the passes (``one_point_quads.py``, ``one_point_hexes.py``) share around their lanes.  Each keeps
-# a cell's row constants in 8 consecutive scratch rows (lambda, mu, beta, rho, wave speed, the bulk
-# viscosity's quadratic and linear coefficients, the orientation) and reports 7 consecutive rows per
-# cell (signed volume, for a quad its signed area factor; the stresses' work; hourglass, damping and
-# bulk viscosity powers; stable step; plastic work); lane k of row r is ``S[r * B + k]``.
+# a cell's row constants in 7 consecutive scratch rows (lambda, mu, beta, rho, wave speed, the bulk
+# viscosity's quadratic and linear coefficients; ``block_constants``) and its orientation in the next,
+# and reports 7 consecutive rows per cell (signed volume, for a quad its signed area factor; the
+# stresses' work; hourglass, damping and bulk viscosity powers; stable step; plastic work); lane k of
+# row r is ``S[r * B + k]``.
 
 @njit(cache=True, fastmath=True, inline="always")
-def gather_constants(S, row, B, k, params, m, sign):
-    """Row ``m``'s constants and the cell's orientation into rows ``row``..``row`` + 7 of lane k."""
-    S[row * B + k] = params[m, P_LAMBDA]
-    S[(row + 1) * B + k] = params[m, P_MU]
-    S[(row + 2) * B + k] = params[m, P_BETA]
-    S[(row + 3) * B + k] = params[m, P_RHO]
-    S[(row + 4) * B + k] = params[m, P_WAVE_SPEED]
-    S[(row + 5) * B + k] = params[m, P_Q_QUADRATIC]
-    S[(row + 6) * B + k] = params[m, P_Q_LINEAR]
-    S[(row + 7) * B + k] = sign
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def fill_constants(S, row, B, count, params, m):
-    """Row ``m``'s constants into rows ``row``..``row`` + 6 of lanes 0..count-1: a block of one row's cells
-    (the usual block: a body's cells are numbered together) takes 7 loads instead of 7 a cell."""
-    lam, mu, beta = params[m, P_LAMBDA], params[m, P_MU], params[m, P_BETA]
-    rho, wave_speed = params[m, P_RHO], params[m, P_WAVE_SPEED]
-    q_quadratic, q_linear = params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR]
-    for k in range(count):
-        S[row * B + k] = lam
-        S[(row + 1) * B + k] = mu
-        S[(row + 2) * B + k] = beta
-        S[(row + 3) * B + k] = rho
-        S[(row + 4) * B + k] = wave_speed
-        S[(row + 5) * B + k] = q_quadratic
-        S[(row + 6) * B + k] = q_linear
+def block_constants(S, row, B, cells, start, count, cell_material, params, one_row, block_material):
+    """The row constants of the block's cells ``cells[start:start + count]`` into rows ``row``..``row`` + 6
+    of lanes 0..count-1.  A block of one row's cells (``one_row``, all on ``block_material``: the usual
+    block, a body's cells are numbered together) takes that row's 7 constants once; a mixed block takes
+    each cell's own."""
+    if one_row:
+        m = block_material
+        lam, mu, beta = params[m, P_LAMBDA], params[m, P_MU], params[m, P_BETA]
+        rho, wave_speed = params[m, P_RHO], params[m, P_WAVE_SPEED]
+        q_quadratic, q_linear = params[m, P_Q_QUADRATIC], params[m, P_Q_LINEAR]
+        for k in range(count):
+            S[row * B + k] = lam
+            S[(row + 1) * B + k] = mu
+            S[(row + 2) * B + k] = beta
+            S[(row + 3) * B + k] = rho
+            S[(row + 4) * B + k] = wave_speed
+            S[(row + 5) * B + k] = q_quadratic
+            S[(row + 6) * B + k] = q_linear
+    else:
+        for k in range(count):
+            m = cell_material[cells[start + k]]
+            S[row * B + k] = params[m, P_LAMBDA]
+            S[(row + 1) * B + k] = params[m, P_MU]
+            S[(row + 2) * B + k] = params[m, P_BETA]
+            S[(row + 3) * B + k] = params[m, P_RHO]
+            S[(row + 4) * B + k] = params[m, P_WAVE_SPEED]
+            S[(row + 5) * B + k] = params[m, P_Q_QUADRATIC]
+            S[(row + 6) * B + k] = params[m, P_Q_LINEAR]
 
 
 # (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell)

@@ -19,7 +19,7 @@ from ..materials.algebra import inverse_3x3
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import NO_TOTALS, add_cell_totals, fill_constants, gather_constants, step_length, unwalsh4, walsh8
+from .one_point import NO_TOTALS, add_cell_totals, block_constants, step_length, unwalsh4, walsh8
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -28,7 +28,7 @@ LANES = 16
 # each), the stress at t_n (11, 22, 33, 23, 13, 12), the hourglass resultants of the last step (mode-
 # major, 3 components a mode), the row's constants, the orientation.
 _X, _Y, _Z, _U, _V, _W, _S, _O = 0, 8, 16, 24, 32, 40, 48, 54
-_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(66, 74)   # ``one_point.gather_constants``'s order
+_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(66, 74)   # ``one_point.block_constants``', the orientation
 # Kinematics: J and Jv at the centre (row-major), hourglass projections h.x and rates h.v (mode-major),
 # the strain rate and spin (W23, W13, W12) on the mid-step configuration; from the material update
 # the stress at t_n+1 and the plastic work density.
@@ -298,12 +298,7 @@ def _hex_kernel(elastic_only: bool):
                 for i in range(12):
                     S[(_O + i) * B + k] = hourglass[c, i]
                 S[_SIGN * B + k] = cell_sign[c]
-            if one_row:
-                fill_constants(S, _LAM, B, count, params, block_material)
-            else:
-                for k in range(count):
-                    c = cells[start + k]
-                    gather_constants(S, _LAM, B, k, params, cell_material[c], cell_sign[c])
+            block_constants(S, _LAM, B, cells, start, count, cell_material, params, one_row, block_material)
             _rates(S, count, dt)
             # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
             # inside their yield surface

@@ -40,7 +40,7 @@ from numba import njit
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import (NO_TOTALS, add_cell_totals, fill_constants, gather_constants, inverse_2x2, step_length,
+from .one_point import (NO_TOTALS, add_cell_totals, block_constants, inverse_2x2, step_length,
                         unwalsh4, walsh4)
 
 # Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
@@ -50,7 +50,7 @@ LANES = 32
 # Rows of W, gathered: node positions x, y and velocities u, w (four nodes each), the stress at t_n
 # (11, 22, 33, 12), the hourglass resultant of the last step, the row's constants, the orientation.
 _X, _Y, _U, _W, _S, _O = 0, 4, 8, 12, 16, 20
-_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(22, 30)   # ``one_point.gather_constants``'s order
+_LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(22, 30)   # ``one_point.block_constants``', the orientation
 W_ROWS = 30
 # Rows of K: Jacobian J and velocity Jacobian Jv at the centre (row-major), hourglass projections h.x
 # and rates h.v, the centre's radius, the strain rate (11, 22, 33, 12) and spin W12 on the mid-step
@@ -254,12 +254,7 @@ def _quad_kernel(elastic_only: bool):
                 S[_O * B + k] = hourglass[c, 0]
                 S[(_O + 1) * B + k] = hourglass[c, 1]
                 S[_SIGN * B + k] = cell_sign[c]
-            if one_row:
-                fill_constants(S, _LAM, B, count, params, block_material)
-            else:
-                for k in range(count):
-                    c = cells[start + k]
-                    gather_constants(S, _LAM, B, k, params, cell_material[c], cell_sign[c])
+            block_constants(S, _LAM, B, cells, start, count, cell_material, params, one_row, block_material)
             if axisymmetric:
                 _RATES_AXISYMMETRIC(S, count, dt)
             else:

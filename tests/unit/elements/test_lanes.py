@@ -108,7 +108,7 @@ def test_elastic_lanes_agree_with_the_update_cell_by_cell(shape, axisymmetric, f
 
 @pytest.mark.parametrize("shape, axisymmetric", CASES)
 def test_a_block_of_one_row_takes_that_rows_constants(shape, axisymmetric):
-    """A block whose cells share a row fills the row's constants once (``one_point.fill_constants``); a
+    """A block whose cells share a row fills the row's constants once (``one_point.block_constants``); a
     mixed block gathers them cell by cell.  Rows 1 and 2 the same damped aluminium, row 0 steel: every
     cell on row 1 (one-row blocks) against cells alternating between rows 1 and 2 (mixed blocks) gives
     the same forces, stresses, resultants, step and powers to the bit; a fill from any other row (steel)
