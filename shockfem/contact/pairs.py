@@ -26,7 +26,7 @@ from scipy.spatial import cKDTree
 from ..errors import ModelError
 from ..model import Model
 from ..scene.specs import Contact
-from . import kernels
+from . import kernels, pair_step
 from .halo import SurfaceHalo
 from .surfaces import NodeExchange, Surface, build_surface, reference_key
 
@@ -127,6 +127,11 @@ class _Pass:
         kernels.closest_facets(self.slaves, self.rows, self.facets, self.near, self.cand_ptr, self.cand_seg, x,
                                depth, self.best, self.best_g)
 
+    def step_arrays(self) -> tuple:
+        """The pass's arguments of ``pair_step.close_step``, in its order."""
+        return (self.slaves, self.rows, self.facets, self.near, self.cand_ptr, self.cand_seg, self.stiffness, self.best,
+                self.best_g, self.ft, self.gap, self.offset, self.key0, self.records)
+
     def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         """The springs of this rank's slaves on the facets found for them, as records (``records[:count]``);
         the number active.  (``f``, ``ff``, ``stiff`` are the pair's: it adds the records to them.)"""
@@ -211,6 +216,8 @@ class ContactPair:
         own_a = self.owned[self.nodes_a]
         self.own_a, self.own_area_a = self.nodes_a[own_a], self.area_a[own_a]
         self.halo = SurfaceHalo(model.comm, self.exchange.owners(), gdim) if self.parallel and spec.b else None
+        # two surfaces in one process: the step in two compiled calls (``_step_in_one_process``)
+        self.one_process = spec.b is not None and not self.parallel
         if self.b is None:
             self.passes = [_RigidPass(model, spec, self.nodes_a,
                                       node_stiffness(self.a, compact[0], self.nodes_a, seg_scale),
@@ -380,6 +387,25 @@ class ContactPair:
         forces: ``hold`` does its work)."""
         if self.constraint:
             return np.inf
+        sums, peaks = self._step_in_one_process(x, v, dt, t) if self.one_process else self._step(x, v, dt, t)
+        g = self.x.shape[1]
+        self._load_before = self.force_a + self.friction_a
+        self.force_a, self.friction_a = sums[:g], sums[g:2 * g]
+        work, friction_work, load, loaded_area, active = sums[2 * g:].tolist()
+        omega2, max_pressure, deepest = peaks.tolist()
+        self._step_sizes = (math.sqrt(sum(c * c for c in self.force_a.tolist())),
+                            math.sqrt(sum(c * c for c in self.friction_a.tolist())), max_pressure, load, loaded_area)
+        self.active = int(active)
+        self.max_penetration = max(self.max_penetration, deepest)
+        if self._offset0 is not None and self.preload is None and t >= self.spec.interference_time:
+            self.preload = self._pressure()
+        self.work += 0.5 * dt * work
+        self.friction_work += 0.5 * dt * friction_work
+        return self._stable_step(omega2) if omega2 > 0.0 else np.inf     # active or arriving springs
+
+    def _step(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The step's forces on the compact nodes and the totals ``kernels.totals`` returns, reduced over the
+        ranks.  Collective under MPI."""
         self._gather(x, v)
         kernels.clear(self.own_nodes, self.f, self.ff, self.stiff)
         active = 0
@@ -402,20 +428,26 @@ class ContactPair:
         if self.parallel:
             self.model.comm.Allreduce(MPI.IN_PLACE, sums, op=MPI.SUM)
             self.model.comm.Allreduce(MPI.IN_PLACE, peaks, op=MPI.MAX)
-        g = self.x.shape[1]
-        self._load_before = self.force_a + self.friction_a
-        self.force_a, self.friction_a = sums[:g], sums[g:2 * g]
-        work, friction_work, load, loaded_area, active = sums[2 * g:].tolist()
-        omega2, max_pressure, deepest = peaks.tolist()
-        self._step_sizes = (math.sqrt(sum(c * c for c in self.force_a.tolist())),
-                            math.sqrt(sum(c * c for c in self.friction_a.tolist())), max_pressure, load, loaded_area)
-        self.active = int(active)
-        self.max_penetration = max(self.max_penetration, deepest)
-        if self._offset0 is not None and self.preload is None and t >= self.spec.interference_time:
-            self.preload = self._pressure()
-        self.work += 0.5 * dt * work
-        self.friction_work += 0.5 * dt * friction_work
-        return self._stable_step(omega2) if omega2 > 0.0 else np.inf     # active or arriving springs
+        return sums, peaks
+
+    def _step_in_one_process(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """``_step`` for two surfaces in one process, in two compiled calls with a search between them when
+        one is due (``pair_step``): the same kernels in the same order, so the same forces to the bit.  (The
+        initial overlaps' push-out, which ``_step`` does after the gather, changes only the offsets, which
+        neither the gather nor the box test reads.)"""
+        if self._offset0 is not None:
+            self._push_out_overlaps(t)
+        p, q = self.passes
+        apart, search_due = pair_step.open_step(x, v, self.exchange.local, self.exchange.slot, self.x, self.v,
+                                                self.own_nodes, self.f, self.ff, self.stiff, p.own, q.own,
+                                                self.x_search, self.searches > 0, self._least, self.margin)
+        if not apart and search_due:
+            self._search()
+        sums, peaks, p.count, q.count = pair_step.close_step(
+            apart, dt, *p.step_arrays(), *q.step_arrays(), self.x, self.v, self.mass, self.spec.damping,
+            self.soft_scale, self.depth, self.friction, self.owned, self.has_friction, self.f, self.ff, self.stiff,
+            self._f_old, self._ff_old, self.own_a, self.own_area_a, self.own_nodes)
+        return sums, peaks
 
     def _push_out_overlaps(self, t: float):
         """LS-DYNA's interference option: the penetration each node started with counts in full after
