@@ -17,7 +17,7 @@ from numba import njit
 
 from ..materials.algebra import inverse_3x3
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
+from ..materials.update import elastic_trial_holds, elastic_update_stress, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .one_point import NO_TOTALS, add_cell_totals, block_constants, step_length, unwalsh4, walsh8
 
@@ -304,15 +304,16 @@ def _hex_kernel(elastic_only: bool):
             # inside their yield surface
             _elastic(S, count, dt)
             if not elastic_only:
-                # the others cell by cell (objective rotation, law)
+                # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
                 for k in range(count):
                     c = cells[start + k]
-                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, _row6(S, _SN, B, k)):
+                    trial = _row6(S, _SN, B, k)
+                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
                         continue
-                    s_np1, d, wp = update_stress(params, curves, cell_material[c], state, c, 0, _row6(S, _S, B, k),
-                                                 _row6(S, _D, B, k),
-                                                 (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),
-                                                 dt, 0.0, False)
+                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, _row6(S, _S, B, k),
+                                                     trial, _row6(S, _D, B, k),
+                                                     (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),
+                                                     dt, 0.0)
                     for i in range(6):
                         S[(_SN + i) * B + k] = s_np1[i]
                     S[_WP * B + k] = wp

@@ -14,7 +14,8 @@ compiler sees the same arithmetic over consecutive array entries, so the pass ru
    hourglass projections, into further rows;
 3. the material update at the centre (``materials.update``): every cell's elastic trial in lanes too
    (``_elastic``), which is the update of elastic rows without slots and of J2 points inside their yield
-   surface (``elastic_trial_holds``); the others cell by cell (scalar: the laws hold state and branches);
+   surface (``elastic_trial_holds``); the others cell by cell from that trial (``update_from_trial``,
+   scalar: the laws hold state and branches);
 4. response lanes (vectorised, ``_response_lanes``): the viscous stresses, the hourglass resultant,
    the nodal forces, the energies and the stable step, into further rows;
 5. scatter (scalar): forces into the nodes, stresses and resultants into their arrays, the energy
@@ -38,7 +39,7 @@ import numpy as np
 from numba import njit
 
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, update_stress
+from ..materials.update import elastic_trial_holds, elastic_update_stress, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .one_point import (NO_TOTALS, add_cell_totals, block_constants, inverse_2x2, step_length,
                         unwalsh4, walsh4)
@@ -263,18 +264,19 @@ def _quad_kernel(elastic_only: bool):
             # inside their yield surface (most of a plastic body at any time)
             _elastic(S, count, dt)
             if not elastic_only:
-                # the others cell by cell (objective rotation, slotted ring, law)
+                # the others cell by cell, from their trial (a J2 return, or objective rotation, slotted ring
+                # and law)
                 for k in range(count):
                     c = cells[start + k]
                     trial = (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0,
                              S[(_SN + 3) * B + k])
                     if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
                         continue
-                    s_np1, d, wp = update_stress(
+                    s_np1, d, wp = update_from_trial(
                         params, curves, cell_material[c], state, c, 0,
-                        (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]),
+                        (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]), trial,
                         (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k]),
-                        (0.0, 0.0, S[_SPIN * B + k]), dt, S[_R * B + k] if axisymmetric else 0.0, False)
+                        (0.0, 0.0, S[_SPIN * B + k]), dt, S[_R * B + k] if axisymmetric else 0.0)
                     S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k] = s_np1[0], s_np1[1], s_np1[2]
                     S[(_SN + 3) * B + k] = s_np1[5]
                     S[(_D + 2) * B + k] = d[2]

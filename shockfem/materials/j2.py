@@ -185,6 +185,15 @@ def j2_update(row, curve, point, s, d, dt):
     return radial_return(row, curve, point, trial, d, dt)
 
 
+@njit(cache=True, fastmath=True)
+def j2_return(row, curve, point, trial, d, dt):
+    """``j2_update`` from an elastic trial already made: the return alone.  The one-point elements compute
+    every cell's trial in lanes (``update.elastic_update_stress``, the same rotation and Hooke's law as
+    ``update_stress`` and ``j2_update`` make) and hand a yielding point's trial here (``update.update_from_trial``),
+    rather than rotate and step it a second time.  A called function, like ``j2_update``."""
+    return radial_return(row, curve, point, trial, d, dt)
+
+
 def pack_j2(row, curve, plasticity) -> None:
     """Write the J2 constants of a material's ``plasticity`` (the scene's ``Plasticity``: curve,
     kinematic_modulus, rate_D, rate_q, rate_form) into its parameter ``row`` and hardening ``curve``."""

@@ -19,7 +19,8 @@ drive this very function.
 
 The elements compute every cell's elastic trial in SIMD lanes (``elastic_update_stress``: rotate, then
 Hooke) and ask ``elastic_trial_holds`` whether it is the answer (elastic rows; J2 points without kinematic
-hardening inside their static yield surface); ``update_stress`` runs for the others.
+hardening inside their static yield surface); ``update_from_trial`` runs for the others: the J2 return
+from that trial, or ``update_stress``.
 
 Compiled code: ``update_stress``, the dispatch ``laws.law_update`` and the rotation are inlined into
 each element kernel (numba ``inline="always"``); the laws and the slotted ring are called functions,
@@ -33,7 +34,7 @@ import numpy as np
 from numba import njit
 
 from .elastic import elastic_step, elastic_step_inlined
-from .j2 import inside_static_yield
+from .j2 import inside_static_yield, j2_return
 from .laws import law_update
 from .layout import ELASTIC, J2, P_CURVE_POINTS, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH, S_RATE
 from .objective import cayley_matrix, rotate_back_stress, rotate_symmetric
@@ -84,6 +85,21 @@ def elastic_trial_holds(params, curves, m, state, c, p, trial):
             state[c, p, S_RATE] = 0.0
             return True
     return False
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def update_from_trial(params, curves, m, state, c, p, s, trial, d, w, dt, r):
+    """``update_stress`` of a point whose elastic trial ``trial`` (``elastic_update_stress`` of ``s``, ``d``,
+    ``w``) is made already and is not the answer (``elastic_trial_holds``).  A J2 row without kinematic
+    hardening or slots returns from that trial (``j2.j2_return``): ``update_stress`` would rotate the stress
+    and step it again to the same trial, up to the compiler's order of operations, and reach the law
+    through its dispatch.  On the plastic Taylor bar at 30 us (1,178 of 2,592 cells yielding) the
+    quad pass took 107 ns a cell against 122 (docs/performance.md, session 29).  Other rows go through
+    ``update_stress``.  Returns what ``update_stress`` returns."""
+    if params[m, P_LAW] == J2 and params[m, P_KINEMATIC] == 0.0 and params[m, P_SLOT_WIDTH] == 0.0:
+        s_np1, work = j2_return(params[m], curves[m], state[c, p], trial, d, dt)
+        return s_np1, d, work
+    return update_stress(params, curves, m, state, c, p, s, d, w, dt, r, False)
 
 
 def is_elastic_only(params: np.ndarray) -> bool:
