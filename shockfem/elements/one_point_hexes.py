@@ -16,8 +16,10 @@ import numpy as np
 from numba import njit
 
 from ..materials.algebra import inverse_3x3
+from ..materials.j2 import linear_hardening_return
+from ..materials.layout import P_MU, S_EPS, S_RATE
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, update_from_trial
+from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .one_point import NO_TOTALS, add_cell_totals, block_constants, step_length, unwalsh4, walsh8
 
@@ -37,7 +39,10 @@ _J, _JV, _HX, _HV, _D, _SPIN, _SN, _WP = 74, 83, 92, 104, 116, 122, 125, 131
 # inverted), the stresses' work, the hourglass, damping and bulk viscosity powers, the stable step,
 # the plastic work (``one_point.add_cell_totals``'s order from the volume).
 _F, _Q, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = 132, 156, 168, 169, 170, 171, 172, 173, 174
-ROWS = 175
+# A J2 row of linear hardening (``materials.update.linear_hardening``) returns in lanes: the plastic strain
+# at t_n in, at t_n+1 out, and its rate
+_EPS, _RATE = 175, 176
+ROWS = 177
 
 
 # The lane loops hold no inner loops: LLVM vectorises innermost loops only, and a loop over a tuple's
@@ -114,6 +119,20 @@ def _rates(S, nb, dt):
         S[_SPIN * B + k] = 0.5 * (l12 - l21)
         S[(_SPIN + 1) * B + k] = 0.5 * (l02 - l20)
         S[(_SPIN + 2) * B + k] = 0.5 * (l01 - l10)
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="never")
+def _j2_lanes(S, nb, dt, mu, y0, eps0, slope):
+    """Every cell's J2 return from its elastic trial, in lanes, for a block of one J2 row of linear hardening
+    (``one_point_quads._j2_lanes``, which says more)."""
+    B = LANES
+    for k in range(nb):
+        s, eps, rate, work = linear_hardening_return(_row6(S, _SN, B, k), S[_EPS * B + k], mu, y0, eps0, slope, dt)
+        _store3(S, _SN, B, k, s[0], s[1], s[2])
+        _store3(S, _SN + 3, B, k, s[3], s[4], s[5])
+        S[_EPS * B + k] = eps
+        S[_RATE * B + k] = rate
+        S[_WP * B + k] = work
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -303,7 +322,18 @@ def _hex_kernel(elastic_only: bool):
             # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
             # inside their yield surface
             _elastic(S, count, dt)
-            if not elastic_only:
+            linear, y0, eps0, slope = (False, 0.0, 0.0, 0.0) if elastic_only else linear_hardening(
+                params, curves, block_material)
+            if one_row and linear:
+                # a block of one J2 row of linear hardening: the returns in lanes too
+                for k in range(count):
+                    S[_EPS * B + k] = state[np.uint32(cells[start + k]), 0, S_EPS]
+                _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
+                for k in range(count):
+                    c = np.uint32(cells[start + k])
+                    state[c, 0, S_EPS] = S[_EPS * B + k]
+                    state[c, 0, S_RATE] = S[_RATE * B + k]
+            elif not elastic_only:
                 # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
                 for k in range(count):
                     c = cells[start + k]

@@ -14,7 +14,8 @@ compiler sees the same arithmetic over consecutive array entries, so the pass ru
    hourglass projections, into further rows;
 3. the material update at the centre (``materials.update``): every cell's elastic trial in lanes too
    (``_elastic``), which is the update of elastic rows without slots and of J2 points inside their yield
-   surface (``elastic_trial_holds``); the others cell by cell from that trial (``update_from_trial``,
+   surface (``elastic_trial_holds``); in a block of one J2 row of linear hardening every cell's return
+   in lanes as well (``_j2_lanes``); the others cell by cell from that trial (``update_from_trial``,
    scalar: the laws hold state and branches);
 4. response lanes (vectorised, ``_response_lanes``): the viscous stresses, the hourglass resultant,
    the nodal forces, the energies and the stable step, into further rows;
@@ -38,8 +39,10 @@ import math
 import numpy as np
 from numba import njit
 
+from ..materials.j2 import linear_hardening_return
+from ..materials.layout import P_MU, S_EPS, S_RATE
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, update_from_trial
+from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .one_point import (NO_TOTALS, add_cell_totals, block_constants, inverse_2x2, step_length,
                         unwalsh4, walsh4)
@@ -65,7 +68,10 @@ K_ROWS = 23
 _FX, _FY, _Q, _DET, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = (W_ROWS + K_ROWS + r
                                                                 for r in (0, 4, 8, 10, 11, 12, 13, 14, 15, 16))
 V_ROWS = 17
-ROWS = W_ROWS + K_ROWS + V_ROWS
+# A J2 row of linear hardening (``materials.update.linear_hardening``) returns in lanes: the plastic strain
+# at t_n in, at t_n+1 out, and its rate
+_EPS, _RATE = W_ROWS + K_ROWS + V_ROWS, W_ROWS + K_ROWS + V_ROWS + 1
+ROWS = W_ROWS + K_ROWS + V_ROWS + 2
 
 
 def _lane_function(py_func, name: str, axisymmetric: bool):
@@ -135,6 +141,24 @@ def _elastic(S, nb, dt):
             (0.0, 0.0, S[_SPIN * B + k]), dt, S[_LAM * B + k], S[_MU * B + k])
         S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], S[(_SN + 3) * B + k] = s[0], s[1], s[2], s[5]
         S[_WP * B + k] = 0.0
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="never")
+def _j2_lanes(S, nb, dt, mu, y0, eps0, slope):
+    """Every cell's J2 return from its elastic trial, in lanes, for a block of one J2 row of linear hardening
+    (``materials.j2.linear_hardening_return``; ``materials.update.linear_hardening`` says which rows and gives
+    the line y0, eps0, slope): the stress, plastic strain, its rate and the plastic work density.  A cell
+    inside its yield surface keeps its trial, plastic strain and no rate, as ``elastic_trial_holds`` leaves
+    it."""
+    B = LANES
+    for k in range(nb):
+        s, eps, rate, work = linear_hardening_return(
+            (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0, S[(_SN + 3) * B + k]),
+            S[_EPS * B + k], mu, y0, eps0, slope, dt)
+        S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], S[(_SN + 3) * B + k] = s[0], s[1], s[2], s[5]
+        S[_EPS * B + k] = eps
+        S[_RATE * B + k] = rate
+        S[_WP * B + k] = work
 
 
 def _response_lanes(axisymmetric: bool):
@@ -263,7 +287,18 @@ def _quad_kernel(elastic_only: bool):
             # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
             # inside their yield surface (most of a plastic body at any time)
             _elastic(S, count, dt)
-            if not elastic_only:
+            linear, y0, eps0, slope = (False, 0.0, 0.0, 0.0) if elastic_only else linear_hardening(
+                params, curves, block_material)
+            if one_row and linear:
+                # a block of one J2 row of linear hardening: the returns in lanes too
+                for k in range(count):
+                    S[_EPS * B + k] = state[np.uint32(cells[start + k]), 0, S_EPS]
+                _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
+                for k in range(count):
+                    c = np.uint32(cells[start + k])
+                    state[c, 0, S_EPS] = S[_EPS * B + k]
+                    state[c, 0, S_RATE] = S[_RATE * B + k]
+            elif not elastic_only:
                 # the others cell by cell, from their trial (a J2 return, or objective rotation, slotted ring
                 # and law)
                 for k in range(count):

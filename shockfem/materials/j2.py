@@ -173,6 +173,40 @@ def radial_return(row, curve, point, s, d, dt):
     return (s0, s1, s2, s3, s4, s5), work
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def linear_hardening_return(s, eps, mu, y0, eps0, slope, dt):
+    """``radial_return`` of a point whose flow stress is linear in its plastic strain, sigma_y = y0 + slope
+    (eps - eps0) at every eps: a J2 row with a one- or two-point curve (perfectly plastic or bilinear,
+    extended with its slope), rate independent, without kinematic hardening.  Its consistency condition
+    is then linear in de and Newton's first step from de = 0 solves it,
+
+        de = (q_trial - sigma_y(eps)) / (3 mu + slope)   where q_trial > sigma_y(eps), else 0,
+
+    the step ``radial_return`` takes (its second iteration finds the residual at round-off and stops).
+    Written without calls or early returns so that the one-point elements run it in SIMD lanes over a
+    block of cells.  ``s``: the elastic trial (11, 22, 33, 23, 13, 12); returns the stress, the plastic
+    strain and its rate at t_n+1, and the plastic work density of the step sigma : d eps_p [J/m^3]."""
+    s0, s1, s2, s3, s4, s5 = s
+    mean = (s0 + s1 + s2) / 3.0
+    xi0 = s0 - mean
+    xi1 = s1 - mean
+    xi2 = s2 - mean
+    q_trial = math.sqrt(1.5 * (xi0 * xi0 + xi1 * xi1 + xi2 * xi2 + 2.0 * (s3 * s3 + s4 * s4 + s5 * s5)))
+    excess = q_trial - (y0 + slope * (eps - eps0))
+    flows = excess > 0.0
+    de = excess / (3.0 * mu + slope) if flows else 0.0
+    k = 1.5 * de / q_trial if flows else 0.0       # d eps_p = k xi_trial (tensor), |.|_eq = de
+    r = 2.0 * mu * k
+    n0 = s0 - r * xi0
+    n1 = s1 - r * xi1
+    n2 = s2 - r * xi2
+    n3 = s3 - r * s3
+    n4 = s4 - r * s4
+    n5 = s5 - r * s5
+    work = k * (n0 * xi0 + n1 * xi1 + n2 * xi2 + 2.0 * (n3 * s3 + n4 * s4 + n5 * s5))
+    return (n0, n1, n2, n3, n4, n5), eps + de, de / dt, work
+
+
 @njit(cache=True, fastmath=True)
 def j2_update(row, curve, point, s, d, dt):
     """The J2 law over one step in the rotated frame: elastic trial, then the return.

@@ -33,10 +33,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from .curves import piecewise_linear
 from .elastic import elastic_step, elastic_step_inlined
 from .j2 import inside_static_yield, j2_return
 from .laws import law_update
-from .layout import ELASTIC, J2, P_CURVE_POINTS, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_SLOT_WIDTH, S_RATE
+from .layout import ELASTIC, J2, P_CURVE_POINTS, P_KINEMATIC, P_LAMBDA, P_LAW, P_MU, P_RATE_D, P_SLOT_WIDTH, S_RATE
 from .objective import cayley_matrix, rotate_back_stress, rotate_symmetric
 from .slotted import slotted_hoop_rate
 
@@ -100,6 +101,20 @@ def update_from_trial(params, curves, m, state, c, p, s, trial, d, w, dt, r):
         s_np1, work = j2_return(params[m], curves[m], state[c, p], trial, d, dt)
         return s_np1, d, work
     return update_stress(params, curves, m, state, c, p, s, d, w, dt, r, False)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def linear_hardening(params, curves, m):
+    """Whether row ``m`` is a J2 row whose return is ``j2.linear_hardening_return`` (a one- or two-point
+    curve, rate independent, no kinematic hardening, no slots), and its flow stress line (y0, eps0, slope):
+    sigma_y(eps) = y0 + slope (eps - eps0), the curve's first point and first segment's slope
+    (``curves.piecewise_linear`` there; 0 for one point)."""
+    npts = int(params[m, P_CURVE_POINTS])
+    if not (params[m, P_LAW] == J2 and params[m, P_KINEMATIC] == 0.0 and params[m, P_SLOT_WIDTH] == 0.0
+            and params[m, P_RATE_D] == 0.0 and npts <= 2):
+        return False, 0.0, 0.0, 0.0
+    y0, slope = piecewise_linear(curves[m], npts, curves[m, 0, 0])
+    return True, y0, curves[m, 0, 0], slope
 
 
 def is_elastic_only(params: np.ndarray) -> bool:

@@ -161,3 +161,48 @@ def test_points_inside_the_yield_surface_take_the_lanes_trial(shape, axisymmetri
         scale = np.abs(ref[name]).max()
         assert np.abs(got[name] - ref[name]).max() <= 1e-12 * scale, name
     assert out[4] == pytest.approx(ref_out[4], rel=1e-12) and out[4] > 0.0
+
+
+def _linear_j2(yield_stress, tangent_modulus):
+    """Two identical J2 rows (steel's elastic constants, bulk viscosity) of linear hardening: a one-point
+    curve (perfectly plastic) without a tangent modulus, a two-point one with it; their curves."""
+    p = np.vstack([steel_params(), steel_params()])
+    p[:, layout.P_Q_QUADRATIC], p[:, layout.P_Q_LINEAR] = 1.5, 0.06
+    p[:, layout.P_LAW] = layout.J2
+    p[:, layout.P_CURVE_POINTS] = 2 if tangent_modulus else 1
+    curves = np.zeros((2, 2, 2))
+    curves[:, 0] = 0.0, yield_stress
+    curves[:, 1] = 1.0, yield_stress + tangent_modulus
+    return p, curves
+
+
+@pytest.mark.parametrize("shape, axisymmetric", CASES)
+@pytest.mark.parametrize("tangent_modulus", [0.0, 2e9])
+def test_a_j2_row_of_linear_hardening_returns_in_lanes(shape, axisymmetric, tangent_modulus):
+    """A block of one J2 row of linear hardening returns every cell in lanes
+    (``materials.j2.linear_hardening_return``); a mixed block returns cell by cell (``update_from_trial``:
+    ``radial_return``'s Newton, which takes the same step).  Every cell on row 0 against cells alternating
+    between rows 0 and 1, the same material, with a yield stress that some cells' trial exceeds and
+    others' does not (150 MPa for these quads, 50 MPa for the hexes): the same cells yield, and every
+    output (forces, stresses, resultants, plastic strain and its rate, energies) agrees to 1e-12 of its
+    largest entry (the compiler orders the two differently).  A lane return with the hardening slope left
+    out of 3 mu + H fails it."""
+    x, dofmap = _grid(shape)
+    cells = np.random.default_rng(7).permutation(len(dofmap)).astype(np.int32)
+    v = np.random.default_rng(11).normal(size=x.shape) * 20.0
+    material = _linear_j2(1.5e8 if len(shape) == 2 else 5e7, tangent_modulus)
+    one_row = np.zeros(len(dofmap), dtype=np.int32)
+    mixed = (np.arange(len(dofmap)) % 2).astype(np.int32)
+    out, got = _run(False, x, dofmap, cells, v, STIFFNESS, axisymmetric, material=material,
+                    rows=(material[0], one_row))
+    ref_out, ref = _run(False, x, dofmap, cells, v, STIFFNESS, axisymmetric, material=material,
+                        rows=(material[0], mixed))
+    yielded = ref["state"][:, 0, layout.S_EPS] > 0.0
+    assert 0.1 < yielded.mean() < 0.9              # both branches of the return ran
+    np.testing.assert_array_equal(got["state"][:, 0, layout.S_EPS] > 0.0, yielded)
+    got["body_energy"] = got["body_energy"].sum(axis=0)    # by row: row 0 only against rows 0 and 1
+    ref["body_energy"] = ref["body_energy"].sum(axis=0)
+    for name in ref:
+        scale = np.abs(ref[name]).max()
+        assert np.abs(got[name] - ref[name]).max() <= 1e-12 * scale, name
+    assert out[4] == pytest.approx(ref_out[4], rel=1e-12) and out[4] > 0.0
