@@ -405,7 +405,8 @@ class ContactPair:
 
     def _step(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> tuple[np.ndarray, np.ndarray]:
         """The step's forces on the compact nodes and the totals ``kernels.totals`` returns, reduced over the
-        ranks.  Collective under MPI."""
+        ranks: a pair under MPI, and a pair with a rigid surface (``_step_in_one_process`` does the others).
+        Collective under MPI."""
         self._gather(x, v)
         kernels.clear(self.own_nodes, self.f, self.ff, self.stiff)
         active = 0
