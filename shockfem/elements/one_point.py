@@ -40,7 +40,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ..materials.layout import P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
+from ..materials.layout import (P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED, S_EPS,
+                                S_RATE)
 
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
@@ -121,6 +122,24 @@ def step_length(nodes, bb):
 # and reports 7 consecutive rows per cell (signed volume, for a quad its signed area factor; the
 # stresses' work; hourglass, damping and bulk viscosity powers; stable step; plastic work); lane k of
 # row r is ``S[r * B + k]``.
+
+@njit(cache=True, fastmath=True, inline="always")
+def gather_plastic_strain(S, row, B, cells, start, count, state):
+    """The plastic strain at t_n of the block's cells ``cells[start:start + count]`` into row ``row``, for a
+    J2 row's returns in lanes (the passes' ``_j2_lanes``)."""
+    for k in range(count):
+        S[row * B + k] = state[np.uint32(cells[start + k]), 0, S_EPS]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def scatter_plastic_strain(S, row, B, cells, start, count, state):
+    """``_j2_lanes``' plastic strain at t_n+1 (row ``row``) and its rate (row ``row`` + 1) back into the
+    block's cells' state."""
+    for k in range(count):
+        c = np.uint32(cells[start + k])
+        state[c, 0, S_EPS] = S[row * B + k]
+        state[c, 0, S_RATE] = S[(row + 1) * B + k]
+
 
 @njit(cache=True, fastmath=True, inline="always")
 def block_constants(S, row, B, cells, start, count, cell_material, params, one_row, block_material):

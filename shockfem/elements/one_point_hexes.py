@@ -17,11 +17,12 @@ from numba import njit
 
 from ..materials.algebra import inverse_3x3
 from ..materials.j2 import linear_hardening_return
-from ..materials.layout import P_MU, S_EPS, S_RATE
+from ..materials.layout import P_MU
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import NO_TOTALS, add_cell_totals, block_constants, step_length, unwalsh4, walsh8
+from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, scatter_plastic_strain,
+                        step_length, unwalsh4, walsh8)
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -40,7 +41,7 @@ _J, _JV, _HX, _HV, _D, _SPIN, _SN, _WP = 74, 83, 92, 104, 116, 122, 125, 131
 # the plastic work (``one_point.add_cell_totals``'s order from the volume).
 _F, _Q, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = 132, 156, 168, 169, 170, 171, 172, 173, 174
 # A J2 row of linear hardening (``materials.update.linear_hardening``) returns in lanes: the plastic strain
-# at t_n in, at t_n+1 out, and its rate
+# at t_n in, at t_n+1 out, and its rate in the next row (``one_point.scatter_plastic_strain``)
 _EPS, _RATE = 175, 176
 ROWS = 177
 
@@ -326,13 +327,9 @@ def _hex_kernel(elastic_only: bool):
                 params, curves, block_material)
             if one_row and linear:
                 # a block of one J2 row of linear hardening: the returns in lanes too
-                for k in range(count):
-                    S[_EPS * B + k] = state[np.uint32(cells[start + k]), 0, S_EPS]
+                gather_plastic_strain(S, _EPS, B, cells, start, count, state)
                 _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
-                for k in range(count):
-                    c = np.uint32(cells[start + k])
-                    state[c, 0, S_EPS] = S[_EPS * B + k]
-                    state[c, 0, S_RATE] = S[_RATE * B + k]
+                scatter_plastic_strain(S, _EPS, B, cells, start, count, state)
             elif not elastic_only:
                 # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
                 for k in range(count):

@@ -40,12 +40,12 @@ import numpy as np
 from numba import njit
 
 from ..materials.j2 import linear_hardening_return
-from ..materials.layout import P_MU, S_EPS, S_RATE
+from ..materials.layout import P_MU
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import (NO_TOTALS, add_cell_totals, block_constants, inverse_2x2, step_length,
-                        unwalsh4, walsh4)
+from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, inverse_2x2,
+                        scatter_plastic_strain, step_length, unwalsh4, walsh4)
 
 # Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
 # arrays leave the first-level cache and the pass runs at half the scalar code's speed.
@@ -69,7 +69,7 @@ _FX, _FY, _Q, _DET, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = (W_ROWS + K_ROWS +
                                                                 for r in (0, 4, 8, 10, 11, 12, 13, 14, 15, 16))
 V_ROWS = 17
 # A J2 row of linear hardening (``materials.update.linear_hardening``) returns in lanes: the plastic strain
-# at t_n in, at t_n+1 out, and its rate
+# at t_n in, at t_n+1 out, and its rate in the next row (``one_point.scatter_plastic_strain``)
 _EPS, _RATE = W_ROWS + K_ROWS + V_ROWS, W_ROWS + K_ROWS + V_ROWS + 1
 ROWS = W_ROWS + K_ROWS + V_ROWS + 2
 
@@ -291,13 +291,9 @@ def _quad_kernel(elastic_only: bool):
                 params, curves, block_material)
             if one_row and linear:
                 # a block of one J2 row of linear hardening: the returns in lanes too
-                for k in range(count):
-                    S[_EPS * B + k] = state[np.uint32(cells[start + k]), 0, S_EPS]
+                gather_plastic_strain(S, _EPS, B, cells, start, count, state)
                 _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
-                for k in range(count):
-                    c = np.uint32(cells[start + k])
-                    state[c, 0, S_EPS] = S[_EPS * B + k]
-                    state[c, 0, S_RATE] = S[_RATE * B + k]
+                scatter_plastic_strain(S, _EPS, B, cells, start, count, state)
             elif not elastic_only:
                 # the others cell by cell, from their trial (a J2 return, or objective rotation, slotted ring
                 # and law)

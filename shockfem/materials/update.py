@@ -89,6 +89,13 @@ def elastic_trial_holds(params, curves, m, state, c, p, trial):
 
 
 @njit(cache=True, fastmath=True, inline="always")
+def _isotropic_j2(params, m):
+    """Whether row ``m`` is J2 without kinematic hardening or slots: its return needs no rotated back stress
+    and no hoop constraint, only the trial (``update_from_trial``, ``linear_hardening``)."""
+    return params[m, P_LAW] == J2 and params[m, P_KINEMATIC] == 0.0 and params[m, P_SLOT_WIDTH] == 0.0
+
+
+@njit(cache=True, fastmath=True, inline="always")
 def update_from_trial(params, curves, m, state, c, p, s, trial, d, w, dt, r):
     """``update_stress`` of a point whose elastic trial ``trial`` (``elastic_update_stress`` of ``s``, ``d``,
     ``w``) is made already and is not the answer (``elastic_trial_holds``).  A J2 row without kinematic
@@ -97,7 +104,7 @@ def update_from_trial(params, curves, m, state, c, p, s, trial, d, w, dt, r):
     through its dispatch.  On the plastic Taylor bar at 30 us (1,178 of 2,592 cells yielding) the
     quad pass took 107 ns a cell against 122 (docs/performance.md, session 29).  Other rows go through
     ``update_stress``.  Returns what ``update_stress`` returns."""
-    if params[m, P_LAW] == J2 and params[m, P_KINEMATIC] == 0.0 and params[m, P_SLOT_WIDTH] == 0.0:
+    if _isotropic_j2(params, m):
         s_np1, work = j2_return(params[m], curves[m], state[c, p], trial, d, dt)
         return s_np1, d, work
     return update_stress(params, curves, m, state, c, p, s, d, w, dt, r, False)
@@ -110,8 +117,7 @@ def linear_hardening(params, curves, m):
     sigma_y(eps) = y0 + slope (eps - eps0), the curve's first point and first segment's slope
     (``curves.piecewise_linear`` there; 0 for one point)."""
     npts = int(params[m, P_CURVE_POINTS])
-    if not (params[m, P_LAW] == J2 and params[m, P_KINEMATIC] == 0.0 and params[m, P_SLOT_WIDTH] == 0.0
-            and params[m, P_RATE_D] == 0.0 and npts <= 2):
+    if not (_isotropic_j2(params, m) and params[m, P_RATE_D] == 0.0 and npts <= 2):
         return False, 0.0, 0.0, 0.0
     y0, slope = piecewise_linear(curves[m], npts, curves[m, 0, 0])
     return True, y0, curves[m, 0, 0], slope

@@ -197,6 +197,8 @@ class ExplicitSolver:
         self._prescribed_constant = all(len(c.values) == 1 for c in m.constraints)
         if self._prescribed_constant:
             self._prescribed_velocities(0.0, self._constrained_held)
+            # ``_prescribed_motion``'s velocity and rate, once: (c - c) / (after - before) is 0 exactly
+            self._prescribed = (self._constrained_held.copy(), np.zeros(len(self._constrained_dofs)))
         self.t = 0.0
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
@@ -679,12 +681,7 @@ class ExplicitSolver:
         """The prescribed velocity at t and its rate (central difference over the last step: exact on the
         piecewise-linear histories) of every constrained dof (``_constrained_dofs``, in their order);
         evaluated once per step (the history asks for it several times)."""
-        if self._prescribed_constant:
-            # (c - c) / (after - before) is 0 exactly: the same values as the general case
-            if self._prescribed_at == -1:
-                self._prescribed, self._prescribed_at = (self._constrained_held.copy(),
-                                                         np.zeros(len(self._constrained_dofs))), self.step
-        elif self._prescribed_at != self.step:
+        if not self._prescribed_constant and self._prescribed_at != self.step:
             n = len(self._constrained_dofs)
             h = 0.5 * self.dt if self.dt > 0 else 1e-9
             before, after = max(self.t - h, 0.0), self.t + h
