@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit
 
 from ..contact.surfaces import NodeExchange, area_vectors, build_surface
 from ..errors import ModelError
@@ -56,6 +57,14 @@ class LiquidCavity:
             mass[body == rb.index] = model.body_mass[rb.index]
         self.body, self.mass = body, mass
         self.rigid = np.isin(body, [rb.index for rb in model.rigid])
+        # per compact node, its rigid body's place among the walls' rigid bodies (-1: deformable), whose
+        # nodes share their body's area in the stable step
+        rigid_bodies = np.unique(body[self.rigid])
+        self._rigid_group = np.where(self.rigid, np.searchsorted(rigid_bodies, body), -1)
+        self._group_area = np.zeros(len(rigid_bodies))
+        self._x = np.empty((len(self.global_nodes), self.gdim))
+        self._v = np.empty_like(self._x)
+        self._S = np.empty((len(self.facets), self.gdim))
         self.f = np.zeros((len(self.global_nodes), self.gdim))
         self._f_old = np.zeros_like(self.f)
         # a cavity closed by its walls (no volume given) takes its volume from them, every step
@@ -96,61 +105,39 @@ class LiquidCavity:
     def orifice_area(self) -> float:
         if len(self._area) == 1:
             return float(self._area[0])
-        return float(np.interp(self.stroke(), self._stroke, self._area))
-
-    def _mass_flow(self, mass: float) -> float:
-        """The orifice's mass rate [kg/s] with ``mass`` of liquid in the current volume."""
-        return liquid.orifice_mass_flow(mass / (self.spec.density * self.volume), self.orifice_area(),
-                                        self.spec.discharge, self.spec.bulk_modulus, self.spec.tait_exponent,
-                                        self.spec.density)
+        return _interpolate(self.stroke(), self._stroke, self._area)
 
     def _mass_out(self, dt: float) -> float:
-        """The mass m the orifice lets out over the step, at the pressure it leaves behind (backward
-        Euler: m = dt mdot(M - m)).  One step's compression, K dV / V, can exceed the pressure itself;
-        taking the outflow at the start-of-step pressure would overshoot it every step."""
-        high = self.mass_liquid - self.spec.density * self.volume     # with this out, p = 0
-        if high <= 0.0 or self._mass_flow(self.mass_liquid) == 0.0:
-            return 0.0
-        low = 0.0
-        for _ in range(60):                    # bisection: g(m) = m - dt mdot(M - m) rises with m
-            mid = 0.5 * (low + high)
-            if mid - dt * self._mass_flow(self.mass_liquid - mid) > 0.0:
-                high = mid
-            else:
-                low = mid
-            if high - low <= 1e-13 * self.mass_liquid:
-                break
-        return 0.5 * (low + high)
+        """The mass the orifice lets out over the step, at the pressure it leaves behind
+        (``liquid.outflow_over_step``: backward Euler), through the area of the step's stroke."""
+        sp = self.spec
+        return liquid.outflow_over_step(self.mass_liquid, self.volume, dt, self.orifice_area(), sp.discharge,
+                                        sp.bulk_modulus, sp.tait_exponent, sp.density)
 
     # ---------------------------------------------------------------- geometry
     def enclosed_volume(self, x: np.ndarray) -> float:
         """The volume the walls close, by the divergence theorem with the liquid's outward normals -S:
         V = -sum of (x_f . S_f) / d in 3D (d = 3) and plane strain (d = 2), V = -sum of z_f S_z,f in
         axisymmetry (the field (0, z), whose divergence is 1); x_f the facet's centroid."""
-        S = self._area_vectors(x)
-        centre = x[self.facets].mean(axis=1)
-        if self.axisymmetric:
-            return -float(np.dot(centre[:, 1], S[:, 1]))
-        return -float(np.einsum("ij,ij->", centre, S)) / self.gdim
-
-    def _area_vectors(self, x: np.ndarray) -> np.ndarray:
-        """Outward area vector of each wall facet on the current geometry (out of its body: into the liquid)."""
-        return area_vectors(self.model, x[self.facets])
+        S = area_vectors(self.model, x, self.facets)
+        return _enclosed_volume(x, self.facets, S, self.axisymmetric)
 
     # ---------------------------------------------------------------- step
     def compute(self, x_local: np.ndarray, v_local: np.ndarray, dt: float) -> float:
         """Advance the liquid over the step just taken (``v`` is v_n+1/2), then the pressure forces on
-        the walls at t_n+1.  Returns the step limit of the liquid's stiffness.  Collective."""
-        x = self.exchange.gather(x_local)
-        v = self.exchange.gather(v_local)
-        S = self._area_vectors(x)
-        nn = self.facets.shape[1]
+        the walls at t_n+1.  Returns the step limit of the liquid's stiffness.  Collective.
+
+        Its loops are compiled (``_flux``, ``_wall_forces``, ``_stable_step``): a cavity has a few
+        walls' facets, and numpy's calls on them took most of a dashpot run's step."""
+        x = self.exchange.gather(x_local, out=self._x)
+        v = self.exchange.gather(v_local, out=self._v)
+        S = area_vectors(self.model, x, self.facets, out=self._S)
         if dt > 0.0:
             if self.enclosed:
-                self.volume = self.enclosed_volume(x)
+                self.volume = _enclosed_volume(x, self.facets, S, self.axisymmetric)
             else:
                 # the outward normals face the liquid: walls moving along them shrink it
-                self.volume -= dt * float(np.einsum("ij,ij->", v[self.facets].mean(axis=1), S))
+                self.volume -= dt * _flux(v, self.facets, S)
             taken = self._mass_out(dt)
             self.mass_liquid -= taken
             self.out_mass += taken
@@ -159,29 +146,11 @@ class LiquidCavity:
             self.throttled += taken * self.pressure_of(ratio) / (self.spec.density * ratio)
         self.pressure = self.pressure_of(self.density_ratio())
         self.max_pressure = max(self.max_pressure, self.pressure)
-        self.f[:] = 0.0
-        share = -self.pressure * S / nn
-        for k in range(nn):
-            np.add.at(self.f, self.facets[:, k], share)
-        self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * v))
-        self._f_old[:] = self.f
-        return self._stable_step(S)
-
-    def _stable_step(self, S: np.ndarray) -> float:
-        """2 / omega, omega^2 <= max over nodes of (K_t / V) a_i A / m_i: the liquid as a volume spring
-        (Gershgorin on -dp/dV S_i S_j); a rigid wall's nodes move with their body's mass and area."""
-        ratio = self.density_ratio()
-        K_t = self.spec.bulk_modulus * ratio ** self.spec.tait_exponent
-        areas = np.linalg.norm(S, axis=1)
-        a_node = np.zeros(len(self.global_nodes))
-        for k in range(self.facets.shape[1]):
-            np.add.at(a_node, self.facets[:, k], areas / self.facets.shape[1])
-        if self.rigid.any():
-            for b in np.unique(self.body[self.rigid]):
-                on = self.body == b
-                a_node[on] = a_node[on].sum()
-        omega2 = float(np.max(K_t / max(self.volume, 1e-300) * a_node * areas.sum() / self.mass))
-        return 2.0 / math.sqrt(omega2) if omega2 > 0.0 else np.inf
+        self.work += _wall_forces(self.f, self._f_old, self.facets, S, self.pressure, v, dt)
+        # the liquid as a volume spring, K_t = dp / d(ln rho), on the walls' nodes
+        K_t = self.spec.bulk_modulus * self.density_ratio() ** self.spec.tait_exponent
+        return _stable_step(S, self.facets, self._rigid_group, self._group_area, self.mass,
+                            K_t / max(self.volume, 1e-300))
 
     def add_forces(self, f: np.ndarray):
         self.exchange.add_to(self.f, f)
@@ -191,3 +160,90 @@ class LiquidCavity:
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": -self.work, "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled}
+
+
+@njit(cache=True)
+def _interpolate(x, xs, ys):
+    """np.interp compiled (numba's follows numpy's): called from Python on a metering pin's table every
+    step, numpy's own took 5 us."""
+    return np.interp(x, xs, ys)
+
+
+@njit(cache=True)
+def _enclosed_volume(x, facets, S, axisymmetric):
+    """``LiquidCavity.enclosed_volume``'s sum over the facets."""
+    nf, nn = facets.shape
+    total = 0.0
+    for i in range(nf):
+        if axisymmetric:
+            z = 0.0
+            for k in range(nn):
+                z += x[facets[i, k], 1]
+            total += z / nn * S[i, 1]
+        else:
+            for j in range(x.shape[1]):
+                c = 0.0
+                for k in range(nn):
+                    c += x[facets[i, k], j]
+                total += c / nn * S[i, j]
+    return -total if axisymmetric else -total / x.shape[1]
+
+
+@njit(cache=True)
+def _flux(v, facets, S):
+    """sum over the facets of v_f . S_f, v_f the mean of the facet's nodes' velocities [m^3/s]."""
+    nf, nn = facets.shape
+    total = 0.0
+    for i in range(nf):
+        for j in range(v.shape[1]):
+            c = 0.0
+            for k in range(nn):
+                c += v[facets[i, k], j]
+            total += c / nn * S[i, j]
+    return total
+
+
+@njit(cache=True)
+def _wall_forces(f, f_old, facets, S, pressure, v, dt):
+    """The pressure's forces on the walls' nodes into ``f`` (-p S_f shared equally by a facet's nodes),
+    and the work they did over the step, dt/2 (f_old + f) . v; ``f_old`` becomes ``f``."""
+    nf, nn = facets.shape
+    f[:] = 0.0
+    for k in range(nn):
+        for i in range(nf):
+            for j in range(f.shape[1]):
+                f[facets[i, k], j] -= pressure * S[i, j] / nn
+    power = 0.0
+    for a in range(f.shape[0]):
+        for j in range(f.shape[1]):
+            power += (f_old[a, j] + f[a, j]) * v[a, j]
+            f_old[a, j] = f[a, j]
+    return 0.5 * dt * power
+
+
+@njit(cache=True)
+def _stable_step(S, facets, rigid_group, group_area, mass, stiffness_per_area2):
+    """2 / omega, omega^2 <= max over nodes of (K_t / V) a_i A / m_i: the liquid as a volume spring
+    (Gershgorin on -dp/dV S_i S_j); a_i the node's share of the walls' area (a rigid wall's nodes move
+    with their body: their group's whole area, and their body's mass), A the walls' whole area.
+    ``stiffness_per_area2`` = K_t / V."""
+    nf, nn = facets.shape
+    a_node = np.zeros(len(mass))
+    whole = 0.0
+    for i in range(nf):
+        area = 0.0
+        for j in range(S.shape[1]):
+            area += S[i, j] * S[i, j]
+        area = math.sqrt(area)
+        whole += area
+        for k in range(nn):
+            a_node[facets[i, k]] += area / nn
+    group_area[:] = 0.0
+    for a in range(len(mass)):
+        if rigid_group[a] >= 0:
+            group_area[rigid_group[a]] += a_node[a]
+    omega2 = 0.0
+    for a in range(len(mass)):
+        share = group_area[rigid_group[a]] if rigid_group[a] >= 0 else a_node[a]
+        omega2 = max(omega2, stiffness_per_area2 * share * whole / mass[a])
+    return 2.0 / math.sqrt(omega2) if omega2 > 0.0 else np.inf

@@ -39,6 +39,11 @@ class RigidBody:
     inertia0: np.ndarray         # (3, 3) inertia about the centre of mass, 3D only [kg m^2]
     rel0: np.ndarray             # X - center0 for ``nodes``
 
+    @property
+    def num_owned(self) -> int:
+        """How many of ``nodes`` this rank owns: they come first (a rank numbers its owned nodes first)."""
+        return int(np.count_nonzero(self.owned))
+
 
 @dataclass
 class _History:

@@ -521,9 +521,9 @@ class ExplicitSolver:
             omega = np.linalg.solve(inertia, rs.momentum_angular) if rb.mass > 0 else np.zeros(3)
             rs.rotation = rotation_of_angular_velocity(omega, dt) @ rs.rotation
             x_new = center_new + rb.rel0 @ rs.rotation.T
+            self.v[rb.nodes] = (x_new - self.x[rb.nodes]) / dt
         else:
-            x_new = self.x[rb.nodes] + dt * rs.velocity
-        self.v[rb.nodes] = (x_new - self.x[rb.nodes]) / dt
+            nodal.translate_rigid(self.x, self.v, rb.nodes, rs.velocity, dt)
         rs.center = center_new
 
     def _rigid_loads(self, dt: float) -> float:
@@ -535,13 +535,14 @@ class ExplicitSolver:
         m = self.model
         kinetic = 0.0
         for rb, rs in zip(m.rigid, self.rigid_states):
-            force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
-            rs.force = self._sum(force[rb.owned].sum(axis=0))
+            rs.force = self._sum(nodal.rigid_resultant(self.f_ext, self.f_con, self.f_int, rb.nodes,
+                                                       rb.num_owned, np.empty(m.gdim)))
             if m.axisymmetric:
                 rs.force[0] = 0.0   # a ring's radial forces cancel: an axisymmetric rigid body moves along z
             v_c = rs.velocity + 0.5 * dt * rs.force / rb.mass
             kinetic += 0.5 * rb.mass * float(v_c @ v_c)
             if m.gdim == 3:
+                force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
                 arm = self.x[rb.nodes] - rs.center
                 rs.torque = self._sum(np.cross(arm[rb.owned], force[rb.owned]).sum(axis=0))
                 momentum = rs.momentum_angular + 0.5 * dt * rs.torque

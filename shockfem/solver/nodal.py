@@ -231,3 +231,25 @@ def body_sums(v, a, dt, alpha, mass, kinetic_mass, constrained, node_body, num_b
         mv[b, i] += mass[n] * (v_held[k] - v_t)
         ma[b, i] += mass[n] * (a_held[k] - (a[n, i] - alpha * v_t))
     return mv, ma, kinetic
+
+
+@njit(cache=True)
+def rigid_resultant(f_ext, f_con, f_int, nodes, num_owned_nodes, out):
+    """A rigid body's resultant force f_ext + f_con - f_int over its owned nodes (``nodes``' first
+    ``num_owned_nodes``) into ``out``, summed node after node."""
+    out[:] = 0.0
+    for i in range(num_owned_nodes):
+        a = nodes[i]
+        for j in range(f_ext.shape[1]):
+            out[j] += f_ext[a, j] + f_con[a, j] - f_int[a, j]
+    return out
+
+
+@njit(cache=True)
+def translate_rigid(x, v, nodes, velocity, dt):
+    """A translating rigid body's node velocities over the step: those that carry each node from x to
+    x + dt velocity, ((x + dt velocity) - x) / dt, so that every node lands where the body puts it."""
+    for i in range(len(nodes)):
+        a = nodes[i]
+        for j in range(x.shape[1]):
+            v[a, j] = (x[a, j] + dt * velocity[j] - x[a, j]) / dt

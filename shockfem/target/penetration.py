@@ -60,7 +60,7 @@ class ConcreteTarget:
         self.normal = np.array(spec.normal, dtype=float)
         self.strength = (spec.strength_factor or strength_factor(spec.compressive_strength)) \
             * spec.compressive_strength                                                   # S f'c [Pa]
-        S0 = area_vectors(model, self.exchange.gather(model.X0)[self.facets])
+        S0 = area_vectors(model, self.exchange.gather(model.X0), self.facets)
         self.radius, axis = self._nose_axis(S0)
         self.nose_factor = self._nose_factor(S0, axis)
         self.crater_depth = spec.crater_depth if spec.crater_depth >= 0 else 4.0 * self.radius
@@ -129,7 +129,7 @@ class ConcreteTarget:
         self.max_depth = max(self.max_depth, self.depth)
         if self.depth > 0.0 and self.strike_speed is None:
             self._strike(v_local, t)
-        S = area_vectors(self.model, x[self.facets])
+        S = area_vectors(self.model, x, self.facets)
         A = np.linalg.norm(S, axis=1)
         n = S / np.where(A > 0, A, 1.0)[:, None]
         vf = v[self.facets].mean(axis=1)
