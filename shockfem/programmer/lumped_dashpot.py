@@ -14,10 +14,11 @@ Left out, as in the cavity: the liquid's inertia and waves, and everything elast
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from numba import njit
 
 from ..fluid import liquid
 
@@ -49,26 +50,159 @@ class LumpedRun:
 
 def simulate(d: LumpedDashpot, end_time: float, samples: int = 4000) -> LumpedRun:
     """Integrate the dashpot from first contact to ``end_time`` (adaptive Runge-Kutta, relative
-    tolerance 1e-8), sampled at ``samples`` even times."""
+    tolerance 1e-8), sampled at ``samples`` even times.
+
+    The integrator is scipy's RK45 (``solve_ivp``'s default: Dormand-Prince 5(4), its error norm, step
+    control, first step and dense output at the samples) written again in numba (``_dormand_prince``)
+    with scipy's own coefficients: the design iteration (``programmer.dashpot_design``) runs this a few
+    hundred times, and scipy's Python step took 0.27 s a run where this takes milliseconds.  The two
+    agree to round-off (``tests/unit/test_programmer.py``)."""
     A, K, n, rho0 = d.piston_area, d.bulk_modulus, d.tait_exponent, d.density
     V0 = A * d.column
-    pin_s, pin_a = np.array([p[0] for p in d.pin]), np.array([p[1] for p in d.pin])
-
-    def state(y):
-        s, mass = y[0], y[3]
-        volume = max(V0 - A * s, 1e-12 * V0)
-        ratio = mass / (rho0 * volume)
-        return volume, ratio, liquid.pressure(ratio, K, n)
-
-    def rates(t, y):
-        volume, ratio, p = state(y)
-        area = float(np.interp(y[0], pin_s, pin_a))
-        mdot = liquid.orifice_mass_flow(ratio, area, d.discharge, K, n, rho0)
-        return [y[1] - y[2], -p * A / d.striker_mass, p * A / d.payload_mass, -mdot]
-
+    pin = np.array(d.pin, dtype=float).reshape(-1, 2)
+    constants = np.array([A, d.striker_mass, d.payload_mass, V0, rho0, K, n, d.discharge])
     t = np.linspace(0.0, end_time, samples)
     mass0 = rho0 * (1.0 + n * d.initial_pressure / K) ** (1.0 / n) * V0
-    sol = solve_ivp(rates, (0.0, end_time), [0.0, d.speed, 0.0, mass0], t_eval=t, rtol=1e-8, atol=1e-12,
-                    max_step=end_time / 2000)
-    p = np.array([state(y)[2] for y in sol.y.T])
-    return LumpedRun(sol.t, p * A / d.payload_mass, p, sol.y[0], sol.y[2], sol.y[1])
+    y = np.empty((samples, 4))
+    done = _dormand_prince(constants, np.ascontiguousarray(pin[:, 0]), np.ascontiguousarray(pin[:, 1]),
+                           np.array([0.0, d.speed, 0.0, mass0]), t, end_time, RTOL, ATOL, end_time / 2000,
+                           *_tableau(), y)
+    if done < samples:
+        raise RuntimeError(f"lumped dashpot: the step fell below round-off at t = {t[done]:.6g} s")
+    p = np.array([_pressure(constants, row) for row in y])
+    return LumpedRun(t, p * A / d.payload_mass, p, y[:, 0], y[:, 2], y[:, 1])
+
+
+RTOL, ATOL = 1e-8, 1e-12        # the integration's tolerances (scipy's meaning)
+# scipy's RK45 step-size control (``scipy/integrate/_ivp/rk.py``)
+_SAFETY, _MIN_FACTOR, _MAX_FACTOR = 0.9, 0.2, 10.0
+_ERROR_EXPONENT = -1.0 / 5.0     # -1 / (error estimator order 4 + 1)
+
+
+def _tableau():
+    """Dormand-Prince 5(4): scipy's RK45 coefficients (A, B, C, the error weights E, the dense output P)."""
+    from scipy.integrate import RK45
+    return tuple(np.ascontiguousarray(c, dtype=float) for c in (RK45.A, RK45.B, RK45.C, RK45.E, RK45.P))
+
+
+@njit(cache=True)
+def _pressure(constants, y):
+    """The liquid's gauge pressure in the state ``y`` = (stroke, striker speed, payload speed, liquid mass)."""
+    A, _, _, V0, rho0, K, n, _ = constants
+    volume = max(V0 - A * y[0], 1e-12 * V0)
+    return liquid.pressure(y[3] / (rho0 * volume), K, n)
+
+
+@njit(cache=True)
+def _rates(constants, pin_s, pin_a, y, out):
+    """dy/dt of (stroke, striker speed, payload speed, liquid mass), into ``out``."""
+    A, M, m, V0, rho0, K, n, Cd = constants
+    volume = max(V0 - A * y[0], 1e-12 * V0)
+    ratio = y[3] / (rho0 * volume)
+    p = liquid.pressure(ratio, K, n)
+    area = np.interp(y[0], pin_s, pin_a)
+    out[0] = y[1] - y[2]
+    out[1] = -p * A / M
+    out[2] = p * A / m
+    out[3] = -liquid.orifice_mass_flow(ratio, area, Cd, K, n, rho0)
+
+
+@njit(cache=True)
+def _rms(x, scale):
+    """scipy's error norm: the root mean square of x / scale."""
+    total = 0.0
+    for i in range(len(x)):
+        total += (x[i] / scale[i]) ** 2
+    return math.sqrt(total) / math.sqrt(len(x))
+
+
+@njit(cache=True)
+def _dormand_prince(constants, pin_s, pin_a, y0, t_eval, t_end, rtol, atol, max_step, A, B, C, E, P, out):
+    """scipy's RK45 from t = 0 to ``t_end`` with its first step, error control and dense output, the
+    states at ``t_eval`` (rising, from 0) into ``out``.  Returns how many samples it filled (all, unless
+    the step fell below round-off, where scipy's solver fails too)."""
+    n = len(y0)
+    stages = len(B)
+    y = y0.copy()
+    f = np.empty(n)
+    _rates(constants, pin_s, pin_a, y, f)
+    # the first step (Hairer, Norsett & Wanner, II.4; scipy's ``select_initial_step``)
+    scale = atol + np.abs(y0) * rtol
+    d0, d1 = _rms(y0, scale), _rms(f, scale)
+    h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
+    f1 = np.empty(n)
+    _rates(constants, pin_s, pin_a, y0 + h0 * f, f1)
+    d2 = _rms(f1 - f, scale) / h0
+    h1 = max(1e-6, h0 * 1e-3) if d1 <= 1e-15 and d2 <= 1e-15 else (0.01 / max(d1, d2)) ** (1.0 / 5.0)
+    h_abs = min(100.0 * h0, h1)
+    K = np.empty((stages + 1, n))
+    y_new = np.empty(n)
+    f_new = np.empty(n)
+    stage = np.empty(n)
+    error = np.empty(n)
+    Q = np.empty((n, P.shape[1]))
+    t = 0.0
+    filled = 0
+    while t < t_end:
+        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        h_abs = min(max(h_abs, min_step), max_step)
+        rejected = False
+        while True:
+            if h_abs < min_step:
+                return filled
+            t_new = min(t + h_abs, t_end)
+            h = t_new - t
+            h_abs = abs(h)
+            # the stages (scipy's ``rk_step``)
+            K[0] = f
+            for s in range(1, stages):
+                for j in range(n):
+                    acc = 0.0
+                    for i in range(s):
+                        acc += K[i, j] * A[s, i]
+                    stage[j] = y[j] + acc * h
+                _rates(constants, pin_s, pin_a, stage, K[s])
+            for j in range(n):
+                acc = 0.0
+                for i in range(stages):
+                    acc += K[i, j] * B[i]
+                y_new[j] = y[j] + h * acc
+            _rates(constants, pin_s, pin_a, y_new, f_new)
+            K[stages] = f_new
+            for j in range(n):
+                acc = 0.0
+                for i in range(stages + 1):
+                    acc += K[i, j] * E[i]
+                error[j] = acc * h
+                scale[j] = atol + max(abs(y[j]), abs(y_new[j])) * rtol
+            error_norm = _rms(error, scale)
+            if error_norm < 1.0:
+                factor = _MAX_FACTOR if error_norm == 0.0 else min(_MAX_FACTOR, _SAFETY * error_norm ** _ERROR_EXPONENT)
+                if rejected:
+                    factor = min(1.0, factor)
+                h_abs *= factor
+                break
+            h_abs *= max(_MIN_FACTOR, _SAFETY * error_norm ** _ERROR_EXPONENT)
+            rejected = True
+        # the samples in (t, t_new], from the step's dense output y_old + h Q (x, x^2, x^3, x^4)
+        for j in range(n):
+            for k in range(P.shape[1]):
+                acc = 0.0
+                for i in range(stages + 1):
+                    acc += K[i, j] * P[i, k]
+                Q[j, k] = acc
+        span = t_new - t
+        while filled < len(t_eval) and t_eval[filled] <= t_new:
+            x = (t_eval[filled] - t) / span
+            for j in range(n):
+                acc = 0.0
+                power = 1.0
+                for k in range(P.shape[1]):
+                    power *= x
+                    acc += Q[j, k] * power
+                out[filled, j] = span * acc + y[j]
+            filled += 1
+        t = t_new
+        y[:] = y_new
+        f[:] = f_new
+    return filled
