@@ -100,6 +100,19 @@ def _area_vectors(x, facets, axisymmetric, thickness, out):
         out[i, 2] = 0.5 * (u0 * v1 - u1 * v0)
 
 
+@njit(cache=True)
+def trapezoidal_work(f, f_old, v, dt):
+    """The work of nodal forces over a step, dt/2 (f_old + f) . v (v at the step's middle), for the loads
+    whose forces the solver adds as they are (a liquid cavity, the penetrated target); ``f_old`` becomes
+    ``f``."""
+    power = 0.0
+    for a in range(f.shape[0]):
+        for j in range(f.shape[1]):
+            power += (f_old[a, j] + f[a, j]) * v[a, j]
+            f_old[a, j] = f[a, j]
+    return 0.5 * dt * power
+
+
 def _facet_geometry(model: Model, facets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Reference area and longest edge of facets given by local node numbers."""
     p = model.X0[facets]

@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..contact.surfaces import NodeExchange, area_vectors, build_surface
+from ..contact.surfaces import NodeExchange, area_vectors, build_surface, trapezoidal_work
 from ..errors import ModelError
 from ..model import Model
 from ..scene.specs import Cavity
@@ -213,12 +213,7 @@ def _wall_forces(f, f_old, facets, S, pressure, v, dt):
         for i in range(nf):
             for j in range(f.shape[1]):
                 f[facets[i, k], j] -= pressure * S[i, j] / nn
-    power = 0.0
-    for a in range(f.shape[0]):
-        for j in range(f.shape[1]):
-            power += (f_old[a, j] + f[a, j]) * v[a, j]
-            f_old[a, j] = f[a, j]
-    return 0.5 * dt * power
+    return trapezoidal_work(f, f_old, v, dt)
 
 
 @njit(cache=True)

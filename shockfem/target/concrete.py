@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from numba import vectorize
 
 
 def strength_factor(fc: float) -> float:
@@ -33,11 +33,12 @@ def nose_factor(crh: float) -> float:
     return (8 * crh - 1) / (24 * crh * crh)
 
 
-def normal_stress(strength: float, density: float, normal_speed) -> np.ndarray:
+@vectorize(["float64(float64, float64, float64)"], cache=True)
+def normal_stress(strength, density, normal_speed):
     """sigma_n = S f'c + rho v_n^2 where the surface advances into the target (v_n > 0), else 0 (the
-    target separates from a receding surface).  ``strength`` is S f'c [Pa]."""
-    vn = np.asarray(normal_speed, dtype=float)
-    return np.where(vn > 0.0, strength + density * vn * vn, 0.0)
+    target separates from a receding surface).  ``strength`` is S f'c [Pa].  A numba ufunc: numpy arrays
+    and numbers from Python, and numbers in the target's compiled step."""
+    return strength + density * normal_speed * normal_speed if normal_speed > 0.0 else 0.0
 
 
 def crater_law(mass: float, radius: float, strength: float, density: float, nose: float, speed: float,

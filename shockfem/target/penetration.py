@@ -25,9 +25,9 @@ import math
 
 import numpy as np
 from mpi4py import MPI
-from scipy import sparse
+from numba import njit
 
-from ..contact.surfaces import NodeExchange, area_vectors, build_surface
+from ..contact.surfaces import NodeExchange, area_vectors, build_surface, trapezoidal_work
 from ..errors import ModelError
 from ..model import Model
 from ..scene.specs import Penetration
@@ -38,6 +38,8 @@ from .concrete import crater_law, normal_stress, strength_factor
 # every step, and the tiny twist an unspun body picks up from its faceted nose is not met by the full mu F a / 2
 # flipping sign each step.
 SLIP_AT_REST = 0.1
+# where the nose is: ``_nose_pressure``'s regimes
+_AIR, _CRATER, _TUNNEL = 0, 1, 2
 
 
 class ConcreteTarget:
@@ -52,9 +54,6 @@ class ConcreteTarget:
         self.facets = np.searchsorted(self.global_nodes, surface.facets)
         # each facet's share onto its nodes as one sparse product (np.add.at over the facets was a seventh
         # of a 3D penetration run's whole step)
-        nf, nn = self.facets.shape
-        self.scatter = sparse.csr_matrix((np.ones(nf * nn), (self.facets.ravel(), np.repeat(np.arange(nf), nn))),
-                                         shape=(len(self.global_nodes), nf))
         self.gdim = model.gdim
         self.point = np.array(spec.point, dtype=float)
         self.normal = np.array(spec.normal, dtype=float)
@@ -75,6 +74,11 @@ class ConcreteTarget:
         self.facet_size = float(surface.size.min())
         self.f = np.zeros((len(self.global_nodes), self.gdim))
         self._f_old = np.zeros_like(self.f)
+        # the step's scratch: the nose's positions and velocities, its nodes' depths, its area vectors
+        self._x = np.empty_like(self.f)
+        self._v = np.empty_like(self.f)
+        self._depth = np.empty(len(self.global_nodes))
+        self._S = np.empty((len(self.facets), self.gdim))
         self.depth = 0.0                 # the tip's depth below the face [m] (negative before it arrives)
         self.max_depth = 0.0
         self.force = np.zeros(self.gdim)  # resultant of the target's pressure on the nose [N]
@@ -121,38 +125,30 @@ class ConcreteTarget:
         """The target's forces on the nose at t_n+1 (``v`` is v_n+1/2).  Returns the load's step limit:
         none on a deformable nose (its velocity term is a damping far below the nodes' critical); on a
         rigid one, which has no elements to set the step, the time to travel half a facet at the strike
-        speed, so that the facets enter the target over several steps each.  Collective."""
-        x = self.exchange.gather(x_local)
-        v = self.exchange.gather(v_local)
-        depth = (self.point - x) @ self.normal            # each nose node's depth below the face
+        speed, so that the facets enter the target over several steps each.  Collective.
+
+        The facet loop is compiled (``_nose_pressure``): numpy's calls on a nose's few dozen facets took
+        a millisecond a step, more than the elements."""
+        x = self.exchange.gather(x_local, out=self._x)
+        v = self.exchange.gather(v_local, out=self._v)
+        depth = _depths(x, self.point, self.normal, self._depth)     # each nose node's depth below the face
         self.depth = float(depth.max())
         self.max_depth = max(self.max_depth, self.depth)
         if self.depth > 0.0 and self.strike_speed is None:
             self._strike(v_local, t)
-        S = area_vectors(self.model, x, self.facets)
-        A = np.linalg.norm(S, axis=1)
-        n = S / np.where(A > 0, A, 1.0)[:, None]
-        vf = v[self.facets].mean(axis=1)
-        vn = np.einsum("ij,ij->i", vf, n)
+        S = area_vectors(self.model, x, self.facets, out=self._S)
         if self.depth <= 0.0:
-            p = np.zeros(len(A))
+            regime, speed, scale = _AIR, 0.0, 0.0
         elif self.depth < self.crater_depth:
             # the crater: the tunnel law at V1 over the whole nose, scaled with depth (F = c z)
-            speed = np.linalg.norm(vf, axis=1)
-            cos = vn / np.where(speed > 0, speed, 1.0)
-            p = normal_stress(self.strength, self.spec.density, self.tunnel_entry_speed * cos) \
-                * (self.depth / self.crater_depth)
+            regime, speed, scale = _CRATER, self.tunnel_entry_speed, self.depth / self.crater_depth
         else:
             if self.tunnel_time is None:
                 self.tunnel_time = t
-            d = depth[self.facets]
-            inside = np.clip(d, 0.0, None).sum(axis=1) / np.maximum(np.abs(d).sum(axis=1), 1e-300)
-            p = normal_stress(self.strength, self.spec.density, vn) * inside
-        nn = self.facets.shape[1]
-        share = -p[:, None] * S / nn
-        self.f[:] = self.scatter @ share
-        self.force = share.sum(axis=0) * nn
-        axis = self._nose_axis(S)[1] if p.any() else None
+            regime, speed, scale = _TUNNEL, 0.0, 1.0
+        loaded = _nose_pressure(S, v, self.facets, depth, regime, self.strength, self.spec.density, speed, scale,
+                                self.f, self.force)
+        axis = self._nose_axis(S)[1] if loaded else None
         self.axial_force = float(-self.force @ axis) if axis is not None else 0.0
         self.max_axial_force = max(self.max_axial_force, self.axial_force)
         if self.gdim == 3 and self.spec.friction > 0.0:
@@ -160,8 +156,7 @@ class ConcreteTarget:
                 self._friction_torque(x, x_local, v_local, axis)
             else:
                 self.torque = 0.0
-        self.work += 0.5 * dt * float(np.sum((self._f_old + self.f) * v))
-        self._f_old[:] = self.f
+        self.work += trapezoidal_work(self.f, self._f_old, v, dt)
         if not self.rigid_nose:
             return np.inf
         # at the strike speed, not the current one: the last metres per second before it stops need
@@ -228,3 +223,66 @@ class ConcreteTarget:
                 "crater_stiffness": self.crater_stiffness, "tunnel_entry_speed": self.tunnel_entry_speed,
                 "tunnel_time": self.tunnel_time, "depth": self.depth, "max_depth": self.max_depth,
                 "max_axial_force": self.max_axial_force, "target_work": -self.work}
+
+
+@njit(cache=True)
+def _depths(x, point, normal, out):
+    """Each node's depth below the target's face, (point - x) . normal, into ``out``."""
+    for a in range(x.shape[0]):
+        d = 0.0
+        for j in range(x.shape[1]):
+            d += (point[j] - x[a, j]) * normal[j]
+        out[a] = d
+    return out
+
+
+@njit(cache=True)
+def _nose_pressure(S, v, facets, depth, regime, strength, density, entry_speed, scale, f, force):
+    """The target's normal stress on each nose facet (the module docstring's crater and tunnel laws; none in
+    the ``_AIR``) as forces -sigma_n S_f / (nodes per facet) on its nodes into ``f``, their resultant into
+    ``force``; returns whether any facet is loaded.  The facet's normal speed is its nodes' mean velocity
+    along S_f / |S_f|; in the crater the law takes V1 (``entry_speed``) along the facet's direction cosine,
+    times ``scale`` = z / k; in the tunnel each facet carries the share of it beyond the face, from its
+    nodes' depths."""
+    nf, nn = facets.shape
+    gdim = S.shape[1]
+    f[:] = 0.0
+    force[:] = 0.0
+    loaded = False
+    vf = np.empty(gdim)
+    for i in range(nf):
+        area = 0.0
+        for j in range(gdim):
+            area += S[i, j] * S[i, j]
+        area = math.sqrt(area)
+        vn = 0.0
+        speed = 0.0
+        for j in range(gdim):
+            total = 0.0
+            for k in range(nn):
+                total += v[facets[i, k], j]
+            vf[j] = total / nn
+            vn += vf[j] * (S[i, j] / (area if area > 0.0 else 1.0))
+            speed += vf[j] * vf[j]
+        if regime == _AIR:
+            p = 0.0
+        elif regime == _CRATER:
+            speed = math.sqrt(speed)
+            p = normal_stress(strength, density, entry_speed * (vn / (speed if speed > 0.0 else 1.0))) * scale
+        else:
+            beyond = 0.0
+            whole = 0.0
+            for k in range(nn):
+                d = depth[facets[i, k]]
+                beyond += max(d, 0.0)
+                whole += abs(d)
+            p = normal_stress(strength, density, vn) * (beyond / max(whole, 1e-300))
+        loaded = loaded or p != 0.0
+        for j in range(gdim):
+            share = -p * S[i, j] / nn
+            for k in range(nn):
+                f[facets[i, k], j] += share
+            force[j] += share
+    for j in range(gdim):
+        force[j] *= nn
+    return loaded
