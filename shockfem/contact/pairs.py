@@ -476,7 +476,7 @@ class ContactPair:
         """2 / omega of the active springs alone, omega^2 <= max_i stiff_i / m_i (Gershgorin, ``omega2``),
         shortened by the contact damping: (2 / omega)(sqrt(1 + zeta^2) - zeta) (Belytschko et al., eq. 6.2.28)."""
         zeta = self.spec.damping
-        return 2.0 / np.sqrt(omega2) * (np.sqrt(1.0 + zeta * zeta) - zeta)
+        return 2.0 / math.sqrt(omega2) * (math.sqrt(1.0 + zeta * zeta) - zeta)
 
     def add_forces(self, f: np.ndarray):
         """Add this pair's forces on the nodes this rank owns into the solver's array ``f``."""

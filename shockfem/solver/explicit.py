@@ -20,6 +20,7 @@ integrator; its size relative to the largest energy in play is ``balance_error``
 """
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass, field, replace
 
@@ -419,8 +420,8 @@ class ExplicitSolver:
         """safety x the critical step; active contact springs add to the highest frequency of the nodes
         they join (omega^2 <= omega_elements^2 + omega_contact^2, Gershgorin), so the steps combine."""
         dt = self.dt_stable
-        if np.isfinite(self.dt_contact):
-            dt = 1.0 / np.sqrt(1.0 / dt ** 2 + 1.0 / self.dt_contact ** 2)
+        if math.isfinite(self.dt_contact):
+            dt = 1.0 / math.sqrt(1.0 / dt ** 2 + 1.0 / self.dt_contact ** 2)
         return self.model.safety_factor * dt
 
     def advance(self, dt: float):
