@@ -89,9 +89,8 @@ class ReturnShare:
     At ``samples`` evenly spaced times the pass is timed on the solver's state as it is and with every
     material row switched to elastic in the kernel an elastic model runs (its copy without law calls),
     the fastest of ``repeats`` calls each, interleaved so that a change of the machine's pace falls on
-    both.  Every
-    call starts from the same state and everything the pass writes is put back after, so the run goes on
-    to the bit as without the probe.  The share is the sum of the differences over the sum of the
+    both.  Every call starts from the same state and everything the pass writes is put back after, so
+    the run goes on to the bit as without the probe.  The share is the sum of the differences over the sum of the
     plastic passes; ``yielding`` is the mean fraction of cells whose plastic strain grew in the sampled
     passes (the final state alone, nearly at rest, has about 1% yielding and says little)."""
 

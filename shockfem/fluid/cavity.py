@@ -55,12 +55,12 @@ class LiquidCavity:
         mass = self.exchange.gather(model.mass[:, None])[:, 0]
         for rb in model.rigid:
             mass[body == rb.index] = model.body_mass[rb.index]
-        self.body, self.mass = body, mass
-        self.rigid = np.isin(body, [rb.index for rb in model.rigid])
+        self.mass = mass
         # per compact node, its rigid body's place among the walls' rigid bodies (-1: deformable), whose
         # nodes share their body's area in the stable step
-        rigid_bodies = np.unique(body[self.rigid])
-        self._rigid_group = np.where(self.rigid, np.searchsorted(rigid_bodies, body), -1)
+        rigid = np.isin(body, [rb.index for rb in model.rigid])
+        rigid_bodies = np.unique(body[rigid])
+        self._rigid_group = np.where(rigid, np.searchsorted(rigid_bodies, body), -1)
         self._group_area = np.zeros(len(rigid_bodies))
         self._x = np.empty((len(self.global_nodes), self.gdim))
         self._v = np.empty_like(self._x)
@@ -119,8 +119,7 @@ class LiquidCavity:
         """The volume the walls close, by the divergence theorem with the liquid's outward normals -S:
         V = -sum of (x_f . S_f) / d in 3D (d = 3) and plane strain (d = 2), V = -sum of z_f S_z,f in
         axisymmetry (the field (0, z), whose divergence is 1); x_f the facet's centroid."""
-        S = area_vectors(self.model, x, self.facets)
-        return _enclosed_volume(x, self.facets, S, self.axisymmetric)
+        return _enclosed_volume(x, self.facets, area_vectors(self.model, x, self.facets), self.axisymmetric)
 
     # ---------------------------------------------------------------- step
     def compute(self, x_local: np.ndarray, v_local: np.ndarray, dt: float) -> float:
@@ -170,37 +169,33 @@ def _interpolate(x, xs, ys):
 
 
 @njit(cache=True)
-def _enclosed_volume(x, facets, S, axisymmetric):
-    """``LiquidCavity.enclosed_volume``'s sum over the facets."""
+def _facet_means_dot(values, facets, S, first):
+    """The sum over the facets of u_f . S_f from component ``first`` on, u_f the mean of the facet's nodes'
+    ``values``."""
     nf, nn = facets.shape
     total = 0.0
     for i in range(nf):
-        if axisymmetric:
-            z = 0.0
+        for j in range(first, values.shape[1]):
+            c = 0.0
             for k in range(nn):
-                z += x[facets[i, k], 1]
-            total += z / nn * S[i, 1]
-        else:
-            for j in range(x.shape[1]):
-                c = 0.0
-                for k in range(nn):
-                    c += x[facets[i, k], j]
-                total += c / nn * S[i, j]
-    return -total if axisymmetric else -total / x.shape[1]
+                c += values[facets[i, k], j]
+            total += c / nn * S[i, j]
+    return total
+
+
+@njit(cache=True)
+def _enclosed_volume(x, facets, S, axisymmetric):
+    """``LiquidCavity.enclosed_volume``'s sum over the facets: of z_f S_z,f in axisymmetry, else of
+    x_f . S_f over the dimension."""
+    if axisymmetric:
+        return -_facet_means_dot(x, facets, S, 1)
+    return -_facet_means_dot(x, facets, S, 0) / x.shape[1]
 
 
 @njit(cache=True)
 def _flux(v, facets, S):
     """sum over the facets of v_f . S_f, v_f the mean of the facet's nodes' velocities [m^3/s]."""
-    nf, nn = facets.shape
-    total = 0.0
-    for i in range(nf):
-        for j in range(v.shape[1]):
-            c = 0.0
-            for k in range(nn):
-                c += v[facets[i, k], j]
-            total += c / nn * S[i, j]
-    return total
+    return _facet_means_dot(v, facets, S, 0)
 
 
 @njit(cache=True)

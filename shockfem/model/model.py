@@ -32,17 +32,12 @@ from .materials import parameter_table
 class RigidBody:
     """A body that moves rigidly: translation, and rotation in 3D. No stiffness cost."""
     index: int
-    nodes: np.ndarray            # local node indices (owned and ghost)
-    owned: np.ndarray            # mask over ``nodes``: owned by this rank
+    nodes: np.ndarray            # local node indices, this rank's owned ones first, then its ghosts
+    num_owned: int               # how many of ``nodes`` this rank owns
     mass: float                  # [kg], global
     center0: np.ndarray          # initial centre of mass [m]
     inertia0: np.ndarray         # (3, 3) inertia about the centre of mass, 3D only [kg m^2]
     rel0: np.ndarray             # X - center0 for ``nodes``
-
-    @property
-    def num_owned(self) -> int:
-        """How many of ``nodes`` this rank owns: they come first (a rank numbers its owned nodes first)."""
-        return int(np.count_nonzero(self.owned))
 
 
 @dataclass
@@ -314,7 +309,8 @@ def _rigid_body(model: Model, index: int) -> RigidBody:
         local = (np.eye(3)[None] * (m[owned] * r2)[:, None, None]
                  - m[owned, None, None] * rel[owned][:, :, None] * rel[owned][:, None, :]).sum(axis=0)
         inertia = comm.allreduce(local, op=MPI.SUM)
-    return RigidBody(index, nodes, owned, M, c, inertia, rel)
+    # a rank numbers its owned nodes first, so the owned ones lead ``nodes`` (sorted)
+    return RigidBody(index, nodes, int(np.count_nonzero(owned)), M, c, inertia, rel)
 
 
 def _add_boundaries(model: Model, scene: Scene):

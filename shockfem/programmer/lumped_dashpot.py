@@ -55,7 +55,7 @@ def simulate(d: LumpedDashpot, end_time: float, samples: int = 4000) -> LumpedRu
     The integrator is scipy's RK45 (``solve_ivp``'s default: Dormand-Prince 5(4), its error norm, step
     control, first step and dense output at the samples) written again in numba (``_dormand_prince``)
     with scipy's own coefficients: the design iteration (``programmer.dashpot_design``) runs this a few
-    hundred times, and scipy's Python step took 0.27 s a run where this takes milliseconds.  The two
+    hundred times: 0.54 s a run with scipy's Python step, 0.018 s compiled (docs/performance.md).  The two
     agree to round-off (``tests/unit/test_programmer.py``)."""
     A, K, n, rho0 = d.piston_area, d.bulk_modulus, d.tait_exponent, d.density
     V0 = A * d.column
@@ -86,20 +86,25 @@ def _tableau():
 
 
 @njit(cache=True)
-def _pressure(constants, y):
-    """The liquid's gauge pressure in the state ``y`` = (stroke, striker speed, payload speed, liquid mass)."""
+def _liquid(constants, y):
+    """The liquid's density ratio and gauge pressure in the state ``y`` = (stroke, striker speed, payload
+    speed, liquid mass), in its volume V0 - A s (kept above 1e-12 V0)."""
     A, _, _, V0, rho0, K, n, _ = constants
-    volume = max(V0 - A * y[0], 1e-12 * V0)
-    return liquid.pressure(y[3] / (rho0 * volume), K, n)
+    ratio = y[3] / (rho0 * max(V0 - A * y[0], 1e-12 * V0))
+    return ratio, liquid.pressure(ratio, K, n)
+
+
+@njit(cache=True)
+def _pressure(constants, y):
+    """The liquid's gauge pressure in the state ``y``."""
+    return _liquid(constants, y)[1]
 
 
 @njit(cache=True)
 def _rates(constants, pin_s, pin_a, y, out):
     """dy/dt of (stroke, striker speed, payload speed, liquid mass), into ``out``."""
-    A, M, m, V0, rho0, K, n, Cd = constants
-    volume = max(V0 - A * y[0], 1e-12 * V0)
-    ratio = y[3] / (rho0 * volume)
-    p = liquid.pressure(ratio, K, n)
+    A, M, m, _, rho0, K, n, Cd = constants
+    ratio, p = _liquid(constants, y)
     area = np.interp(y[0], pin_s, pin_a)
     out[0] = y[1] - y[2]
     out[1] = -p * A / M

@@ -536,16 +536,16 @@ class ExplicitSolver:
         m = self.model
         kinetic = 0.0
         for rb, rs in zip(m.rigid, self.rigid_states):
-            rs.force = self._sum(nodal.rigid_resultant(self.f_ext, self.f_con, self.f_int, rb.nodes,
-                                                       rb.num_owned, np.empty(m.gdim)))
+            force, torque = np.empty(m.gdim), np.empty(3)
+            nodal.rigid_resultant(self.f_ext, self.f_con, self.f_int, self.x, rs.center, rb.nodes, rb.num_owned,
+                                  force, torque)
+            rs.force = self._sum(force)
             if m.axisymmetric:
                 rs.force[0] = 0.0   # a ring's radial forces cancel: an axisymmetric rigid body moves along z
             v_c = rs.velocity + 0.5 * dt * rs.force / rb.mass
             kinetic += 0.5 * rb.mass * float(v_c @ v_c)
             if m.gdim == 3:
-                force = self.f_ext[rb.nodes] + self.f_con[rb.nodes] - self.f_int[rb.nodes]
-                arm = self.x[rb.nodes] - rs.center
-                rs.torque = self._sum(np.cross(arm[rb.owned], force[rb.owned]).sum(axis=0))
+                rs.torque = self._sum(torque)
                 momentum = rs.momentum_angular + 0.5 * dt * rs.torque
                 inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
                 kinetic += 0.5 * float(np.linalg.solve(inertia, momentum) @ momentum) if rb.mass > 0 else 0.0

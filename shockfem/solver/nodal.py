@@ -234,15 +234,26 @@ def body_sums(v, a, dt, alpha, mass, kinetic_mass, constrained, node_body, num_b
 
 
 @njit(cache=True)
-def rigid_resultant(f_ext, f_con, f_int, nodes, num_owned_nodes, out):
+def rigid_resultant(f_ext, f_con, f_int, x, center, nodes, num_owned_nodes, force, torque):
     """A rigid body's resultant force f_ext + f_con - f_int over its owned nodes (``nodes``' first
-    ``num_owned_nodes``) into ``out``, summed node after node."""
-    out[:] = 0.0
+    ``num_owned_nodes``) into ``force``, and in 3D its moment about ``center``, the sum of
+    (x - center) x f, into ``torque``; both summed node after node."""
+    gdim = f_ext.shape[1]
+    force[:] = 0.0
+    torque[:] = 0.0
     for i in range(num_owned_nodes):
         a = nodes[i]
-        for j in range(f_ext.shape[1]):
-            out[j] += f_ext[a, j] + f_con[a, j] - f_int[a, j]
-    return out
+        f0 = f_ext[a, 0] + f_con[a, 0] - f_int[a, 0]
+        f1 = f_ext[a, 1] + f_con[a, 1] - f_int[a, 1]
+        force[0] += f0
+        force[1] += f1
+        if gdim == 3:
+            f2 = f_ext[a, 2] + f_con[a, 2] - f_int[a, 2]
+            force[2] += f2
+            r0, r1, r2 = x[a, 0] - center[0], x[a, 1] - center[1], x[a, 2] - center[2]
+            torque[0] += r1 * f2 - r2 * f1
+            torque[1] += r2 * f0 - r0 * f2
+            torque[2] += r0 * f1 - r1 * f0
 
 
 @njit(cache=True)
