@@ -470,6 +470,31 @@ def _rigid_response(i, s, g, n, rel, m, k, zeta, soft_scale, dt, friction, f, ff
 
 
 @njit(cache=True, fastmath=True)
+def rigid_gaps(slaves, rows, kind, point, direction, radius, inside, x, out):
+    """The gaps of the slaves ``rows`` to a rigid surface (``node_to_rigid``'s), into ``out``: along the plane's
+    normal, or the distance to the cylinder's wall (positive on the allowed side); a tunnel's nodes not yet
+    past its mouth have none (inf)."""
+    gdim = x.shape[1]
+    for k in range(rows.shape[0]):
+        s = slaves[rows[k]]
+        along = 0.0
+        for d in range(gdim):
+            along += (x[s, d] - point[d]) * direction[d]
+        if kind == PLANE:
+            out[k] = along
+            continue
+        dist = 0.0
+        for d in range(gdim):
+            r = x[s, d] - point[d] - along * direction[d]
+            dist += r * r
+        dist = math.sqrt(dist)
+        out[k] = radius - dist if inside else dist - radius
+        if kind == TUNNEL and along < 0.0:
+            out[k] = np.inf
+    return out
+
+
+@njit(cache=True, fastmath=True)
 def node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass, zeta,
                   soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff):
     """Slave nodes against a rigid surface moving at ``velocity``: a plane (kind PLANE) through

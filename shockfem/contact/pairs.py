@@ -159,18 +159,14 @@ class _RigidPass:
         self.gap = np.zeros(len(slaves))
         self.offset = np.zeros(len(slaves))
         self.ft = np.zeros((len(slaves), 3))
+        self._gaps = np.empty(len(rows))
         self.t = 0.0
         assert len(self.point) == gdim
 
     def gaps(self, x: np.ndarray) -> np.ndarray:
-        """The gaps of this rank's slaves."""
-        p = x[self.slaves[self.rows]] - (self.point + self.t * self.velocity)
-        if self.kind == kernels.PLANE:
-            return p @ self.direction
-        along = p @ self.direction
-        dist = np.linalg.norm(p - np.outer(along, self.direction), axis=1)
-        gap = self.radius - dist if self.inside else dist - self.radius
-        return np.where(along >= 0.0, gap, np.inf) if self.kind == kernels.TUNNEL else gap
+        """The gaps of this rank's slaves (``kernels.rigid_gaps``; a tunnel's nodes not yet in it: inf)."""
+        return kernels.rigid_gaps(self.slaves, self.rows, self.kind, self.point + self.t * self.velocity,
+                                  self.direction, self.radius, self.inside, x, self._gaps)
 
     def find(self, x: np.ndarray, depth: float):
         """Nothing to search: the surface is analytic (``respond`` does it all)."""

@@ -20,6 +20,8 @@ import numpy as np
 from numba import njit
 
 PLANE_STRAIN, AXISYMMETRIC, THREE_D = 0, 1, 2
+# cell kinds, as ``characteristic_length`` and the passes take them
+TRIANGLE, QUADRILATERAL, TETRAHEDRON, HEXAHEDRON = 0, 1, 2, 3
 
 
 @njit(cache=True, fastmath=True, inline="always")

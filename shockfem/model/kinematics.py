@@ -16,10 +16,10 @@ import basix
 import numpy as np
 import ufl
 
-from ..elements.cells import AXISYMMETRIC, PLANE_STRAIN, THREE_D
+from ..elements.cells import AXISYMMETRIC, HEXAHEDRON, PLANE_STRAIN, QUADRILATERAL, TETRAHEDRON, THREE_D, TRIANGLE
 
 CODES = {"plane-strain": PLANE_STRAIN, "axisymmetric": AXISYMMETRIC, "3d": THREE_D}
-CELL_KINDS = {"triangle": 0, "quadrilateral": 1, "tetrahedron": 2, "hexahedron": 3}
+CELL_KINDS = {"triangle": TRIANGLE, "quadrilateral": QUADRILATERAL, "tetrahedron": TETRAHEDRON, "hexahedron": HEXAHEDRON}
 BASIX_CELLS = {"triangle": basix.CellType.triangle, "quadrilateral": basix.CellType.quadrilateral,
                "tetrahedron": basix.CellType.tetrahedron, "hexahedron": basix.CellType.hexahedron}
 

@@ -35,7 +35,7 @@ from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
 from ..fluid.cavity import LiquidCavity
 from ..target.penetration import ConcreteTarget
-from ..elements import full_integration, kernels
+from ..elements import kernels
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
@@ -164,7 +164,7 @@ class ExplicitSolver:
         # the element kernels' copies without law calls when every material is elastic (elements/)
         elastic_only = is_elastic_only(m.params)
         self._one_point = kernels.one_point_kernel(gdim, elastic_only) if m.one_point else None
-        self._full = None if m.one_point else full_integration.stress_divergence_kernel(elastic_only)
+        self._full = None if m.one_point else kernels.cell_pass(m.cell_kind, elastic_only)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         # per body (a row of params each), this rank's share: the stresses' work (stored and plastic
         # energy), the hourglass work and the plastic work [J], for per-body energies and warnings

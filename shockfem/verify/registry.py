@@ -5,8 +5,8 @@ shared helpers of ``checks.py`` and ``scenes.py``, never this registry.
 """
 from __future__ import annotations
 
-from .foundation_cases import (axisymmetric_vs_3d, bar_wave, body_damping, energy_conservation, free_flight,
-                               free_free_frequency, rayleigh_damping)
+from .foundation_cases import (axisymmetric_vs_3d, bar_wave, bar_wave_tets, body_damping, energy_conservation,
+                               free_flight, free_free_frequency, rayleigh_damping)
 from .contact_cases import (contact_parallel, hertz_spheres, rod_on_constraint_wall, rod_on_rod, rod_on_rod_3d,
                             rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)
 from .spring_cases import spring_oscillator
@@ -32,6 +32,7 @@ from .hard_cases import HARD
 CASES = {
     "free_flight": free_flight,
     "bar_wave": bar_wave,
+    "bar_wave_tets": bar_wave_tets,
     "free_free_frequency": free_free_frequency,
     "energy_conservation": energy_conservation,
     "axisymmetric_vs_3d": axisymmetric_vs_3d,
