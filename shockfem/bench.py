@@ -1,7 +1,8 @@
 """``shockfem bench``: element-cycles per second, and speed against error.
 
 Speed: an elastic steel cylinder, axisymmetric (quads) and 3D (hexes), at three mesh sizes
-with one-point elements (the default) and at one size with full integration, a fixed number
+with one-point elements (the default) and at one size with full integration, and on linear
+tetrahedra (constant strain, one point) at two sizes, a fixed number
 of steps of the whole time loop (single process).  Element-cycles per second
 = elements x steps / wall time of the loop; the shares of the phases (internal force =
 strain rate + material update + force assembly in one compiled pass; nodal update;
@@ -29,14 +30,16 @@ from .solver.explicit import ExplicitSolver, PhaseTimes
 from .verify.scenes import rod_scene, steel_c0, STEEL
 
 SPEED_CASES = {
-    # name: (kinematics, integration, radius, length, element sizes [m])
-    "axisymmetric-quad": ("axisymmetric", "reduced", 0.05, 1.0, (0.0045, 0.0022, 0.001)),
-    "axisymmetric-quad-full": ("axisymmetric", "full", 0.05, 1.0, (0.0022,)),
-    "3d-hex": ("3d", "reduced", 0.02, 0.3, (0.005, 0.0035, 0.0024)),
-    "3d-hex-full": ("3d", "full", 0.02, 0.3, (0.0035,)),
+    # name: (kinematics, element, integration, radius, length, element sizes [m])
+    "axisymmetric-quad": ("axisymmetric", "quad", "reduced", 0.05, 1.0, (0.0045, 0.0022, 0.001)),
+    "axisymmetric-quad-full": ("axisymmetric", "quad", "full", 0.05, 1.0, (0.0022,)),
+    "3d-hex": ("3d", "hex", "reduced", 0.02, 0.3, (0.005, 0.0035, 0.0024)),
+    "3d-hex-full": ("3d", "hex", "full", 0.02, 0.3, (0.0035,)),
+    # linear tetrahedra (one point, constant strain: ``elements.linear_tets``)
+    "3d-tet": ("3d", "tet", "full", 0.02, 0.3, (0.005, 0.0035)),
 }
 QUICK_SIZES = {"axisymmetric-quad": (0.01,), "axisymmetric-quad-full": (0.01,), "3d-hex": (0.006,),
-               "3d-hex-full": (0.006,)}
+               "3d-hex-full": (0.006,), "3d-tet": (0.006,)}
 
 
 def time_steps(raw: dict, steps: int) -> dict:
@@ -62,12 +65,13 @@ def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
     results = []
     echo(f"{'case':24s} {'elements':>9s} {'steps':>6s} {'wall[s]':>8s} {'Mcyc/s':>7s}  "
          f"{'force':>6s} {'update':>6s} {'energy':>6s}")
-    for case, (kin, integration, R, L, sizes) in SPEED_CASES.items():
+    for case, (kin, element, integration, R, L, sizes) in SPEED_CASES.items():
         for h in (QUICK_SIZES[case] if quick else sizes):
-            raw = rod_scene(f"bench_{case}_{h}", kin, radius=R, length=L, h=h, end_time=1.0,
+            raw = rod_scene(f"bench_{case}_{h}", kin, element, radius=R, length=L, h=h, end_time=1.0,
                             integration=integration)
             r = time_steps(raw, 20 if quick else steps)
             r["case"] = case
+            r["element"] = element
             r["integration"] = integration
             r["element_size_m"] = h
             results.append(r)

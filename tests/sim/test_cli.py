@@ -84,6 +84,7 @@ def test_bench_quick_reports_speed(tmp_path):
     for r in rows:
         assert r["element_cycles_per_s"] > 0 and r["elements"] > 0
     assert all(r["steps"] == 20 for r in rows if r["case"] not in ("taylor_bar", "two_rods_contact"))
+    assert {r["element"] for r in rows if "element" in r} == {"quad", "hex", "tet"}
     # the two-rod contact case at its coarsest, both kinematics: the target leaves within 5% of its converged
     # 9.32 m/s (measured +2.75% axisymmetric at 2.5 mm, +3.97% 3D at 5 mm), the contact phase timed
     contact = [r for r in rows if r["case"] == "two_rods_contact"]
