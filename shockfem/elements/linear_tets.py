@@ -39,7 +39,8 @@ from ..materials.j2 import linear_hardening_return
 from ..materials.layout import P_MU
 from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, scatter_plastic_strain
+from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, row6,
+                        scatter_plastic_strain, store6)
 
 # Cells a block: the scratch rows of 32 tets (23 kB) stay in the first-level cache.
 LANES = 32
@@ -60,23 +61,6 @@ _F, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = 64, 76, 77, 78, 79, 80, 81, 
 # A J2 row of linear hardening returns in lanes: the plastic strain at t_n in, at t_n+1 out, its rate next
 _EPS, _RATE = 83, 84
 ROWS = 85
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def _row6(S, row, B, k):
-    """The 6-tuple in rows ``row``..``row`` + 5 of lane k."""
-    return (S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], S[(row + 3) * B + k],
-            S[(row + 4) * B + k], S[(row + 5) * B + k])
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def _store6(S, row, B, k, s):
-    S[row * B + k] = s[0]
-    S[(row + 1) * B + k] = s[1]
-    S[(row + 2) * B + k] = s[2]
-    S[(row + 3) * B + k] = s[3]
-    S[(row + 4) * B + k] = s[4]
-    S[(row + 5) * B + k] = s[5]
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -113,14 +97,14 @@ def _rates(S, nb, dt, wq):
         l10, l11, l12 = _velocity_gradient(S, _V, B, k, inv)
         l20, l21, l22 = _velocity_gradient(S, _W, B, k, inv)
         S[_VMID * B + k] = wq * det * S[_SIGN * B + k]
-        _store6(S, _D, B, k, (l00, l11, l22, 0.5 * (l12 + l21), 0.5 * (l02 + l20), 0.5 * (l01 + l10)))
+        store6(S, _D, B, k, (l00, l11, l22, 0.5 * (l12 + l21), 0.5 * (l02 + l20), 0.5 * (l01 + l10)))
         S[_SPIN * B + k] = 0.5 * (l12 - l21)
         S[(_SPIN + 1) * B + k] = 0.5 * (l02 - l20)
         S[(_SPIN + 2) * B + k] = 0.5 * (l01 - l10)
         ax, bx, cx = _edges(S, _X, B, k, 0.0, _U)
         ay, by, cy = _edges(S, _Y, B, k, 0.0, _V)
         az, bz, cz = _edges(S, _Z, B, k, 0.0, _W)
-        _store6(S, _J, B, k, (ax, bx, cx, ay, by, cy))
+        store6(S, _J, B, k, (ax, bx, cx, ay, by, cy))
         S[(_J + 6) * B + k] = az
         S[(_J + 7) * B + k] = bz
         S[(_J + 8) * B + k] = cz
@@ -131,10 +115,10 @@ def _elastic(S, nb, dt):
     """Every cell's elastic trial stress, in lanes (``materials.update.elastic_update_stress``)."""
     B = LANES
     for k in range(nb):
-        s = elastic_update_stress(_row6(S, _S, B, k), _row6(S, _D, B, k),
+        s = elastic_update_stress(row6(S, _S, B, k), row6(S, _D, B, k),
                                   (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]), dt,
                                   S[_LAM * B + k], S[_MU * B + k])
-        _store6(S, _SN, B, k, s)
+        store6(S, _SN, B, k, s)
         S[_WP * B + k] = 0.0
 
 
@@ -144,8 +128,8 @@ def _j2_lanes(S, nb, dt, mu, y0, eps0, slope):
     (``one_point_quads._j2_lanes``, which says more)."""
     B = LANES
     for k in range(nb):
-        s, eps, rate, work = linear_hardening_return(_row6(S, _SN, B, k), S[_EPS * B + k], mu, y0, eps0, slope, dt)
-        _store6(S, _SN, B, k, s)
+        s, eps, rate, work = linear_hardening_return(row6(S, _SN, B, k), S[_EPS * B + k], mu, y0, eps0, slope, dt)
+        store6(S, _SN, B, k, s)
         S[_EPS * B + k] = eps
         S[_RATE * B + k] = rate
         S[_WP * B + k] = work
@@ -190,9 +174,9 @@ def _response(S, nb, dt, wq):
                                         j[8] - j[6])))
         length = 0.5 * abs(det) / area
         w_mid = S[_VMID * B + k]
-        a = _row6(S, _S, B, k)
-        s_np1 = _row6(S, _SN, B, k)
-        d = _row6(S, _D, B, k)
+        a = row6(S, _S, B, k)
+        s_np1 = row6(S, _SN, B, k)
+        d = row6(S, _D, B, k)
         lam, mu, rho, wave_speed = S[_LAM * B + k], S[_MU * B + k], S[_RHO * B + k], S[_C * B + k]
         q_quadratic, q_linear, beta = S[_Q1 * B + k], S[_Q2 * B + k], S[_BETA * B + k]
         S[_PLASTIC * B + k] = w_mid * S[_WP * B + k]
@@ -266,11 +250,11 @@ def _tet_kernel(elastic_only: bool):
                 # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
                 for k in range(count):
                     c = cells[start + k]
-                    trial = _row6(S, _SN, B, k)
+                    trial = row6(S, _SN, B, k)
                     if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
                         continue
-                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, _row6(S, _S, B, k),
-                                                     trial, _row6(S, _D, B, k),
+                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, row6(S, _S, B, k),
+                                                     trial, row6(S, _D, B, k),
                                                      (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),
                                                      dt, 0.0)
                     for i in range(6):

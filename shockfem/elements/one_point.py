@@ -124,6 +124,24 @@ def step_length(nodes, bb):
 # row r is ``S[r * B + k]``.
 
 @njit(cache=True, fastmath=True, inline="always")
+def row6(S, row, B, k):
+    """The 6-tuple (a stress or strain rate) in rows ``row``..``row`` + 5 of lane k."""
+    return (S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], S[(row + 3) * B + k],
+            S[(row + 4) * B + k], S[(row + 5) * B + k])
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def store6(S, row, B, k, s):
+    """The 6-tuple ``s`` into rows ``row``..``row`` + 5 of lane k."""
+    S[row * B + k] = s[0]
+    S[(row + 1) * B + k] = s[1]
+    S[(row + 2) * B + k] = s[2]
+    S[(row + 3) * B + k] = s[3]
+    S[(row + 4) * B + k] = s[4]
+    S[(row + 5) * B + k] = s[5]
+
+
+@njit(cache=True, fastmath=True, inline="always")
 def gather_plastic_strain(S, row, B, cells, start, count, state):
     """The plastic strain at t_n of the block's cells ``cells[start:start + count]`` into row ``row``, for a
     J2 row's returns in lanes (the passes' ``_j2_lanes``)."""

@@ -21,8 +21,8 @@ from ..materials.layout import P_MU
 from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, scatter_plastic_strain,
-                        step_length, unwalsh4, walsh8)
+from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, row6,
+                        scatter_plastic_strain, step_length, unwalsh4, walsh8)
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -128,19 +128,12 @@ def _j2_lanes(S, nb, dt, mu, y0, eps0, slope):
     (``one_point_quads._j2_lanes``, which says more)."""
     B = LANES
     for k in range(nb):
-        s, eps, rate, work = linear_hardening_return(_row6(S, _SN, B, k), S[_EPS * B + k], mu, y0, eps0, slope, dt)
+        s, eps, rate, work = linear_hardening_return(row6(S, _SN, B, k), S[_EPS * B + k], mu, y0, eps0, slope, dt)
         _store3(S, _SN, B, k, s[0], s[1], s[2])
         _store3(S, _SN + 3, B, k, s[3], s[4], s[5])
         S[_EPS * B + k] = eps
         S[_RATE * B + k] = rate
         S[_WP * B + k] = work
-
-
-@njit(cache=True, fastmath=True, inline="always")
-def _row6(S, row, B, k):
-    """The 6-tuple in rows ``row``..``row`` + 5 of lane k."""
-    return (S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], S[(row + 3) * B + k],
-            S[(row + 4) * B + k], S[(row + 5) * B + k])
 
 
 @njit(cache=True, fastmath=True, error_model="numpy", inline="never")
@@ -149,7 +142,7 @@ def _elastic(S, nb, dt):
     of elastic rows without slots, and of the points ``materials.update.elastic_trial_holds`` accepts."""
     B = LANES
     for k in range(nb):
-        s = elastic_update_stress(_row6(S, _S, B, k), _row6(S, _D, B, k),
+        s = elastic_update_stress(row6(S, _S, B, k), row6(S, _D, B, k),
                                   (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]), dt,
                                   S[_LAM * B + k], S[_MU * B + k])
         _store3(S, _SN, B, k, s[0], s[1], s[2])
@@ -208,9 +201,9 @@ def _response(S, nb, dt, hourglass_form, hourglass_coefficient):
         v00, v01, v02 = S[_JV * B + k], S[(_JV + 1) * B + k], S[(_JV + 2) * B + k]
         v10, v11, v12 = S[(_JV + 3) * B + k], S[(_JV + 4) * B + k], S[(_JV + 5) * B + k]
         v20, v21, v22 = S[(_JV + 6) * B + k], S[(_JV + 7) * B + k], S[(_JV + 8) * B + k]
-        a = _row6(S, _S, B, k)
-        s_np1 = _row6(S, _SN, B, k)
-        d = _row6(S, _D, B, k)
+        a = row6(S, _S, B, k)
+        s_np1 = row6(S, _SN, B, k)
+        d = row6(S, _D, B, k)
         lam, mu, rho, wave_speed = S[_LAM * B + k], S[_MU * B + k], S[_RHO * B + k], S[_C * B + k]
         q_quadratic, q_linear, beta = S[_Q1 * B + k], S[_Q2 * B + k], S[_BETA * B + k]
         # end-of-step configuration
@@ -334,11 +327,11 @@ def _hex_kernel(elastic_only: bool):
                 # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
                 for k in range(count):
                     c = cells[start + k]
-                    trial = _row6(S, _SN, B, k)
+                    trial = row6(S, _SN, B, k)
                     if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
                         continue
-                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, _row6(S, _S, B, k),
-                                                     trial, _row6(S, _D, B, k),
+                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, row6(S, _S, B, k),
+                                                     trial, row6(S, _D, B, k),
                                                      (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),
                                                      dt, 0.0)
                     for i in range(6):
