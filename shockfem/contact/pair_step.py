@@ -16,13 +16,21 @@ calls of the same kernels in the same order, so the forces are the same to the b
   ``kernels.facet_springs``), the records added in slave order (``kernels.add_springs``), the deepest
   penetration and the totals (``kernels.totals``).
 
-Under MPI the pair keeps its separate calls: the halo's exchanges come between them.
+A pair with a rigid surface (a plane, a cylinder, a penetration's tunnel) has no search, so in one
+process its step is one call, ``rigid_step``: the gather, the clear, the gaps and the box test
+(``kernels.rigid_gaps``), the springs (``kernels.node_to_rigid``) and the totals.  A penetration run's
+tunnel (1,535 surface nodes) took 232 us a step in the separate calls and the numpy between them.
+
+Under MPI the pair keeps its separate calls: the halo's exchanges (and a rigid pair's reduction of its
+nearest gap) come between them.
 """
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
-from .kernels import add_springs, clear, closest_facets, facet_springs, gather_local, survey, totals, verdict
+from .kernels import (add_springs, clear, closest_facets, facet_springs, gather_local, node_to_rigid, rigid_gaps,
+                      survey, totals, verdict)
 
 
 @njit(cache=True)
@@ -71,3 +79,29 @@ def close_step(apart, dt,
                 deepest = deeper
     sums, peaks = totals(f, ff, f_old, ff_old, v, stiff, mass, own_a, own_area_a, own_nodes, active, deepest)
     return sums, peaks, count_a, count_b
+
+
+@njit(cache=True)
+def rigid_step(x, v, local, slot, cx, cv, own_nodes, f, ff, stiff, margin, dt,
+               slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, gaps, ft, gap, offset,
+               mass, zeta, soft_scale, depth, friction, f_old, ff_old, own_a, own_area_a):
+    """A rigid pair's step in one process, as ``ContactPair._step`` runs it: the surface nodes' x and v into
+    ``cx``, ``cv``, the forces cleared; if the nearest gap is beyond ``margin`` the friction histories
+    forgotten, else the springs and the deepest penetration; then ``kernels.totals``.  Returns (sums, peaks)
+    as ``totals`` does."""
+    gather_local(x, local, slot, cx)
+    gather_local(v, local, slot, cv)
+    clear(own_nodes, f, ff, stiff)
+    rigid_gaps(slaves, rows, kind, point, direction, radius, inside, cx, gaps)
+    nearest = gaps.min() if gaps.shape[0] else np.inf
+    active = 0
+    deepest = 0.0
+    if nearest > margin:
+        ft[:] = 0.0
+    else:
+        active = node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, cx,
+                               cv, mass, zeta, soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff)
+        # as Python's max(deepest, -gap.min()): the later value only if strictly greater
+        if gap.shape[0] and -gap.min() > deepest:
+            deepest = -gap.min()
+    return totals(f, ff, f_old, ff_old, cv, stiff, mass, own_a, own_area_a, own_nodes, active, deepest)

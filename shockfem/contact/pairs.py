@@ -171,6 +171,11 @@ class _RigidPass:
     def find(self, x: np.ndarray, depth: float):
         """Nothing to search: the surface is analytic (``respond`` does it all)."""
 
+    def step_arrays(self) -> tuple:
+        """What ``pair_step.rigid_step`` takes of this pass, in its order."""
+        return (self.slaves, self.rows, self.stiffness, self.kind, self.point + self.t * self.velocity,
+                self.direction, self.radius, self.inside, self.velocity, self._gaps, self.ft, self.gap, self.offset)
+
     def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         """This rank's slaves' springs, added to ``f``, ``ff``, ``stiff``; the number active."""
         return kernels.node_to_rigid(self.slaves, self.rows, self.stiffness, self.kind, self.point + self.t * self.velocity,
@@ -212,8 +217,9 @@ class ContactPair:
         own_a = self.owned[self.nodes_a]
         self.own_a, self.own_area_a = self.nodes_a[own_a], self.area_a[own_a]
         self.halo = SurfaceHalo(model.comm, self.exchange.owners(), gdim) if self.parallel and spec.b else None
-        # two surfaces in one process: the step in two compiled calls (``_step_in_one_process``)
-        self.one_process = spec.b is not None and not self.parallel
+        # in one process: a two-surface pair's step in two compiled calls, a rigid pair's in one
+        # (``_step_in_one_process``)
+        self.one_process = not self.parallel
         if self.b is None:
             self.passes = [_RigidPass(model, spec, self.nodes_a,
                                       node_stiffness(self.a, compact[0], self.nodes_a, seg_scale),
@@ -401,8 +407,8 @@ class ContactPair:
 
     def _step(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> tuple[np.ndarray, np.ndarray]:
         """The step's forces on the compact nodes and the totals ``kernels.totals`` returns, reduced over the
-        ranks: a pair under MPI, and a pair with a rigid surface (``_step_in_one_process`` does the others).
-        Collective under MPI."""
+        ranks: a pair under MPI (``_step_in_one_process`` does the same in one process).  Collective under
+        MPI."""
         self._gather(x, v)
         kernels.clear(self.own_nodes, self.f, self.ff, self.stiff)
         active = 0
@@ -428,12 +434,19 @@ class ContactPair:
         return sums, peaks
 
     def _step_in_one_process(self, x: np.ndarray, v: np.ndarray, dt: float, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """``_step`` for two surfaces in one process, in two compiled calls with a search between them when
-        one is due (``pair_step``): the same kernels in the same order, so the same forces to the bit.  (The
-        initial overlaps' push-out, which ``_step`` does after the gather, changes only the offsets, which
-        neither the gather nor the box test reads.)"""
+        """``_step`` in one process (``pair_step``): for two surfaces in two compiled calls with a search
+        between them when one is due, against a rigid surface in one.  The same kernels in the same order,
+        so the same forces to the bit.  (The initial overlaps' push-out, which ``_step`` does after the
+        gather, changes only the offsets, which neither the gather nor the box test reads.)"""
         if self._offset0 is not None:
             self._push_out_overlaps(t)
+        if self.b is None:
+            r = self.passes[0]
+            r.t = t
+            return pair_step.rigid_step(x, v, self.exchange.local, self.exchange.slot, self.x, self.v, self.own_nodes,
+                                        self.f, self.ff, self.stiff, self.margin, dt, *r.step_arrays(), self.mass,
+                                        self.spec.damping, self.soft_scale, self.depth, self.friction, self._f_old,
+                                        self._ff_old, self.own_a, self.own_area_a)
         p, q = self.passes
         apart, search_due = pair_step.open_step(x, v, self.exchange.local, self.exchange.slot, self.x, self.v,
                                                 self.own_nodes, self.f, self.ff, self.stiff, p.own, q.own,

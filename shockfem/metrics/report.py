@@ -188,11 +188,14 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
     summary["shock"] = result
     write_json_atomic(os.path.join(run_dir, "summary.json"), summary)
     if plots:
-        from ..output.plots import plot_pulse, plot_srs, plot_stages
-        for name, arr in arrays.items():
-            if result["channels"][name].get("pulse"):
-                plot_pulse(os.path.join(run_dir, f"pulse_{name}.png"), name, arr, result["channels"][name])
-                plot_srs(os.path.join(run_dir, f"srs_{name}.png"), name, arr["srs"])
+        from ..output.plots import ChannelPlots, plot_stages
+        drawn = [name for name in arrays if result["channels"][name].get("pulse")]
+        if drawn:
+            with ChannelPlots() as plots:
+                for name in drawn:
+                    plots.pulse(os.path.join(run_dir, f"pulse_{name}.png"), name, arrays[name],
+                                result["channels"][name])
+                    plots.srs(os.path.join(run_dir, f"srs_{name}.png"), name, arrays[name]["srs"])
         if stages:
             plot_stages(os.path.join(run_dir, "stages.png"), result["stages"])
     return result, lines

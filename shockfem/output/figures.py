@@ -37,12 +37,14 @@ def pyvista():
     return pv
 
 
-def save(fig, path: str) -> str:
-    """Write ``fig`` to the PNG ``path`` (tight layout, 110 dpi) and close it; returns the path."""
+def save(fig, path: str, close: bool = True) -> str:
+    """Write ``fig`` to the PNG ``path`` (tight layout, 110 dpi) and close it (unless ``close`` is false: a
+    figure drawn on again); returns the path."""
     fig.tight_layout()
     partial = partial_path(path)
     fig.savefig(partial, dpi=110)
-    pyplot().close(fig)
+    if close:
+        pyplot().close(fig)
     os.replace(partial, path)
     return path
 

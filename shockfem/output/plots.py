@@ -45,47 +45,89 @@ def plot_histories(run_dir: str, body_names) -> list[str]:
 
 
 
-def plot_pulse(path: str, name: str, arrays: dict, metrics: dict) -> str:
-    """Acceleration pulse of a channel in g: without a filter and filtered, the ideal pulse and its tolerance
-    band."""
-    plt = pyplot()
-    t = arrays["t"] * 1e3
-    fig, ax = plt.subplots(figsize=(7, 4))
-    if metrics["filter"] == "none":      # shock.cfc = "none": one curve, said once
-        ax.plot(t, arrays["a"] / G0, color="C0", lw=1.4, label='no filter (shock.cfc = "none")')
-    else:
-        ax.plot(t, arrays["a_raw"] / G0, color="0.7", lw=0.7, label="no filter")
-        ax.plot(t, arrays["a"] / G0, color="C0", lw=1.4, label=metrics["filter"])
-    if "ideal" in arrays:
-        on = arrays["monitored"]
-        ax.plot(t, arrays["ideal"] / G0, "k--", lw=1, label=metrics["tolerance"]["against"])
-        ax.fill_between(t[on], arrays["lower"][on] / G0, arrays["upper"][on] / G0, color="C2", alpha=0.15,
-                        label="tolerance band " + ("PASS" if metrics["tolerance"]["passed"] else "FAIL"))
-    p = metrics["pulse"]
-    ax.axvspan(p["start"] * 1e3, p["end"] * 1e3, color="C1", alpha=0.07, label="duration above 10% of peak")
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("acceleration [g]")
-    ax.set_title(f"{name}: peak {p['peak_g']:.4g} g, {p['duration'] * 1e3:.3g} ms, "
-                 f"dV {abs(p['velocity_change']):.4g} m/s, {metrics['shape']['classified']}")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    return save(fig, path)
+class ChannelPlots:
+    """The pulse and shock-response-spectrum pictures of a run's channels (``pulse(...)``, ``srs(...)``, one PNG
+    each), drawn on one figure of each kind that every channel draws on again.  A new matplotlib figure
+    makes its axes, ticks and tick labels anew, and that is most of a picture's time: a run with six
+    channels spent about 3 s of its end on twelve figures.  Use it as a context manager (it closes the two
+    figures)."""
+
+    def __init__(self):
+        plt = pyplot()
+        self._pulse = plt.subplots(figsize=(7, 4))
+        self._srs = plt.subplots(figsize=(7, 4))
+        _log_axes(self._srs[1])
+
+    def __enter__(self) -> "ChannelPlots":
+        return self
+
+    def __exit__(self, *exc):
+        plt = pyplot()
+        plt.close(self._pulse[0])
+        plt.close(self._srs[0])
+
+    def pulse(self, path: str, name: str, arrays: dict, metrics: dict) -> str:
+        """Acceleration pulse of a channel in g: without a filter and filtered, the ideal pulse and its
+        tolerance band."""
+        fig, ax = self._pulse
+        _clear(ax)
+        t = arrays["t"] * 1e3
+        if metrics["filter"] == "none":      # shock.cfc = "none": one curve, said once
+            ax.plot(t, arrays["a"] / G0, color="C0", lw=1.4, label='no filter (shock.cfc = "none")')
+        else:
+            ax.plot(t, arrays["a_raw"] / G0, color="0.7", lw=0.7, label="no filter")
+            ax.plot(t, arrays["a"] / G0, color="C0", lw=1.4, label=metrics["filter"])
+        if "ideal" in arrays:
+            on = arrays["monitored"]
+            ax.plot(t, arrays["ideal"] / G0, "k--", lw=1, label=metrics["tolerance"]["against"])
+            ax.fill_between(t[on], arrays["lower"][on] / G0, arrays["upper"][on] / G0, color="C2", alpha=0.15,
+                            label="tolerance band " + ("PASS" if metrics["tolerance"]["passed"] else "FAIL"))
+        p = metrics["pulse"]
+        ax.axvspan(p["start"] * 1e3, p["end"] * 1e3, color="C1", alpha=0.07, label="duration above 10% of peak")
+        ax.set_xlabel("time [ms]")
+        ax.set_ylabel("acceleration [g]")
+        ax.set_title(f"{name}: peak {p['peak_g']:.4g} g, {p['duration'] * 1e3:.3g} ms, "
+                     f"dV {abs(p['velocity_change']):.4g} m/s, {metrics['shape']['classified']}", fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        return save(fig, path, close=False)
+
+    def srs(self, path: str, name: str, spectrum) -> str:
+        """Maximax shock response spectrum in g against natural frequency (log-log)."""
+        fig, ax = self._srs
+        _clear(ax)
+        f = spectrum.frequency
+        ax.plot(f, spectrum.maximax / G0, color="C0", lw=1.6, label="maximax")
+        ax.plot(f, spectrum.positive / G0, color="C1", lw=0.8, ls="--", label="positive")
+        ax.plot(f, spectrum.negative / G0, color="C2", lw=0.8, ls=":", label="negative")
+        ax.set_xlabel("natural frequency [Hz]")
+        ax.set_ylabel("peak absolute acceleration [g]")
+        ax.set_title(f"{name}: shock response spectrum, Q = {spectrum.q:g}")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8)
+        return save(fig, path, close=False)
 
 
-def plot_srs(path: str, name: str, spectrum) -> str:
-    """Maximax shock response spectrum in g against natural frequency (log-log)."""
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(7, 4))
-    f = spectrum.frequency
-    ax.loglog(f, spectrum.maximax / G0, color="C0", lw=1.6, label="maximax")
-    ax.loglog(f, spectrum.positive / G0, color="C1", lw=0.8, ls="--", label="positive")
-    ax.loglog(f, spectrum.negative / G0, color="C2", lw=0.8, ls=":", label="negative")
-    ax.set_xlabel("natural frequency [Hz]")
-    ax.set_ylabel("peak absolute acceleration [g]")
-    ax.set_title(f"{name}: shock response spectrum, Q = {spectrum.q:g}")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8)
-    return save(fig, path)
+def _clear(ax):
+    """Take what the last channel drew off ``ax`` (lines, bands, spans, legend) and forget its data limits,
+    keeping the axes, their scales and their ticks."""
+    for artist in [*ax.lines, *ax.collections, *ax.patches]:
+        artist.remove()
+    if ax.get_legend() is not None:
+        ax.get_legend().remove()
+    ax.relim()
+    ax.autoscale()
+
+
+def _log_axes(ax):
+    """Logarithmic axes labelled 20, 100, 1000 (not 10^3: matplotlib's mathematical text is a tenth of a
+    second a picture), the minor ticks unlabelled."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+        axis.set_minor_formatter(NullFormatter())
 
 
 def plot_stages(path: str, stages: list[dict]) -> str:

@@ -21,6 +21,7 @@ integrated by the trapezoidal rule; the solver counts it with contact (``energy.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -38,7 +39,7 @@ from .concrete import crater_law, normal_stress, strength_factor
 # every step, and the tiny twist an unspun body picks up from its faceted nose is not met by the full mu F a / 2
 # flipping sign each step.
 SLIP_AT_REST = 0.1
-# where the nose is: ``_nose_pressure``'s regimes
+# where the nose is: the regimes of ``_nose_pressure_kernel``'s pass
 _AIR, _CRATER, _TUNNEL = 0, 1, 2
 
 
@@ -60,7 +61,7 @@ class ConcreteTarget:
         self.strength = (spec.strength_factor or strength_factor(spec.compressive_strength)) \
             * spec.compressive_strength                                                   # S f'c [Pa]
         S0 = area_vectors(model, self.exchange.gather(model.X0), self.facets)
-        self.radius, axis = self._nose_axis(S0)
+        self.radius, axis = self._nose_axis(S0.sum(axis=0))
         self.nose_factor = self._nose_factor(S0, axis)
         self.crater_depth = spec.crater_depth if spec.crater_depth >= 0 else 4.0 * self.radius
         names = model.body_names
@@ -80,6 +81,8 @@ class ConcreteTarget:
         self._depth = np.empty(len(self.global_nodes))
         self._S = np.empty((len(self.facets), self.gdim))
         self._arm = np.empty_like(self.f)           # the friction torque's arms
+        self._total = np.empty(self.gdim)           # the sum of the nose's area vectors
+        self._nose_pressure = _nose_pressure_kernel(self.facets.shape[1], self.gdim)
         self._sums = np.empty(7)                    # the projectile's mass, first moments and momentum
         self._lj = np.empty(2)                      # its angular momentum about the axis and polar moment
         self.depth = 0.0                 # the tip's depth below the face [m] (negative before it arrives)
@@ -97,10 +100,10 @@ class ConcreteTarget:
         self.tunnel_time = None          # when the tip passed the crater's depth [s]
 
     # ---------------------------------------------------------------- geometry
-    def _nose_axis(self, S: np.ndarray) -> tuple[float, np.ndarray]:
-        """(radius a, unit axis e) of the nose from its area vectors: their sum is pi a^2 e (the nose
-        closed by its base disc has none); axisymmetric: along the axis, the radial parts being rings."""
-        total = S.sum(axis=0)
+    def _nose_axis(self, total: np.ndarray) -> tuple[float, np.ndarray]:
+        """(radius a, unit axis e) of the nose from the sum of its area vectors, pi a^2 e (the nose closed by
+        its base disc has none); axisymmetric: along the axis, the radial parts being rings."""
+        total = total.copy()
         if self.model.axisymmetric:
             total[0] = 0.0
         area = float(np.linalg.norm(total))
@@ -130,7 +133,7 @@ class ConcreteTarget:
         rigid one, which has no elements to set the step, the time to travel half a facet at the strike
         speed, so that the facets enter the target over several steps each.  Collective.
 
-        The facet loop is compiled (``_nose_pressure``): numpy's calls on a nose's few dozen facets took
+        The facet loop is compiled (``_nose_pressure_kernel``): numpy's calls on a nose's few dozen facets took
         a millisecond a step, more than the elements."""
         x = self.exchange.gather(x_local, out=self._x)
         v = self.exchange.gather(v_local, out=self._v)
@@ -149,9 +152,9 @@ class ConcreteTarget:
             if self.tunnel_time is None:
                 self.tunnel_time = t
             regime, speed, scale = _TUNNEL, 0.0, 1.0
-        loaded = _nose_pressure(S, v, self.facets, depth, regime, self.strength, self.spec.density, speed, scale,
-                                self.f, self.force)
-        axis = self._nose_axis(S)[1] if loaded else None
+        loaded = self._nose_pressure(S, v, self.facets, depth, regime, self.strength, self.spec.density, speed,
+                                     scale, self.f, self.force, self._total)
+        axis = self._nose_axis(self._total)[1] if loaded else None
         self.axial_force = float(-self.force @ axis) if axis is not None else 0.0
         self.max_axial_force = max(self.max_axial_force, self.axial_force)
         if self.gdim == 3 and self.spec.friction > 0.0:
@@ -234,56 +237,67 @@ def _depths(x, point, normal, out):
     return out
 
 
-@njit(cache=True)
-def _nose_pressure(S, v, facets, depth, regime, strength, density, entry_speed, scale, f, force):
-    """The target's normal stress on each nose facet (the module docstring's crater and tunnel laws; none in
-    the ``_AIR``) as forces -sigma_n S_f / (nodes per facet) on its nodes into ``f``, their resultant into
-    ``force``; returns whether any facet is loaded.  The facet's normal speed is its nodes' mean velocity
-    along S_f / |S_f|; in the crater the law takes V1 (``entry_speed``) along the facet's direction cosine,
-    times ``scale`` = z / k; in the tunnel each facet carries the share of it beyond the face, from its
-    nodes' depths."""
-    nf, nn = facets.shape
-    gdim = S.shape[1]
-    f[:] = 0.0
-    force[:] = 0.0
-    loaded = False
-    vf = np.empty(gdim)
-    for i in range(nf):
-        area = 0.0
-        for j in range(gdim):
-            area += S[i, j] * S[i, j]
-        area = math.sqrt(area)
-        vn = 0.0
-        speed = 0.0
-        for j in range(gdim):
-            total = 0.0
-            for k in range(nn):
-                total += v[facets[i, k], j]
-            vf[j] = total / nn
-            vn += vf[j] * (S[i, j] / (area if area > 0.0 else 1.0))
-            speed += vf[j] * vf[j]
-        if regime == _AIR:
-            p = 0.0
-        elif regime == _CRATER:
-            speed = math.sqrt(speed)
-            p = normal_stress(strength, density, entry_speed * (vn / (speed if speed > 0.0 else 1.0))) * scale
-        else:
-            beyond = 0.0
-            whole = 0.0
-            for k in range(nn):
-                d = depth[facets[i, k]]
-                beyond += max(d, 0.0)
-                whole += abs(d)
-            p = normal_stress(strength, density, vn) * (beyond / max(whole, 1e-300))
-        loaded = loaded or p != 0.0
-        for j in range(gdim):
-            share = -p * S[i, j] / nn
-            for k in range(nn):
-                f[facets[i, k], j] += share
-            force[j] += share
-    for j in range(gdim):
-        force[j] *= nn
-    return loaded
+@functools.lru_cache(maxsize=None)
+def _nose_pressure_kernel(nodes_per_facet: int, gdim: int):
+    """The nose's pressure pass compiled for facets of ``nodes_per_facet`` nodes in ``gdim`` dimensions, both
+    constants of the closure: the loops over a facet's nodes and over the coordinates unroll.  With them
+    read from the arrays' shapes the pass took 120 us a step on a 1,536-facet nose, more than a third of
+    the target's step (docs/performance.md, session 32)."""
+    nn, gd = nodes_per_facet, gdim
+
+    @njit(cache=True)
+    def nose_pressure(S, v, facets, depth, regime, strength, density, entry_speed, scale, f, force, total):
+        """The target's normal stress on each nose facet (the module docstring's crater and tunnel laws; none
+        in the ``_AIR``) as forces -sigma_n S_f / (nodes per facet) on its nodes into ``f``, their resultant
+        into ``force``, the sum of the area vectors S_f into ``total`` (the nose's axis and radius); returns
+        whether any facet is loaded.  The facet's normal speed is its nodes' mean velocity along
+        S_f / |S_f|; in the crater the law takes V1 (``entry_speed``) along the facet's direction cosine,
+        times ``scale`` = z / k; in the tunnel each facet carries the share of it beyond the face, from its
+        nodes' depths."""
+        f[:] = 0.0
+        force[:] = 0.0
+        total[:] = 0.0
+        loaded = False
+        vf = np.empty(gd)
+        for i in range(facets.shape[0]):
+            area = 0.0
+            for j in range(gd):
+                area += S[i, j] * S[i, j]
+                total[j] += S[i, j]
+            area = math.sqrt(area)
+            vn = 0.0
+            speed = 0.0
+            for j in range(gd):
+                mean = 0.0
+                for k in range(nn):
+                    mean += v[facets[i, k], j]
+                vf[j] = mean / nn
+                vn += vf[j] * (S[i, j] / (area if area > 0.0 else 1.0))
+                speed += vf[j] * vf[j]
+            if regime == _AIR:
+                p = 0.0
+            elif regime == _CRATER:
+                speed = math.sqrt(speed)
+                p = normal_stress(strength, density, entry_speed * (vn / (speed if speed > 0.0 else 1.0))) * scale
+            else:
+                beyond = 0.0
+                whole = 0.0
+                for k in range(nn):
+                    d = depth[facets[i, k]]
+                    beyond += max(d, 0.0)
+                    whole += abs(d)
+                p = normal_stress(strength, density, vn) * (beyond / max(whole, 1e-300))
+            loaded = loaded or p != 0.0
+            for j in range(gd):
+                share = -p * S[i, j] / nn
+                for k in range(nn):
+                    f[facets[i, k], j] += share
+                force[j] += share
+        for j in range(gd):
+            force[j] *= nn
+        return loaded
+
+    return nose_pressure
 
 
 @njit(cache=True)
