@@ -4,7 +4,12 @@ The Python API (``docs/api.md``): ``load_scene``, ``run``, ``resume``, ``load_ru
 ``sweep`` for a batch of runs.
 They load on first use, so that ``import shockfem`` stays light.
 """
+from .numba_cache import drop_stale_caches
 from .version import __version__
+
+# before any module of the package compiles or loads a compiled function: numba's own check of a cache
+# sees only its module's file, not the modules it calls into (``numba_cache.py``)
+drop_stale_caches()
 
 __all__ = ["__version__", "load_scene", "run", "resume", "load_run", "Run", "sweep"]
 

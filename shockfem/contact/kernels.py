@@ -48,6 +48,12 @@ _TOL = 1e-6        # parametric tolerance: a node on the edge between two facets
 # that meet there; when no facet takes it, the facets it misses by less than this share of their
 # size take it at their edge (a convex vertex is always covered by a facet that does take it)
 _REACH_BEYOND_EDGE = 0.1
+# The coordinates the per-node passes loop over, as a tuple: its length is part of its numba type, so a
+# pass compiled for (0, 1, 2) has loops of three trips that unroll.  Read from an array's shape at run
+# time, the trip count kept them loops: twice the time of a gather, a clear or the totals
+# (docs/performance.md, session 32).  Each public pass picks the tuple from its arrays' width
+# (``_dims_of``) and calls its body, which takes ``dims``.
+D2, D3 = (0, 1), (0, 1, 2)
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -271,17 +277,17 @@ def record_width(nf: int) -> int:
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _add_to_node(node, share, n, row, fn, t0, t1, t2, has_friction, f, ff, stiff):
+def _add_to_node(node, share, n, row, fn, t0, t1, t2, has_friction, f, ff, stiff, dims):
     """Add a spring's response (``_response``) to one of its nodes, ``share`` of it: 1 at the slave,
     -w_q at master node q (the reaction, shared by the facet's shape functions)."""
     if row > 0.0:
         stiff[node] += row * abs(share)
     if fn > 0.0:
-        for d in range(f.shape[1]):
+        for d in range(len(dims)):
             f[node, d] += share * fn * n[d]
         if has_friction:
             t = (t0, t1, t2)
-            for d in range(f.shape[1]):
+            for d in range(len(dims)):
                 ff[node, d] += share * t[d]
 
 
@@ -442,6 +448,15 @@ def facet_springs(slaves, rows, facets, facet_stiffness, best, best_g, x, v, mas
 @njit(cache=True, fastmath=True)
 def add_springs(records, owned, nf, has_friction, f, ff, stiff):
     """Add facet springs' records (``facet_springs``), in their order, to the nodes of ``owned``."""
+    if f.shape[1] == 3:
+        _add_springs(records, owned, nf, has_friction, f, ff, stiff, D3)
+    else:
+        _add_springs(records, owned, nf, has_friction, f, ff, stiff, D2)
+
+
+@njit(cache=True, fastmath=True)
+def _add_springs(records, owned, nf, has_friction, f, ff, stiff, dims):
+    """``add_springs`` for the coordinates ``dims``."""
     master = np.zeros(nf, dtype=np.int64)
     w = np.zeros(nf)
     n = np.zeros(3)
@@ -455,17 +470,17 @@ def add_springs(records, owned, nf, has_friction, f, ff, stiff):
         row, fn, t0, t1, t2 = r[R_ROW], r[R_FORCE], r[R_FRICTION], r[R_FRICTION + 1], r[R_FRICTION + 2]
         s = np.int64(r[R_SLAVE])
         if owned[s]:
-            _add_to_node(s, 1.0, n, row, fn, t0, t1, t2, has_friction, f, ff, stiff)
+            _add_to_node(s, 1.0, n, row, fn, t0, t1, t2, has_friction, f, ff, stiff, dims)
         for q in range(nf):
             if owned[master[q]]:
-                _add_to_node(master[q], -w[q], n, row, fn, t0, t1, t2, has_friction, f, ff, stiff)
+                _add_to_node(master[q], -w[q], n, row, fn, t0, t1, t2, has_friction, f, ff, stiff, dims)
 
 
 @njit(cache=True, fastmath=True)
-def _rigid_response(i, s, g, n, rel, m, k, zeta, soft_scale, dt, friction, f, ff, ft, gap, offset, stiff):
+def _rigid_response(i, s, g, n, rel, m, k, zeta, soft_scale, dt, friction, f, ff, ft, gap, offset, stiff, dims):
     """Slave i (node s) against a rigid surface: ``_response`` added to the slave alone; 1 if active."""
     act, row, fn, t0, t1, t2 = _response(i, g, n, rel, m, k, n, 0, zeta, soft_scale, dt, friction, ft, gap, offset)
-    _add_to_node(s, 1.0, n, row, fn, t0, t1, t2, friction[MU_S] > 0.0 or friction[MU_D] > 0.0, f, ff, stiff)
+    _add_to_node(s, 1.0, n, row, fn, t0, t1, t2, friction[MU_S] > 0.0 or friction[MU_D] > 0.0, f, ff, stiff, dims)
     return act
 
 
@@ -474,7 +489,15 @@ def rigid_gaps(slaves, rows, kind, point, direction, radius, inside, x, out):
     """The gaps of the slaves ``rows`` to a rigid surface (``node_to_rigid``'s), into ``out``: along the plane's
     normal, or the distance to the cylinder's wall (positive on the allowed side); a tunnel's nodes not yet
     past its mouth have none (inf)."""
-    gdim = x.shape[1]
+    if x.shape[1] == 3:
+        return _rigid_gaps(slaves, rows, kind, point, direction, radius, inside, x, out, D3)
+    return _rigid_gaps(slaves, rows, kind, point, direction, radius, inside, x, out, D2)
+
+
+@njit(cache=True, fastmath=True)
+def _rigid_gaps(slaves, rows, kind, point, direction, radius, inside, x, out, dims):
+    """``rigid_gaps`` for the coordinates ``dims``."""
+    gdim = len(dims)
     for k in range(rows.shape[0]):
         s = slaves[rows[k]]
         along = 0.0
@@ -507,7 +530,18 @@ def node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, 
     ``rows``: the slaves to take (all of them in one process, a rank's own under MPI: a rigid surface has
     no nodes, so each slave's force is its rank's alone).  Returns the number of active slaves (``stiff``
     as in ``node_to_facets``)."""
-    gdim = x.shape[1]
+    if x.shape[1] == 3:
+        return _node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, x, v,
+                              mass, zeta, soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff, D3)
+    return _node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass,
+                          zeta, soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff, D2)
+
+
+@njit(cache=True, fastmath=True)
+def _node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, inside, velocity, x, v, mass, zeta,
+                   soft_scale, dt, depth, friction, f, ff, ft, gap, offset, stiff, dims):
+    """``node_to_rigid`` for the coordinates ``dims``."""
+    gdim = len(dims)
     n = np.zeros(3)
     rel = np.zeros(3)
     free = np.zeros(slaves.shape[0])                # a tunnel's nodes: no initial penetration to release
@@ -551,7 +585,7 @@ def node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, 
                 for d in range(gdim):
                     rel[d] = v[s, d] - velocity[d]
                 active += _rigid_response(i, s, g, n, rel, mass[s], node_stiffness[i], zeta, soft_scale, dt, friction,
-                                          f, ff, ft, gap, free, stiff)
+                                          f, ff, ft, gap, free, stiff, dims)
                 continue
         gap[i] = 0.0
         if g >= depth or g <= -depth:
@@ -561,7 +595,7 @@ def node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, 
         for d in range(gdim):
             rel[d] = v[s, d] - velocity[d]
         active += _rigid_response(i, s, g, n, rel, mass[s], node_stiffness[i], zeta, soft_scale, dt, friction, f,
-                                  ff, ft, gap, offset, stiff)
+                                  ff, ft, gap, offset, stiff, dims)
     return active
 
 
@@ -572,27 +606,55 @@ def node_to_rigid(slaves, rows, node_stiffness, kind, point, direction, radius, 
 
 @njit(cache=True)
 def gather_local(values, local, slot, out):
-    """out[slot[i]] = values[local[i]]: a rank's owned surface nodes into the compact array."""
-    for i in range(len(local)):
-        for c in range(values.shape[1]):
-            out[slot[i], c] = values[local[i], c]
+    """out[slot[i]] = values[local[i]]: a rank's owned surface nodes into the compact array (positions,
+    velocities; any other width too: a node's mass, its body)."""
+    _move_rows(values, local, out, slot, False)
 
 
 @njit(cache=True)
 def add_local(compact, slot, local, out):
     """out[local[i]] += compact[slot[i]]: compact forces onto the rank's owned nodes."""
-    for i in range(len(local)):
-        for c in range(out.shape[1]):
-            out[local[i], c] += compact[slot[i], c]
+    _move_rows(compact, slot, out, local, True)
+
+
+@njit(cache=True)
+def _move_rows(source, source_rows, target, target_rows, add):
+    """target[target_rows[i]] = (or +=, ``add``) source[source_rows[i]], row by row."""
+    width = source.shape[1]
+    if width == 3:
+        _move_columns(source, source_rows, target, target_rows, add, D3)
+    elif width == 2:
+        _move_columns(source, source_rows, target, target_rows, add, D2)
+    else:
+        _move_columns(source, source_rows, target, target_rows, add, np.arange(width))
+
+
+@njit(cache=True)
+def _move_columns(source, source_rows, target, target_rows, add, dims):
+    """``_move_rows`` for the columns ``dims`` (a tuple, or an array for other widths)."""
+    for i in range(len(source_rows)):
+        for c in range(len(dims)):
+            if add:
+                target[target_rows[i], c] += source[source_rows[i], c]
+            else:
+                target[target_rows[i], c] = source[source_rows[i], c]
 
 
 @njit(cache=True)
 def extent(x, nodes):
     """The bounding box (lo, hi) of the nodes ``nodes`` of ``x`` (lo = +inf, hi = -inf if none)."""
-    lo = np.full(x.shape[1], np.inf)
-    hi = np.full(x.shape[1], -np.inf)
+    if x.shape[1] == 3:
+        return _extent(x, nodes, D3)
+    return _extent(x, nodes, D2)
+
+
+@njit(cache=True)
+def _extent(x, nodes, dims):
+    """``extent`` for the coordinates ``dims``."""
+    lo = np.full(len(dims), np.inf)
+    hi = np.full(len(dims), -np.inf)
     for s in nodes:
-        for c in range(x.shape[1]):
+        for c in range(len(dims)):
             lo[c] = min(lo[c], x[s, c])
             hi[c] = max(hi[c], x[s, c])
     return lo, hi
@@ -601,9 +663,17 @@ def extent(x, nodes):
 @njit(cache=True)
 def travel(x, x_before, nodes):
     """The largest coordinate change of the nodes ``nodes`` between ``x_before`` and ``x``."""
+    if x.shape[1] == 3:
+        return _travel(x, x_before, nodes, D3)
+    return _travel(x, x_before, nodes, D2)
+
+
+@njit(cache=True)
+def _travel(x, x_before, nodes, dims):
+    """``travel`` for the coordinates ``dims``."""
     most = 0.0
     for i in nodes:
-        for c in range(x.shape[1]):
+        for c in range(len(dims)):
             most = max(most, abs(x[i, c] - x_before[i, c]))
     return most
 
@@ -611,9 +681,18 @@ def travel(x, x_before, nodes):
 @njit(cache=True)
 def clear(nodes, f, ff, stiff):
     """Zero the forces and stiffness row sums of the nodes ``nodes``."""
+    if f.shape[1] == 3:
+        _clear(nodes, f, ff, stiff, D3)
+    else:
+        _clear(nodes, f, ff, stiff, D2)
+
+
+@njit(cache=True)
+def _clear(nodes, f, ff, stiff, dims):
+    """``clear`` for the coordinates ``dims``."""
     for i in nodes:
         stiff[i] = 0.0
-        for c in range(f.shape[1]):
+        for c in range(len(dims)):
             f[i, c] = 0.0
             ff[i, c] = 0.0
 
@@ -627,7 +706,15 @@ def totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a, nodes, active,
     and the loaded area.  Keeps this step's forces as the next one's old ones.  Returns what the pair
     reduces over the ranks: ``sums`` = [force on a (gdim), friction on a (gdim), work, friction work,
     summed |f_i|, loaded area, ``active``] and ``peaks`` = [omega^2, largest pressure, ``deepest``]."""
-    gdim = f.shape[1]
+    if f.shape[1] == 3:
+        return _totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a, nodes, active, deepest, D3)
+    return _totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a, nodes, active, deepest, D2)
+
+
+@njit(cache=True)
+def _totals(f, ff, f_old, ff_old, v, stiff, mass, nodes_a, area_a, nodes, active, deepest, dims):
+    """``totals`` for the coordinates ``dims``."""
+    gdim = len(dims)
     sums = np.zeros(2 * gdim + 5)
     max_pressure = 0.0
     for j in range(len(nodes_a)):
@@ -752,7 +839,15 @@ def hold_on_plane(x, v, v_before, nodes, mass, area, point, normal, dt, impulse)
     impulses' sizes; the largest impulse per area; the area of the nodes held).  A node
     the plane does not stop is left alone: a node is held only while it presses on the wall, and leaves it
     as soon as its free step does."""
-    gdim = x.shape[1]
+    if x.shape[1] == 3:
+        return _hold_on_plane(x, v, v_before, nodes, mass, area, point, normal, dt, impulse, D3)
+    return _hold_on_plane(x, v, v_before, nodes, mass, area, point, normal, dt, impulse, D2)
+
+
+@njit(cache=True)
+def _hold_on_plane(x, v, v_before, nodes, mass, area, point, normal, dt, impulse, dims):
+    """``hold_on_plane`` for the coordinates ``dims``."""
+    gdim = len(dims)
     for d in range(gdim):
         impulse[d] = 0.0
     work = 0.0
