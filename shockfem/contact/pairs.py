@@ -21,7 +21,6 @@ import math
 
 import numpy as np
 from mpi4py import MPI
-from scipy.spatial import cKDTree
 
 from ..errors import ModelError
 from ..model import Model
@@ -113,6 +112,7 @@ class _Pass:
         counts = np.zeros(len(self.slaves), dtype=np.int64)
         hits = []
         if len(self.rows) and len(usable):
+            from scipy.spatial import cKDTree       # here: scipy.spatial's import takes 0.11 s, and only facet pairs search
             centre = x[self.facets[usable]].mean(axis=1)
             hits = cKDTree(centre).query_ball_point(x[self.slaves[self.rows]], reach)
             counts[self.rows] = [len(h) for h in hits]
@@ -163,9 +163,13 @@ class _RigidPass:
         self.t = 0.0
         assert len(self.point) == gdim
 
+    def point_at(self, t: float) -> np.ndarray:
+        """The rigid surface's point at time ``t`` (it moves at ``velocity``)."""
+        return self.point + t * self.velocity
+
     def gaps(self, x: np.ndarray) -> np.ndarray:
         """The gaps of this rank's slaves (``kernels.rigid_gaps``; a tunnel's nodes not yet in it: inf)."""
-        return kernels.rigid_gaps(self.slaves, self.rows, self.kind, self.point + self.t * self.velocity,
+        return kernels.rigid_gaps(self.slaves, self.rows, self.kind, self.point_at(self.t),
                                   self.direction, self.radius, self.inside, x, self._gaps)
 
     def find(self, x: np.ndarray, depth: float):
@@ -173,12 +177,12 @@ class _RigidPass:
 
     def step_arrays(self) -> tuple:
         """What ``pair_step.rigid_step`` takes of this pass, in its order."""
-        return (self.slaves, self.rows, self.stiffness, self.kind, self.point + self.t * self.velocity,
+        return (self.slaves, self.rows, self.stiffness, self.kind, self.point_at(self.t),
                 self.direction, self.radius, self.inside, self.velocity, self._gaps, self.ft, self.gap, self.offset)
 
     def respond(self, x, v, mass, zeta, soft_scale, dt, depth, friction, f, ff, stiff):
         """This rank's slaves' springs, added to ``f``, ``ff``, ``stiff``; the number active."""
-        return kernels.node_to_rigid(self.slaves, self.rows, self.stiffness, self.kind, self.point + self.t * self.velocity,
+        return kernels.node_to_rigid(self.slaves, self.rows, self.stiffness, self.kind, self.point_at(self.t),
                                      self.direction, self.radius, self.inside, self.velocity, x, v, mass, zeta,
                                      soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset, stiff)
 
@@ -366,7 +370,7 @@ class ContactPair:
         rigid = self.passes[0]
         work, held, total, largest, loaded = kernels.hold_on_plane(
             x, v, self._wall_before, self.wall_nodes, self.wall_mass, self.wall_area,
-            rigid.point + t_end * rigid.velocity,
+            rigid.point_at(t_end),
             rigid.direction, dt, self._wall_impulse)
         sums = np.concatenate([[work, held, total, loaded], self._wall_impulse])
         if self.parallel:

@@ -34,7 +34,6 @@ from ..model import Model
 from ..contact.pairs import ContactPair
 from ..contact.springs import DiscreteSpring
 from ..fluid.cavity import LiquidCavity
-from ..target.penetration import ConcreteTarget
 from ..elements import kernels
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
@@ -149,7 +148,11 @@ class ExplicitSolver:
         self._walls = [pair for pair in self.contacts if pair.constraint]     # held in ``advance``
         self.springs = [DiscreteSpring(m, c) for c in m.springs]
         self.cavities = [LiquidCavity(m, c) for c in m.cavities]
-        self.target = ConcreteTarget(m, m.penetration) if m.penetration else None
+        self.target = None
+        if m.penetration:
+            # imported here: its module compiles a ufunc on import (0.18 s), which no other scene needs
+            from ..target.penetration import ConcreteTarget
+            self.target = ConcreteTarget(m, m.penetration)
         self._contact_rows = self._rows_with_contact_forces()
         self.f_gravity = (m.mass[:, None] * np.asarray(m.gravity)[None, :] if m.gravity
                           else None)
