@@ -12,6 +12,8 @@ code's shape: lanes and scratch rows, separate nodal passes, bookkeeping and Pyt
 Both run on the same mesh in turn, round after round (this machine runs in two speed modes that last
 tens of calls: compare rounds paired, docs/performance.md), and the script prints ns a cell and the
 ratio of each round.  Not a test, not part of the package.
+The repetition of the element's arithmetic is the measurement: a change to the element's formulas
+must be made here too, and the agreement printed first says whether it was.
 
     .venv/bin/python scripts/compiled-limit.py [element size, m: 0.001] [rounds: 40] [steps a round: 20]
 """
