@@ -150,7 +150,8 @@ class ExplicitSolver:
         self.cavities = [LiquidCavity(m, c) for c in m.cavities]
         self.target = None
         if m.penetration:
-            # imported here: its module compiles a ufunc on import (0.18 s), which no other scene needs
+            # imported here: it and target.concrete's ufunc take 0.28 s to import (-X importtime), which no other
+            # scene needs
             from ..target.penetration import ConcreteTarget
             self.target = ConcreteTarget(m, m.penetration)
         self._contact_rows = self._rows_with_contact_forces()
