@@ -1,6 +1,6 @@
 """The compiled limit of the elastic axisymmetric one-point quad step on this machine, against shockfem's.
 
-Issue #24 asks for the whole step "near the compiled limit".  This is that limit, measured: the bench's
+How near the compiled limit is shockfem's whole step?  This is that limit, measured: the bench's
 elastic steel cylinder (``bench.SPEED_CASES["axisymmetric-quad"]``), its whole step written by hand as
 one scalar loop over the cells and one fused loop over the nodes, with nothing a product needs besides:
 one material, no bodies' energy rows, no inverted-cell or critical-cell report, no MPI, the axis held

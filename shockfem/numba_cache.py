@@ -5,7 +5,7 @@ one defined in another module keeps that module's old code in its cache after th
 issue #1833, a documented limitation).  shockfem's passes call across modules everywhere (a contact
 pair's fused step in ``contact/pair_step.py`` calls ``contact/kernels.py``; the element passes call the
 materials' updates), so an update of one file could leave runs computing with a mix of old and new code.
-It did here (docs/performance.md, session 32): after ``contact/kernels.py`` changed, the 3D two-rod
+It happened (a measured case): after ``contact/kernels.py`` changed, the 3D two-rod
 contact case in one process, whose step ``pair_step`` had cached, put forces 220 N apart from the
 same case's MPI path at its first step, which calls the kernels directly.
 

@@ -51,7 +51,7 @@ _REACH_BEYOND_EDGE = 0.1
 # The coordinates the per-node passes loop over, as a tuple: its length is part of its numba type, so a
 # pass compiled for (0, 1, 2) has loops of three trips that unroll.  Read from an array's shape at run
 # time, the trip count kept them loops: twice the time of a gather, a clear or the totals
-# (docs/performance.md, session 32).  Each public pass picks the tuple from its arrays' width
+# (docs/performance.md).  Each public pass picks the tuple from its arrays' width
 # (``_dims_of``) and calls its body, which takes ``dims``.
 D2, D3 = (0, 1), (0, 1, 2)
 

@@ -4,7 +4,7 @@
 and refresh tests, each pass's search narrowing and springs, the records added, the totals). On the
 two-rod case at 1.25 mm (two faces of 21 slaves each) their work is a few microseconds, and the
 calls themselves (numba unboxes every argument, 0.1-0.2 us an array) and the Python between them
-took the rest: 56 us a step against the element pass's 220 (docs/performance.md, session 29).
+took the rest: 56 us a step against the element pass's 220 (docs/performance.md).
 
 In one process, where no halo has to be exchanged between the passes, the step is therefore two
 calls of the same kernels in the same order, so the forces are the same to the bit:

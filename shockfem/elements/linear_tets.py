@@ -4,7 +4,7 @@ A P1 tetrahedron has one strain rate over the cell, so its one Gauss point is ex
 hourglass control.  ``full_integration.stress_divergence`` runs it as it runs any cell: shape-function
 gradients through loops over scratch arrays, the characteristic length in a called function, the
 material update cell by cell: 400-700 ns a tet on this machine, 65% of a 3D yawed fixture run and
-most of the penetration study's lateral-pulse runs (``docs/performance.md``, session 31).  This pass
+most of the penetration study's lateral-pulse runs (``docs/performance.md``).  This pass
 is the same element, formula for formula (``tests/unit/elements/test_linear_tets.py`` holds the two to
 round-off, elastic and plastic), laid out as ``one_point_hexes.py``:
 

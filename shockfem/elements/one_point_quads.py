@@ -259,7 +259,7 @@ def _quad_kernel(elastic_only: bool):
         for start in range(0, n, B):
             count = min(B, n - start)
             # cell, row and node numbers as unsigned: numba wraps a signed index around (a compare and an add
-            # on every load and store of the gather and scatter; docs/performance.md, session 28)
+            # on every load and store of the gather and scatter; docs/performance.md)
             block_material = np.uint32(cell_material[cells[start]])
             one_row = True
             for k in range(count):

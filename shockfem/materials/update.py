@@ -102,7 +102,7 @@ def update_from_trial(params, curves, m, state, c, p, s, trial, d, w, dt, r):
     hardening or slots returns from that trial (``j2.j2_return``): ``update_stress`` would rotate the stress
     and step it again to the same trial, up to the compiler's order of operations, and reach the law
     through its dispatch.  On the plastic Taylor bar at 30 us (1,178 of 2,592 cells yielding) the
-    quad pass took 107 ns a cell against 122 (docs/performance.md, session 29).  Other rows go through
+    quad pass took 107 ns a cell against 122 (docs/performance.md).  Other rows go through
     ``update_stress``.  Returns what ``update_stress`` returns."""
     if _isotropic_j2(params, m):
         s_np1, work = j2_return(params[m], curves[m], state[c, p], trial, d, dt)

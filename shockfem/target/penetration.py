@@ -242,7 +242,7 @@ def _nose_pressure_kernel(nodes_per_facet: int, gdim: int):
     """The nose's pressure pass compiled for facets of ``nodes_per_facet`` nodes in ``gdim`` dimensions, both
     constants of the closure: the loops over a facet's nodes and over the coordinates unroll.  With them
     read from the arrays' shapes the pass took 120 us a step on a 1,536-facet nose, more than a third of
-    the target's step (docs/performance.md, session 32)."""
+    the target's step (docs/performance.md)."""
     nn, gd = nodes_per_facet, gdim
 
     @njit(cache=True)

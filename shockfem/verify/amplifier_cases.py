@@ -129,7 +129,7 @@ def amplifier_1d(size, workdir):
         r, stages = _bar_stage([Bar("striker", L1, A, rho, E, SPEED), Bar("target", L2, A, rho, E)], 2.5 * L2 / c0)
         s = stages[0]
         n = sum(int(round(L / (L1 / 400))) for L in (L1, L2))
-        # 1D theory is exact for these bars; 1% is the tolerance (measured: within 0.6%)
+        # 1D theory is exact for these bars; 1% is the acceptance tolerance (measured: within 0.6%)
         out += [check(f"amplifier_1d.L1/L2={ratio:g}.stages [count]", 1, len(stages), 0.0, r.wall_time_s, n,
                       absolute=True),
                 check(f"amplifier_1d.L1/L2={ratio:g}.contact_time [s]", 2 * L1 / c0, s.end - s.start, 0.01,
@@ -168,7 +168,7 @@ def _axisymmetric_vs_1d(size, workdir):
     wall, n = fe.summary["wall_time_s"], fe.summary["elements"]
     fe_plateau = abs(_plateau(h_fe, fe_stage["pair"], fe_stage["start"], fe_stage["end"]))
     d_1d, d_fe = _fitted_duration(r.history, "target"), _fitted_duration(h_fe, "target")
-    # the rods are 20 D long: lateral inertia and the interface stay within the 3%
+    # the rods are 20 D long: lateral inertia and the interface stay within the 3% acceptance bound
     out = [
         check("amplifier_1d.axisymmetric_vs_1d.restitution [-]", s.restitution, fe_stage["restitution"], 0.03,
               wall, n),

@@ -254,7 +254,7 @@ def unequal_rods(size, workdir):
     vibration = 1.0 - rigid_motion / solver.energy.initial
     n = element_count(solver)
     return [
-        # not one of the issue's checks: 1D theory ends the pulse sharply at 2 L1/c0, the rods' dispersive
+        # not one of the acceptance checks: 1D theory ends the pulse sharply at 2 L1/c0, the rods' dispersive
         # tail (nothing pulls the faces apart) keeps it 4.4% longer at the default size; a regression guard
         check("unequal_rods.contact_time [s]", t_contact, _contact_time(pair), 0.06, wall, n),
         check("unequal_rods.restitution [-]", L1 / L2, pair.restitution() or 0.0, 0.03, wall, n),

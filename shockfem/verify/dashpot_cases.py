@@ -9,14 +9,14 @@ piston's face, area A; the rest of the cavity is held still.
   x_max = v0 / omega (1%; the piston's own axial stiffness is 100 times the liquid's).
 * Fixed orifice (axisymmetric, and 3D with hexahedra) a = A / 5, Cd 0.7, the piston at V0 = 5 m/s, the cavity pre-charged to the
   quasi-steady pressure so that no compression wave rings: m dv/dt = -k v^2 with
-  k = rho A^3 / (2 Cd^2 a^2), exactly a(t) = a0 / (1 + a0 t / V0)^2, a0 = k V0^2 / m (1%, the issue's
+  k = rho A^3 / (2 Cd^2 a^2), exactly a(t) = a0 / (1 + a0 t / V0)^2, a0 = k V0^2 / m (1%, the acceptance
   bound).  The exact law is for an incompressible liquid; the compressible one (its density up by
   p / K = 4e-4) rings about it by a few tenths of a percent (at 10 m/s: 1.8% at the start).
 * The same fixed orifice in the lumped dashpot (``programmer/lumped_dashpot.py``, rigid masses and the
   lumped liquid with the cavity's laws), the fixture study's design model: within 1% too.
 * Metering pin (axisymmetric, and 3D with hexahedra): the orifice area a(x) = (A^1.5 / Cd) sqrt(rho / (2F)) sqrt(V0^2 - 2 F x / m) of
   ``fixtures.md`` as a table of 200 strokes: the deceleration is F / m, flat within 5% over the
-  middle 80% of the stop (the issue's bound).  At the very end the area closes and the liquid,
+  middle 80% of the stop (the acceptance bound).  At the very end the area closes and the liquid,
   compressible, throws the piston back a little.
 """
 from __future__ import annotations

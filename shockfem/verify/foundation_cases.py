@@ -141,7 +141,7 @@ def rayleigh_damping(size, workdir):
     zeta = 0.02
     solver, wall, t, y, _ = _ring(size, damping={"ratio": zeta, "frequency": f_ref, "type": "rayleigh"},
                                   periods=8.0)
-    # 10% is the issue's tolerance; higher modes excited by the lumped-mass discretisation
+    # 10% is the acceptance tolerance; higher modes excited by the lumped-mass discretisation
     # decay faster (stiffness part) and perturb the peaks slightly
     return [check("rayleigh.damping_ratio [-]", zeta, _damping_ratio(t, y, solver.dt), 0.10, wall,
                   element_count(solver))]
@@ -203,7 +203,7 @@ def axisymmetric_vs_3d(size, workdir):
                                length=0.2)
     s3, w3, p3, c3 = bar_step("3d", "coarse" if size == "coarse" else size, radius=0.004, length=0.2)
     # the two kinematics discretise the same 1D-like problem; their plateau stresses
-    # and front speeds differ by discretisation only (issue tolerance 2%)
+    # and front speeds differ by discretisation only (acceptance tolerance 2%)
     out.append(check("axisym_vs_3d.stress [Pa]", pa, p3, 0.02, wa + w3, element_count(s3)))
     out.append(check("axisym_vs_3d.front_speed [m/s]", ca, c3, 0.02, wa + w3, element_count(s3)))
     out.append(_parallel_check(size, workdir))

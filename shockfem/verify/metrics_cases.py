@@ -37,7 +37,7 @@ def cfc_filter(size, workdir):
         g3 = filters.gain_db(cfc, dt, 1.65 * cfc)
         band = [filters.gain_db(cfc, dt, f * cfc) for f in (0.1, 0.25, 0.5, 0.75, 1.0)]
         wall = time.perf_counter() - t0
-        # J211-1: the -3 dB point of the class (1.65 CFC); the tolerance 0.5 dB
+        # J211-1: the -3 dB point of the class (1.65 CFC); the acceptance tolerance 0.5 dB
         out.append(check(f"cfc_filter.CFC{cfc}.gain_at_1.65CFC [dB, abs]", -3.0, g3, 0.5, wall, 0, absolute=True))
         worst = max(band, key=abs)
         out.append(check(f"cfc_filter.CFC{cfc}.passband_0.1-1CFC [dB, abs]", 0.0, worst, 0.5, wall, 0,

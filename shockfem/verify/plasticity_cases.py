@@ -89,7 +89,7 @@ def _taylor_checks(prefix, solver, wall, length_tol, radius_tol):
 
 def taylor_bar(size, workdir):
     """Copper Taylor bar, one-point quads (the default element) at 0.2 mm (16 across the radius):
-    final length within 0.5%, impact-face radius within 1.5% (the issue's acceptance; measured
+    final length within 0.5%, impact-face radius within 1.5% (the acceptance bound; measured
     +0.05% and -1.3%: the one-point element converges from below, 6.996 / 7.124 / 7.180 mm at
     0.4 / 0.2 / 0.1 mm, Richardson 7.22 mm), plastic dissipation and energy balance."""
     solver, wall = solve(taylor_scene(0.0002 * SIZES[size]), cache_dir=workdir)

@@ -88,7 +88,7 @@ def crushable_pad(size, workdir):
     kinetic = 0.5 * m * v0 ** 2
     n = element_count(solver)
     return [
-        # 3%: the issue's bound; the crush front's steps from element to element and the elastic rise
+        # 3%: the acceptance bound; the crush front's steps from element to element and the elastic rise
         check("crushable_pad.deceleration [m/s^2]", a, decel, 0.03, wall, n),
         check("crushable_pad.stop_time [s]", t_stop, t[stop], 0.03, wall, n),
         check("crushable_pad.stroke [m]", v0 ** 2 / (2 * a) + 0.5 * delta_e, stroke, 0.03, wall, n),
@@ -198,7 +198,7 @@ def _rubber_pad_scene(size, end_time=3e-3, law="neo-hookean"):
 def rubber_pad(size, workdir):
     """A 20 m/s steel striker onto a 10 mm Neo-Hookean rubber pad (E 10 MPa, nu 0.495) on a steel base:
     the striker is stopped and thrown back, the contact opens (the run goes through the rebound), and
-    the energy balance stays within 1% (the issue's bound).  The rubber gives the strike back
+    the energy balance stays within 1% (the acceptance bound).  The rubber gives the strike back
     elastically, so the striker leaves with most of its speed: less than it came with (no energy
     gained), more than half of it (the losses, bulk viscosity and contact damping, are small).
     The plates are wider than the pad (50 mm against 30 mm) so that the bulging rubber stays between

@@ -52,7 +52,7 @@ def shrink_fit(size, workdir):
     """A steel ring shrunk onto a solid steel shaft of its length, radial interference 0.02 mm: the
     contact's interference option pushes the initial overlap out over 200 us, and the mean contact
     pressure (after the ramp, settled, and as the pair's summary reports it at its largest load) matches
-    Lame's shrink-fit pressure (3%, the issue's bound;
+    Lame's shrink-fit pressure (3%, the acceptance bound;
     the penalty's own give, p h / (10 K) of the 0.02 mm, is 0.2% of it here)."""
     samples = []
 
@@ -101,7 +101,7 @@ def _wedge_scene(alpha, mu, size):
 
 def cone_friction(size, workdir):
     """A block pushed into and drawn out of a rigid V of half-angle alpha with friction mu: axial over
-    lateral wall force tan(alpha + phi) sliding in, tan(alpha - phi) sliding out (5%, the issue's
+    lateral wall force tan(alpha + phi) sliding in, tan(alpha - phi) sliding out (5%, the acceptance
     bound), and the elastic ring's restitution those ratios give against fixtures.md's table."""
     out = []
     T = WEDGE["push_time"]
@@ -164,7 +164,7 @@ def cone_push(size, workdir):
     bore of an elastic steel ring (friction 0.1; the ring stands on a frictionless base) over 0.4 ms,
     twelve periods of the ring's breathing, then drawn back: the ring pushes back on the plug with
     axial over radial force tan(alpha + phi) while it slides in and tan(alpha - phi) while it slides
-    out (5%, the issue's bound)."""
+    out (5%, the acceptance bound)."""
     c = CONE
     alpha, mu = math.radians(c["half_angle"]), c["friction"]
     phi = math.atan(mu)
@@ -200,7 +200,7 @@ def cone_rebound(size, workdir):
     """A rigid conical plug dropped into the conical bore of an elastic steel ring held axially (its
     boundary nodes move only radially): the only spring is then the ring's radial give, as in
     fixtures.md's lumped model, and the plug rebounds with e = sqrt(tan(alpha - phi) /
-    tan(alpha + phi)) (5%, the issue's bound for the cone) for the 7 and 15 degree entries of the
+    tan(alpha + phi)) (5%, the acceptance bound for the cone) for the 7 and 15 degree entries of the
     table.  The loop: sliding in, the wedge stores k_r u^2 / 2 through an axial stiffness k_r tan(alpha)
     tan(alpha + phi); at the turn the friction reverses with the plug stuck; sliding out, the ring
     gives back through k_r tan(alpha) tan(alpha - phi).  An elastic plug in a ring free to compress

@@ -63,7 +63,7 @@ def test_bad_input_is_a_scene_error_naming_the_field(tmp_path):
 
 
 def test_load_run_reads_without_dolfinx_or_numba(tmp_path):
-    """``load_run`` is the light reader of run directories (#26): a fresh interpreter reads a run back
+    """``load_run`` is the light reader of run directories: a fresh interpreter reads a run back
     without importing dolfinx, numba, petsc4py, mpi4py or gmsh."""
     import subprocess
     import sys

@@ -1,4 +1,4 @@
-"""Per-body energies and motion (#25's per-body hourglass warning, #26's per-body outputs).
+"""Per-body energies and motion (the per-body hourglass warning and the per-body outputs).
 
 - The kernels sum each body's stress work, hourglass work and plastic work as they go: summed over the
   bodies they give the nodal account's hourglass and plastic work to round-off (the same products,

@@ -96,7 +96,7 @@ def test_bench_quick_reports_speed(tmp_path):
     taylor = [r for r in rows if r["case"] == "taylor_bar"]
     assert len(taylor) == 1 and abs(taylor[0]["length_error"]) < 0.01 and -0.04 < taylor[0]["radius_error"] < -0.02
     # the return's share sampled over the run against the elastic kernel (measured 9-11% at 0.4 and 0.2 mm
-    # with the J2 return in lanes, session 30), with 20-60% of the cells yielding in the sampled passes
+    # with the J2 return in lanes), with 20-60% of the cells yielding in the sampled passes
     assert 0.0 < taylor[0]["share_plastic_return_of_internal_force"] < 1.0
     assert 0.1 < taylor[0]["yielding_fraction_sampled"] < 0.9
 

@@ -1,4 +1,4 @@
-"""A run killed halfway keeps what it wrote (#25): SIGTERM and SIGINT stop it between two steps, and it
+"""A run killed halfway keeps what it wrote: SIGTERM and SIGINT stop it between two steps, and it
 finishes its outputs and says ``interrupted`` (exit 143 / 130); after SIGKILL its ``summary.json`` says
 ``running``, its streamed ``history.csv`` reads to its last whole row and ``history.h5`` to its last
 snapshot. A rerun into the same directory

@@ -1,4 +1,4 @@
-"""History columns an LS-DYNA user reaches for (#26): the supports' reactions, each body's energies, and
+"""History columns an LS-DYNA user reaches for: the supports' reactions, each body's energies, and
 accelerometers' displacement and acceleration beside their velocity.
 
 - ``bar_impact``: the bar's end driven at 5 m/s with mass-proportional damping (alpha = 2 zeta omega =

@@ -93,7 +93,7 @@ def test_the_coupled_check_meets_the_specification(machine):
 
 def test_step_assembly_reimports_to_the_designed_solids(machine):
     """The STEP file, read back by gmsh: every solid by its name, at the volume it was built with (0.5%, the
-    issue's tolerance; OpenCASCADE's own volumes agree to ~1e-10), and each designed part's solids at their
+    acceptance tolerance; OpenCASCADE's own volumes agree to ~1e-10), and each designed part's solids at their
     density weigh what the design says (the tank's capsule, the housing's steel, the article's ogive: closed
     forms against OpenCASCADE's integration of the solids)."""
     from shockfem.machine.cad import read_step

@@ -32,7 +32,7 @@ def test_touching_bodies_share_no_nodes(kinematics, tmp_path):
     # 3D: the section is the 16-gon on the circle (four arcs of four hex edges each)
     area = math.pi * 0.002 ** 2 if gdim == 2 else 0.5 * 16 * 0.002 ** 2 * math.sin(2 * math.pi / 16)
     assert m.body_mass == pytest.approx([STEEL["density"] * area * 0.01] * 2, rel=1e-9)
-    # the model hands the solver what it needs of the scene, not the scene (issue #19)
+    # the model hands the solver what it needs of the scene, not the scene
     assert not hasattr(m, "scene") and m.body_names == ["lower", "upper"]
     assert m.axisymmetric == (kinematics == "axisymmetric") and not m.plastic and not m.point_state
 

@@ -52,8 +52,8 @@ class _Display:
     second connection reset by the server ("bad X server connection", SIGABRT). strace showed the reset
     (ECONNRESET right after the connection's setup request); under load on both cores it failed 8 times
     in 48 calls on one server without ``-noreset`` and 0 in 30 with it; ``xvfb-run -a`` per call failed 4
-    times in 20, and 0 in 20 with ``-s "-noreset ..."`` (session 26). In CI it broke four tries in a row
-    (CI of c53a380). The server takes a display number no server holds and is used once ``xdpyinfo``
+    times in 20, and 0 in 20 with ``-s "-noreset ..."``; in CI without it, it broke four tries
+    in a row. The server takes a display number no server holds and is used once ``xdpyinfo``
     completes its X handshake; ``_paraview`` still tries again on a new server if pvpython reports no
     usable server."""
 

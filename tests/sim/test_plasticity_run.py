@@ -1,4 +1,4 @@
-"""A plastic run through ``run_scene``: the run directory carries what issue #4 promises (plastic
+"""A plastic run through ``run_scene``: the run directory carries what a plastic run promises (plastic
 strain in summary.json and the fields, final deformed shape, plastic and bulk-viscosity energy in
 the history) and the per-pair contact force histories."""
 import json
@@ -47,8 +47,8 @@ def test_crushed_element_stops_the_run_and_keeps_its_outputs(tmp_path):
     """At 3 km/s the copper bar's impact corner crushes and the run stops with the body, element and time
     named, status "unstable" and everything written so far kept.  Which guard stops it depends on round-off
     (the crush is chaotic: 1e-19 m in the face's starting gaps moved it): the stable step collapsing below
-    1e-3 of its first value (13.1 us, before 709b317), or the stored energy falling below -1% of the largest
-    (17.7 us after it, the step 1% of its first value: without this guard that run ended "completed" at
+    1e-3 of its first value (13.1 us in one such run), or the stored energy falling below -1% of the largest
+    (17.7 us in another, the step 1% of its first value: without this guard that run ended "completed" at
     -5%)."""
     raw = taylor_scene(0.0008, impact_face="wall")
     raw["bodies"][0]["velocity"] = [0.0, -3000.0]
@@ -94,8 +94,8 @@ def test_stored_energy_below_minus_one_percent_stops_the_run():
 
 
 def test_a_nan_in_the_state_stops_the_run_as_unstable():
-    """#25: the non-finite guard of ``nodal.finish_step`` was compiled with full fastmath, which lets LLVM
-    fold ``math.isfinite`` to True, so a NaN ran on to "completed". A NaN velocity put into a running
+    """The non-finite guard of ``nodal.finish_step`` must not be compiled with full fastmath, which lets LLVM
+    fold ``math.isfinite`` to True, so a NaN would run on to "completed". A NaN velocity put into a running
     bar reaches the accelerations within a step and must stop it, naming the body and the node."""
     from shockfem.geometry import build_mesh
     from shockfem.model import build_model

@@ -1,4 +1,4 @@
-"""Restart (#25): a run stopped by SIGTERM, SIGINT or SIGKILL and resumed from its checkpoint
+"""Restart: a run stopped by SIGTERM, SIGINT or SIGKILL and resumed from its checkpoint
 (``shockfem run --resume DIR``) ends with the histories of a run that was never stopped, bit for bit
 (the state is restored whole and the arithmetic is the same; any difference is a piece of state the
 checkpoint missed), in one process and under ``mpirun -n 2``, and for a chain scene through to its

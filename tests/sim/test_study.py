@@ -12,9 +12,9 @@ import pytest
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-# A guard against a hung study, not a speed limit: the fixture smoke took 270 s on the sessions' faster machine
-# (docs/fixture.md) and over 900 s beside the suite's other worker on an AMD EPYC model 1 (2026-11-28, a
-# clean-clone CI run that timed out there; see docs/performance.md, session 27)
+# A guard against a hung study, not a speed limit: the fixture smoke takes about 270 s on a fast 2-core
+# machine (docs/fixture.md) and took over 900 s beside the suite's other worker on an AMD EPYC model 1 whose
+# kernels ran 2-2.4x slower (a clean-clone CI run that timed out at 900 s)
 STUDY_TIMEOUT_S = 2400
 
 

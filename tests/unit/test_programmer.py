@@ -108,7 +108,7 @@ def _scipy_lumped_dashpot(d, end_time, samples):
 def test_the_lumped_dashpot_integrates_as_scipys_rk45(shape):
     """``lumped_dashpot.simulate`` runs scipy's RK45 compiled (its first step, error control and dense
     output, scipy's coefficients): the study's designs against solve_ivp, to round-off (measured identical
-    to the bit, session 30; the dense output with x for every power, or the error weights halved, move
+    to the bit; the dense output with x for every power, or the error weights halved, move
     them by 8e-7 and 1.5e-7 of their largest)."""
     import numpy as np
     from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, dashpot_lumped

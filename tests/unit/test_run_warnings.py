@@ -1,4 +1,4 @@
-"""What a finished run warns of (#25: "34% hourglass energy in a 500 m/s steel impact without a word"):
+"""What a finished run warns of (such as 34% hourglass energy in a 500 m/s steel impact):
 ``runner.run_warnings`` on made-up summaries, each threshold just crossed and just not."""
 from shockfem.runner import run_warnings
 

@@ -7,10 +7,9 @@ rows whose trial is not the answer (``materials.update.elastic_trial_holds``).  
 general copy whose rows all take that cell-by-cell path (J2 rows with kinematic hardening, which the lanes
 never accept, and a yield stress no cell reaches): the same arithmetic as the elastic lanes, only the
 compiler's order of operations may differ (fastmath), so every output must agree to round-off: 1e-13 of
-its largest entry (the differences seen are below 1e-15).  Against the scalar kernels these passes
-replaced (``git show 4c4bad2:shockfem/elements/one_point.py``) both copies agreed to 4.7e-16 (quads)
-and 1.6e-15 (hexes) on 50k and 1k shuffled cells (session 22).  The forces themselves are checked
-against the one-point UFL form in ``test_one_point.py``.
+its largest entry (the differences seen are below 1e-15).  Against scalar cell-by-cell kernels of the
+same formulas both copies agreed to 4.7e-16 (quads) and 1.6e-15 (hexes) on 50k and 1k shuffled cells.
+The forces themselves are checked against the one-point UFL form in ``test_one_point.py``.
 """
 import numpy as np
 import pytest

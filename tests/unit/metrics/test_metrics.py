@@ -159,7 +159,7 @@ def test_chattering_faces_are_one_event():
 
 
 def test_a_body_sliding_on_a_wall_is_no_stage():
-    """#25: a long slide gave ten "stages" with restitution -28. A block dropped at 2 m/s onto a wall bounces
+    """A long slide once gave ten "stages" with restitution -28. A block dropped at 2 m/s onto a wall bounces
     once, comes back at 1 cm/s (0.5% of its impact speed, below the 2% that makes a stage), then rests and
     slides on it, its contact force flickering (on and off every 2 ms): one impact stage, the rest sustained
     contacts with no restitution."""
@@ -186,7 +186,7 @@ def test_a_body_sliding_on_a_wall_is_no_stage():
 
 
 def test_srs_band_reaches_the_pulse_asymptotes():
-    """The band a pulse's spectrum takes unless the scene gives one (``srs.pulse_band``): for the issue's
+    """The band a pulse's spectrum takes unless the scene gives one (``srs.pulse_band``): for a
     20 us half-sine it reaches 500 kHz, where the spectrum has met its plateau (the peak: +1.1% at Q = 10,
     measured; the test allows 2%), and the default 10 Hz, where it is on its impulse slope 2 pi f dV
     (undamped: 2e-5 off);

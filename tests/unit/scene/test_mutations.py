@@ -1,10 +1,10 @@
-"""Input that cannot crash (#25): a valid scene (plain, chain or launcher) with one field replaced by a list, a
+"""Input that cannot crash: a valid scene (plain, chain or launcher) with one field replaced by a list, a
 table, a huge number, NaN, infinity, a wrong or odd unit, an empty string, a negative number, a boolean, or
 deleted, is either accepted or refused with every problem as ``field: message`` (``SceneError``, exit 2):
 never a traceback or a hang. ``shockfem check`` reads it (``cli.check_raw``): the plain checker, the chain's
-and the launcher's, and the launcher's design. Measured before the fixes with the same mutations, every leaf
-of nine scenes: 80 tracebacks in 2410 (unhashable names, a chain body without a name, a negative radius under
-a square root, 1e308 m overflowing the gun's formulas); now none."""
+and the launcher's, and the launcher's design. Measured on the checkers without these guards with the same
+mutations, every leaf of nine scenes: 80 tracebacks in 2410 (unhashable names, a chain body without a name, a negative radius under
+a square root, 1e308 m overflowing the gun's formulas); with them, none."""
 import copy
 import os
 
