@@ -1,40 +1,24 @@
-"""A minimal TOML writer for the scenes shockfem generates (tables, arrays of tables,
-strings, numbers (numpy's too), booleans and flat lists) - enough to hand a scene to the CLI."""
+"""Scenes shockfem generates, written as TOML by tomli-w, to hand a scene to the CLI.
+
+tomli-w writes Python's own types; a study computes with numpy, so its numbers (``np.float64`` is a
+float, ``np.int64`` and arrays are not) are turned into Python's first."""
 from __future__ import annotations
 
 import numpy as np
+import tomli_w
 
 
-def _value(v) -> str:
-    if isinstance(v, (np.generic, np.ndarray)):      # numbers a study computed with numpy
-        v = v.tolist()
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, (int, float)):
-        return repr(float(v)) if isinstance(v, float) else str(v)
-    if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_value(x) for x in v) + "]"
-    raise TypeError(f"cannot write {v!r} as TOML")
+def _plain(value):
+    """``value`` with numpy's numbers and arrays turned into Python's, through dicts, lists and tuples."""
+    if isinstance(value, (np.generic, np.ndarray)):
+        return value.tolist()
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    return value
 
 
-def _table(prefix: str, d: dict, lines: list):
-    scalars = {k: v for k, v in d.items() if not isinstance(v, dict)
-               and not (isinstance(v, list) and v and isinstance(v[0], dict))}
-    for k, v in scalars.items():
-        lines.append(f"{k} = {_value(v)}")
-    for k, v in d.items():
-        if isinstance(v, dict):
-            lines.append(f"\n[{prefix}{k}]")
-            _table(f"{prefix}{k}.", v, lines)
-        elif isinstance(v, list) and v and isinstance(v[0], dict):
-            for item in v:
-                lines.append(f"\n[[{prefix}{k}]]")
-                _table(f"{prefix}{k}.", item, lines)
-
-
-def dumps(d: dict) -> str:
-    lines: list[str] = []
-    _table("", d, lines)
-    return "\n".join(lines).lstrip() + "\n"
+def dumps(scene: dict) -> str:
+    """``scene`` (tables, arrays of tables, strings, numbers, booleans, lists) as TOML text."""
+    return tomli_w.dumps(_plain(scene))
