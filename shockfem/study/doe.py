@@ -21,17 +21,16 @@ import numpy as np
 from scipy import stats
 
 
-def fractional_factorial(base: int, generators: dict[int, tuple[int, ...]]) -> np.ndarray:
-    """Coded levels (runs, factors) of the 2^(base) full factorial in standard order (the first factor
-    alternating fastest), with a column for each generated factor: ``generators`` maps its index to the
-    base columns whose product sets it (D = ABC: {3: (0, 1, 2)})."""
-    runs = np.array([[1 if (r >> j) & 1 else -1 for j in range(base)] for r in range(2 ** base)], dtype=float)
-    columns = [runs[:, j] for j in range(base)]
-    for index in sorted(generators):
-        if index != len(columns):
-            raise ValueError("generated factors follow the base factors, in order")
-        columns.append(np.prod(runs[:, list(generators[index])], axis=1))
-    return np.column_stack(columns)
+def fractional_factorial(generators: str) -> np.ndarray:
+    """Coded levels (runs, factors) of a two-level fractional factorial, pyDOE3's ``fracfact`` of
+    ``generators`` (one word a factor: a base factor's letter, or the product of base letters that sets a
+    generated one: "a b c abc" is the 2^(4-1) design with D = ABC), its rows in standard order (the first
+    factor alternating fastest; pyDOE3 alternates the last fastest: the same runs, reordered so that a
+    run's number names the same levels as the textbooks' tables and the sweep's full factorial)."""
+    import pyDOE3
+    design = pyDOE3.fracfact(generators)
+    base = [k for k, word in enumerate(generators.split()) if len(word.lstrip("+-")) == 1]
+    return design[np.lexsort(design[:, base].T)]
 
 
 def fold_over(design: np.ndarray, factor: int) -> np.ndarray:

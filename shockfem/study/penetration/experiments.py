@@ -30,7 +30,7 @@ RESPONSES = (("tail deflection [mm]", "deflection"), ("bending stress [MPa]", "b
 def design_runs(centre_points: int, fold: bool) -> tuple[np.ndarray, list[str], list[list[float]]]:
     """The coded design (8 runs of D = ABC, the fold-over's 8 of D = -ABC if ``fold``, then the centre
     points), the runs' names and each run's levels in the units shown."""
-    half = fractional_factorial(3, {3: (0, 1, 2)})
+    half = fractional_factorial("a b c abc")
     blocks = [half] + ([fold_over(half, 3)] if fold else []) + [np.zeros((centre_points, 4))]
     coded = np.vstack(blocks)
     names = ([f"doe_run{k + 1}" for k in range(8)] + ([f"doe_fold{k + 1}" for k in range(8)] if fold else [])
