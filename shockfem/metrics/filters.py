@@ -19,7 +19,6 @@ import math
 
 import numpy as np
 
-from .recursive import filtfilt
 
 # J211-1 asks for a sample rate of at least 10 times the class frequency (CFC 1000: 10 kHz).
 MIN_SAMPLES_PER_CFC = 10
@@ -68,7 +67,8 @@ def cfc_filter(a: np.ndarray, dt: float, cfc: float) -> np.ndarray:
         raise ValueError(check_sampling(cfc, dt))
     b, den = cfc_coefficients(cfc, dt)
     pad = min(len(a) - 1, int(math.ceil(3.0 / (2 * math.pi * cfc * 2.0775 * dt))))
-    return filtfilt(b, den, a, max(pad, 0))
+    from scipy import signal      # here: 0.35-0.39 s of import (scipy.stats with it), for runs with a channel
+    return signal.sosfiltfilt(signal.tf2sos(b, den), a, padtype="odd", padlen=max(pad, 0))
 
 
 def gain_db(cfc: float, dt: float, frequency: float, periods: int = 40) -> float:
