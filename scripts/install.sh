@@ -25,11 +25,13 @@ if [ -n "$missing" ]; then
   apt-get update -qq
   apt-get install -y -q --no-install-recommends $missing
 fi
+# INSTALL_STEPS=debian: Debian's packages only (the Dockerfile's first layer, which a source edit keeps)
+[ "${INSTALL_STEPS:-all}" = debian ] && exit 0
 if [ ! -x "$VENV/bin/python" ]; then
   echo "install: venv $VENV (with Debian's dolfinx through --system-site-packages)"
   /usr/bin/python3 -m venv --system-site-packages "$VENV"
 fi
-if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, xdist, tqdm, distributed, pyDOE3" 2>/dev/null \
+if ! "$VENV/bin/python" -c "import shockfem, gmsh, pint, pytest, xdist, tqdm, distributed, pyDOE3, tomli_w, pyyeti, dask_jobqueue" 2>/dev/null \
    || [ pyproject.toml -nt "$VENV/.installed" ] || [ constraints.txt -nt "$VENV/.installed" ]; then
   echo "install: pip install -e .[test,viz,batch]"
   "$VENV/bin/pip" install -q --disable-pip-version-check -c constraints.txt -e ".[test,viz,batch]"
@@ -41,6 +43,14 @@ if [ -d "$VENV/lib/python3.11/site-packages/matplotlib" ] \
    && dpkg-query -W -f='${Status}' python3-matplotlib 2>/dev/null | grep -q "install ok installed"; then
   echo "install: the venv's own matplotlib removed (Debian's python3-matplotlib serves)"
   "$VENV/bin/pip" uninstall -q -y matplotlib
+fi
+# One h5py: Debian's (python3-h5py, on Debian's HDF5 as dolfinx is). pip does not know Debian's by that
+# name (its metadata says h5py.-debian-h5py-serial), so a package that asks for h5py (pyyeti, the SRS test's
+# oracle) brings PyPI's wheel with an HDF5 of its own into the venv, in front of Debian's.
+if [ -d "$VENV/lib/python3.11/site-packages/h5py" ] \
+   && dpkg-query -W -f='${Status}' python3-h5py 2>/dev/null | grep -q "install ok installed"; then
+  echo "install: the venv's own h5py removed (Debian's python3-h5py serves)"
+  "$VENV/bin/pip" uninstall -q -y h5py
 fi
 "$VENV/bin/python" - <<'PY'
 import warnings
