@@ -58,12 +58,13 @@ def check_raw(raw: dict) -> str:
 def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", generators: str = "",
           resolution: int = 3, overrides: list[str] | tuple = (), cases_table: str | None = None,
           executor: str = "local", workers: int | None = None, ranks: int = 1, scheduler: str | None = None,
-          progress: bool = False, echo=print) -> list[dict]:
+          progress: bool = False, echo=print, verbose: bool = False) -> list[dict]:
     """Run a sweep of the scene file ``scene``: the cases of ``design`` over the factors ``vary``
     (``"bodies.striker.velocity=[5, 10, 20] m/s"``, as ``shockfem sweep --vary``), or of the CSV table
     ``cases_table``, each with ``overrides`` first; every case checked before any runs (``SceneError``
     lists the problems of all); run by ``executor`` (``study/batch.py``: "local" processes or "dask") into
-    ``out_dir/<case>``, skipping cases completed before.  Returns the table's rows (``cases.csv``)."""
+    ``out_dir/<case>``, skipping cases completed before (``verbose``: Dask's INFO log lines shown).  Returns
+    the table's rows (``cases.csv``)."""
     from .scene import apply_overrides, read_toml
     from .scene.checker import SceneError
     from .study.batch import run_batch
@@ -82,7 +83,7 @@ def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", gener
                          for p in e.problems]
     if problems:
         raise SceneError(problems)
-    return run_batch(cases, out_dir, executor, workers, ranks, scheduler, progress, echo)
+    return run_batch(cases, out_dir, executor, workers, ranks, scheduler, progress, echo, verbose=verbose)
 
 
 @dataclass(frozen=True)

@@ -174,6 +174,7 @@ def _parser() -> argparse.ArgumentParser:
     sw.add_argument("--executor", choices=("local", "dask"), default="local",
                     help="local processes, or a Dask distributed cluster (a LocalCluster, or --scheduler)")
     sw.add_argument("--workers", type=int, help="cases at a time (default: the cores over --ranks)")
+    sw.add_argument("--verbose", action="store_true", help="show Dask's INFO log lines (workers starting, stopping)")
     sw.add_argument("--ranks", type=int, default=1, help="MPI processes per case (mpirun -n RANKS)")
     sw.add_argument("--scheduler", help="dask: the address of a running scheduler (e.g. tcp://host:8786)")
     sw.add_argument("--no-progress", action="store_true", help="a line per case instead of a progress bar")
@@ -319,7 +320,8 @@ def _dispatch(args) -> int:
         name = os.path.splitext(os.path.basename(args.scene))[0]
         out = args.out or os.path.join("results", f"{name}_sweep")
         rows = sweep(args.scene, args.vary, out, args.design, args.generators or "", args.resolution, args.set, args.cases,
-                     args.executor, args.workers, args.ranks, args.scheduler, progress=not args.no_progress)
+                     args.executor, args.workers, args.ranks, args.scheduler, progress=not args.no_progress,
+                     verbose=args.verbose)
         done = sum(r["status"] == "completed" for r in rows)
         print(f"{done} of {len(rows)} cases completed; the table: {os.path.join(out, 'cases.csv')}")
         return EXIT_OK if done == len(rows) else 1

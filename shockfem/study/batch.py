@@ -179,24 +179,28 @@ def write_table(rows: list[dict], out_dir: str):
     os.replace(partial, os.path.join(out_dir, "cases.h5"))
 
 
-def _dask_client(workers: int, scheduler: str | None):
+def _dask_client(workers: int, scheduler: str | None, verbose: bool = False):
     """A client of the scheduler at ``scheduler``, or of a local cluster of ``workers`` single-threaded
-    worker processes (closed with the client)."""
+    worker processes (closed with the client).  Dask's ``distributed`` log lines below WARNING (workers
+    starting and stopping, the scheduler's address: a dozen INFO lines a sweep) are shown only if
+    ``verbose``, in this process and in the local cluster's workers."""
     import logging
     from distributed import Client, LocalCluster
+    level = logging.INFO if verbose else logging.WARNING
+    logging.getLogger("distributed").setLevel(level)
     if scheduler:
         return Client(scheduler)
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                           silence_logs=logging.WARNING)
+                           silence_logs=level)
     return Client(cluster)
 
 
 def run_batch(cases: list[Case], out_dir: str, executor: str = "local", workers: int | None = None,
               ranks: int = 1, scheduler: str | None = None, progress: bool = True, echo=print,
-              rerun: bool = False) -> list[dict]:
+              rerun: bool = False, verbose: bool = False) -> list[dict]:
     """Run every case (``run_case``; ``rerun``: none skipped or resumed) with ``executor`` (``EXECUTORS``),
     ``workers`` at a time (default: the cores over the ranks a case takes); returns the rows in the cases'
-    order, also written to ``out_dir`` as they come (``write_table``)."""
+    order, also written to ``out_dir`` as they come (``write_table``).  ``verbose``: Dask's INFO lines too."""
     if executor not in EXECUTORS:
         raise ValueError(f"executor: one of {', '.join(EXECUTORS)}, got {executor!r}")
     os.makedirs(out_dir, exist_ok=True)
@@ -223,7 +227,7 @@ def run_batch(cases: list[Case], out_dir: str, executor: str = "local", workers:
                 finished(future.result())
     else:
         from distributed import as_completed as dask_completed
-        with _dask_client(workers, scheduler) as client:
+        with _dask_client(workers, scheduler, verbose) as client:
             futures = [client.submit(run_case, c, os.path.abspath(out_dir), ranks, rerun,
                                      key=f"shockfem-{c.name}-{i}", pure=False) for i, c in enumerate(cases)]
             for future in dask_completed(futures):
