@@ -1,10 +1,24 @@
-# Batch studies in a container: docker build -t shockfem . && docker run --rm -v $PWD/results:/app/results shockfem run studies/foundation/bar_impact.toml
+# Batch studies in a container:
+#   docker build -t shockfem .
+#   docker run --rm --user "$(id -u):$(id -g)" -v "$PWD/results:/app/results" shockfem run studies/foundation/bar_impact.toml
+# (--user: the results belong to you, not to root; README, "In a container")
 FROM debian:bookworm
 ENV OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 DEBIAN_FRONTEND=noninteractive
 WORKDIR /app
-COPY . /app
-# The same install script as `make` and CI, so CI exercises every step of this image.
+# The same install script as `make` and CI, in three layers from the slowest to change to the quickest, so
+# that an edit of the source re-runs only the last: Debian's packages (the script alone), then the venv and
+# PyPI's packages (pyproject.toml and a placeholder package), then the source.
 # Without ParaView (INSTALL_PARAVIEW=0): the image runs scenes, studies and sweeps, not the test suite.
-RUN INSTALL_PARAVIEW=0 bash scripts/install.sh && rm -rf /var/lib/apt/lists/*
+COPY scripts/install.sh scripts/install.sh
+RUN INSTALL_PARAVIEW=0 INSTALL_STEPS=debian bash scripts/install.sh && rm -rf /var/lib/apt/lists/*
+COPY pyproject.toml constraints.txt README.md ./
+RUN mkdir -p shockfem && touch shockfem/__init__.py && INSTALL_PARAVIEW=0 bash scripts/install.sh
+COPY . /app
+RUN INSTALL_PARAVIEW=0 bash scripts/install.sh \
+ && mkdir -p /app/home /app/results && chmod -R a+rwX /app/shockfem /app/meshes /app/home /app/results
+# Any user id (docker run --user) writes numba's caches beside the package's sources, the meshes' in
+# meshes/, and FFCx's and matplotlib's under HOME (a user id the image does not know gets HOME=/, which it
+# cannot write); the venv stays root's and read-only (a chmod of it would copy its 3 GB into a new layer).
+ENV HOME=/app/home
 ENTRYPOINT ["/app/.venv/bin/shockfem"]
 CMD ["--help"]
