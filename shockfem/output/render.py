@@ -6,7 +6,7 @@ import os
 
 import numpy as np
 
-from .figures import partial_path, pyvista
+from .figures import pyvista
 
 
 def _grid(meshed):
@@ -39,12 +39,11 @@ def _scale_length(extent: float) -> float:
     return max((k * power for k in (1.0, 2.0, 5.0) if k * power <= target), default=power)
 
 
-def _annotate(plotter, grid, dim: int, body_names=(), axisymmetric: bool = False):
-    """What a picture needs to be read: the axes (r, z in axisymmetry), a scale bar under the
-    shape with its length, and each shown body's name at its centre."""
+def _annotate(plotter, grid, body_names=()):
+    """What a picture needs to be read on the shape itself: a scale bar under the shape with its length,
+    and each shown body's name at its centre (the axes and the colour bar are drawn around the cropped
+    picture, ``_compose``)."""
     pv = pyvista()
-    plotter.add_axes(xlabel="r" if axisymmetric else "x", ylabel="z" if axisymmetric else "y",
-                     zlabel="" if axisymmetric else "z", line_width=3)
     if grid.n_cells == 0:
         return
     lo, hi = np.array(grid.bounds[0::2]), np.array(grid.bounds[1::2])
@@ -70,42 +69,131 @@ def _annotate(plotter, grid, dim: int, body_names=(), axisymmetric: bool = False
                                      always_visible=True)
 
 
+def _axis_arrows(plotter, grid, axisymmetric: bool) -> list[tuple[str, float, float]]:
+    """The scene's axes as the camera shows them: for each axis whose projection is not a point, its name
+    (r, z in axisymmetry) and its unit direction in the picture (right, up)."""
+    renderer = plotter.renderer
+    centre = np.array(grid.center if grid.n_cells else (0.0, 0.0, 0.0))
+    length = max(float(grid.length), 1e-9) * 0.1
+    names = ("r", "z", "") if axisymmetric else ("x", "y", "z")
+
+    def display(point):
+        renderer.SetWorldPoint(*point, 1.0)
+        renderer.WorldToDisplay()
+        return np.array(renderer.GetDisplayPoint()[:2])
+
+    origin, arrows = display(centre), []
+    for k, name in enumerate(names):
+        step = display(centre + length * np.eye(3)[k]) - origin
+        if name and np.hypot(*step) > 1e-6 * max(plotter.window_size):
+            arrows.append((name, *(step / np.hypot(*step))))
+    return arrows
+
+
+def _cropped(image: np.ndarray, margin: int = 12) -> np.ndarray:
+    """``image`` (rows, columns, channels) cut to what differs from its background (the corner pixel's
+    colour), with ``margin`` pixels around."""
+    drawn = np.any(image != image[0, 0], axis=2)
+    if not drawn.any():
+        return image
+    rows, cols = np.flatnonzero(drawn.any(axis=1)), np.flatnonzero(drawn.any(axis=0))
+    top, bottom = max(rows[0] - margin, 0), min(rows[-1] + margin + 1, image.shape[0])
+    left, right = max(cols[0] - margin, 0), min(cols[-1] + margin + 1, image.shape[1])
+    return image[top:bottom, left:right]
+
+
+def _compose(image, path: str, title: str, arrows, colours=None):
+    """The rendered shape, cropped to the bodies, as a matplotlib figure: the title above, the axes'
+    directions beside the shape, and (``colours``: label with its unit, (low, high), colour map) a colour
+    bar: to the right of a tall shape, under a wide one.
+
+    matplotlib draws the colour bar, not VTK: VTK's scalar bar (9.x wheels) lays its tick labels out
+    through std::regex, which aborts the process (std::bad_alloc in ``vtk::is_printf_format``) once
+    dolfinx's libraries are loaded beside it (``import dolfinx`` and then any pyvista scalar bar)."""
+    from matplotlib import colors as mcolors
+    from matplotlib.cm import ScalarMappable
+
+    from .figures import partial_path, pyplot
+    plt = pyplot()
+    image = _cropped(image)
+    dpi = 110
+    w, h = image.shape[1] / dpi, image.shape[0] / dpi           # inches, one image pixel a figure pixel
+    tall, top = h >= w, 0.55
+    bar = colours is not None
+    side, below = ((1.4 if bar else 1.0), 0.0) if tall else (0.0, (1.1 if bar else 0.9))
+    W, H = max(w + side, 4.5 if bar else 3.0), h + top + below      # inches: room for the title's line
+    fig = plt.figure(figsize=(W, H), dpi=dpi)
+    ax = fig.add_axes([0.0, below / H, w / W, h / H])
+    ax.imshow(image, interpolation="none")
+    ax.set_axis_off()
+    if title:
+        fig.suptitle(title, fontsize=9, y=1.0 - 0.05 / H, va="top")
+    compass = fig.add_axes([(w + 0.2) / W if tall else 0.05 / W, 0.05 / H, 0.9 / W, 0.9 / H])
+    compass.set_xlim(-1.4, 1.4)
+    compass.set_ylim(-1.4, 1.4)
+    compass.set_aspect("equal")
+    compass.set_axis_off()
+    for name, right, up in arrows:
+        compass.annotate("", xy=(0.8 * right, 0.8 * up), xytext=(0.0, 0.0),
+                         arrowprops=dict(arrowstyle="->", lw=1.5, color="black"))
+        compass.text(1.1 * right, 1.1 * up, name, ha="center", va="center", fontsize=9)
+    if colours is not None:
+        label, (low, high), cmap = colours
+        scale = ScalarMappable(norm=mcolors.Normalize(vmin=low, vmax=high), cmap=cmap)
+        where = ([(w + 0.25) / W, (below + 1.3) / H, 0.18 / W, max(h - 1.5, 0.5 * h) / H] if tall
+                 else [1.3 / W, 0.6 / H, (W - 1.7) / W, 0.18 / H])
+        fig.colorbar(scale, cax=fig.add_axes(where), label=label, orientation="vertical" if tall else "horizontal")
+    partial = partial_path(path)
+    fig.savefig(partial, dpi=dpi)
+    plt.close(fig)
+    os.replace(partial, path)
+
+
+def _rendered(plotter, grid, dim: int, axisymmetric: bool):
+    """Render ``plotter`` once framed: its picture as an array and the axes' directions in it."""
+    plotter.reset_camera()
+    image = plotter.screenshot(None, return_img=True)
+    arrows = _axis_arrows(plotter, grid, axisymmetric)
+    plotter.close()
+    return image, arrows
+
+
 def render_mesh(meshed, path: str, title: str = "", cut: bool = True, body_names=(), axisymmetric: bool = False):
-    """A PNG of the mesh with its element edges, coloured by body, with axes, a scale and the bodies'
-    names; 3D meshes are cut open along two half planes through the axis (a quarter removed) to show
-    bores and cavities."""
+    """A PNG of the mesh with its element edges, coloured by body, with the axes, a scale and the bodies'
+    names, cropped to the bodies; 3D meshes are cut open along two half planes through the axis (a quarter
+    removed) to show bores and cavities."""
     pv = pyvista()
     grid = _grid(meshed)
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
     grid = _framed(plotter, grid, meshed.mesh.geometry.dim, cut)
     plotter.add_mesh(grid, scalars="body", show_edges=True, cmap="Pastel1", show_scalar_bar=False,
                      edge_color="#333333", line_width=0.5)
-    _annotate(plotter, grid, meshed.mesh.geometry.dim, body_names, axisymmetric)
-    if title:
-        plotter.add_text(title, font_size=12)
-    plotter.reset_camera()
-    plotter.screenshot(partial_path(path))
-    plotter.close()
-    os.replace(partial_path(path), path)
+    _annotate(plotter, grid, body_names)
+    image, arrows = _rendered(plotter, grid, meshed.mesh.geometry.dim, axisymmetric)
+    _compose(image, path, title, arrows)
 
 
 def _draw(grid, path: str, label: str, title: str, dim: int, cut: bool, body_names=(), axisymmetric=False):
-    """``grid`` coloured by its cell array ``label``, with edges, framed and annotated as ``render_mesh``
-    does, to ``path``."""
+    """``grid`` coloured by its cell array ``label`` (its name with its unit) with edges, framed and
+    annotated as ``render_mesh`` does, with a colour bar, to ``path``."""
     pv = pyvista()
     plotter = pv.Plotter(off_screen=True, window_size=(900, 900))
     grid = _framed(plotter, grid, dim, cut)
-    _annotate(plotter, grid, dim, body_names, axisymmetric)
-    # no scalar bar: VTK's (9.x wheels) lays out its tick labels through std::regex, which aborts the
-    # process here (std::bad_alloc in vtk::is_printf_format); the colour range is written instead
-    shown = grid.cell_data[label]
-    plotter.add_mesh(grid, scalars=label, show_edges=True, cmap="viridis", edge_color="#333333", line_width=0.3,
-                     show_scalar_bar=False)
-    plotter.add_text(f"{title}\n{label}: {shown.min():.4g} (dark blue) to {shown.max():.4g} (yellow)", font_size=10)
-    plotter.reset_camera()
-    plotter.screenshot(partial_path(path))
-    plotter.close()
-    os.replace(partial_path(path), path)
+    _annotate(plotter, grid, body_names)
+    shown = np.asarray(grid.cell_data[label]) if grid.n_cells else np.zeros(1)
+    low, high = float(shown.min()), float(shown.max())
+    top = high if high > low else low + 1.0          # a uniform field: its colour at the bar's foot, not mid-range
+    plotter.add_mesh(grid, scalars=label, show_edges=True, cmap="viridis", clim=(low, top),
+                     edge_color="#333333", line_width=0.3, show_scalar_bar=False)
+    image, arrows = _rendered(plotter, grid, dim, axisymmetric)
+    _compose(image, path, f"{title}\nlargest {label.split(' [')[0]}: {high:.4g} {_unit(label)}".rstrip(), arrows,
+             (label, (low, top), "viridis"))
+
+
+def _unit(label: str) -> str:
+    """The unit in a label ``"name [unit]"`` (empty for ``[-]``)."""
+    unit = label.rsplit("[", 1)[-1].rstrip("]") if "[" in label else ""
+    return "" if unit == "-" else unit
 
 
 def warm_up():
@@ -125,7 +213,8 @@ def warm_up():
 def _label(field: str) -> tuple[str, float]:
     """The picture's name of a cell field and the scale to its unit (stresses in MPa)."""
     stress = field in ("von_mises", "pressure") or field.startswith("stress_")
-    return f"{field.replace('_', ' ')} [{'MPa' if stress else '-'}]", (1e-6 if stress else 1.0)
+    name = "von Mises stress" if field == "von_mises" else field.replace("_", " ")
+    return f"{name} [{'MPa' if stress else '-'}]", (1e-6 if stress else 1.0)
 
 
 def render_run(run_dir: str, bodies: list[int] | None = None, cut: bool = True) -> list[str]:
