@@ -7,7 +7,7 @@ The internal force of every deformable cell is the stress divergence
 which is exactly the UFL form ``shockfem.model.kinematics.internal_force_form``.  dolfinx 0.5.2
 assembles that form at about 7.7 million Q1 cells per second on the reference machine; this numba
 twin computes the strain rate, updates the stress (``shockfem.materials.update.update_stress``) and
-assembles the force in one pass over the cells at several times that rate (``docs/performance.md``).
+assembles the force in one pass over the cells at several times that rate (``shockfem bench``).
 The unit test ``tests/unit/elements/test_full_integration.py`` checks it against the dolfinx assembly
 of the UFL form to round-off.  Conventions: ``cells.py``.
 """

@@ -23,7 +23,7 @@ compiler sees the same arithmetic over consecutive array entries, so the pass ru
    sums and the smallest step in cell order.
 
 Numba's LLVM vectorises a lane loop only when (found with its vectorizer's remarks,
-``docs/performance.md``): numba's Python error model is off (``error_model="numpy"``: otherwise every
+``llvmlite.binding.set_option('', '-pass-remarks-missed=loop-vectorize')``): numba's Python error model is off (``error_model="numpy"``: otherwise every
 division carries a zero test that raises); the loop is in a function of its own, not inlined, called
 once a block; its trip count is an argument (a constant 32 gets the loop unrolled first, and the
 unrolled loop is not vectorised); it holds no inner loop (LLVM vectorises innermost loops); and it
@@ -47,7 +47,7 @@ from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_o
 from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, inverse_2x2,
                         scatter_plastic_strain, step_length, unwalsh4, walsh4)
 
-# Cells a block: 32-64 ran fastest on the bench's 50k quads (docs/performance.md); at 256 the scratch
+# Cells a block: 32-64 ran fastest on the bench's 50k quads (``shockfem bench``); at 256 the scratch
 # arrays leave the first-level cache and the pass runs at half the scalar code's speed.
 LANES = 32
 

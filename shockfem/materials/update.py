@@ -49,7 +49,7 @@ def update_stress(params, curves, m, state, c, p, s, d, w, dt, r, elastic_only):
     s = rotate_symmetric(s, q)
     if elastic_only:
         # the constants by index, not through the row view params[m]: a view costs an atomic
-        # reference count up and down per call, 5% of the elastic quad kernel (docs/performance.md)
+        # reference count up and down per call, 5% of the elastic quad kernel (measured)
         return elastic_step(s, d, params[m, P_LAMBDA], params[m, P_MU], dt), d, 0.0
     if params[m, P_LAW] == J2 and params[m, P_KINEMATIC] > 0.0:
         rotate_back_stress(state, c, p, q)
@@ -102,7 +102,7 @@ def update_from_trial(params, curves, m, state, c, p, s, trial, d, w, dt, r):
     hardening or slots returns from that trial (``j2.j2_return``): ``update_stress`` would rotate the stress
     and step it again to the same trial, up to the compiler's order of operations, and reach the law
     through its dispatch.  On the plastic Taylor bar at 30 us (1,178 of 2,592 cells yielding) the
-    quad pass took 107 ns a cell against 122 (docs/performance.md).  Other rows go through
+    quad pass took 107 ns a cell against 122 (medians of 60 interleaved calls).  Other rows go through
     ``update_stress``.  Returns what ``update_stress`` returns."""
     if _isotropic_j2(params, m):
         s_np1, work = j2_return(params[m], curves[m], state[c, p], trial, d, dt)

@@ -55,7 +55,7 @@ def simulate(d: LumpedDashpot, end_time: float, samples: int = 4000) -> LumpedRu
     The integrator is scipy's RK45 (``solve_ivp``'s default: Dormand-Prince 5(4), its error norm, step
     control, first step and dense output at the samples) written again in numba (``_dormand_prince``)
     with scipy's own coefficients: the design iteration (``programmer.dashpot_design``) runs this a few
-    hundred times: 0.54 s a run with scipy's Python step, 0.018 s compiled (docs/performance.md).  The two
+    hundred times: 0.54 s a run with scipy's Python step, 0.018 s compiled.  The two
     agree to round-off (``tests/unit/test_programmer.py``)."""
     A, K, n, rho0 = d.piston_area, d.bulk_modulus, d.tait_exponent, d.density
     V0 = A * d.column

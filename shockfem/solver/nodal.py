@@ -3,7 +3,7 @@
 Nodal arrays are (nodes, gdim) with the ``num_owned`` nodes this rank owns first; sums
 (energies, work) run over owned nodes only and are reduced over ranks by the caller.
 Separate numpy expressions did the same at about a third of the speed, each one a pass
-over memory with a temporary (``docs/performance.md``).
+over memory with a temporary (measured on the bench's cases).
 """
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ FINITE_SAFE_FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 # ``*_mass_dofs``): a loop over the nodes with one over the gdim components inside, a test of ownership in
 # it, or a node's mass looked up as ``mass[k // gdim]`` (an integer division by a number known only at run
 # time) each kept LLVM from vectorising the pass (finish_step on 3,362 nodes: 27.5 -> 19.0 us for the flat
-# loop; 50,000 nodes: 276 -> 52 us for the masses per dof; docs/performance.md).
+# loop; 50,000 nodes: 276 -> 52 us for the masses per dof).
 
 @njit(cache=True, fastmath=True)
 def update_velocity(v, a, dt_avg, alpha, mass_dofs, num_owned):
@@ -78,7 +78,7 @@ def update_position(x, u, v, dt, f_int, f_ext, f_con, applied, num_owned):
             w_ext += du * fe[k]
             w_con += du * fc[k]
     else:
-        # two arrays fewer through memory: this pass is bandwidth-bound (docs/performance.md)
+        # two arrays fewer through memory: this pass is bandwidth-bound
         for k in range(num_owned * gdim):
             du = dt * vf[k]
             xf[k] += du

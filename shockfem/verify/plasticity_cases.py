@@ -7,7 +7,7 @@ tangent 100 MPa) at 227 m/s onto a rigid frictionless wall, 80 us; converged fin
 the impact face on the wall (u_z = 0 on it: Simo 1992 keeps every node that reaches the wall on
 it), so the checks do too.  A wall that lets go (``impact_face="wall"``, the scene's contact) is a
 different problem: the rim of the mushroom lifts off (0.57 mm at 0.4 mm elements) and rolls out
-to a larger radius (docs/performance.md).
+to a larger radius (7.243, 7.300 and 7.329 mm at 0.4, 0.2 and 0.1 mm, growing with refinement).
 
 Plastic wave: a slender bar whose end is driven at v > v_y = sigma_0 / (rho c0) carries an
 elastic precursor at c0 = sqrt(E / rho) carrying sigma_0, and behind it a plastic front at
