@@ -254,9 +254,11 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
 
     cell_sign = cell_orientation(dofmap, X0, dN)
     plastic = any(scene.material_of(b).law != "elastic" for b in scene.bodies if not b.rigid)
-    model = Model(meshed, V, gdim, kin.CODES[scene.kinematics], dofmap, imap.size_local, X0,
-                  mass, node_body, cell_body, cell_material, kernel_cells, params, curves,
-                  kin.CELL_KINDS[cell_name], cell_sign, N, dN, wq, alpha=alpha, body_mass=body_mass,
+    model = Model(meshed=meshed, V=V, gdim=gdim, kinematics=kin.CODES[scene.kinematics], dofmap=dofmap,
+                  num_owned=imap.size_local, X0=X0, mass=mass, node_body=node_body, cell_body=cell_body,
+                  cell_material=cell_material, kernel_cells=kernel_cells, params=params, curves=curves,
+                  cell_kind=kin.CELL_KINDS[cell_name], cell_sign=cell_sign, N=N, dN=dN, wq=wq, alpha=alpha,
+                  body_mass=body_mass,
                   one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
                   hourglass_coefficient=scene.hourglass_coefficient, bodies=tuple(scene.bodies),
                   contacts=tuple(scene.contacts), springs=tuple(scene.springs), cavities=tuple(scene.cavities),

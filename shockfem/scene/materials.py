@@ -14,6 +14,18 @@ MATERIAL_FIELDS = (("library", "density", "youngs_modulus", "poisson_ratio") + J
                    + RUBBER_FIELDS)
 
 
+def read_materials(ck: Checker, raw: dict) -> dict[str, Material]:
+    """Every ``[materials.NAME]`` table, by name."""
+    materials: dict[str, Material] = {}
+    for mname, m in ck.table(raw, "materials", "materials").items():
+        path = f"materials.{mname}"
+        if not isinstance(m, dict):
+            ck.fail(path, "must be a table")
+            continue
+        materials[mname] = read_material(ck, mname, m, path)
+    return materials
+
+
 def read_material(ck: Checker, name: str, m: dict, path: str) -> Material:
     """A material: elastic, or J2-plastic with a bilinear (MAT_003) or tabulated (MAT_024) hardening
     and optional Cowper-Symonds rate effects; ``library`` fills in fields the table does not give."""
