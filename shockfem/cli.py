@@ -11,6 +11,8 @@ import gc
 import json
 import os
 import sys
+from dataclasses import dataclass
+from typing import Callable
 
 from .mpi_start import start_mpi
 from .dolfinx_start import import_dolfinx
@@ -21,6 +23,7 @@ import_dolfinx()    # before anything imports it: without setuptools' pkg_resour
 from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, EXIT_UNSTABLE, ModelError, RunInterrupted, UnstableRun
 from .api import check_raw
 from .units import LB
+from .version import __version__
 
 
 class _DefaultsShown(argparse.HelpFormatter):
@@ -33,57 +36,58 @@ class _DefaultsShown(argparse.HelpFormatter):
         return f"{text} (default: %(default)s)"
 
 
-def _parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="shockfem", description=" ".join(__doc__.replace("``", "").split("\n\n")[0].split()),
-                                epilog=" ".join(__doc__.split("\n\n")[1].split()))
-    sub = p.add_subparsers(dest="command", required=True)
+def _scene_arguments(p: argparse.ArgumentParser, scene_help: str = "scene file (TOML)", nargs=None):
+    """The scene file and its ``--set`` overrides, as every command that reads a scene takes them."""
+    p.add_argument("scene", nargs=nargs, help=scene_help)
+    p.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
+                   help="override a scene field, e.g. bodies.striker.velocity='12 m/s' (repeat for more)")
 
-    def command(name, help):
-        # every option's default shown in its help
-        return sub.add_parser(name, help=help, description=help, formatter_class=_DefaultsShown)
 
-    r = command("run", "run a scene and write a run directory, or resume a stopped run")
-    r.add_argument("scene", nargs="?", help="scene file (TOML)")
+def _json_argument(p: argparse.ArgumentParser, what: str):
+    p.add_argument("--json", metavar="FILE", help=f"write {what} to this JSON file")
+
+
+def _run_arguments(r):
+    _scene_arguments(r, nargs="?")
     r.add_argument("--resume", metavar="RUN_DIR",
                    help="continue the run in RUN_DIR from its last checkpoint (written every "
                         "scene.checkpoint_interval and when SIGTERM or SIGINT stops a run), with as many processes")
     r.add_argument("--out", help="run directory (default: results/<scene name>)")
-    r.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
-                   help="override a scene field, e.g. bodies.striker.velocity='12 m/s'")
     r.add_argument("--no-progress", action="store_true", help="no progress bar (batch jobs, logs)")
     r.add_argument("--no-fields", action="store_true", help="skip the XDMF field output")
     r.add_argument("--fidelity", choices=("rigid", "1d", "axisymmetric", "3d"),
                    help="chain scenes: the model to run (default: the scene's chain.fidelity)")
 
-    c = command("check", "validate a scene without running it")
-    c.add_argument("scene", help="scene file (TOML)")
-    c.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
 
-    m = command("mesh", "mesh a scene's bodies (cached in meshes/ or $SHOCKFEM_MESH_CACHE), report their "
-                        "quality and write the mesh as XDMF")
-    m.add_argument("scene", help="scene file (TOML)")
-    m.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
+def _check_arguments(c):
+    _scene_arguments(c)
+
+
+def _mesh_arguments(m):
+    _scene_arguments(m)
     m.add_argument("--out", help="XDMF file to write (default: results/<scene>/mesh.xdmf)")
     m.add_argument("--png", help="also render the mesh to this PNG (3D cut open by a quarter)")
 
-    s = command("metrics", "(re)compute the shock metrics of a run directory: pulses, spectra, "
-                                       "stage table (into its summary.json, with plots)")
+
+def _metrics_arguments(s):
     s.add_argument("run_dir", help="a run directory written by shockfem run")
     s.add_argument("--cfc", help="filter class instead of the scene's: 60, 180, 600, 1000 or none")
 
-    o = command("modes", "natural frequencies and mode shapes of a body (SLEPc)")
-    o.add_argument("scene", help="scene file (TOML)")
-    o.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
+
+def _modes_arguments(o):
+    _scene_arguments(o)
     o.add_argument("--body", help="the body (default: the scene's only deformable body)")
-    o.add_argument("--count", type=int, default=10, help="elastic modes to find (default 10)")
+    o.add_argument("--count", type=int, default=10, help="elastic modes to find")
     o.add_argument("--degree", type=int, choices=(1, 2), default=1,
                    help="element degree: 2 for thin plates and shells, which lock with linear solids")
     o.add_argument("--free", action="store_true", help="ignore the scene's boundary conditions (free-free)")
     o.add_argument("--mass", choices=("consistent", "lumped"), default="consistent", help="mass matrix")
     o.add_argument("--out", help="directory for modes.json and modes.xdmf (default: results/<scene>/modes)")
 
-    a = command("amplifier", "size a velocity amplifier's masses (rigid-body design tool)")
-    a.add_argument("--architecture", choices=("launched-chain", "stack-on-anvil"), default="launched-chain",
+
+def _amplifier_arguments(a):
+    from .amplifier.gain import ARCHITECTURES
+    a.add_argument("--architecture", choices=ARCHITECTURES, default=ARCHITECTURES[0],
                    help="a gun fires the first mass into the others, or the whole stack falls onto an anvil")
     a.add_argument("--article", required=True, help="test article mass, e.g. '12 lb'")
     a.add_argument("--target", required=True, help="test article speed to reach, e.g. '1600 ft/s'")
@@ -92,12 +96,13 @@ def _parser() -> argparse.ArgumentParser:
     a.add_argument("--masses", type=int, default=5, help="number of masses, test article included")
     a.add_argument("--material", default="high_strength_steel", help="library material for the sizes")
     a.add_argument("--aspect", type=float, default=1.0, help="length / diameter of the cylinders")
-    a.add_argument("--json", help="write the design to this JSON file")
+    _json_argument(a, "the design")
 
-    pg = command("programmer", "size pulse programmers (crushable pad, orifice dashpot, split cone) "
-                                           "for a specified pulse (closed forms)")
+
+def _programmer_arguments(pg):
+    from .programmer.shapes import SHAPES
     pg.add_argument("--article", required=True, help="mass brought to rest, e.g. '12 lb'")
-    pg.add_argument("--shape", required=True, help="half-sine | terminal-peak sawtooth | trapezoid | rectangle")
+    pg.add_argument("--shape", required=True, choices=SHAPES, help="pulse shape")
     pg.add_argument("--peak", required=True, help="peak acceleration, e.g. '10000 gee'")
     pg.add_argument("--duration", required=True, help="pulse duration, e.g. '5 ms'")
     pg.add_argument("--foam", default="aluminium_foam", help="library foam for the pad's crush stress and density")
@@ -112,53 +117,60 @@ def _parser() -> argparse.ArgumentParser:
     pg.add_argument("--friction", default=0.1, type=float, help="cone-ring friction coefficient")
     pg.add_argument("--ring", default="mild_steel", help="library metal of the clamp ring")
     pg.add_argument("--elongation", default=0.2, type=float, help="usable hoop strain of a yielding ring")
-    pg.add_argument("--json", help="write the requirement and the concepts to this JSON file")
+    _json_argument(pg, "the requirement and the concepts")
 
-    ln = command("launcher", "fire a gas gun described by a [launcher] scene; ASME sizing")
-    ln.add_argument("scene", help="scene file (TOML)")
-    ln.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="override a scene field")
+
+def _launcher_arguments(ln):
+    _scene_arguments(ln)
     ln.add_argument("--out", help="results directory (default: results/<name>)")
-    ln.add_argument("--design", action="store_true",
+    ln.add_argument("--lightest", action="store_true",
                     help="find the lightest launcher meeting the scene's [design] table, then fire it")
     ln.add_argument("--trade", type=int, metavar="N", default=0,
-                    help="with the design, trade curves at N points: weight against pressure, length against bore")
+                    help="trade curves of the lightest launcher at N points (implies --lightest): weight against "
+                         "pressure, length against bore")
 
-    dm = command("design-machine", "design the whole shock tester for an article and a pulse: fixture, "
-                                               "amplifier, launcher, stops, guides, frame; loads against allowables")
+
+def _design_machine_arguments(dm):
+    from .amplifier.gain import ARCHITECTURES
+    from .launcher.gas import GASES
+    from .programmer.shapes import SHAPES
     dm.add_argument("--article", required=True, help="the unit under test's mass, e.g. '12 lb'")
-    dm.add_argument("--shape", default="rectangle", help="pulse shape: rectangle | half-sine | terminal-peak sawtooth "
-                                                         "| trapezoid (default rectangle)")
-    dm.add_argument("--peak", default="10000 gee", help="pulse peak (default '10000 gee')")
-    dm.add_argument("--duration", default="5 ms", help="pulse duration (default '5 ms')")
+    dm.add_argument("--shape", choices=SHAPES, default="rectangle", help="pulse shape")
+    dm.add_argument("--peak", default="10000 gee", help="pulse peak")
+    dm.add_argument("--duration", default="5 ms", help="pulse duration")
     dm.add_argument("--article-diameter", help="default: the fixture study's 60 mm ogive scaled to the mass")
-    dm.add_argument("--architecture", default="launched-chain", help="launched-chain | stack-on-anvil")
-    dm.add_argument("--masses", type=int, default=5, help="amplifier masses, the striker last (default 5)")
-    dm.add_argument("--launch", default="325 ft/s", help="first mass's launch speed (default '325 ft/s')")
+    dm.add_argument("--architecture", choices=ARCHITECTURES, default=ARCHITECTURES[0],
+                    help="a gun fires the first mass into the others, or the whole stack falls onto an anvil")
+    dm.add_argument("--masses", type=int, default=5, help="amplifier masses, the striker last")
+    dm.add_argument("--launch", default="325 ft/s", help="first mass's launch speed")
     dm.add_argument("--material", default="high_strength_steel", help="library metal of masses, housing, frame")
-    dm.add_argument("--gas", default="air", help="launcher gas: air | nitrogen (default air)")
-    dm.add_argument("--max-pressure", default="5000 psi", help="launcher reservoir limit (default '5000 psi')")
-    dm.add_argument("--max-barrel-length", default="20 ft", help="launcher barrel limit (default '20 ft')")
-    dm.add_argument("--max-bore", default="36 in", help="launcher bore limit (default '36 in')")
+    dm.add_argument("--gas", choices=tuple(GASES), default="air", help="launcher gas")
+    dm.add_argument("--max-pressure", default="5000 psi", help="launcher reservoir limit")
+    dm.add_argument("--max-barrel-length", default="20 ft", help="launcher barrel limit")
+    dm.add_argument("--max-bore", default="36 in", help="launcher bore limit")
     dm.add_argument("--striker-ratio", type=float, default=10.0, help="striker over payload mass, at least "
-                                                                      "(default 10; the housing may ask for more)")
-    dm.add_argument("--safety-factor", type=float, default=1.5, help="yield over allowable stress (default 1.5)")
+                                                                      "(the housing may ask for more)")
+    dm.add_argument("--safety-factor", type=float, default=1.5, help="yield over allowable stress")
     dm.add_argument("--catch-deceleration", help="the payload's catcher (default: half the pulse's peak)")
     dm.add_argument("--oil-pressure", default="120 MPa", help="the dashpot's design pressure, the payload's force "
-                                                            "over the piston: it sets the bore (default '120 MPa')")
+                                                            "over the piston: it sets the bore")
     dm.add_argument("--out", help="directory for machine.json and machine.md (default: results/machine/<N>lb)")
 
-    st = command("study", "run a study and write its report (report.md with tables and figures)")
-    st.add_argument("name", choices=("amplifier", "launcher", "fixture", "penetration", "system"), help="the study")
-    st.add_argument("--size", choices=("smoke", "default"), default="default",
+
+def _study_arguments(st):
+    from .study.registry import SIZES, STUDIES
+    st.add_argument("name", choices=tuple(STUDIES),
+                    help="the study: " + "; ".join(f"{name}, {study.question}" for name, study in STUDIES.items()))
+    st.add_argument("--size", choices=SIZES, default="default",
                     help="smoke: coarse and short (what the tests run); default: the study's answer")
     st.add_argument("--out", help="results directory (default: results/<name>)")
     st.add_argument("--resume", action="store_true",
                     help="read back the finite-element cases a stopped or earlier run of the study completed (the "
                          "same scene), resume those stopped with a checkpoint; the rest runs again")
 
-    sw = command("sweep", "run a scene over a design of its fields' levels (or a table of cases), a run directory "
-                          "per case, both cores or a Dask cluster, resumable; the cases' results in one table")
-    sw.add_argument("scene", help="scene file (TOML)")
+
+def _sweep_arguments(sw):
+    _scene_arguments(sw)
     sw.add_argument("--vary", action="append", default=[], metavar="PATH=LEVELS",
                     help="a factor and its levels, e.g. bodies.striker.velocity=\"[5, 10, 20] m/s\" (repeat for more)")
     sw.add_argument("--cases", metavar="TABLE.csv", help="instead of --vary: a CSV table, one column per scene path, "
@@ -168,8 +180,6 @@ def _parser() -> argparse.ArgumentParser:
     sw.add_argument("--generators", help="fractional: pyDOE3's generators, e.g. 'a b c abc' (D = ABC)")
     sw.add_argument("--resolution", type=int, default=3, help="fractional without generators: the smallest design "
                                                               "of this resolution")
-    sw.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
-                    help="override a scene field in every case")
     sw.add_argument("--out", help="directory of the case directories and the table (default: results/<scene>_sweep)")
     sw.add_argument("--executor", choices=("local", "dask"), default="local",
                     help="local processes, or a Dask distributed cluster (a LocalCluster, or --scheduler)")
@@ -179,17 +189,39 @@ def _parser() -> argparse.ArgumentParser:
     sw.add_argument("--scheduler", help="dask: the address of a running scheduler (e.g. tcp://host:8786)")
     sw.add_argument("--no-progress", action="store_true", help="a line per case instead of a progress bar")
 
-    v = command("verify", "verification against exact and published solutions")
-    v.add_argument("names", nargs="*", help="cases to run (default: all)")
+
+def _verify_arguments(v):
+    v.add_argument("names", nargs="*", metavar="CASE", help="cases to run (default: all; --list names them)")
     v.add_argument("--list", action="store_true", help="list the cases")
-    v.add_argument("--json", help="write the results to this JSON file")
+    _json_argument(v, "the results")
     v.add_argument("--size", choices=("coarse", "default", "fine"), default="default", help="mesh size of the cases")
     v.add_argument("--workdir", default="results/verify", help="where the cases' runs are written")
 
-    b = command("bench", "element-cycles per second at several mesh sizes")
-    b.add_argument("--json", help="write the results to this JSON file")
+
+def _bench_arguments(b):
+    _json_argument(b, "the results")
     b.add_argument("--quick", action="store_true", help="small meshes only (a smoke test)")
-    b.add_argument("--steps", type=int, default=200)
+    b.add_argument("--steps", type=int, default=200, help="time steps timed at each mesh size")
+
+
+@dataclass(frozen=True)
+class Command:
+    """One ``shockfem`` command: its help, its arguments and what runs it."""
+    help: str
+    arguments: Callable[[argparse.ArgumentParser], None]
+    run: Callable[[argparse.Namespace], int]
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="shockfem", description=" ".join(__doc__.replace("``", "").split("\n\n")[0].split()),
+                                epilog=" ".join(__doc__.split("\n\n")[1].split()))
+    p.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, command in COMMANDS.items():
+        # every option's default shown in its help
+        parser = sub.add_parser(name, help=command.help, description=command.help, formatter_class=_DefaultsShown)
+        command.arguments(parser)
+        parser.set_defaults(usage_error=parser.error)
     return p
 
 
@@ -255,111 +287,104 @@ def console() -> int:
 
 
 def _dispatch(args) -> int:
-    if args.command == "check":
-        print(f"{args.scene}: ok ({check_raw(_raw(args))})")
-        return EXIT_OK
-    if args.command == "run" and args.resume:
+    return COMMANDS[args.command].run(args)
+
+
+def _check(args) -> int:
+    print(f"{args.scene}: ok ({check_raw(_raw(args))})")
+    return EXIT_OK
+
+
+def _run(args) -> int:
+    if args.resume:
         return _resume(args)
-    if args.command == "run":
-        if not args.scene:
-            raise ModelError("run: give a scene file, or --resume RUN_DIR")
-        chain = _chain_raw(args)
-        if chain is not None:
-            from .amplifier.chain import resolve_chain, run_chain_scene
-            spec, _, _ = resolve_chain(chain, args.fidelity)
-            run_chain_scene(chain, args.out or os.path.join("results", spec.name, spec.fidelity), args.fidelity,
-                            progress=not args.no_progress)
-            return EXIT_OK
-        if args.fidelity:
-            raise ModelError("--fidelity: only a chain scene (a [chain] table) runs at a chosen fidelity")
-        if not args.no_fields:
-            _start_pictures()
-        from .runner import run_scene
-        scene = _scene(args)
-        out = args.out or os.path.join("results", scene.name)
-        run_scene(scene, out, progress=not args.no_progress, write_fields=not args.no_fields)
+    if not args.scene:
+        args.usage_error("give a scene file, or --resume RUN_DIR")
+    chain = _chain_raw(args)
+    if chain is not None:
+        from .amplifier.chain import resolve_chain, run_chain_scene
+        spec, _, _ = resolve_chain(chain, args.fidelity)
+        run_chain_scene(chain, args.out or os.path.join("results", spec.name, spec.fidelity), args.fidelity,
+                        progress=not args.no_progress)
         return EXIT_OK
-    if args.command == "mesh":
-        from .geometry import build_mesh
-        from .geometry.quality import check_mesh
-        from .output.fields import write_mesh
-        scene = _scene(args)
-        meshed = build_mesh(scene)
-        tdim = meshed.mesh.topology.dim
-        print(f"{meshed.source}: {meshed.mesh.topology.index_map(tdim).size_global} cells, "
-              f"regions: {', '.join(meshed.region_ids)}")
-        check_mesh(scene, meshed)
-        out = args.out or os.path.join("results", scene.name, "mesh.xdmf")
-        write_mesh(meshed, out)
-        print(f"wrote {out} (cell tags: body number; facet tags: region number, see the log above)")
-        if args.png:
-            from .output.render import render_mesh
-            render_mesh(meshed, args.png, scene.name, body_names=[b.name for b in scene.bodies],
-                        axisymmetric=scene.kinematics == "axisymmetric")
-            print(f"wrote {args.png}")
+    if args.fidelity:
+        raise ModelError("--fidelity: only a chain scene (a [chain] table) runs at a chosen fidelity")
+    if not args.no_fields:
+        _start_pictures()
+    from .runner import run_scene
+    scene = _scene(args)
+    out = args.out or os.path.join("results", scene.name)
+    run_scene(scene, out, progress=not args.no_progress, write_fields=not args.no_fields)
+    return EXIT_OK
+
+
+def _mesh(args) -> int:
+    from .geometry import build_mesh
+    from .geometry.quality import check_mesh
+    from .output.fields import write_mesh
+    scene = _scene(args)
+    meshed = build_mesh(scene)
+    tdim = meshed.mesh.topology.dim
+    print(f"{meshed.source}: {meshed.mesh.topology.index_map(tdim).size_global} cells, "
+          f"regions: {', '.join(meshed.region_ids)}")
+    check_mesh(scene, meshed)
+    out = args.out or os.path.join("results", scene.name, "mesh.xdmf")
+    write_mesh(meshed, out)
+    print(f"wrote {out} (cell tags: body number; facet tags: region number, see the log above)")
+    if args.png:
+        from .output.render import render_mesh
+        render_mesh(meshed, args.png, scene.name, body_names=[b.name for b in scene.bodies],
+                    axisymmetric=scene.kinematics == "axisymmetric")
+        print(f"wrote {args.png}")
+    return EXIT_OK
+
+
+def _sweep(args) -> int:
+    from .api import sweep
+    if bool(args.vary) == bool(args.cases):
+        raise ModelError("sweep: give the factors (--vary PATH=LEVELS, repeated) or a table of cases (--cases), "
+                         "one of the two")
+    if args.ranks < 1 or (args.workers is not None and args.workers < 1):
+        raise ModelError("sweep: --ranks and --workers take a whole number of at least 1")
+    name = os.path.splitext(os.path.basename(args.scene))[0]
+    out = args.out or os.path.join("results", f"{name}_sweep")
+    rows = sweep(args.scene, args.vary, out, args.design, args.generators or "", args.resolution, args.set, args.cases,
+                 args.executor, args.workers, args.ranks, args.scheduler, progress=not args.no_progress,
+                 verbose=args.verbose)
+    done = sum(r["status"] == "completed" for r in rows)
+    print(f"{done} of {len(rows)} cases completed; the table: {os.path.join(out, 'cases.csv')}")
+    return EXIT_OK if done == len(rows) else 1
+
+
+def _study(args) -> int:
+    from .study import registry
+    if args.resume:
+        from .study.cases import RESUME_ENV
+        os.environ[RESUME_ENV] = "1"
+    registry.run(args.name, args.size, args.out or os.path.join("results", args.name))
+    return EXIT_OK
+
+
+def _verify(args) -> int:
+    from .verify import run_cases, CASES
+    if args.list:
+        for name, case in CASES.items():
+            print(f"{name:24s} {case.__doc__.strip().splitlines()[0]}")
         return EXIT_OK
-    if args.command == "metrics":
-        return _metrics(args)
-    if args.command == "modes":
-        return _modes(args)
-    if args.command == "amplifier":
-        return _amplifier(args)
-    if args.command == "launcher":
-        return _launcher(args)
-    if args.command == "programmer":
-        return _programmer(args)
-    if args.command == "design-machine":
-        return _design_machine(args)
-    if args.command == "sweep":
-        from .api import sweep
-        if bool(args.vary) == bool(args.cases):
-            raise ModelError("sweep: give the factors (--vary PATH=LEVELS, repeated) or a table of cases (--cases), "
-                             "one of the two")
-        if args.ranks < 1 or (args.workers is not None and args.workers < 1):
-            raise ModelError("sweep: --ranks and --workers take a whole number of at least 1")
-        name = os.path.splitext(os.path.basename(args.scene))[0]
-        out = args.out or os.path.join("results", f"{name}_sweep")
-        rows = sweep(args.scene, args.vary, out, args.design, args.generators or "", args.resolution, args.set, args.cases,
-                     args.executor, args.workers, args.ranks, args.scheduler, progress=not args.no_progress,
-                     verbose=args.verbose)
-        done = sum(r["status"] == "completed" for r in rows)
-        print(f"{done} of {len(rows)} cases completed; the table: {os.path.join(out, 'cases.csv')}")
-        return EXIT_OK if done == len(rows) else 1
-    if args.command == "study":
-        if args.resume:
-            from .study.cases import RESUME_ENV
-            os.environ[RESUME_ENV] = "1"
-        if args.name == "amplifier":
-            from .study.amplifier import run_study
-        elif args.name == "launcher":
-            from .study.launcher import run_study
-        elif args.name == "fixture":
-            from .study.fixture import run_study
-        elif args.name == "system":
-            from .study.system import run_study
-        else:
-            from .study.penetration import run_study
-        run_study(args.size, args.out or os.path.join("results", args.name))
-        return EXIT_OK
-    if args.command == "verify":
-        from .verify import run_cases, CASES
-        if args.list:
-            for name, case in CASES.items():
-                print(f"{name:24s} {case.__doc__.strip().splitlines()[0]}")
-            return EXIT_OK
-        results = run_cases(args.names or list(CASES), args.size, args.workdir)
-        if args.json:
-            with open(args.json, "w") as fh:
-                json.dump(results, fh, indent=2, default=float)
-        return EXIT_OK if all(r["passed"] for r in results) else 1
-    if args.command == "bench":
-        from .bench import run_bench
-        results = run_bench(quick=args.quick, steps=args.steps)
-        if args.json:
-            with open(args.json, "w") as fh:
-                json.dump(results, fh, indent=2, default=float)
-        return EXIT_OK
-    raise AssertionError(args.command)
+    results = run_cases(args.names or list(CASES), args.size, args.workdir)
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump(results, fh, indent=2, default=float)
+    return EXIT_OK if all(r["passed"] for r in results) else 1
+
+
+def _bench(args) -> int:
+    from .bench import run_bench
+    results = run_bench(quick=args.quick, steps=args.steps)
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump(results, fh, indent=2, default=float)
+    return EXIT_OK
 
 
 def _resume(args) -> int:
@@ -398,7 +423,7 @@ def _launcher(args) -> int:
     raw = _raw(args)
     name, gun, options = resolve_launcher(raw)
     out = args.out or os.path.join("results", name)
-    if args.design or args.trade:
+    if args.lightest or args.trade:
         from .launcher.design import around, length_against_bore, lightest_launcher, trade
         velocity, limits = resolve_design(raw)
         design = lightest_launcher(gun, velocity, limits, options)
@@ -580,6 +605,33 @@ def _metrics(args) -> int:
     print("\n".join(lines) if lines else "no test articles, accelerometers or contact events in this run")
     print(f"metrics in {os.path.join(args.run_dir, 'summary.json')} (key 'shock')")
     return EXIT_OK
+
+
+COMMANDS = {
+    "run": Command("run a scene and write a run directory, or resume a stopped run", _run_arguments, _run),
+    "check": Command("validate a scene without running it", _check_arguments, _check),
+    "mesh": Command("mesh a scene's bodies (cached in meshes/ or $SHOCKFEM_MESH_CACHE), report their quality and "
+                    "write the mesh as XDMF", _mesh_arguments, _mesh),
+    "metrics": Command("(re)compute the shock metrics of a run directory: pulses, spectra, stage table (into its "
+                       "summary.json, with plots)", _metrics_arguments, _metrics),
+    "modes": Command("natural frequencies and mode shapes of a body (SLEPc)", _modes_arguments, _modes),
+    "amplifier": Command("size a velocity amplifier's masses (rigid-body design tool)", _amplifier_arguments,
+                         _amplifier),
+    "programmer": Command("size pulse programmers (crushable pad, orifice dashpot, split cone) for a specified "
+                          "pulse (closed forms)", _programmer_arguments, _programmer),
+    "launcher": Command("fire a gas gun described by a [launcher] scene; ASME sizing", _launcher_arguments,
+                        _launcher),
+    "design-machine": Command("design the whole shock tester for an article and a pulse: fixture, amplifier, "
+                              "launcher, stops, guides, frame; loads against allowables", _design_machine_arguments,
+                              _design_machine),
+    "study": Command("run a study and write its report (report.md with tables and figures)", _study_arguments,
+                     _study),
+    "sweep": Command("run a scene over a design of its fields' levels (or a table of cases), a run directory per "
+                     "case, both cores or a Dask cluster, resumable; the cases' results in one table",
+                     _sweep_arguments, _sweep),
+    "verify": Command("verification against exact and published solutions", _verify_arguments, _verify),
+    "bench": Command("element-cycles per second at several mesh sizes", _bench_arguments, _bench),
+}
 
 
 if __name__ == "__main__":

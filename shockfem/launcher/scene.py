@@ -20,7 +20,7 @@
     tank_diameter = "24 in"          # or tank_aspect = 3 (overall length / diameter)
     joint_efficiency = 1.0
 
-    [design]                         # optional: shockfem launcher --design finds the lightest gun
+    [design]                         # optional: shockfem launcher --lightest finds the lightest gun
     muzzle_velocity = "325 ft/s"     # required of the projectile
     max_length = "6 ft"              # limits of the design variables (max_* required)
     max_bore = "12 in"

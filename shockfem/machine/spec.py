@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from ..amplifier.gain import ARCHITECTURES
 from ..launcher.gas import GASES
 from ..programmer.dashpot_design import STRIKER_RATIO, PulseSpec
-from ..programmer.requirement import SHAPES
+from ..programmer.shapes import SHAPES
 from ..scene.checker import Checker
 from ..scene.library import LIBRARY
 from ..units import FT, IN, LB, PSI

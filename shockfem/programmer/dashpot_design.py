@@ -46,7 +46,7 @@ RESTART_SPREAD = 0.02            # the simplex of a search started near a neighb
 
 @dataclass(frozen=True)
 class PulseSpec:
-    """A specified pulse: shape (``programmer.requirement.SHAPES``), peak [m/s^2], duration [s]."""
+    """A specified pulse: shape (``programmer.shapes.SHAPES``), peak [m/s^2], duration [s]."""
     shape: str
     peak: float
     duration: float

@@ -19,9 +19,6 @@ import numpy as np
 
 from ..metrics.shapes import IdealPulse, specified
 from ..units import G0
-
-# the shapes a programmer may be asked for: the metrics' classical ones and the rectangle
-SHAPES = ("half-sine", "terminal-peak sawtooth", "trapezoid", "rectangle")
 # midpoints of the ideal pulse for its first moment: the jumps of a rectangle or a sawtooth fall on
 # the ends, never on a sample, and the error of a smooth pulse is ~1e-11
 _SAMPLES = 400_000

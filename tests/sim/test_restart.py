@@ -201,5 +201,8 @@ def test_what_cannot_be_resumed_is_refused(tmp_path, capsys):
     assert "no such run directory" in capsys.readouterr().err
     assert main(["run", ROD, "--resume", str(done)]) == 2
     assert "drop a scene file" in capsys.readouterr().err
-    assert main(["run"]) == 2
-    assert "--resume RUN_DIR" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as stopped:        # argparse's usage, as for any missing argument
+        main(["run"])
+    assert stopped.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith("usage: shockfem run") and "--resume RUN_DIR" in err

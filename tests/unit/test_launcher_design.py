@@ -102,11 +102,11 @@ def test_launcher_design_command(tmp_path):
                      'reservoir_pressure = "1000 psi"\nreservoir_volume = "0.02 m**3"\nvalve_diameter = "3 in"\n'
                      '[design]\nmuzzle_velocity = "150 m/s"\nmax_length = "3 m"\nmax_bore = "8 in"\n'
                      'max_pressure = "3000 psi"\n')
-    p = subprocess.run([sys.executable, "-m", "shockfem", "launcher", str(scene), "--design", "--trade", "2",
+    p = subprocess.run([sys.executable, "-m", "shockfem", "launcher", str(scene), "--lightest", "--trade", "2",
                         "--out", str(tmp_path / "out")], capture_output=True, text=True, timeout=600, cwd=REPO)
     assert p.returncode == 0, p.stderr
     assert "lightest launcher" in p.stdout and (tmp_path / "out" / "trade.png").stat().st_size > 10_000
-    p = subprocess.run([sys.executable, "-m", "shockfem", "launcher", str(scene), "--design",
+    p = subprocess.run([sys.executable, "-m", "shockfem", "launcher", str(scene), "--lightest",
                         "--set", 'design.max_pressure="90000 psi"'], capture_output=True, text=True, timeout=300,
                        cwd=REPO)
     assert p.returncode == 2 and "design.max_pressure" in p.stderr and "Traceback" not in p.stderr
