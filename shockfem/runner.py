@@ -5,31 +5,30 @@ and read their results back from the run directory.
 """
 from __future__ import annotations
 
-import math
-
 import signal
-import sys
 import threading
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from mpi4py import MPI
 
 from .errors import ModelError, RunInterrupted, UnstableRun
+from .forces import registry as force_sources
 from .geometry import build_mesh
 from .geometry.quality import check_mesh
 from .model import build_model, describe
-from .output.cell_fields import von_mises
 from .output.fields import FieldWriter, write_final_shape
 from .output import checkpoint
+from .output.consumers import (Checkpoints, FieldFrames, HistoryRows, LoopState, ProgressBar, StopRules,
+                               body_maxima, track_max_von_mises)
 from .output.history import HistoryRecorder
 from .output.picture_process import PictureProcess, pictures_wanted
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene, to_plain
 from .materials.layout import S_EPS
-from .solver.explicit import START_UP_STEPS, ExplicitSolver
+from .solver.explicit import ExplicitSolver
 
 
 @dataclass
@@ -38,16 +37,6 @@ class RunResult:
     solver: ExplicitSolver
     history: HistoryRecorder
     path: str
-
-
-def _progress(total: float, enabled: bool):
-    if not enabled:
-        return None
-    from tqdm import tqdm
-    # (tqdm writes its own ", " before a postfix)
-    return tqdm(total=total * 1e6, unit="us", unit_scale=False, dynamic_ncols=True, file=sys.stderr,
-                bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} us [{elapsed}<{remaining}{postfix}]",
-                mininterval=0.5)
 
 
 # what a finished run is warned of (``run_warnings``)
@@ -157,190 +146,215 @@ def resume_run(out_dir: str, comm=MPI.COMM_WORLD, progress: bool = True, quiet: 
 def _run(scene: Scene, out_dir: str, comm, progress: bool, write_fields: bool, quiet: bool, on_step,
          origin: dict | None, resume: dict | None) -> RunResult:
     """``run_scene`` and ``resume_run``: a new run, or (``resume``: what ``checkpoint.latest`` read) one
-    going on from its checkpoint."""
-    origin = {**(origin or {}), "write_fields": write_fields}
-    rd = RunDirectory(out_dir, comm, resume=resume is not None)
-    # started now (or taken from ``shockfem run``, which starts it first thing), so that it imports its
-    # libraries while this process meshes and steps
-    pictures = PictureProcess.for_run() if comm.rank == 0 and write_fields and pictures_wanted() else None
-    say = (lambda msg: rd.log(msg, echo=not quiet))
-    state = None if resume is None else checkpoint.read_rank(out_dir, resume, comm)
-    if resume is None:
-        rd.write_scene_and_provenance(scene)
-    # where this run was resumed before (and, on the next checkpoint, now)
-    resumed = [] if state is None else state["loop"]["resumed"] + [
-        {"step": resume["step"], "time": resume["time"], "at": time.strftime("%Y-%m-%dT%H:%M:%S")}]
-    rd.write_json("summary.json", {"status": "running", "diagnosis": None, "scene": scene.name,
-                                   "started": time.strftime("%Y-%m-%dT%H:%M:%S"), "resumed_from": resumed})
-    say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
-    if resume is not None:
-        say(f"resuming from the checkpoint at t = {resume['time']:.6g} s (step {resume['step']}, written "
-            f"{resume['written']})")
-    meshed = build_mesh(scene, comm, log=say)
-    qualities = check_mesh(scene, meshed, log=say)
-    model = build_model(scene, meshed)
-    say("models that run:\n" + describe(model, scene))
-    solver = ExplicitSolver(model)
-    if state is None:
-        for msg in solver.log_messages:
-            say(msg)
-    else:
-        same = state["mesh"] == checkpoint.mesh_fingerprint(model.X0)
-        if not comm.allreduce(same, op=MPI.LAND):
-            raise ModelError(f"--resume {out_dir}: the mesh built again differs from the checkpointed one (a mesh "
-                             "file or the mesher changed since): start the run again")
-        checkpoint.restore(solver, state["solver"])
-    say(f"elements: {model.num_cells_global}, stable step {solver.stable_step():.4g} s "
-        f"(safety factor {scene.safety_factor})")
-    _refuse_endless(scene, solver)
-    note = damping_step_note(scene, qualities, solver.stable_step())
-    if note:
-        say(note)
-    history = HistoryRecorder(solver, rd.file("history.csv"), rd.file("history.h5"))
-    for note in history.notes:
-        say(note)
-    fields = (FieldWriter(rd.file("fields.xdmf"), solver, scene.outputs.fields,
-                          resume_after=state["fields_last"] if state else None) if write_fields else None)
-    if state is None:
-        history.record()
-        if fields:
-            fields.write(0.0)
-        loop = {"next_field": scene.outputs.field_interval, "next_history": scene.outputs.history_interval,
-                "next_checkpoint": scene.checkpoint_interval, "max_von_mises": np.zeros(len(scene.bodies)),
-                "plastic_before": 0.0, "wall": 0.0, "resumed": []}
-    else:
-        history.resume(comm.bcast(state["history"], root=0))
-        for sec, saved in zip(history.sections, state["sections"]):
-            checkpoint.restore(sec, saved)
-        loop = {**state["loop"], "resumed": resumed}
-    max_vm = loop["max_von_mises"]
-    bar = _progress(scene.end_time, progress and comm.rank == 0 and not quiet)
-    if bar is not None:
-        bar.n = solver.t * 1e6
+    going on from its checkpoint.  Build, loop over the steps, finish the outputs whatever happened."""
+    run = _Run(scene, out_dir, comm, write_fields, quiet, origin, resume)
+    run.build()
     status, diagnosis = "completed", None
-    checkpoint_time = 0.0
-
-    def save_checkpoint():
-        """The whole state at the step just finished (``output/checkpoint.py``).  Collective."""
-        if fields:
-            fields.flush()       # a resume keeps the frames the XDMF file lists
-        seen = {id(model)}
-        kept = {"solver": checkpoint.capture(solver, seen),
-                "sections": [checkpoint.capture(sec, seen) for sec in history.sections],
-                "history": history.array() if comm.rank == 0 else None,
-                "fields_last": fields.last if fields else None,
-                "loop": {**loop, "wall": loop["wall"] + time.perf_counter() - wall0},
-                "mesh": checkpoint.mesh_fingerprint(model.X0)}
-        return checkpoint.write(out_dir, comm, solver.step, solver.t, kept, scene, origin)
-
-    wall0 = time.perf_counter()
-    # from here (meshing done: gmsh sets its own SIGINT handling while it works) a signal asks the loop to
-    # stop between two steps
-    stop = _StopOnSignal(comm).install()
     try:
-        for s in solver.steps(scene.end_time):
-            if s.t >= loop["next_history"] * (1 - 1e-9) or s.t >= scene.end_time * (1 - 1e-12):
-                history.record()
-                loop["next_history"] += scene.outputs.history_interval
-            if s.t >= loop["next_field"] * (1 - 1e-9):
-                _track_max_von_mises(solver, max_vm)
-                if fields:
-                    fields.write(s.t)
-                loop["next_field"] += scene.outputs.field_interval
-            # plastic work is dissipated, never given back: a fall beyond round-off is a material update
-            # creating energy that the balance cannot see (the plastic term absorbs it)
-            if s.energy.plastic < loop["plastic_before"] - 1e-9 * s.energy.largest:
-                raise UnstableRun(
-                    f"the plastic work fell from {loop['plastic_before']:.6g} J to {s.energy.plastic:.6g} J at "
-                    f"t = {s.t:.6g} s (step {s.step}): a material update is creating energy (an element crushed "
-                    f"beyond its material's curve, or inverting). Check the impact speed against the "
-                    f"material, refine the mesh there, or lower scene.safety_factor.", s.t)
-            loop["plastic_before"] = s.energy.plastic
-            if not math.isfinite(s.energy.balance_error):
-                raise UnstableRun(
-                    f"the energy balance is not finite ({s.energy.balance_error}) at t = {s.t:.6g} s (step "
-                    f"{s.step}): an energy term overflowed or went NaN (a material or a load beyond range). "
-                    f"Check the scene's magnitudes (density, moduli, speeds, loads).", s.t)
-            if s.step > START_UP_STEPS and s.energy.balance_error > scene.energy_error_limit:
-                raise UnstableRun(
-                    f"energy balance error {s.energy.balance_error:.3g} exceeds the limit "
-                    f"{scene.energy_error_limit:.3g} at t = {s.t:.6g} s (step {s.step}): energy is being "
-                    f"created, a sign of instability. Lower scene.safety_factor or refine the mesh.", s.t)
-            for msg in s.messages:
-                say(msg)
-            if (scene.checkpoint_interval > 0 and s.t >= loop["next_checkpoint"] * (1 - 1e-9)
-                    and s.t < scene.end_time * (1 - 1e-12)):
-                while loop["next_checkpoint"] <= s.t * (1 + 1e-9):
-                    loop["next_checkpoint"] += scene.checkpoint_interval
-                checkpoint_time += save_checkpoint()
-            if on_step is not None:
-                on_step(s)
-            stop.check(s.step, s.t)
-            if bar is not None and s.step % 50 == 0:
-                bar.n = s.t * 1e6
-                bar.set_postfix_str(f"step {s.step}, dt {s.dt:.3g} s, E err {s.energy.balance_error:.1e}",
-                                    refresh=False)
-                bar.update(0)
+        run.loop(progress, on_step)
     except UnstableRun as e:
         status, diagnosis = "unstable", e.diagnosis
-        say(f"RUN STOPPED: {e.diagnosis}")
-        history.record()
+        run.say(f"RUN STOPPED: {e.diagnosis}")
+        run.history.record()
         raise
     except RunInterrupted as e:
         status, diagnosis = "interrupted", f"{signal.Signals(e.signum).name} at t = {e.time:.6g} s"
-        say(f"RUN INTERRUPTED by {signal.Signals(e.signum).name}: finishing the outputs at t = {e.time:.6g} s")
-        # the checkpoint first: the row and frame the stop adds below are not the run's cadence
-        checkpoint_time += save_checkpoint()
-        say(f"checkpoint written at t = {solver.t:.6g} s (step {solver.step}): continue with "
-            f"shockfem run --resume {out_dir}")
-        history.record()
+        run.interrupted(e)
         raise
     except BaseException as e:           # keep what was written and say that the run did not finish
         status, diagnosis = "failed", f"{type(e).__name__}: {e}"
         raise
     finally:
+        run.finish(status, diagnosis)
+    return RunResult(run.summary, run.solver, run.history, out_dir)
+
+
+class _Run:
+    """One run's pieces: its directory and log, the solver, the outputs that consume its steps."""
+
+    def __init__(self, scene: Scene, out_dir: str, comm, write_fields: bool, quiet: bool, origin: dict | None,
+                 resume: dict | None):
+        self.scene, self.out_dir, self.comm, self.write_fields = scene, out_dir, comm, write_fields
+        self.origin = {**(origin or {}), "write_fields": write_fields}
+        self.resume = resume
+        self.rd = RunDirectory(out_dir, comm, resume=resume is not None)
+        # started now (or taken from ``shockfem run``, which starts it first thing), so that it imports its
+        # libraries while this process meshes and steps
+        self.pictures = (PictureProcess.for_run() if comm.rank == 0 and write_fields and pictures_wanted()
+                         else None)
+        self.say = (lambda msg: self.rd.log(msg, echo=not quiet))
+        self.quiet = quiet
+        self.fields = self.bar = self.stop = self.checkpoints = self.summary = None
+        self.wall0 = time.perf_counter()
+
+    # ------------------------------------------------------------------ build
+    def build(self):
+        """The run directory's first files, the mesh, the model and the solver (restored from the checkpoint
+        of a resumed run), and the outputs."""
+        scene, comm, say = self.scene, self.comm, self.say
+        resume = self.resume
+        state = None if resume is None else checkpoint.read_rank(self.out_dir, resume, comm)
+        if resume is None:
+            self.rd.write_scene_and_provenance(scene)
+        # where this run was resumed before (and, on the next checkpoint, now)
+        self.resumed = [] if state is None else state["loop"].resumed + [
+            {"step": resume["step"], "time": resume["time"], "at": time.strftime("%Y-%m-%dT%H:%M:%S")}]
+        self.rd.write_json("summary.json", {"status": "running", "diagnosis": None, "scene": scene.name,
+                                            "started": time.strftime("%Y-%m-%dT%H:%M:%S"),
+                                            "resumed_from": self.resumed})
+        say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
+        if resume is not None:
+            say(f"resuming from the checkpoint at t = {resume['time']:.6g} s (step {resume['step']}, written "
+                f"{resume['written']})")
+        meshed = build_mesh(scene, comm, log=say)
+        qualities = check_mesh(scene, meshed, log=say)
+        self.model = build_model(scene, meshed)
+        say("models that run:\n" + describe(self.model, scene))
+        self.solver = ExplicitSolver(self.model)
+        if state is None:
+            for msg in self.solver.log_messages:
+                say(msg)
+        else:
+            self._restore(state)
+        say(f"elements: {self.model.num_cells_global}, stable step {self.solver.stable_step():.4g} s "
+            f"(safety factor {scene.safety_factor})")
+        _refuse_endless(scene, self.solver)
+        note = damping_step_note(scene, qualities, self.solver.stable_step())
+        if note:
+            say(note)
+        self._outputs(state)
+
+    def _restore(self, state: dict):
+        """The solver's state from the checkpoint, on the same mesh."""
+        same = state["mesh"] == checkpoint.mesh_fingerprint(self.model.X0)
+        if not self.comm.allreduce(same, op=MPI.LAND):
+            raise ModelError(f"--resume {self.out_dir}: the mesh built again differs from the checkpointed one (a "
+                             "mesh file or the mesher changed since): start the run again")
+        checkpoint.restore(self.solver, state["solver"])
+
+    def _outputs(self, state: dict | None):
+        """The history and the field writer, at t = 0 (their first row and frame) or as checkpointed."""
+        rd, scene = self.rd, self.scene
+        self.history = HistoryRecorder(self.solver, rd.file("history.csv"), rd.file("history.h5"))
+        for note in self.history.notes:
+            self.say(note)
+        self.fields = (FieldWriter(rd.file("fields.xdmf"), self.solver, scene.outputs.fields,
+                                   resume_after=state["fields_last"] if state else None)
+                       if self.write_fields else None)
+        if state is None:
+            self.history.record()
+            if self.fields:
+                self.fields.write(0.0)
+            self.state = LoopState.start(scene.outputs, scene.checkpoint_interval, len(scene.bodies))
+        else:
+            self.history.resume(self.comm.bcast(state["history"], root=0))
+            for sec, saved in zip(self.history.sections, state["sections"]):
+                checkpoint.restore(sec, saved)
+            self.state = replace(state["loop"], resumed=self.resumed)
+
+    # ------------------------------------------------------------------ loop
+    def loop(self, progress: bool, on_step):
+        """Every step to the end time, each given to the consumers in turn (``output/consumers.py``)."""
+        scene, loop = self.scene, self.state
+        self.checkpoints = Checkpoints(self._save_checkpoint, loop.checkpoint, scene.end_time)
+        if progress and self.comm.rank == 0 and not self.quiet:
+            self.bar = ProgressBar(scene.end_time, self.solver.t)
+        consumers = [HistoryRows(self.history, loop.history, scene.end_time),
+                     FieldFrames(self.solver, self.fields, loop.fields, loop.max_von_mises),
+                     StopRules(loop, scene.energy_error_limit),
+                     self._log_messages,
+                     self.checkpoints]
+        consumers += [on_step] if on_step is not None else []
+        self.wall0 = time.perf_counter()
+        # from here (meshing done: gmsh sets its own SIGINT handling while it works) a signal asks the loop to
+        # stop between two steps
+        self.stop = _StopOnSignal(self.comm).install()
+        consumers += [lambda s: self.stop.check(s.step, s.t)] + ([self.bar] if self.bar is not None else [])
+        for s in self.solver.steps(scene.end_time):
+            for consume in consumers:
+                consume(s)
+
+    def _log_messages(self, s):
+        for msg in s.messages:
+            self.say(msg)
+
+    def _save_checkpoint(self) -> float:
+        """The whole state at the step just finished (``output/checkpoint.py``); returns its wall time [s].
+        Collective."""
+        if self.fields:
+            self.fields.flush()       # a resume keeps the frames the XDMF file lists
+        seen = {id(self.model)}
+        kept = {"solver": checkpoint.capture(self.solver, seen),
+                "sections": [checkpoint.capture(sec, seen) for sec in self.history.sections],
+                "history": self.history.array() if self.comm.rank == 0 else None,
+                "fields_last": self.fields.last if self.fields else None,
+                "loop": replace(self.state, wall=self.state.wall + time.perf_counter() - self.wall0),
+                "mesh": checkpoint.mesh_fingerprint(self.model.X0)}
+        return checkpoint.write(self.out_dir, self.comm, self.solver.step, self.solver.t, kept, self.scene,
+                                self.origin)
+
+    def interrupted(self, e: RunInterrupted):
+        """A signal stopped the loop: a checkpoint first (the row and frame the stop adds are not the run's
+        cadence), then the history's row at the stop."""
+        say = self.say
+        say(f"RUN INTERRUPTED by {signal.Signals(e.signum).name}: finishing the outputs at t = {e.time:.6g} s")
+        self.checkpoints.now()
+        say(f"checkpoint written at t = {self.solver.t:.6g} s (step {self.solver.step}): continue with "
+            f"shockfem run --resume {self.out_dir}")
+        self.history.record()
+
+    # ------------------------------------------------------------------ finish
+    def finish(self, status: str, diagnosis):
+        """Whatever the loop's end: the last frame, the history, summary.json, the plots and pictures."""
+        solver, scene, rd, say, comm = self.solver, self.scene, self.rd, self.say, self.comm
         try:
-            wall = time.perf_counter() - wall0 + loop["wall"]
-            stop.finishing()
-            if bar is not None:
-                bar.n = solver.t * 1e6
-                bar.close()
-            _track_max_von_mises(solver, max_vm)
-            if fields:
+            wall = time.perf_counter() - self.wall0 + self.state.wall
+            if self.stop is not None:
+                self.stop.finishing()
+            if self.bar is not None:
+                self.bar.close(solver.t)
+            track_max_von_mises(solver, self.state.max_von_mises)
+            if self.fields:
                 if status != "completed":
-                    fields.write(solver.t)   # the state at the stop, for the diagnosis
-                fields.close()
+                    self.fields.write(solver.t)   # the state at the stop, for the diagnosis
+                self.fields.close()
                 write_final_shape(rd.file("final_shape.xdmf"), solver)
-            history.write(rd.file("history.h5"), rd.file("history.csv"))
-            summary = _summary(scene, solver, status, diagnosis, wall, max_vm)
-            summary["sections"] = {sec.name: sec.summary() for sec in history.sections}
+            self.history.write(rd.file("history.h5"), rd.file("history.csv"))
+            summary = _summary(scene, solver, status, diagnosis, wall, self.state.max_von_mises)
+            summary["sections"] = {sec.name: sec.summary() for sec in self.history.sections}
+            checkpoint_time = self.checkpoints.wall_time if self.checkpoints is not None else 0.0
             summary["checkpoints"] = {"interval": scene.checkpoint_interval, "wall_time_s": checkpoint_time,
-                                      "resumed_from": resumed}
+                                      "resumed_from": self.resumed}
             summary["warnings"] = run_warnings(summary)
             for warning in summary["warnings"]:
                 say(f"WARNING: {warning}")
             if status == "completed" and comm.rank == 0:
-                checkpoint.clear(out_dir)
+                checkpoint.clear(self.out_dir)
             rd.write_json("summary.json", summary)
-            if comm.rank == 0 and history.count > 1:
-                if pictures is not None:
-                    # of the deformable bodies (rigid ones carry no stress and may hide the rest)
-                    rigid = {rb.index for rb in model.rigid}
-                    pictures.request(out_dir, [i for i in range(len(model.bodies)) if i not in rigid])
-                plot_histories(out_dir, [b.name for b in scene.bodies])
-                summary["shock"] = _shock_metrics(out_dir, say)
-                if pictures is not None:
-                    pictures.collect(say)
-            elif pictures is not None:
-                pictures.cancel()
+            self._plots_and_pictures(summary)
             say(f"{status}: {solver.step} steps to t = {solver.t:.6g} s in {wall:.2f} s "
                 f"({summary['element_cycles_per_s']:.3g} element-cycles/s); energy balance error "
                 f"{solver.energy.balance_error:.2e}")
-            say(f"results in {out_dir}")
+            say(f"results in {self.out_dir}")
             rd.close()
+            self.summary = summary
         finally:
-            stop.restore()
-    return RunResult(summary, solver, history, out_dir)
+            if self.stop is not None:
+                self.stop.restore()
+
+    def _plots_and_pictures(self, summary: dict):
+        """Rank 0: the history plots, the shock metrics into ``summary``, and the pictures of the deformable
+        bodies (rigid ones carry no stress and may hide the rest)."""
+        if self.comm.rank == 0 and self.history.count > 1:
+            if self.pictures is not None:
+                rigid = {rb.index for rb in self.model.rigid}
+                self.pictures.request(self.out_dir, [i for i in range(len(self.model.bodies)) if i not in rigid])
+            plot_histories(self.out_dir, [b.name for b in self.scene.bodies])
+            summary["shock"] = _shock_metrics(self.out_dir, self.say)
+            if self.pictures is not None:
+                self.pictures.collect(self.say)
+        elif self.pictures is not None:
+            self.pictures.cancel()
 
 
 class _StopOnSignal:
@@ -400,26 +414,11 @@ def _shock_metrics(out_dir: str, say) -> dict | None:
     return result
 
 
-def _body_maxima(solver: ExplicitSolver, per_cell: np.ndarray) -> np.ndarray:
-    """The largest value of a per-cell quantity in every body, over all ranks."""
-    m = solver.model
-    out = np.zeros(len(m.bodies))
-    for i in range(len(out)):
-        sel = m.cell_body[:len(per_cell)] == i
-        out[i] = solver.comm.allreduce(float(per_cell[sel].max()) if sel.any() else 0.0, op=MPI.MAX)
-    return out
-
-
-def _track_max_von_mises(solver: ExplicitSolver, max_vm: np.ndarray):
-    vm = von_mises(solver.sigma).max(axis=1) if len(solver.sigma) else np.zeros(0)
-    np.maximum(max_vm, _body_maxima(solver, vm), out=max_vm)
-
-
 def _max_plastic_strain(solver: ExplicitSolver) -> np.ndarray:
     """Per body (the plastic strain only grows, so its final value is its maximum)."""
     if not solver.model.plastic:
         return np.zeros(len(solver.model.bodies))
-    return _body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
+    return body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
 
 
 def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, max_vm) -> dict:
@@ -458,10 +457,7 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
                    "balance_error": e.balance_error},
         "models": describe(m, scene).splitlines(),
         "mass_scaling": m.mass_scaling.as_dict() if m.mass_scaling is not None else None,
-        "contacts": {p.name: p.summary() for p in solver.contacts},
-        "cavities": {c.name: c.summary() for c in solver.cavities},
-        "penetration": solver.target.summary() if solver.target is not None else None,
-        "springs": {s.name: s.summary() for s in solver.springs},
+        **force_sources.summaries(solver.sources),     # "contacts", "springs", "cavities", "penetration"
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],
                             "max_von_mises": float(max_vm[i]),

@@ -23,6 +23,7 @@ import numpy as np
 from mpi4py import MPI
 
 from ..errors import ModelError
+from ..forces.source import ForceSource
 from ..model import Model
 from ..scene.specs import Contact
 from . import kernels, pair_step
@@ -187,7 +188,11 @@ class _RigidPass:
                                      soft_scale, dt, depth, friction, f, ff, self.ft, self.gap, self.offset, stiff)
 
 
-class ContactPair:
+class ContactPair(ForceSource):
+    """A contact pair as a force source (``forces/source.py``); a constraint wall holds its nodes instead."""
+
+    kind = "contact"
+
     def __init__(self, model: Model, spec: Contact):
         self.model = model
         self.spec = spec
@@ -277,6 +282,8 @@ class ContactPair:
         self.v_before = self.v_after = None  # body mean velocities around contact (for restitution)
         # a constraint wall (``hold``): surface a's nodes this rank owns, their masses and areas
         self.constraint = spec.method == "constraint"
+        self.holds_motion = self.constraint
+        self._said_preload = False
         if self.constraint:
             if model.bodies[self.a.body].rigid:
                 raise ModelError(f"contact '{spec.name}': method = \"constraint\" holds a deformable body's "
@@ -567,6 +574,46 @@ class ContactPair:
             self._offset0 = [o.copy() for o in offsets]
         return self.initial_overlap
 
+    # ------------------------------------------------------ force source
+    def rows(self) -> np.ndarray:
+        return self.exchange.local
+
+    def begin(self, x: np.ndarray, v: np.ndarray) -> list[str]:
+        nodes, deepest = self.start(x, v)
+        if not nodes:
+            return []
+        said = f"contact '{self.name}': {nodes} nodes start inside the other surface (deepest {deepest * 1e3:.4g} mm)"
+        if self.spec.interference_time > 0.0:
+            return [f"{said}; the overlap is pushed out over {self.spec.interference_time:.4g} s (interference): "
+                    f"a preload"]
+        return [f"{said}; each keeps its initial penetration as its zero (give the contact an interference time "
+                f"to push it out as a preload)"]
+
+    def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
+        limit = self.compute(x, v, dt, t)
+        self.add_forces(f)
+        return limit
+
+    def said(self, t: float) -> list[str]:
+        if self.preload is None or self._said_preload:
+            return []
+        self._said_preload = True
+        return [f"t = {t:.6g} s: contact '{self.name}' has pushed its initial overlap out: preload "
+                f"{self.preload['normal_load']:.5g} N, mean contact pressure "
+                f"{self.preload['mean_pressure'] / 1e6:.5g} MPa over {self.preload['area']:.4g} m^2"]
+
+    def energy(self) -> float:
+        return -(self.work + self.friction_work)
+
+    def columns(self, axes) -> list[tuple[str, str]]:
+        # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
+        return ([(f"contact.{self.name}.normal_{a}", "N") for a in axes]
+                + [(f"contact.{self.name}.friction_{a}", "N") for a in axes])
+
+    def history(self) -> list[float]:
+        return [*self.force_a, *self.friction_a]
+
+    # ------------------------------------------------------------ results
     def restitution(self) -> float | None:
         """e = -(v_a' - v_b') . n / ((v_a - v_b) . n), n the direction of the impulse on a;
         from the body mean velocities before first contact and after final separation."""
@@ -592,7 +639,7 @@ class ContactPair:
                 "impulse_on_a": self.impulse.tolist(), "max_normal_force": self.max_force,
                 "max_friction_force": self.max_friction,
                 "max_pressure": self.max_pressure, "pressure_at_max_force": self.pressure_at_max_force,
-                "contact_energy": -(self.work + self.friction_work),
+                "contact_energy": self.energy(),
                 "friction_work": self.friction_work, "max_penetration": self.max_penetration,
                 "smallest_facet": self.smallest_facet,
                 "intervals": self.intervals, "restitution": self.restitution(),

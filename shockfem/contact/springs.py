@@ -22,6 +22,7 @@ import numpy as np
 from mpi4py import MPI
 
 from ..errors import ModelError
+from ..forces.source import ForceSource
 from ..model import Model
 from ..model.model import region_nodes
 from ..scene.specs import Spring
@@ -39,7 +40,11 @@ def _end_nodes(model: Model, spec: str) -> np.ndarray:
     return nodes[nodes < model.num_owned]
 
 
-class DiscreteSpring:
+class DiscreteSpring(ForceSource):
+    """A discrete spring (and dashpot) as a force source (``forces/source.py``)."""
+
+    kind = "spring"
+
     def __init__(self, model: Model, spec: Spring):
         self.spec = spec
         self.name = spec.name
@@ -123,7 +128,24 @@ class DiscreteSpring:
         self.min_tension = min(self.min_tension, T)
         return self.dt_limit
 
+    # ------------------------------------------------------ force source
+    def rows(self) -> np.ndarray:
+        return np.concatenate(self.nodes)
+
+    def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
+        return self.compute(u, v, dt, f)
+
+    def energy(self) -> float:
+        return -self.work
+
+    def columns(self, axes) -> list[tuple[str, str]]:
+        # the spring's force on its end a, as a vector (tension T along the unit a -> b)
+        return [(f"spring.{self.name}.force_{a}", "N") for a in axes]
+
+    def history(self) -> list[float]:
+        return list(self.tension * self.direction)
+
     def summary(self) -> dict:
         return {"ends": [self.spec.a, self.spec.b], "direction": self.direction.tolist(),
                 "extension": self.extension, "tension": self.tension, "max_tension": self.max_tension,
-                "max_compression": -self.min_tension, "energy": -self.work}
+                "max_compression": -self.min_tension, "energy": self.energy()}

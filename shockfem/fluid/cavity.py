@@ -28,12 +28,17 @@ from numba import njit
 
 from ..contact.surfaces import NodeExchange, area_vectors, build_surface, trapezoidal_work
 from ..errors import ModelError
+from ..forces.source import ForceSource
 from ..model import Model
 from ..scene.specs import Cavity
 from . import liquid
 
 
-class LiquidCavity:
+class LiquidCavity(ForceSource):
+    """A liquid-filled cavity as a force source (``forces/source.py``): its pressure on its walls."""
+
+    kind = "cavity"
+
     def __init__(self, model: Model, spec: Cavity):
         self.spec = spec
         self.name = spec.name
@@ -154,10 +159,29 @@ class LiquidCavity:
     def add_forces(self, f: np.ndarray):
         self.exchange.add_to(self.f, f)
 
+    # ------------------------------------------------------ force source
+    def rows(self) -> np.ndarray:
+        return self.exchange.local
+
+    def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
+        limit = self.compute(x, v, dt)
+        self.add_forces(f)
+        return limit
+
+    def energy(self) -> float:
+        return -self.work
+
+    def columns(self, axes) -> list[tuple[str, str]]:
+        return [(f"cavity.{self.name}.pressure", "Pa"), (f"cavity.{self.name}.volume", "m^3"),
+                (f"cavity.{self.name}.outflow", "kg/s"), (f"cavity.{self.name}.orifice_area", "m^2")]
+
+    def history(self) -> list[float]:
+        return [self.pressure, self.volume, self.outflow, self.orifice_area()]
+
     def summary(self) -> dict:
         return {"walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
-                "energy_taken": -self.work, "energy_stored": self.stored_energy() - self.initial_stored,
+                "energy_taken": self.energy(), "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled}
 
 

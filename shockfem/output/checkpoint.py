@@ -43,7 +43,8 @@ from .rundir import CHECKPOINT_DIRECTORY as DIRECTORY, write_json_atomic
 
 # 2: a contact pass keeps the facets its candidate lists hold (``near``) and the slaves its rank takes
 # 3: a contact pair's rank keeps only its own nodes and slaves, and its halo (``contact/halo.py``)
-FORMAT = 3
+# 4: the solver keeps its contact pairs, springs, cavities and target in one list of force sources
+FORMAT = 4
 
 # objects whose state is not the run's: built again from the scene on resume
 _REBUILT_MODULES = ("shockfem.model", "shockfem.scene", "shockfem.geometry")

@@ -65,22 +65,8 @@ class HistoryRecorder:
             # the node's own at the sample
             for quantity, unit in (("u", "m"), ("v", "m/s"), ("a", "m/s^2")):
                 self.columns += [(f"accelerometer.{am.name}.{quantity}_{a}", unit) for a in axes]
-        for c in m.contacts:
-            # the forces on surface a: normal (penalty and contact damping) and friction, as vectors
-            self.columns += [(f"contact.{c.name}.normal_{a}", "N") for a in axes]
-            self.columns += [(f"contact.{c.name}.friction_{a}", "N") for a in axes]
-        for sp in m.springs:
-            # the spring's force on its end a, as a vector (tension T along the unit a -> b)
-            self.columns += [(f"spring.{sp.name}.force_{a}", "N") for a in axes]
-        for cv in m.cavities:
-            self.columns += [(f"cavity.{cv.name}.pressure", "Pa"), (f"cavity.{cv.name}.volume", "m^3"),
-                             (f"cavity.{cv.name}.outflow", "kg/s"), (f"cavity.{cv.name}.orifice_area", "m^2")]
-        if m.penetration:
-            self.columns += [("penetration.depth", "m")]
-            self.columns += [(f"penetration.force_{a}", "N") for a in axes]
-            self.columns += [("penetration.axial_force", "N"), ("penetration.target_work", "J")]
-            if m.gdim == 3:
-                self.columns += [("penetration.spin", "rad/s"), ("penetration.torque", "N m")]
+        for source in solver.sources:           # contact pairs, springs, cavities, a target: each its own
+            self.columns += source.columns(axes)
         self.sections = [SectionStresses(solver, cuts) for cuts in m.sections]
         for sec in self.sections:
             self.columns += sec.columns()
@@ -142,25 +128,10 @@ class HistoryRecorder:
             motion = meter.motion().reshape(-1)
             row[k:k + len(motion)] = motion
             k += len(motion)
-        for pair in s.contacts:
-            row[k:k + gdim] = pair.force_a
-            row[k + gdim:k + 2 * gdim] = pair.friction_a
-            k += 2 * gdim
-        for spring in s.springs:
-            row[k:k + gdim] = spring.tension * spring.direction
-            k += gdim
-        for cavity in s.cavities:
-            row[k:k + 4] = cavity.pressure, cavity.volume, cavity.outflow, cavity.orifice_area()
-            k += 4
-        if s.target is not None:
-            tg = s.target
-            row[k] = tg.depth
-            row[k + 1:k + 1 + gdim] = tg.force
-            row[k + 1 + gdim:k + 3 + gdim] = tg.axial_force, -tg.work
-            k += 3 + gdim
-            if s.model.gdim == 3:
-                row[k:k + 2] = tg.spin, tg.torque
-                k += 2
+        for source in s.sources:
+            values = source.history()
+            row[k:k + len(values)] = values
+            k += len(values)
         for sec in self.sections:
             values = sec.record()
             row[k:k + len(values)] = values

@@ -31,29 +31,12 @@ from mpi4py import MPI
 from .. import compat
 from ..errors import UnstableRun
 from ..model import Model
-from ..contact.pairs import ContactPair
-from ..contact.springs import DiscreteSpring
-from ..fluid.cavity import LiquidCavity
+from ..forces import registry
 from ..elements import kernels
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
-from . import nodal
-
-
-# A run stops when the elements' stable step falls below this share of its first value: an element
-# is being crushed flat, and the run would otherwise crawl on for millions of steps.
-STEP_COLLAPSE = 1e-3
-# ... or when the stored (elastic) energy falls below minus this share of the run's largest energy: the
-# elements have given back more work than they took, which no material does; a crushed element whose
-# hourglass modes turned it inside out while its centre's Jacobian stayed positive does (a copper bar
-# at 3 km/s on a wall: -5% by the end, with its step 2.3e-3 of its first value, above STEP_COLLAPSE).
-# The end-of-run warning (``runner.NEGATIVE_INTERNAL``) flags far smaller falls.
-ENERGY_CREATED = 1e-2
-# Energy checks start after this many steps: a run from rest has energies of round-off size at first,
-# and the half-step account's first terms are of their order (a cone pushed from rest: the stored energy
-# -20% of the largest at step 2, -1.4% at step 6, never below -1e-5 after step 20).
-START_UP_STEPS = 20
+from . import guards, nodal
 
 
 @dataclass
@@ -128,7 +111,20 @@ class ExplicitSolver:
         self.model = model
         self.comm = model.comm
         self.parallel = self.comm.size > 1
-        m = model
+        self._nodal_fields()
+        self._force_sources()
+        self._element_state()
+        self._masses()
+        self._constraints()
+        self._counters()
+        self._start(initial_velocity)
+
+    # ----------------------------------------------------------------- set-up
+    def _nodal_fields(self):
+        """Positions, velocities, displacements, accelerations and forces per node (gdim columns); the
+        velocity, internal force and displacement are views of dolfinx functions (for ghost updates and
+        output)."""
+        m = self.model
         gdim = m.gdim
         self._v_fn = fem.Function(m.V, name="velocity")
         self._f_fn = fem.Function(m.V, name="internal_force")
@@ -140,39 +136,44 @@ class ExplicitSolver:
         self.a = np.zeros_like(self.x)
         self.f_ext = np.zeros_like(self.x)
         self.f_con = np.zeros_like(self.x)
-        self.dt_contact = np.inf       # smallest stable step of the active contact springs
+
+    def _force_sources(self):
+        """The force sources (``forces/registry.py``) and gravity."""
+        m = self.model
+        self.dt_contact = np.inf       # smallest stable step of the force sources' stiffness
         self._said_contact_dt = False
-        self._said_preload: set[str] = set()
         self.log_messages: list[str] = []
-        self.contacts = [ContactPair(m, c) for c in m.contacts]
-        self._walls = [pair for pair in self.contacts if pair.constraint]     # held in ``advance``
-        self.springs = [DiscreteSpring(m, c) for c in m.springs]
-        self.cavities = [LiquidCavity(m, c) for c in m.cavities]
-        self.target = None
-        if m.penetration:
-            # imported here: it and target.concrete's ufunc take 0.28 s to import (-X importtime), which no other
-            # scene needs
-            from ..target.penetration import ConcreteTarget
-            self.target = ConcreteTarget(m, m.penetration)
+        # contact pairs, springs, liquid cavities, a target: everything that pushes besides the elements
+        self.sources = registry.build(m)
+        self._walls = [source for source in self.sources if source.holds_motion]     # held in ``advance``
         self._contact_rows = self._rows_with_contact_forces()
         self.f_gravity = (m.mass[:, None] * np.asarray(m.gravity)[None, :] if m.gravity
                           else None)
         # whether f_ext or f_con can be non-zero; if not, the nodal passes leave them unread
-        self.forces_applied = bool(m.loads or self.f_gravity is not None or self.contacts or self.springs
-                                   or self.cavities or self.target is not None)
+        self.forces_applied = bool(m.loads or self.f_gravity is not None or self.sources)
+
+    def _element_state(self):
+        """Stresses and point state, the element pass, hourglass resultants and the per-body works."""
+        m = self.model
+        gdim = m.gdim
         self.sigma = np.zeros((len(m.dofmap), m.num_quadrature_points, 6))
         # state per point (plastic strain, its rate, back stress, slot closure); a stub if no body needs one
         self.plastic_state = np.zeros((len(m.dofmap), m.num_quadrature_points, STATE_SIZE)
                                       if m.point_state else (1, 1, STATE_SIZE))
-        # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         # the element kernels' copies without law calls when every material is elastic (elements/)
         elastic_only = is_elastic_only(m.params)
         self._one_point = kernels.one_point_kernel(gdim, elastic_only) if m.one_point else None
         self._full = None if m.one_point else kernels.cell_pass(m.cell_kind, elastic_only)
+        # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
         self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
         # per body (a row of params each), this rank's share: the stresses' work (stored and plastic
         # energy), the hourglass work and the plastic work [J], for per-body energies and warnings
         self.body_energy = np.zeros((len(m.params), 3))
+
+    def _masses(self):
+        """Owned nodes, the inverse masses and the masses of the kinetic energy, per node and per dof."""
+        m = self.model
+        gdim = m.gdim
         self.owned = np.zeros(len(self.x), dtype=bool)
         self.owned[:m.num_owned] = True
         self.inv_mass = np.where(m.mass > 0, 1.0 / np.where(m.mass > 0, m.mass, 1.0), 0.0)
@@ -184,6 +185,11 @@ class ExplicitSolver:
         self._mass_dofs = np.repeat(m.mass[:, None], gdim, axis=1)
         self._inv_mass_dofs = np.repeat(self.inv_mass[:, None], gdim, axis=1)
         self._kinetic_mass_dofs = np.repeat(self.kinetic_mass[:, None], gdim, axis=1)
+
+    def _constraints(self):
+        """The constrained dofs, their masses, and where each constraint's dofs sit among them."""
+        m = self.model
+        gdim = m.gdim
         self._constrained_dofs = (np.unique(np.concatenate([c.dofs for c in m.constraints]))
                                   if m.constraints else np.zeros(0, dtype=np.int64))
         self.constrained = np.zeros(self.x.shape, dtype=np.bool_)
@@ -204,6 +210,11 @@ class ExplicitSolver:
             self._prescribed_velocities(0.0, self._constrained_held)
             # ``_prescribed_motion``'s velocity and rate, once: (c - c) / (after - before) is 0 exactly
             self._prescribed = (self._constrained_held.copy(), np.zeros(len(self._constrained_dofs)))
+
+    def _counters(self):
+        """Time, step, the stable step, the energy account and the scratch of the step's reductions."""
+        m = self.model
+        gdim = m.gdim
         self.t = 0.0
         self.step = 0
         self.dt = 0.0                 # last step taken, t_n - t_{n-1}
@@ -217,23 +228,17 @@ class ExplicitSolver:
         self._step_largest = np.zeros(2)    # the buffers of a step's two reductions over the ranks
         self._step_sums = np.zeros(14)
         self._reaction_dofs = None      # ``reactions``' held dofs by region, made at its first call
+
+    def _start(self, initial_velocity):
+        """The state at t = 0: the velocities, every force and the accelerations, the sources' first words,
+        the initial kinetic energy and the stable step the collapse is measured against."""
         self._set_initial_velocity()
         if initial_velocity is not None:
             self.v[:] = initial_velocity(self.x)
         self._internal_force(0.0)
         self._external_force(0.0)
-        for pair in self.contacts:
-            nodes, deepest = pair.start(self.x, self.v)
-            if nodes and pair.spec.interference_time > 0.0:
-                self.log_messages.append(
-                    f"contact '{pair.name}': {nodes} nodes start inside the other surface (deepest "
-                    f"{deepest * 1e3:.4g} mm); the overlap is pushed out over {pair.spec.interference_time:.4g} s "
-                    f"(interference): a preload")
-            elif nodes:
-                self.log_messages.append(
-                    f"contact '{pair.name}': {nodes} nodes start inside the other surface (deepest "
-                    f"{deepest * 1e3:.4g} mm); each keeps its initial penetration as its zero (give the contact "
-                    f"an interference time to push it out as a preload)")
+        for source in self.sources:
+            self.log_messages += source.begin(self.x, self.v)
         self._contact_forces(0.0)
         self._acceleration()
         self._rigid_loads(0.0)
@@ -241,7 +246,6 @@ class ExplicitSolver:
         self.energy.peak = self.energy.initial
         self.dt_first = self.dt_stable    # the reference of a collapsing step (``steps``)
 
-    # ----------------------------------------------------------------- set-up
     def _set_initial_velocity(self):
         m = self.model
         for i, body in enumerate(m.bodies):
@@ -327,30 +331,16 @@ class ExplicitSolver:
             flat[load.dofs] += load.value(t) * load.shares
 
     def _contact_forces(self, dt: float):
-        """Contact, discrete-spring, liquid-cavity and target forces at t_{n+1} into f_con (v is v_{n+1/2})."""
-        if not self.contacts and not self.springs and not self.cavities and self.target is None:
+        """The force sources' forces at t_{n+1} into f_con (v is v_{n+1/2}; ``forces/source.py``)."""
+        if not self.sources:
             return
-        # only the rows the contacts, springs, cavities and target write: a large mesh touches in a small
-        # face, and zeroing the whole array was most of a step's contact time (0.45 of 0.95 ms at 205k nodes)
+        # only the rows the sources write: a large mesh touches in a small face, and zeroing the whole array
+        # was most of a step's contact time (0.45 of 0.95 ms at 205k nodes)
         self.f_con[self._contact_rows] = 0.0
         limit = np.inf
-        for pair in self.contacts:
-            limit = min(limit, pair.compute(self.x, self.v, dt, self.t))
-            pair.add_forces(self.f_con)
-            if pair.preload is not None and pair.name not in self._said_preload:
-                self._said_preload.add(pair.name)
-                self.log_messages.append(
-                    f"t = {self.t:.6g} s: contact '{pair.name}' has pushed its initial overlap out: preload "
-                    f"{pair.preload['normal_load']:.5g} N, mean contact pressure "
-                    f"{pair.preload['mean_pressure'] / 1e6:.5g} MPa over {pair.preload['area']:.4g} m^2")
-        for spring in self.springs:
-            limit = min(limit, spring.compute(self.u, self.v, dt, self.f_con))
-        for cavity in self.cavities:
-            limit = min(limit, cavity.compute(self.x, self.v, dt))
-            cavity.add_forces(self.f_con)
-        if self.target is not None:
-            limit = min(limit, self.target.compute(self.x, self.v, dt, self.t))
-            self.target.add_forces(self.f_con)
+        for source in self.sources:
+            limit = min(limit, source.apply(self.x, self.u, self.v, dt, self.t, self.f_con))
+            self.log_messages += source.said(self.t)
         if np.isfinite(limit) and not self._said_contact_dt:
             self._said_contact_dt = True
             combined = 1.0 / np.sqrt(1.0 / self.dt_stable ** 2 + 1.0 / limit ** 2)
@@ -360,20 +350,16 @@ class ExplicitSolver:
         self.dt_contact = limit
 
     def _rows_with_contact_forces(self) -> np.ndarray:
-        """The local nodes whose ``f_con`` a contact pair, spring, liquid cavity or target can write (each adds
-        to its own nodes only: ``NodeExchange.add_to``, ``DiscreteSpring.compute``); every other row stays
-        zero from the start."""
-        rows = [p.exchange.local for p in self.contacts] + [c.exchange.local for c in self.cavities]
-        rows += [n for s in self.springs for n in s.nodes]
-        if self.target is not None:
-            rows.append(self.target.exchange.local)
+        """The local nodes whose ``f_con`` a force source can write (each adds to its own nodes only:
+        ``ForceSource.rows``); every other row stays zero from the start."""
+        rows = [source.rows() for source in self.sources]
         return np.unique(np.concatenate(rows)).astype(np.int64) if rows else np.zeros(0, dtype=np.int64)
 
     def _acceleration(self):
         np.multiply(self.f_ext + self.f_con - self.f_int, self.inv_mass[:, None], out=self.a)
 
     # ------------------------------------------------------------ diagnosis
-    def _body_of_cell(self, cell: int) -> str:
+    def body_of_cell(self, cell: int) -> str:
         b = self.model.cell_body[cell] if 0 <= cell < len(self.model.cell_body) else -1
         return self.model.bodies[b].name if b >= 0 else "?"
 
@@ -382,7 +368,7 @@ class ExplicitSolver:
         first = self.model.meshed.mesh.topology.index_map(tdim).local_range[0]
         centre = self.x[self.model.dofmap[cell]].mean(axis=0) if cell < len(self.model.dofmap) else None
         where = f" at x = {np.array2string(centre, precision=4)} m" if centre is not None else ""
-        return (f"{what}: body '{self._body_of_cell(cell)}', element {first + cell}{where}, "
+        return (f"{what}: body '{self.body_of_cell(cell)}', element {first + cell}{where}, "
                 f"t = {self.t:.6g} s (step {self.step}). Check the impact speed against the material, "
                 f"refine the mesh there, or lower scene.safety_factor.")
 
@@ -394,7 +380,7 @@ class ExplicitSolver:
 
     def _inverted(self, cell: int) -> UnstableRun:
         return UnstableRun(self._diagnose_cell(cell, "non-positive element volume (the element inverted)"),
-                           self.t, self._body_of_cell(cell), cell)
+                           self.t, self.body_of_cell(cell), cell)
 
     def _check_finite(self, node: int):
         error = self._not_finite(node)
@@ -436,8 +422,8 @@ class ExplicitSolver:
         dt_avg = 0.5 * (self.dt + dt)
         if m.constraints:
             nodal.take_dofs(self.v, self._constrained_dofs, self._constrained_before)
-        for pair in self._walls:
-            pair.take_velocities(self.v)
+        for wall in self._walls:
+            wall.take_velocities(self.v)
 
         # velocity v_{n+1/2}; mass-proportional damping taken implicitly (its work on this rank)
         damping_work = nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, self._mass_dofs, m.num_owned)
@@ -456,8 +442,8 @@ class ExplicitSolver:
                                             self._constrained_owned, self._constrained_before)
         # constraint walls: the nodes that would cross one by t_{n+1} put on it (its work, taken up by contact)
         wall_work = 0.0
-        for pair in self._walls:
-            wall_work += pair.hold(self.x, self.v, dt, dt_avg, self.t + dt)
+        for wall in self._walls:
+            wall_work += wall.hold(self.x, self.v, dt, dt_avg, self.t + dt)
         if self.parallel:
             self._v_fn.x.scatter_forward()
 
@@ -503,8 +489,8 @@ class ExplicitSolver:
         e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power + viscosity_power) - plastic_work
         e.external += w_ext + w_ext2 + reaction_work
         e.contact -= w_con + w_con2 + wall_work
-        for pair in self.contacts:
-            pair.account(dt, self.t, lambda: self.body_means()[0])
+        for source in self.sources:
+            source.account(dt, self.t, lambda: self.body_means()[0])
         e.kinetic = kinetic
         e.peak = max(e.peak, e.kinetic, abs(e.internal), abs(e.external), e.damping, abs(e.hourglass),
                      abs(e.contact), e.plastic, e.bulk_viscosity)
@@ -557,22 +543,18 @@ class ExplicitSolver:
 
     def steps(self, end_time: float):
         """Yield a ``Step`` after every step until ``end_time`` (from wherever the solver stands: a run
-        restored from a checkpoint goes on from there); stop with a diagnosis if the elements' stable step
-        collapses below ``STEP_COLLAPSE`` of its first value, or (after ``START_UP_STEPS``) their stored energy
-        falls below ``-ENERGY_CREATED`` of the run's largest energy."""
+        restored from a checkpoint goes on from there); stop with a diagnosis when the elements' stable step
+        collapses or their stored energy goes negative (``guards.step_collapse``, ``guards.energy_created``)."""
         said = len(self.log_messages)
         while self.t < end_time * (1 - 1e-12):
-            if self.dt_stable < STEP_COLLAPSE * self.dt_first:
-                self._step_collapsed(self.dt_first)
+            guards.step_collapse(self)
             dt = min(self.stable_step(), end_time - self.t)
             self.advance(dt)
-            e = self.energy
-            if self.step > START_UP_STEPS and e.internal < -ENERGY_CREATED * e.largest:
-                self._energy_created()
+            guards.energy_created(self)
             yield Step(self.step, self.t, dt, self.dt_stable, replace(self.energy), tuple(self.log_messages[said:]))
             said = len(self.log_messages)
 
-    def _critical_cell_said(self) -> str:
+    def critical_cell_said(self) -> str:
         """", body 'B' element N at x = ..." of the cell that sets the stable step (the most crushed), or "".
         Collective: the rank holding it tells the others."""
         cell = self.critical_cell
@@ -581,26 +563,30 @@ class ExplicitSolver:
             return next((h for h in holders if h), "")
         return self._diagnose_cell(cell, "") if cell >= 0 else ""
 
-    def _step_collapsed(self, first: float):
-        raise UnstableRun(f"the stable time step collapsed from {first:.3g} s to {self.dt_stable:.3g} s (below "
-                          f"{STEP_COLLAPSE:g} of its first value): an element is crushed{self._critical_cell_said()}",
-                          self.t, self._body_of_cell(self.critical_cell), self.critical_cell)
-
-    def _energy_created(self):
-        e = self.energy
-        largest = e.largest
-        energies = self.body_energies()
-        stored = energies["internal"] - energies["plastic"]
-        body = self.model.bodies[int(np.argmin(stored))].name
-        raise UnstableRun(f"the elements' stored energy fell to {e.internal:.4g} J ({e.internal / largest:.2%} of the "
-                          f"run's largest energy, {largest:.4g} J; the limit is -{ENERGY_CREATED:.0%}): elements gave "
-                          f"back more work than they took, as a crushed element turned inside out does (the lowest: "
-                          f"body '{body}', {stored.min():.4g} J). The stable step is {self.dt_stable:.3g} s, "
-                          f"{self.dt_stable / self.dt_first:.2g} of its first value, set by the most crushed element"
-                          f"{self._critical_cell_said()}",
-                          self.t, self._body_of_cell(self.critical_cell), self.critical_cell)
-
     # ------------------------------------------------------------ results
+    def _sources_of(self, kind: str) -> list:
+        return [source for source in self.sources if source.kind == kind]
+
+    @property
+    def contacts(self) -> list:
+        """The contact pairs among the force sources."""
+        return self._sources_of("contact")
+
+    @property
+    def springs(self) -> list:
+        """The discrete springs among the force sources."""
+        return self._sources_of("spring")
+
+    @property
+    def cavities(self) -> list:
+        """The liquid cavities among the force sources."""
+        return self._sources_of("cavity")
+
+    @property
+    def target(self):
+        """The penetrated target among the force sources, or None."""
+        return next(iter(self._sources_of("penetration")), None)
+
     def body_energies(self) -> dict[str, np.ndarray]:
         """Per body [J]: ``kinetic`` at t_n (a rigid body's own, with its spin in 3D); ``internal``, the
         work of the stresses, stored and plastic energy ((sigma_n + sigma_n+1)/2 : d integrated cell by

@@ -30,6 +30,7 @@ from numba import njit
 
 from ..contact.surfaces import NodeExchange, area_vectors, build_surface, trapezoidal_work
 from ..errors import ModelError
+from ..forces.source import ForceSource
 from ..model import Model
 from ..scene.specs import Penetration
 from .concrete import crater_law, normal_stress, strength_factor
@@ -43,7 +44,12 @@ SLIP_AT_REST = 0.1
 _AIR, _CRATER, _TUNNEL = 0, 1, 2
 
 
-class ConcreteTarget:
+class ConcreteTarget(ForceSource):
+    """A penetrated concrete target as a force source (``forces/source.py``): its load on the nose."""
+
+    kind = "penetration"
+    name = "penetration"
+
     def __init__(self, model: Model, spec: Penetration):
         self.spec = spec
         self.model = model
@@ -217,13 +223,36 @@ class ConcreteTarget:
     def add_forces(self, f: np.ndarray):
         self.exchange.add_to(self.f, f)
 
+    # ------------------------------------------------------ force source
+    def rows(self) -> np.ndarray:
+        return self.exchange.local
+
+    def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
+        limit = self.compute(x, v, dt, t)
+        self.add_forces(f)
+        return limit
+
+    def energy(self) -> float:
+        return -self.work
+
+    def columns(self, axes) -> list[tuple[str, str]]:
+        out = ([("penetration.depth", "m")] + [(f"penetration.force_{a}", "N") for a in axes]
+               + [("penetration.axial_force", "N"), ("penetration.target_work", "J")])
+        if self.gdim == 3:
+            out += [("penetration.spin", "rad/s"), ("penetration.torque", "N m")]
+        return out
+
+    def history(self) -> list[float]:
+        out = [self.depth, *self.force, self.axial_force, -self.work]
+        return out + [self.spin, self.torque] if self.gdim == 3 else out
+
     def summary(self) -> dict:
         return {"nose": self.spec.nose, "radius": self.radius, "nose_factor": self.nose_factor,
                 "strength": self.strength, "crater_depth": self.crater_depth, "mass": self.mass,
                 "strike_speed": self.strike_speed, "strike_time": self.strike_time,
                 "crater_stiffness": self.crater_stiffness, "tunnel_entry_speed": self.tunnel_entry_speed,
                 "tunnel_time": self.tunnel_time, "depth": self.depth, "max_depth": self.max_depth,
-                "max_axial_force": self.max_axial_force, "target_work": -self.work}
+                "max_axial_force": self.max_axial_force, "target_work": self.energy()}
 
 
 @njit(cache=True)

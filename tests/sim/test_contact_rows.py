@@ -2,7 +2,12 @@
 (``ExplicitSolver._rows_with_contact_forces``: each pair, cavity and target adds through its own
 ``NodeExchange``, a spring to its end nodes).  Were any of them to write another row, that row would keep
 its force step after step; so at every step of a pair, a spring, a liquid cavity and a penetrated target,
-every other row must still be exactly zero, and the forces must act (a test that cannot fail otherwise)."""
+every other row must still be exactly zero, and the forces must act (a test that cannot fail otherwise).
+
+On the same scenes every source answers the rest of its protocol (``forces/source.py``): its history gives as
+many values as it names columns, and the sources' own energies add up to the solver's contact account, which
+the solver counts from the nodal forces on its own (``energy.contact``: the trapezoidal work of ``f_con``); a
+source whose forces or work were counted twice, or not at all, would break the sum."""
 import numpy as np
 import pytest
 
@@ -36,3 +41,19 @@ def test_contact_forces_stay_on_their_rows(name, tmp_path):
     assert seen["steps"] > 10 and seen["loaded"] > 5, seen
     if name == "pair":      # two faces' nodes, not the rods'
         assert len(solver._contact_rows) < len(solver.f_con) / 4
+
+
+@pytest.mark.parametrize("name", ["pair", "spring", "cavity", "target"])
+def test_each_source_accounts_for_its_energy(name, tmp_path):
+    raw = _scenes()[name]
+    solver, _ = solve(raw, cache_dir=str(tmp_path))
+    axes = ("r", "z") if solver.model.axisymmetric else "xyz"[:solver.model.gdim]
+    assert solver.sources, "the scene has a force source"
+    for source in solver.sources:
+        assert len(source.history()) == len(source.columns(axes)) > 0, source.name
+        assert np.isfinite(source.history()).all()
+    taken = sum(source.energy() for source in solver.sources)
+    # the same trapezoidal sums over the same forces, taken per source rather than per node: equal to
+    # round-off of the largest energy in play (measured: below 1e-12 of it on the four scenes)
+    assert abs(taken) > 1e-6 * solver.energy.largest, "the source did work"
+    assert abs(taken - solver.energy.contact) <= 1e-9 * solver.energy.largest, (taken, solver.energy.contact)

@@ -69,11 +69,12 @@ def test_stored_energy_below_minus_one_percent_stops_the_run():
     """The guard of ``ExplicitSolver.steps`` by itself (the 3 km/s crush above reaches it or the step's
     collapse, as round-off decides): past the start-up steps, a run whose elements' stored energy stands at
     -2% of the largest energy stops at its next step, naming the body and the element that sets the step; at
-    -0.5% it goes on (the limit is 1%: ``explicit.ENERGY_CREATED``); within the start-up it goes on (a cone
+    -0.5% it goes on (the limit is 1%: ``guards.ENERGY_CREATED``); within the start-up it goes on (a cone
     pushed from rest is at -20% at step 2: ``verify cone_push``)."""
     from shockfem.geometry import build_mesh
     from shockfem.model import build_model
-    from shockfem.solver.explicit import ENERGY_CREATED, START_UP_STEPS, ExplicitSolver
+    from shockfem.solver.explicit import ExplicitSolver
+    from shockfem.solver.guards import ENERGY_CREATED, START_UP_STEPS
     raw = taylor_scene(0.0008, end_time=5e-6, impact_face="wall")
     scene = resolve(raw)
     solver = ExplicitSolver(build_model(scene, build_mesh(scene, log=lambda *a: None)))

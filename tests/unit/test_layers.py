@@ -21,7 +21,7 @@ LAYERS = [
     {"scene"},
     {"geometry"},
     {"model"},
-    {"contact", "fluid", "target"},
+    {"forces", "contact", "fluid", "target"},
     {"solver"},
     {"output"},
     {"metrics"},
