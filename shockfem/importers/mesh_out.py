@@ -1,0 +1,106 @@
+"""A body's imported mesh, its boundary facets and named regions, written as the gmsh ``.msh`` a scene's mesh
+body reads (``docs/scenes.md``, "Regions of each shape": cells of the scene's element type, regions as
+physical groups of boundary facets, coordinates in metres).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+# the faces of a cell, as local node indices, each ordered so that its normal points out of a positively
+# oriented cell (gmsh's and LS-DYNA's node numbering of the hexahedron and the tetrahedron agree)
+FACES = {
+    "hex": np.array([[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]),
+    "tet": np.array([[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]),
+}
+GMSH_CELL = {"hex": 5, "tet": 4}          # gmsh element types of the cells ...
+GMSH_FACET = {"hex": 3, "tet": 2}         # ... and of their facets (quadrangle, triangle)
+
+
+@dataclass
+class BodyMesh:
+    """One part's mesh: node ids (the deck's), coordinates [m], cells as indices into them, the boundary
+    facets as indices, and named regions as rows of ``facets``."""
+    element: str
+    node_ids: np.ndarray
+    coords: np.ndarray
+    cells: np.ndarray
+    facets: np.ndarray = None
+    regions: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        if self.facets is None:
+            self.facets = boundary_facets(self.cells, self.element)
+
+    def facets_within(self, node_ids) -> np.ndarray:
+        """The boundary facets all of whose nodes are among ``node_ids`` (deck ids)."""
+        inside = np.isin(self.node_ids, np.asarray(list(node_ids), dtype=np.int64))
+        return np.flatnonzero(inside[self.facets].all(axis=1))
+
+    def facets_matching(self, segments) -> tuple[np.ndarray, list]:
+        """The boundary facets whose node sets are the segments' (deck ids); the segments matched none."""
+        index = {int(n): k for k, n in enumerate(self.node_ids)}
+        keys = {frozenset(f.tolist()): k for k, f in enumerate(self.facets)}
+        found, missed = [], []
+        for seg in segments:
+            key = frozenset(index.get(int(n), -1) for n in seg)
+            (found.append(keys[key]) if key in keys else missed.append(seg))
+        return np.array(sorted(set(found)), dtype=np.int64), missed
+
+
+def boundary_facets(cells: np.ndarray, element: str) -> np.ndarray:
+    """The faces of ``cells`` that belong to one cell only, outward ordered, shape (facets, nodes)."""
+    faces = cells[:, FACES[element]].reshape(-1, FACES[element].shape[1])
+    key = np.sort(faces, axis=1)
+    _, first, counts = np.unique(key, axis=0, return_index=True, return_counts=True)
+    return faces[np.sort(first[counts == 1])]
+
+
+def signed_volumes(coords: np.ndarray, cells: np.ndarray, element: str) -> np.ndarray:
+    """Six times the volume of the corner tetrahedron at node 0 (hex: nodes 0, 1, 3, 4), whose sign is the
+    cell's orientation."""
+    a, b, c, d = (coords[cells[:, k]] for k in ((0, 1, 3, 4) if element == "hex" else (0, 1, 2, 3)))
+    return np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a)
+
+
+def turn_inside_out(cells: np.ndarray, element: str, flip: np.ndarray) -> np.ndarray:
+    """Cells with ``flip`` renumbered to the other orientation (hex: top and bottom faces swapped; tet: two
+    nodes swapped)."""
+    out = cells.copy()
+    order = [4, 5, 6, 7, 0, 1, 2, 3] if element == "hex" else [0, 2, 1, 3]
+    out[flip] = cells[flip][:, order]
+    return out
+
+
+def write_msh(mesh: BodyMesh, path: str):
+    """Write the body's mesh (nodes in the deck's order) with one physical group per region, tagged 1, 2,
+    ...; returns region name -> tag."""
+    import gmsh
+    if not gmsh.isInitialized():
+        gmsh.initialize(interruptible=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add(f"import-{path}")
+    try:
+        volume = gmsh.model.addDiscreteEntity(3)
+        tags = np.arange(1, len(mesh.node_ids) + 1)
+        gmsh.model.mesh.addNodes(3, volume, tags, mesh.coords.ravel())
+        gmsh.model.mesh.addElementsByType(volume, GMSH_CELL[mesh.element], np.arange(1, len(mesh.cells) + 1),
+                                          (mesh.cells + 1).ravel())
+        gmsh.model.addPhysicalGroup(3, [volume], 1)
+        next_element = len(mesh.cells) + 1
+        region_tags = {}
+        for k, (name, rows) in enumerate(mesh.regions.items(), start=1):
+            surface = gmsh.model.addDiscreteEntity(2)
+            facets = mesh.facets[rows]
+            gmsh.model.mesh.addElementsByType(surface, GMSH_FACET[mesh.element],
+                                              np.arange(next_element, next_element + len(facets)),
+                                              (facets + 1).ravel())
+            next_element += len(facets)
+            gmsh.model.addPhysicalGroup(2, [surface], k)
+            gmsh.model.setPhysicalName(2, k, name)
+            region_tags[name] = k
+        gmsh.write(path)
+    finally:
+        gmsh.model.remove()
+    return region_tags
