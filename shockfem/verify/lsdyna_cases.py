@@ -29,7 +29,7 @@ DECKS = {
                    "scene": lambda h: taylor_scene(h, kinematics="3d"), "h": 0.0008},
     "two_rods": {"units": "mm-s-tonne-N", "length": 1e-3,
                  "sets": {"striker.bottom": ("segment", 1), "target.top": ("segment", 2)},
-                 "scene": lambda h: two_rods_scene(h, kinematics="3d"), "h": 0.005},
+                 "scene": lambda h: two_rods_scene(h, kinematics="3d"), "h": 0.00625},
 }
 
 
