@@ -54,17 +54,17 @@ class Regions:
         return out
 
     def from_segments(self, segments, name: str, error) -> list[str]:
-        out = []
+        """The regions of a segment set's faces, one per body they lie on; a problem for faces of no body."""
+        out, missed = [], [s for s, _, _ in segments]
         for body, mesh in self.mapper.meshes.items():
-            rows, _ = mesh.facets_matching([s for s, _, _ in segments])
+            rows, missed_here = mesh.facets_matching([s for s, _, _ in segments])
+            missed = [s for s in missed if s in missed_here]
             region = self.add(body, name, rows, error)
             if region:
                 out.append(region)
-        matched = sum(len(self.mapper.meshes[r.split(".")[0]].regions[r.split(".")[1]]) for r in out)
-        if matched < len(segments):
-            _, kw, card = segments[0]
-            self.mapper.problems.append(error(f"{len(segments) - matched} of its {len(segments)} segments are no "
-                                              "boundary face of any solid"))
+        if missed:
+            self.mapper.problems.append(error(f"{len(missed)} of its {len(segments)} segments (the first "
+                                              f"{list(missed[0])}) are no boundary face of any solid"))
         return out
 
     def whole(self, body: str) -> str:

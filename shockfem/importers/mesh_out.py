@@ -4,6 +4,7 @@ physical groups of boundary facets, coordinates in metres).
 """
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -39,13 +40,17 @@ class BodyMesh:
         return np.flatnonzero(inside[self.facets].all(axis=1))
 
     def facets_matching(self, segments) -> tuple[np.ndarray, list]:
-        """The boundary facets whose node sets are the segments' (deck ids); the segments matched none."""
+        """The boundary facets on the segments (deck ids): a facet whose nodes are all among one segment's
+        (a quadrilateral segment holds the two triangles of a cut hexahedron's face); the segments that
+        hold none."""
         index = {int(n): k for k, n in enumerate(self.node_ids)}
+        width = self.facets.shape[1]
         keys = {frozenset(f.tolist()): k for k, f in enumerate(self.facets)}
         found, missed = [], []
         for seg in segments:
-            key = frozenset(index.get(int(n), -1) for n in seg)
-            (found.append(keys[key]) if key in keys else missed.append(seg))
+            local = [index.get(int(n), -1) for n in dict.fromkeys(seg)]
+            hits = [keys[frozenset(c)] for c in itertools.combinations(local, width) if frozenset(c) in keys]
+            (found.extend(hits) if hits else missed.append(seg))
         return np.array(sorted(set(found)), dtype=np.int64), missed
 
 
@@ -55,6 +60,24 @@ def boundary_facets(cells: np.ndarray, element: str) -> np.ndarray:
     key = np.sort(faces, axis=1)
     _, first, counts = np.unique(key, axis=0, return_index=True, return_counts=True)
     return faces[np.sort(first[counts == 1])]
+
+
+def split_into_tets(nodes: list, order) -> list[tuple]:
+    """Tetrahedra filling a hexahedron, or a degenerate one (a wedge, N5 = N6 and N7 = N8), around a new node
+    at its centre (-1 here): each face, its repeated nodes dropped, is cut into triangles by the diagonal
+    through its lowest node (``order`` ranks the nodes), so that two cells sharing a face cut it the same
+    way and the tetrahedra meet face to face (the rule of Dompierre et al., "How to subdivide pyramids,
+    prisms and hexahedra into tetrahedra", 1999, with a centre node instead of their tables)."""
+    tets = []
+    for face in FACES["hex"]:
+        ring = list(dict.fromkeys(nodes[k] for k in face))
+        if len(ring) == 4:
+            low = min(range(4), key=lambda k: order[ring[k]])
+            q = ring[low:] + ring[:low]
+            tets += [(q[0], q[1], q[2], -1), (q[0], q[2], q[3], -1)]
+        elif len(ring) == 3:
+            tets.append((ring[0], ring[1], ring[2], -1))
+    return tets
 
 
 def signed_volumes(coords: np.ndarray, cells: np.ndarray, element: str) -> np.ndarray:

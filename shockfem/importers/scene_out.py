@@ -15,7 +15,7 @@ import numpy as np
 
 from .cards import DeckError
 from .deck_model import DeckModel
-from .mesh_out import BodyMesh, signed_volumes, turn_inside_out
+from .mesh_out import BodyMesh, signed_volumes, split_into_tets, turn_inside_out
 from .unit_sets import UnitSet
 
 # ELFORM -> (shockfem element, integration, what differs): LS-DYNA Keyword Manual, *SECTION_SOLID
@@ -58,6 +58,7 @@ class _Mapper:
         self.meshes: dict[str, BodyMesh] = {}
         self.body_of_part: dict[int, str] = {}
         self.node_body: dict[int, set] = {}
+        self.split_parts: set[int] = set()          # parts whose hexahedra were cut into tetrahedra
 
     # --- geometry -------------------------------------------------------------------------------------
     def geometry(self):
@@ -86,12 +87,12 @@ class _Mapper:
                 continue
             kinds[kind] += 1
             by_part.setdefault(pid, []).append((eid, [index[n] for n in corners], kw, card))
-        if kinds.get("wedge") or (kinds.get("hex") and kinds.get("tet")):
-            self.problems.append(f"the deck's solids are {dict(kinds)}: a shockfem scene holds one element type "
-                                 "(all hexahedra or all tetrahedra); mesh the wedges or the mixed parts as "
-                                 "tetrahedra (or hexahedra) in the pre-processor")
-            return
-        element = "tet" if kinds.get("tet") else "hex"
+        element = "tet" if kinds.get("tet") or kinds.get("wedge") else "hex"
+        if element == "tet" and (kinds.get("hex") or kinds.get("wedge")):
+            ids, X = self._split(by_part, ids, X)
+            self.notes.append(f"the deck's solids are {dict(kinds)}: a scene holds one element type, so every "
+                              "hexahedron and wedge is cut into tetrahedra about a node at its centre (12 and 8 "
+                              "of them): linear tetrahedra, stiffer than the hexahedra they replace")
         self.scene["scene"]["element"] = element
         self._sections(by_part, element)
         for pid, cells in sorted(by_part.items()):
@@ -99,6 +100,27 @@ class _Mapper:
         for pid, part in m.parts.items():
             if pid not in by_part:
                 self.notes.append(f"part {pid} ({part.title or 'untitled'}) has no solid elements: left out")
+
+    def _split(self, by_part, ids, X):
+        """Every cell of more than four nodes cut into tetrahedra (``split_into_tets``); returns the node
+        ids and coordinates with the new centre nodes after the deck's."""
+        ids, X = list(ids), list(X)
+        next_id = max(ids) + 1
+        for pid, cells in by_part.items():
+            out = []
+            for eid, corners, kw, card in cells:
+                if len(corners) == 4:
+                    out.append((eid, corners, kw, card))
+                    continue
+                centre = len(X)
+                X.append(np.mean([X[k] for k in dict.fromkeys(corners)], axis=0))
+                ids.append(next_id)
+                next_id += 1
+                out += [(eid, [centre if k < 0 else k for k in tet], kw, card)
+                        for tet in split_into_tets(corners, ids)]
+            by_part[pid] = out
+            self.split_parts.add(pid)
+        return np.array(ids, dtype=np.int64), np.array(X)
 
     def _sections(self, by_part, element):
         rules = set()
@@ -114,7 +136,7 @@ class _Mapper:
                                                  f"{', '.join(map(str, ELFORMS))})"))
                 continue
             kind, rule, what = ELFORMS[elform]
-            if kind != element:
+            if kind != element and pid not in self.split_parts:
                 self.problems.append(kw.error(0, f"ELFORM {elform} is a {kind} formulation; part {pid}'s "
                                                  f"elements are {element}s"))
                 continue
@@ -123,7 +145,7 @@ class _Mapper:
         if len(rules) > 1:
             self.notes.append("parts with one-point and fully integrated hexahedra: a scene has one rule, the "
                               "one-point hexahedron (ELFORM 1) is used for all")
-        self.scene["scene"]["integration"] = "full" if rules == {"full"} else "reduced"
+        self.scene["scene"]["integration"] = "full" if rules == {"full"} and element == "hex" else "reduced"
 
     def _body(self, pid, cells, element, ids, X):
         part = self.m.parts[pid]

@@ -9,6 +9,7 @@ import pytest
 from shockfem.cli import main
 from shockfem.importers import import_model
 from shockfem.importers.lsdyna import deck_to_scene
+from shockfem.importers.mesh_out import signed_volumes
 from shockfem.importers.unit_sets import unit_set
 from shockfem.scene import SceneError, load_scene
 from shockfem.units import to_si
@@ -180,3 +181,22 @@ def test_unit_sets():
     assert unit_set("mm-s-tonne-N").si(1.0, "pressure") == pytest.approx(1e6, rel=1e-12)
     assert unit_set("m-s-kg-N").unit("density") == "kg/m**3"
     assert unit_set("in-s-lbf*s**2/in-lbf").si(1.0, "pressure") == pytest.approx(6894.757, rel=1e-6)
+
+
+def test_wedges_and_hexahedra_cut_into_tetrahedra_that_meet_face_to_face(tmp_path):
+    """The plate turned into LS-DYNA's degenerate wedge (N5 = N6, N7 = N8): the deck mixes hexahedra and a
+    wedge, so every cell is cut into tetrahedra about its centre; the volumes are kept and the two block
+    hexahedra's shared face is cut the same way from both sides (no inner face left on the boundary)."""
+    lines = _lines()
+    k = lines.index("     101     102     104     103     105     106     108     107")
+    lines[k] = "     101     102     104     103     105     105     107     107"
+    out = deck_to_scene(_write(tmp_path, lines), MM_MS)
+    assert out.scene["scene"]["element"] == "tet"
+    block, plate = out.meshes["block"], out.meshes["plate"]
+    assert len(block.cells) == 2 * 12 and len(plate.cells) == 8           # 6 quad faces x 2; 3 x 2 + 2 x 1
+    volume = lambda m: signed_volumes(m.coords, m.cells, "tet").sum() / 6.0
+    # block 2 x 1 x 1 mm, wedge half of 2 x 1 x 0.9 mm; 1e-12: the sum of positive round-off-level terms
+    assert volume(block) == pytest.approx(2e-9, rel=1e-12) and volume(plate) == pytest.approx(0.9e-9, rel=1e-12)
+    assert (signed_volumes(block.coords, block.cells, "tet") > 0).all()
+    assert len(block.facets) == 2 * 10                                      # 10 outer quad faces, 2 triangles each
+    assert any("cut into tetrahedra" in n for n in out.notes)
