@@ -67,12 +67,6 @@ class Regions:
                                               f"{list(missed[0])}) are no boundary face of any solid"))
         return out
 
-    def whole(self, body: str) -> str:
-        """A region of all the body's facets no other region holds (for a rigid body's motion)."""
-        owner = self.owner.get(body, {})
-        rows = np.array([r for r in range(len(self.mapper.meshes[body].facets)) if r not in owner], dtype=np.int64)
-        return self.add(body, "surface", rows, lambda msg: msg)
-
 
 def node_set(mapper, sid: int, error) -> list[int] | None:
     if sid not in mapper.m.node_sets:
@@ -186,7 +180,7 @@ def _held(mapper, region_names, dofs):
 
 
 def motions(mapper, regions: Regions, end_time: float | None):
-    """*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID with VAD = 0 (a velocity), DOF 1-3, its curve times SF."""
+    """*BOUNDARY_PRESCRIBED_MOTION_SET with VAD = 0 (a velocity), DOF 1-3, its curve times SF; _RIGID refused."""
     for e in mapper.m.conditions:
         if e.kind != "motion":
             continue
@@ -206,11 +200,13 @@ def motions(mapper, regions: Regions, end_time: float | None):
             mapper.problems.append(error("BIRTH / DEATH inside the run: a motion that starts or stops is not "
                                          "mapped; put it in the curve"))
         if v["target"] == "rigid":
-            bodies = part_bodies(mapper, [v["ID"]], error)
-            targets = [regions.whole(b) for b in bodies]
-        else:
-            nodes = node_set(mapper, v["ID"], error)
-            targets = regions.from_nodes(nodes or [], f"nodes{v['ID']}", error) if nodes else []
+            # a shockfem rigid body moves by the forces on it alone: held nodes would leave it
+            mapper.problems.append(error(f"part {v['ID']}: a rigid body driven along a curve is not modelled; "
+                                         "make the part deformable and drive its face with "
+                                         "*BOUNDARY_PRESCRIBED_MOTION_SET"))
+            continue
+        nodes = node_set(mapper, v["ID"], error)
+        targets = regions.from_nodes(nodes or [], f"nodes{v['ID']}", error) if nodes else []
         sf = v["SF"] if v["SF"] is not None else 1.0
         history = [[mapper.u.quantity(t, "time"), mapper.u.quantity(sf * y, "velocity")]
                    for t, y in zip(curve.x, curve.y)]

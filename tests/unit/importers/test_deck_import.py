@@ -200,3 +200,39 @@ def test_wedges_and_hexahedra_cut_into_tetrahedra_that_meet_face_to_face(tmp_pat
     assert (signed_volumes(block.coords, block.cells, "tet") > 0).all()
     assert len(block.facets) == 2 * 10                                      # 10 outer quad faces, 2 triangles each
     assert any("cut into tetrahedra" in n for n in out.notes)
+
+
+def test_motion_wall_single_surface_and_node_constraints(tmp_path):
+    lines = _lines()
+    k = lines.index("*BOUNDARY_SPC_SET")
+    lines[k:k + 2] = ["*DEFINE_CURVE", f"{9:10}", f"{0.0:20}{0.0:20}", f"{0.01:20}{1.0:20}", f"{1.0:20}{1.0:20}",
+                      "*BOUNDARY_PRESCRIBED_MOTION_SET", f"{5:10}{3:10}{0:10}{9:10}{-2.0:10}",
+                      "*RIGIDWALL_PLANAR", f"{0:10}", f"{0.0:10}{0.0:10}{-1.0:10}{0.0:10}{0.0:10}{0.0:10}",
+                      "*SET_PART_LIST", f"{3:10}", f"{1:10}{2:10}",
+                      "*CONTACT_AUTOMATIC_SINGLE_SURFACE", f"{3:10}{0:10}{2:10}", f"{0.0:10}", f"{1.0:10}",
+                      "*BOUNDARY_SPC_NODE"] + [f"{n:10}{0:10}{1:10}{0:10}{0:10}" for n in (9, 12, 6, 3)]
+    s = deck_to_scene(_write(tmp_path, lines), MM_MS).scene
+    held, motion = s["boundary"]            # constraints first, then motions
+    assert (motion["region"], motion["type"], motion["direction"]) == ("plate.nodes5", "velocity", "z")
+    # the curve times SF = -2: 0 -> -2 mm/ms (= m/s) over 0.01 ms, then held
+    assert [[to_si(t, "time"), to_si(v, "velocity")] for t, v in motion["history"]] == [
+        [0.0, 0.0], [pytest.approx(1e-5), pytest.approx(-2.0)], [pytest.approx(1e-3), pytest.approx(-2.0)]]
+    # nodes 3, 6, 9, 12 are the block's x = 2 mm face: held in x
+    assert held == {"region": "block.held_x", "type": "velocity", "direction": "x", "value": "0.0 mm/ms"}
+    walls = [c for c in s["contact"] if c.get("method") == "constraint"]
+    assert [w["a"] for w in walls] == ["block", "plate"]
+    assert walls[0]["wall"]["normal"] == [0.0, 0.0, 1.0]
+    assert to_si(walls[0]["wall"]["point"][2], "length") == pytest.approx(-1e-3)
+    single = [c for c in s["contact"] if c["name"] == "contact2"]       # contact1: the deck's own
+    assert [(c["a"], c["b"]) for c in single] == [("block", "plate")]
+
+
+def test_rigid_motion_and_partial_velocity_are_refused(tmp_path):
+    lines = _lines()
+    k = lines.index("*BOUNDARY_SPC_SET")
+    lines[k:k + 2] = ["*DEFINE_CURVE", f"{9:10}", f"{0.0:20}{1.0:20}",
+                      "*BOUNDARY_PRESCRIBED_MOTION_RIGID", f"{2:10}{3:10}{0:10}{9:10}",
+                      "*INITIAL_VELOCITY", f"{5:10}", f"{0.0:10}{0.0:10}{1.0:10}"]
+    problems = "\n".join(_problems(_write(tmp_path, lines)))
+    assert "*BOUNDARY_PRESCRIBED_MOTION_RIGID card 1: part 2: a rigid body driven along a curve" in problems
+    assert "*INITIAL_VELOCITY card 1: node set 5 covers 4 of body plate's 8 nodes" in problems
