@@ -223,7 +223,7 @@ def test_motion_wall_single_surface_and_node_constraints(tmp_path):
     assert [w["a"] for w in walls] == ["block", "plate"]
     assert walls[0]["wall"]["normal"] == [0.0, 0.0, 1.0]
     assert to_si(walls[0]["wall"]["point"][2], "length") == pytest.approx(-1e-3)
-    single = [c for c in s["contact"] if c["name"] == "contact2"]       # contact1: the deck's own
+    single = [c for c in s["contact"] if c["name"] == "contact1"]       # the first in the deck
     assert [(c["a"], c["b"]) for c in single] == [("block", "plate")]
 
 
