@@ -313,6 +313,23 @@ REFUSED = {
     "INCLUDE_TRANSFORM": "transformed includes are not read; include the file as it is",
 }
 
+# families of keywords that change what is modelled: one not mapped is refused, not listed (loads, joints,
+# contacts, constraints, initial states, equations of state, discrete masses and springs)
+REFUSED_FAMILIES = {
+    "CONTACT_": "this contact is not mapped (shockfem maps the AUTOMATIC surface-to-surface, nodes-to-surface "
+                "and single-surface contacts)",
+    "CONSTRAINED_": "constraints (joints, welds, merged rigid bodies) are not mapped",
+    "LOAD_": "loads are not mapped; give them in the scene ([[boundary]] force, scene.gravity)",
+    "BOUNDARY_": "this boundary condition is not mapped (shockfem maps *BOUNDARY_SPC_SET / _NODE and "
+                 "*BOUNDARY_PRESCRIBED_MOTION_SET)",
+    "INITIAL_": "this initial condition is not mapped (shockfem maps *INITIAL_VELOCITY and "
+                "*INITIAL_VELOCITY_GENERATION)",
+    "EOS_": "equations of state are not mapped; shockfem's solids take their pressure from the material",
+    "ELEMENT_": "only *ELEMENT_SOLID is mapped (discrete masses, springs and other elements are not): give "
+                "springs as [[spring]] in the scene",
+    "DAMPING_": "damping is not mapped; give it in the scene ([damping], bodies[i].damping)",
+}
+
 # what common keywords not mapped would have done, for the import report
 WOULD_HAVE = {
     "DATABASE_HISTORY_NODE": "listed nodes for nodout (shockfem: [shock] accelerometers)",
@@ -325,8 +342,6 @@ WOULD_HAVE = {
     "CONTROL_OUTPUT": "set printed output", "CONTROL_ACCURACY": "set objective stress update and accuracy "
                                                                "options (shockfem's update is objective)",
     "HOURGLASS": "set a part's own hourglass control (shockfem: one for the scene, *CONTROL_HOURGLASS)",
-    "DAMPING_GLOBAL": "damped every node's motion (shockfem: [damping])",
-    "DAMPING_PART_STIFFNESS": "damped a part in stiffness (shockfem: bodies[i].damping)",
 }
 
 
@@ -338,8 +353,11 @@ def read_model(title: str, keywords: list[Keyword]) -> DeckModel:
         reader = _reader(kw)
         if reader is None:
             base = kw.name.removesuffix("_TITLE").removesuffix("_ID")
-            if base in REFUSED or base.split("_")[0:2] == ["ELEMENT", "SHELL"]:
+            family = next((f for f in REFUSED_FAMILIES if base.startswith(f)), None)
+            if base in REFUSED or base.startswith("ELEMENT_SHELL"):
                 m.problems.append(kw.error(None, REFUSED.get(base, REFUSED["ELEMENT_SHELL"])))
+            elif family:
+                m.problems.append(kw.error(None, REFUSED_FAMILIES[family]))
             elif base.startswith("MAT_"):
                 m.problems.append(kw.error(None, "this material is not mapped (shockfem maps *MAT_ELASTIC, "
                                                  "*MAT_PLASTIC_KINEMATIC, *MAT_PIECEWISE_LINEAR_PLASTICITY, "

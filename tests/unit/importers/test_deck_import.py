@@ -135,11 +135,13 @@ def test_refused_material_shell_and_missing_set(tmp_path):
     lines[lines.index("*MAT_PIECEWISE_LINEAR_PLASTICITY")] = "*MAT_JOHNSON_COOK"
     k = lines.index("*BOUNDARY_SPC_SET") + 1
     lines[k] = lines[k].replace("         5", "         6", 1)
-    lines[-1:-1] = ["*ELEMENT_SHELL", "      10       3       1       2       3       4"]
+    lines[-1:-1] = ["*ELEMENT_SHELL", "      10       3       1       2       3       4",
+                    "*LOAD_NODE_SET", f"{5:10}{3:10}{1:10}", "*CONTACT_TIED_SURFACE_TO_SURFACE", f"{1:10}{2:10}"]
     problems = "\n".join(_problems(_write(tmp_path, lines)))
     assert "*MAT_JOHNSON_COOK: this material is not mapped" in problems
     assert "part 2 (plate) uses material 2, *MAT_JOHNSON_COOK" in problems
     assert "*ELEMENT_SHELL: shell elements" in problems
+    assert "*LOAD_NODE_SET: loads are not mapped" in problems and "*CONTACT_TIED_SURFACE_TO_SURFACE: this contact" in problems
     assert f"bad.k:{k + 1}: *BOUNDARY_SPC_SET card 1: node set 6 is not defined" in problems
 
 
