@@ -17,6 +17,9 @@ from shockfem.units import to_si
 DECKS = pathlib.Path(__file__).parent / "decks"
 PLAIN = DECKS / "block_plain.k"
 MM_MS = unit_set("mm-ms-kg-kN")
+# a deck's number times pint's factors (powers of ten, exact in decimal): round-off only; a wrong unit
+# or factor is off by 10^3 or more
+EXACT = 1e-12
 
 
 def _lines():
@@ -47,20 +50,20 @@ def test_the_plain_deck_maps_every_keyword():
     s = out.scene
     # values from the deck's cards, converted by hand: 7.85e-6 kg/mm^3 = 7850 kg/m^3, 210 kN/mm^2 = 210 GPa,
     # 50 mm/ms = 50 m/s, 0.05 ms; 1e-12 relative: pint's factors are exact decimal powers (round-off only)
-    assert to_si(s["materials"]["mat1"]["density"], "density") == pytest.approx(7850.0, rel=1e-12)
-    assert to_si(s["materials"]["mat1"]["youngs_modulus"], "pressure") == pytest.approx(210e9, rel=1e-12)
-    assert to_si(s["materials"]["mat1"]["cowper_symonds_D"], "strain_rate") == pytest.approx(40.4e3, rel=1e-12)
+    assert to_si(s["materials"]["mat1"]["density"], "density") == pytest.approx(7850.0, rel=EXACT)
+    assert to_si(s["materials"]["mat1"]["youngs_modulus"], "pressure") == pytest.approx(210e9, rel=EXACT)
+    assert to_si(s["materials"]["mat1"]["cowper_symonds_D"], "strain_rate") == pytest.approx(40.4e3, rel=EXACT)
     assert s["materials"]["mat1"]["rate_form"] == "plastic-strain-rate"                       # VP = 1
     assert s["materials"]["mat1"]["isotropic_fraction"] == 0.5
     curve = s["materials"]["mat2"]["hardening_curve"]
     assert [c[0] for c in curve] == [0.0, 0.1, 0.5]
-    assert to_si(curve[1][1], "pressure") == pytest.approx(310e6, rel=1e-12)
-    assert to_si(s["scene"]["end_time"], "time") == pytest.approx(50e-6, rel=1e-12)
+    assert to_si(curve[1][1], "pressure") == pytest.approx(310e6, rel=EXACT)
+    assert to_si(s["scene"]["end_time"], "time") == pytest.approx(50e-6, rel=EXACT)
     # DT2MS = -1e-4 ms with TSSFAC 0.8: the scaled elements' step TSSFAC |DT2MS| = 0.08 us
-    assert to_si(s["scene"]["mass_scaling_step"], "time") == pytest.approx(0.08e-6, rel=1e-12)
+    assert to_si(s["scene"]["mass_scaling_step"], "time") == pytest.approx(0.08e-6, rel=EXACT)
     assert s["scene"]["safety_factor"] == 0.8 and s["scene"]["hourglass"] == "stiffness"
     block = next(b for b in s["bodies"] if b["name"] == "block")
-    assert [to_si(v, "velocity") for v in block["velocity"]] == [0.0, 0.0, pytest.approx(-50.0)]
+    assert [to_si(v, "velocity") for v in block["velocity"]] == [0.0, 0.0, pytest.approx(-50.0, rel=EXACT)]
     assert s["boundary"] == [{"region": "plate.nodes5", "type": "fixed"}]
     # the two bottom faces of the block's two hexes (segment set 1), the plate's base (node set 5)
     assert len(out.meshes["block"].regions["segments1"]) == 2 and len(out.meshes["plate"].regions["nodes5"]) == 1
@@ -69,9 +72,9 @@ def test_the_plain_deck_maps_every_keyword():
         "block.segments1", "plate", 0.3, 0.2)
     assert contact["damping"] == 0.1 and contact["penalty_scale"] == 0.1       # VDC 10 %, SLSFAC 0.1 x SFS 1
     # DC 0.5 ms/mm = 0.5e-3 s / 1e-3 m = 0.5 s/m
-    assert to_si(contact["friction_decay"], "slowness") == pytest.approx(0.5, rel=1e-12)
+    assert to_si(contact["friction_decay"], "slowness") == pytest.approx(0.5, rel=EXACT)
     # the mesh in metres: the block spans x 0..2 mm
-    assert np.ptp(out.meshes["block"].coords[:, 0]) == pytest.approx(2e-3, rel=1e-12)
+    assert np.ptp(out.meshes["block"].coords[:, 0]) == pytest.approx(2e-3, rel=EXACT)
     assert {k: n for k, (n, _) in out.unmapped.items()} == {"DATABASE_EXTENT_BINARY": 1, "DATABASE_HISTORY_NODE": 2}
 
 
@@ -80,7 +83,7 @@ def test_written_scene_loads_and_report_lists_unmapped(tmp_path):
     scene = load_scene(done.scene)
     assert [b.name for b in scene.bodies] == ["block", "plate"]
     assert all(os.path.exists(b.mesh_file) for b in scene.bodies)
-    assert scene.materials["mat1"].rho == pytest.approx(7850.0, rel=1e-12)
+    assert scene.materials["mat1"].rho == pytest.approx(7850.0, rel=EXACT)
     text = pathlib.Path(done.report).read_text()
     assert "*DATABASE_HISTORY_NODE" in text and "   2  listed nodes" in text
 
@@ -159,7 +162,7 @@ def test_table_of_one_curve_maps_and_of_two_is_refused(tmp_path):
     curve = lambda lcid, y: ["*DEFINE_CURVE", f"{lcid:10}", f"{0.0:20}{y:20}", f"{0.2:20}{y + 0.1:20}"]
     one = _material_deck(tmp_path, card, ["*DEFINE_TABLE", f"{20:10}", f"{0.0:20}"] + curve(21, 0.3))
     s = deck_to_scene(one, MM_MS).scene
-    assert to_si(s["materials"]["mat2"]["hardening_curve"][1][1], "pressure") == pytest.approx(400e6, rel=1e-12)
+    assert to_si(s["materials"]["mat2"]["hardening_curve"][1][1], "pressure") == pytest.approx(400e6, rel=EXACT)
     two = _material_deck(tmp_path, card, ["*DEFINE_TABLE", f"{20:10}", f"{0.0:20}", f"{100.0:20}"]
                          + curve(21, 0.3) + curve(22, 0.35))
     assert "*DEFINE_TABLE of 2 strain rates" in "\n".join(_problems(two))
@@ -171,8 +174,8 @@ def test_foam_and_rigid_materials(tmp_path):
     s = deck_to_scene(_material_deck(tmp_path, foam), MM_MS).scene
     m = s["materials"]["mat2"]
     assert [c[0] for c in m["crush_curve"]] == [0.0, 0.6, 0.8]
-    assert to_si(m["crush_curve"][2][1], "pressure") == pytest.approx(30e6, rel=1e-12)
-    assert to_si(m["tension_cutoff"], "pressure") == pytest.approx(0.1e6, rel=1e-12)
+    assert to_si(m["crush_curve"][2][1], "pressure") == pytest.approx(30e6, rel=EXACT)
+    assert to_si(m["tension_cutoff"], "pressure") == pytest.approx(0.1e6, rel=EXACT)
     rigid = ["*MAT_RIGID", f"{2:10}{7.85e-6:10}{210.0:10}{0.3:10}"]
     s = deck_to_scene(_material_deck(tmp_path, rigid), MM_MS).scene
     assert next(b for b in s["bodies"] if b["name"] == "plate")["rigid"] is True
@@ -180,9 +183,9 @@ def test_foam_and_rigid_materials(tmp_path):
 
 def test_unit_sets():
     # 1 kg mm / ms^2 = 1 kN; 1 tonne mm / s^2 = 1 N: consistent by construction
-    assert unit_set("mm-s-tonne-N").si(1.0, "pressure") == pytest.approx(1e6, rel=1e-12)
+    assert unit_set("mm-s-tonne-N").si(1.0, "pressure") == pytest.approx(1e6, rel=EXACT)
     assert unit_set("m-s-kg-N").unit("density") == "kg/m**3"
-    assert unit_set("in-s-lbf*s**2/in-lbf").si(1.0, "pressure") == pytest.approx(6894.757, rel=1e-6)
+    assert unit_set("in-s-lbf*s**2/in-lbf").si(1.0, "pressure") == pytest.approx(6894.757, rel=1e-6)   # psi given to 7 digits
 
 
 def test_wedges_and_hexahedra_cut_into_tetrahedra_that_meet_face_to_face(tmp_path):
@@ -198,7 +201,7 @@ def test_wedges_and_hexahedra_cut_into_tetrahedra_that_meet_face_to_face(tmp_pat
     assert len(block.cells) == 2 * 12 and len(plate.cells) == 8           # 6 quad faces x 2; 3 x 2 + 2 x 1
     volume = lambda m: signed_volumes(m.coords, m.cells, "tet").sum() / 6.0
     # block 2 x 1 x 1 mm, wedge half of 2 x 1 x 0.9 mm; 1e-12: the sum of positive round-off-level terms
-    assert volume(block) == pytest.approx(2e-9, rel=1e-12) and volume(plate) == pytest.approx(0.9e-9, rel=1e-12)
+    assert volume(block) == pytest.approx(2e-9, rel=EXACT) and volume(plate) == pytest.approx(0.9e-9, rel=EXACT)
     assert (signed_volumes(block.coords, block.cells, "tet") > 0).all()
     assert len(block.facets) == 2 * 10                                      # 10 outer quad faces, 2 triangles each
     assert any("cut into tetrahedra" in n for n in out.notes)
@@ -218,13 +221,13 @@ def test_motion_wall_single_surface_and_node_constraints(tmp_path):
     assert (motion["region"], motion["type"], motion["direction"]) == ("plate.nodes5", "velocity", "z")
     # the curve times SF = -2: 0 -> -2 mm/ms (= m/s) over 0.01 ms, then held
     assert [[to_si(t, "time"), to_si(v, "velocity")] for t, v in motion["history"]] == [
-        [0.0, 0.0], [pytest.approx(1e-5), pytest.approx(-2.0)], [pytest.approx(1e-3), pytest.approx(-2.0)]]
+        [0.0, 0.0], [pytest.approx(1e-5, rel=EXACT), pytest.approx(-2.0, rel=EXACT)], [pytest.approx(1e-3, rel=EXACT), pytest.approx(-2.0, rel=EXACT)]]
     # nodes 3, 6, 9, 12 are the block's x = 2 mm face: held in x
     assert held == {"region": "block.held_x", "type": "velocity", "direction": "x", "value": "0.0 mm/ms"}
     walls = [c for c in s["contact"] if c.get("method") == "constraint"]
     assert [w["a"] for w in walls] == ["block", "plate"]
     assert walls[0]["wall"]["normal"] == [0.0, 0.0, 1.0]
-    assert to_si(walls[0]["wall"]["point"][2], "length") == pytest.approx(-1e-3)
+    assert to_si(walls[0]["wall"]["point"][2], "length") == pytest.approx(-1e-3, rel=EXACT)
     single = [c for c in s["contact"] if c["name"] == "contact1"]       # the first in the deck
     assert [(c["a"], c["b"]) for c in single] == [("block", "plate")]
 
