@@ -306,21 +306,6 @@ def _build_gmsh_model(scene: Scene) -> dict[str, int]:
     return region_ids
 
 
-def draw_body(scene: Scene, index: int) -> BodyMesh:
-    """Body ``index``'s mesh as it is drawn before the scene's bodies are gathered, nodes in gmsh's order:
-    what ``build_mesh`` meshes, for writing it in another format (the LS-DYNA decks of the import
-    verification)."""
-    import gmsh
-    if not gmsh.isInitialized():
-        gmsh.initialize(interruptible=False)
-    gmsh.option.setNumber("General.Terminal", 0)
-    gmsh.model.add(f"{scene.name}-draw{index}")
-    try:
-        return _draw_body(scene.bodies[index], scene.gdim, scene.element, scene.curve_elements)
-    finally:
-        gmsh.model.remove()
-
-
 def build_mesh(scene: Scene, comm=MPI.COMM_WORLD, cache_dir: str | None = None,
                log=print) -> MeshedScene:
     """Mesh (or load from the cache) the scene's bodies and distribute the mesh over ``comm``."""

@@ -123,7 +123,10 @@ def write_msh(mesh: BodyMesh, path: str):
             gmsh.model.addPhysicalGroup(2, [surface], k)
             gmsh.model.setPhysicalName(2, k, name)
             region_tags[name] = k
+        # binary: the coordinates to the last bit (gmsh's text format keeps 16 digits, not always enough)
+        gmsh.option.setNumber("Mesh.Binary", 1)
         gmsh.write(path)
     finally:
+        gmsh.option.setNumber("Mesh.Binary", 0)
         gmsh.model.remove()
     return region_tags

@@ -13,7 +13,7 @@ import shutil
 
 import numpy as np
 
-from ..geometry.meshing import draw_body
+from ..geometry.meshing import build_mesh
 from ..importers import import_model
 from ..scene import read_toml, resolve
 from .checks import SIZES, check, element_count
@@ -27,44 +27,86 @@ STUDIES = os.path.join(os.path.dirname(__file__), "..", "..", "studies", "lsdyna
 DECKS = {
     "taylor_bar": {"units": "mm-ms-kg-kN", "length": 1e-3, "sets": {"bar.bottom": ("node", 1)},
                    "scene": lambda h: taylor_scene(h, kinematics="3d"), "h": 0.0008},
-    "two_rods": {"units": "mm-s-tonne-N", "length": 1e-3,
+    "two_rods": {"units": "m-ms-kg-MN", "length": 1.0,
                  "sets": {"striker.bottom": ("segment", 1), "target.top": ("segment", 2)},
                  "scene": lambda h: two_rods_scene(h, kinematics="3d"), "h": 0.00625},
 }
 
 
-def write_mesh_include(raw: dict, path: str, length: float, sets: dict):
-    """The bodies of the raw scene as ``*NODE`` / ``*ELEMENT_SOLID`` (body i is part i + 1, nodes in gmsh's
-    order, coordinates in deck units of ``length`` metres, free format so no digit is lost) and the sets
-    ``{"body.region": ("node" | "segment", sid)}`` of the regions' facets."""
+def scene_mesh(raw: dict, cache_dir: str) -> list[dict]:
+    """The mesh a raw scene runs on (``build_mesh``'s file, from its cache when there), body by body:
+    ``node_tags`` (the run's numbering), ``coords`` [m], ``cells`` (node tags), ``regions`` (name -> facets)."""
+    import gmsh
     scene = resolve(raw)
+    meshed = build_mesh(scene, cache_dir=cache_dir, log=lambda message: None)
+    gmsh.open(meshed.source)
+    try:
+        tags, xyz, _ = gmsh.model.mesh.getNodes()
+        coords = dict(zip(tags.tolist(), xyz.reshape(-1, 3)))
+        bodies = []
+        for i, body in enumerate(scene.bodies):
+            cells = _elements(3, i + 1)
+            node_tags = np.unique(cells)
+            regions = {name.split(".", 1)[1]: _elements(2, rid) for name, rid in meshed.region_ids.items()
+                       if name.split(".", 1)[0] == body.name}
+            bodies.append({"name": body.name, "node_tags": node_tags, "cells": cells, "regions": regions,
+                           "coords": np.array([coords[t] for t in node_tags.tolist()])})
+        return bodies
+    finally:
+        gmsh.clear()
+
+
+def _elements(dim: int, physical: int) -> np.ndarray:
+    """The node tags of the elements of a physical group, one row an element."""
+    import gmsh
+    rows = []
+    for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, physical):
+        types, _, nodes = gmsh.model.mesh.getElements(dim, entity)
+        for kind, n in zip(types, nodes):
+            per = gmsh.model.mesh.getElementProperties(kind)[3]
+            rows.append(np.asarray(n, dtype=np.int64).reshape(-1, per))
+    return np.vstack(rows)
+
+
+def write_mesh_include(raw: dict, path: str, length: float, sets: dict, cache_dir: str):
+    """The mesh the raw scene runs on as ``*NODE`` / ``*ELEMENT_SOLID`` (body i is part i + 1, node ids the
+    run's own, coordinates in deck units of ``length`` metres, free format so no digit is lost) and the
+    sets ``{"body.region": ("node" | "segment", sid)}`` of the regions' facets."""
     lines = ["*KEYWORD", "$ the mesh of a shockfem scene, written by shockfem.verify.lsdyna_cases"]
-    offset = 0
     set_lines = []
-    for i, body in enumerate(scene.bodies):
-        bm = draw_body(scene, i)
-        ids = {int(t): offset + k + 1 for k, t in enumerate(bm.node_tags)}
+    eid = 0
+    for i, body in enumerate(scene_mesh(raw, cache_dir)):
         lines.append("*NODE")
-        lines += [f"{ids[int(t)]},{x / length!r},{y / length!r},{z / length!r}"
-                  for t, (x, y, z) in zip(bm.node_tags, bm.coords)]
+        lines += [f"{t}," + ",".join(repr(_deck_value(c, length)) for c in xyz)
+                  for t, xyz in zip(body["node_tags"].tolist(), body["coords"])]
         lines.append("*ELEMENT_SOLID")
-        for k, cell in enumerate(bm.cells):
-            eid = offset + k + 1
-            lines += [f"{eid},{i + 1}", ",".join(str(ids[int(n)]) for n in cell)]
+        for cell in body["cells"]:
+            eid += 1
+            lines += [f"{eid},{i + 1}", ",".join(map(str, cell.tolist()))]
         for key, (kind, sid) in sets.items():
             name, region = key.split(".")
-            if name != body.name:
+            if name != body["name"]:
                 continue
-            facets = bm.regions[region]
+            facets = body["regions"][region]
             if kind == "node":
-                nodes = [ids[int(n)] for n in dict.fromkeys(facets.ravel().tolist())]
+                nodes = list(dict.fromkeys(facets.ravel().tolist()))
                 set_lines += ["*SET_NODE_LIST", f"{sid}"] + [",".join(map(str, nodes[j:j + 8]))
                                                               for j in range(0, len(nodes), 8)]
             else:
-                set_lines += ["*SET_SEGMENT", f"{sid}"] + [",".join(str(ids[int(n)]) for n in f) for f in facets]
-        offset += len(bm.node_tags)
+                set_lines += ["*SET_SEGMENT", f"{sid}"] + [",".join(map(str, f)) for f in facets.tolist()]
     with open(path, "w") as fh:
         fh.write("\n".join(lines + set_lines + ["*END", ""]))
+
+
+def _deck_value(x: float, length: float) -> float:
+    """The deck number that the import turns back into ``x`` [m] bit for bit (``x / length``, or a neighbour
+    of it: the division and the import's multiplication each round), so that the deck's mesh is the scene's
+    own to the last bit; surfaces that touch at the start (the two rods) then touch in both."""
+    d = x / length
+    for candidate in (d, np.nextafter(d, np.inf), np.nextafter(d, -np.inf)):
+        if candidate * length == x:
+            return float(candidate)
+    return d
 
 
 def deck_and_scene(name: str, h: float, workdir: str) -> tuple[dict, dict]:
@@ -75,7 +117,7 @@ def deck_and_scene(name: str, h: float, workdir: str) -> tuple[dict, dict]:
     os.makedirs(workdir, exist_ok=True)
     deck = os.path.join(workdir, f"{name}.k")
     shutil.copy(os.path.join(STUDIES, f"{name}.k"), deck)
-    write_mesh_include(raw, os.path.join(workdir, f"{name}_mesh.k"), spec["length"], spec["sets"])
+    write_mesh_include(raw, os.path.join(workdir, f"{name}_mesh.k"), spec["length"], spec["sets"], workdir)
     imported = import_model(deck, os.path.join(workdir, f"{name}_imported.toml"), spec["units"])
     raw_deck = read_toml(imported.scene)
     for body in raw_deck["bodies"]:
@@ -107,9 +149,10 @@ def lsdyna_decks(size, workdir):
     out = []
     for name, measure in (("taylor_bar", _taylor), ("two_rods", _rods)):
         h = DECKS[name]["h"] * SIZES[size]
-        raw, raw_deck = deck_and_scene(name, h, os.path.join(workdir, "lsdyna", name))
-        scene_solver, _ = solve(raw, cache_dir=workdir)
-        deck_solver, wall = solve(raw_deck, cache_dir=workdir)
+        case_dir = os.path.join(workdir, "lsdyna", name)
+        raw, raw_deck = deck_and_scene(name, h, case_dir)          # the scene's mesh cached there
+        scene_solver, _ = solve(raw, cache_dir=case_dir)
+        deck_solver, wall = solve(raw_deck, cache_dir=case_dir)
         out += _agreement(name, measure(scene_solver), measure(deck_solver), ROUND_OFF, wall,
                           element_count(deck_solver))
     return out
