@@ -11,7 +11,7 @@ import os
 from . import conditions_out, controls_out
 from .cards import DeckError, read_deck
 from .deck_model import WOULD_HAVE, read_model
-from .scene_out import SceneOut, _Mapper
+from .scene_out import SceneOut, DeckMapper
 from .unit_sets import UnitSet
 
 
@@ -21,7 +21,7 @@ def deck_to_scene(path: str, units: UnitSet) -> SceneOut:
     title, keywords = read_deck(path)
     model = read_model(title, keywords)
     name = os.path.splitext(os.path.basename(path))[0]
-    mapper = _Mapper(model, units, name)
+    mapper = DeckMapper(model, units, name)
     mapper.geometry()
     end = controls_out.controls(mapper)
     regions = conditions_out.Regions(mapper)

@@ -47,7 +47,7 @@ def body_name(part) -> str:
     return name if name and name[0].isalpha() else f"part{part.pid}"
 
 
-class _Mapper:
+class DeckMapper:
     """The mapping's state: the deck's model, the unit set, and the scene it fills."""
 
     def __init__(self, m: DeckModel, units: UnitSet, name: str):

@@ -9,7 +9,7 @@ import tomli_w
 from .mesh_out import write_msh
 from .scene_out import SceneOut
 
-PLURAL = {"hex": "hexahedra", "tet": "tetrahedra"}
+NAMES = {"hex": ("hexahedron", "hexahedra"), "tet": ("tetrahedron", "tetrahedra")}
 
 
 @dataclass(frozen=True)
@@ -47,7 +47,7 @@ def report_text(out: SceneOut, source: str, units: str, scene_path: str) -> str:
     """The import report: what was made, what the mapping changed, and each keyword not mapped with its
     count and what it would have done."""
     lines = [f"{os.path.basename(source)} -> {os.path.basename(scene_path)} ({units})",
-             f"{len(out.meshes)} bodies: " + ", ".join(f"{name} ({len(m.cells)} {PLURAL[m.element]}, "
+             f"{len(out.meshes)} bod{'y' if len(out.meshes) == 1 else 'ies'}: " + ", ".join(f"{name} ({len(m.cells)} {NAMES[m.element][len(m.cells) != 1]}, "
                                                        f"regions {', '.join(m.regions) or 'none'})"
                                                        for name, m in out.meshes.items()),
              "", "What differs from the deck:"]

@@ -143,7 +143,7 @@ ROUND_OFF = 1e-9
 
 
 def lsdyna_decks(size, workdir):
-    """The Taylor bar (3D one-point hexahedra, mm-ms-kg-kN) and the two-rod impact (3D, mm-s-tonne-N)
+    """The Taylor bar (3D one-point hexahedra, mm-ms-kg-kN) and the two-rod impact (3D, m-ms-kg-MN)
     written as LS-DYNA decks give what their TOML scenes give: final length and radius, plastic strain and
     energies; the rods' mean velocities and contact energy, to round-off."""
     out = []

@@ -13,7 +13,7 @@ from shockfem.verify.lsdyna_cases import deck_and_scene
 from shockfem.verify.scenes import solve
 
 DECKS = pathlib.Path(__file__).parents[1] / "unit" / "importers" / "decks"
-# Deck against scene: the same mesh in the same order and the same numbers in mm-s-tonne-N, so the runs differ
+# Deck against scene: the same mesh in the same order and the same numbers in m-ms-kg-MN, so the runs differ
 # by the unit conversion's round-off carried through the steps; 1e-9 relative would catch any real difference
 # in the mapping (a penalty or damping off by a factor changes these by percents)
 ROUND_OFF = 1e-9
