@@ -96,9 +96,10 @@ def turn_inside_out(cells: np.ndarray, element: str, flip: np.ndarray) -> np.nda
     return out
 
 
-def write_msh(mesh: BodyMesh, path: str):
-    """Write the body's mesh (nodes in the deck's order) with one physical group per region, tagged 1, 2,
-    ...; returns region name -> tag."""
+def write_msh(mesh: BodyMesh, path: str, label: str):
+    """Write the body's mesh (nodes in the deck's order; its cells the physical group ``label``, e.g.
+    "part 1 bar, material 1") with one physical group per region, tagged 1, 2, ...; returns region name ->
+    tag."""
     import gmsh
     if not gmsh.isInitialized():
         gmsh.initialize(interruptible=False)
@@ -111,6 +112,7 @@ def write_msh(mesh: BodyMesh, path: str):
         gmsh.model.mesh.addElementsByType(volume, GMSH_CELL[mesh.element], np.arange(1, len(mesh.cells) + 1),
                                           (mesh.cells + 1).ravel())
         gmsh.model.addPhysicalGroup(3, [volume], 1)
+        gmsh.model.setPhysicalName(3, 1, label)
         next_element = len(mesh.cells) + 1
         region_tags = {}
         for k, (name, rows) in enumerate(mesh.regions.items(), start=1):

@@ -29,7 +29,7 @@ def write_import(out: SceneOut, scene_path: str, source: str, units: str) -> Imp
     scene_dir = os.path.dirname(os.path.abspath(scene_path))
     for body in out.scene["bodies"]:
         path = os.path.join(mesh_dir, f"{body['name']}.msh")
-        body["regions"] = write_msh(out.meshes[body["name"]], path)
+        body["regions"] = write_msh(out.meshes[body["name"]], path, f"{body['name']}, material {body['material']}")
         body["file"] = os.path.relpath(path, scene_dir)
     header = (f"# Imported by `shockfem import` from {os.path.basename(source)} ({units}); the bodies' meshes are "
               f"in {os.path.basename(mesh_dir)}/ (metres).\n# What the import changed or left out: "
