@@ -12,6 +12,8 @@
     shockfem.resume("results/bar_2ms")     # a run stopped by SIGTERM or a kill goes on from its checkpoint
     rows = shockfem.sweep("studies/foundation/bar_impact.toml", ['boundary.0.value=[2, 5] m/s'],
                           "results/bar_sweep")   # a case per level, both cores; rows of cases.csv
+    done = shockfem.import_deck("studies/lsdyna/taylor_bar.k", "taylor.toml", units="mm-ms-kg-kN")
+    shockfem.run(done.scene, "results/taylor")      # done.report: what the import changed or left out
 
 A scene is a TOML file or a dictionary of the same tables (units as strings, "5 m/s"); overrides
 are the command line's ``--set`` assignments.  ``run`` writes the same run directory as
@@ -84,6 +86,17 @@ def sweep(scene: str, vary: list[str], out_dir: str, design: str = "full", gener
     if problems:
         raise SceneError(problems)
     return run_batch(cases, out_dir, executor, workers, ranks, scheduler, progress, echo, verbose=verbose)
+
+
+def import_deck(deck: str, out: str | None = None, units: str | None = None):
+    """What ``shockfem import`` does: the LS-DYNA keyword deck (or Abaqus ``.inp`` mesh) ``deck`` written as
+    the scene ``out`` (default: the deck's name with ``.toml``) with its bodies' meshes beside it and an
+    import report; ``units`` names the deck's consistent unit set (``"mm-ms-kg-kN"``; required for a deck).
+
+    Returns the paths written (``scene``, ``mesh_dir``, ``report``) and the report's ``text``.  Raises
+    ``SceneError`` listing every problem of the deck, each naming its file, line, keyword and card."""
+    from .importers import import_model
+    return import_model(deck, out, units)
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,7 @@ import_dolfinx()    # before anything imports it: without setuptools' pkg_resour
 
 from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, EXIT_UNSTABLE, ModelError, RunInterrupted, UnstableRun
 from .api import check_raw
+from .importers.command import HELP as IMPORT_HELP, import_arguments, import_command
 from .units import LB
 from .version import __version__
 
@@ -629,6 +630,7 @@ COMMANDS = {
     "sweep": Command("run a scene over a design of its fields' levels (or a table of cases), a run directory per "
                      "case, both cores or a Dask cluster, resumable; the cases' results in one table",
                      _sweep_arguments, _sweep),
+    "import": Command(IMPORT_HELP, import_arguments, import_command),
     "verify": Command("verification against exact and published solutions", _verify_arguments, _verify),
     "bench": Command("element-cycles per second at several mesh sizes", _bench_arguments, _bench),
 }

@@ -26,6 +26,7 @@ from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, 
                                 penetration_yaw)
 from .section_cases import section_stress
 from .mass_scaling_cases import mass_scaling
+from .lsdyna_cases import lsdyna_decks
 from .hard_cases import HARD
 
 
@@ -84,6 +85,7 @@ CASES = {
     "launcher_model": launcher_model,
     "launcher_design": launcher_design,
     "machine_geometry": machine_geometry,
+    "lsdyna_decks": lsdyna_decks,
     **HARD,
 }
 

@@ -19,6 +19,7 @@ LAYERS = [
     {"elements"},
     {"parts"},
     {"scene"},
+    {"importers"},
     {"geometry"},
     {"model"},
     {"forces", "contact", "fluid", "target"},

@@ -1,0 +1,38 @@
+"""Models from other codes as shockfem scenes: LS-DYNA keyword decks (``lsdyna.py``) and Abaqus ``.inp``
+meshes (``abaqus.py``), each written as a scene TOML with its bodies' meshes beside it (``docs/import.md``).
+"""
+from __future__ import annotations
+
+import os
+
+ABAQUS_FILES = (".inp",)
+
+
+def import_model(source: str, out: str | None = None, units: str | None = None):
+    """Import ``source`` (an LS-DYNA deck, or an Abaqus ``.inp``) into the scene ``out`` (default: the
+    source's name with ``.toml``, beside it); returns the ``Imported`` paths and the report's text.
+
+    Raises ``SceneError`` listing every problem (each naming the file, line, keyword and card), as
+    ``shockfem import`` reports them with exit code 2."""
+    from ..scene import SceneError
+    from ..units import UnitError
+    from .cards import DeckError
+    from .unit_sets import unit_set
+    from .write import write_import
+    if not os.path.isfile(source):
+        raise SceneError([f"{source}: no such file"])
+    out = out or os.path.splitext(source)[0] + ".toml"
+    try:
+        if source.lower().endswith(ABAQUS_FILES):
+            from .abaqus import inp_to_scene
+            units_set = unit_set(units)
+            model = inp_to_scene(source, units_set)
+        else:
+            from .lsdyna import deck_to_scene
+            units_set = unit_set(units)
+            model = deck_to_scene(source, units_set)
+    except UnitError as e:
+        raise SceneError([f"--units: {e}"]) from None
+    except DeckError as e:
+        raise SceneError(e.problems) from None
+    return write_import(model, out, source, units_set.name)
