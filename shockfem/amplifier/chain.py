@@ -145,7 +145,7 @@ def _spec(raw: dict, n: int, ck: Checker) -> ChainSpec:
 
     e = per_interface("restitution", 0.9, lambda d, k: ck.number(d, k, "chain", 0.9, 0.0, 1.0,
                                                                   "a coefficient of restitution", low_open=True))
-    damping = ck.number(c, "damping", "chain", 0.02, 0.0, 0.5, "a damping ratio")
+    damping = ck.number(c, "damping", "chain", 0.02, 0.0, 0.5, "a damping ratio", high_open=True)
     damping_type = ck.choice(c, "damping_type", "chain", DAMPING_TYPES, "band")
     damping_band = ck.number(c, "damping_band", "chain", DAMPING_BAND, 1.0, 1000.0, "a frequency ratio",
                              low_open=True)

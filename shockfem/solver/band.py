@@ -11,6 +11,8 @@ gives the force r_k = g_k K q_k of a spring g_k K in series with a dashpot g_k t
 spring's stretch, filtered from the displacement increments alike; the nodes feel f_int + sum_k r_k.
 No element pass is needed, a rigid-body translation (f_int unchanged) is never damped, and where
 the material yields the terms follow its tangent stiffness (the plastic increments of f_int are small).
+The terms see the whole internal force: the hourglass forces of one-point elements and the bulk
+viscosity's are damped and stiffened alike (by the same few percent as the elastic forces).
 Energy: the terms' work sum_k r_k . du over the step (trapezoidal, as the solver's internal work)
 less the change of what their springs store, 0.5 sum_k q_k . r_k, is what their dashpots
 dissipated: the damping energy.  Far above the band each term is a spring in parallel with K: the

@@ -397,6 +397,9 @@ def test_band_damping_reads_its_band_and_refuses_a_bad_one():
     d = resolve(raw).bodies[0].damping
     assert (d.kind, d.ratio, d.low, d.high) == ("band", 0.02, 1e3, 2e4)
     assert d.coefficients() == (0.0, 0.0)         # no Rayleigh part: its Maxwell terms act beside the material
+    scene_wide = base()
+    scene_wide["damping"] = {"type": "band", "ratio": 0.02, "low": "1 kHz", "high": "20 kHz"}
+    assert resolve(scene_wide).damping == d        # the same table for every body without its own
     raw["bodies"][0]["damping"] = {"type": "band", "ratio": 0.02, "low": "20 kHz", "high": "1 kHz",
                                    "frequency": "1 kHz"}
     text = "\n".join(_problems(raw))
