@@ -39,9 +39,10 @@ if TYPE_CHECKING:
     from .scene import Scene
 
 
-def check_raw(raw: dict) -> str:
+def check_raw(raw: dict, warn=None) -> str:
     """What ``shockfem check`` does to a raw scene (plain, chain or launcher): read every field through
-    the checker; returns what it is, or raises ``SceneError`` listing every problem."""
+    the checker; returns what it is, or raises ``SceneError`` listing every problem.  ``warn(sentence)``,
+    if given, hears what a valid scene should still change (mass damping on a free body)."""
     from .scene import is_chain, is_launcher_scene
     if is_chain(raw):
         from .amplifier.chain import resolve_chain
@@ -53,7 +54,10 @@ def check_raw(raw: dict) -> str:
         design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
         return f"launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design}"
     from .scene import resolve
+    from .scene.damping import mass_damping_warnings
     scene = resolve(raw)
+    for warning in mass_damping_warnings(scene) if warn else ():
+        warn(warning)
     return f"{scene.kinematics}, {len(scene.bodies)} bodies, end time {scene.end_time:.6g} s"
 
 

@@ -292,7 +292,7 @@ def _dispatch(args) -> int:
 
 
 def _check(args) -> int:
-    print(f"{args.scene}: ok ({check_raw(_raw(args))})")
+    print(f"{args.scene}: ok ({check_raw(_raw(args), warn=lambda w: print(f'WARNING: {w}'))})")
     return EXIT_OK
 
 

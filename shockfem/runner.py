@@ -27,6 +27,7 @@ from .output.picture_process import PictureProcess, pictures_wanted
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene, to_plain
+from .scene.damping import mass_damping_warnings
 from .materials.layout import S_EPS
 from .solver.explicit import ExplicitSolver
 
@@ -325,7 +326,7 @@ class _Run:
             checkpoint_time = self.checkpoints.wall_time if self.checkpoints is not None else 0.0
             summary["checkpoints"] = {"interval": scene.checkpoint_interval, "wall_time_s": checkpoint_time,
                                       "resumed_from": self.resumed}
-            summary["warnings"] = run_warnings(summary)
+            summary["warnings"] = mass_damping_warnings(scene) + run_warnings(summary)
             for warning in summary["warnings"]:
                 say(f"WARNING: {warning}")
             if status == "completed" and comm.rank == 0:

@@ -12,8 +12,10 @@ article), without positions or velocities, which the chain sets:
     gap = "1 mm"                      # launched chain: between neighbours (or a list, one per
                                       #   interface); stack: to the anvil
     restitution = 0.9                 # the rigid model's, every interface (or a list)
-    damping = 0.02                    # structural damping ratio, every body at its own first mode
-                                      #   c0 / 2L (1d and finite elements)
+    damping = 0.02                    # structural damping ratio of every body (1d and finite elements)
+    damping_type = "band"             # held from each body's first mode c0 / 2L to damping_band times
+                                      #   it; or "stiffness": at the first mode, growing with frequency
+    damping_band = 20                 # the band's high over low frequency
     end_time = "2 ms"                 # default: the last first-pass collision of a rigid chain
                                       #   at e = 0.2, plus three transits of the longest body
     pad_stiffness = "1.4 GN/m"        # optional: an elastic pad on every struck face (or a list,
@@ -46,7 +48,7 @@ the fidelity has one, and the peak interface stress against each material's yiel
 * ``1d``: ``bars.py``, each body a uniform bar of its length and its volume / length section;
   restitution emerges from the waves; interface stress from the low-passed contact force.
 * ``axisymmetric`` / ``3d``: the finite-element solver (``runner.py``) on the bodies stacked along
-  z, contact between neighbours, the same damping (stiffness-proportional, each body's own);
+  z, contact between neighbours, the same damping (each body's own, over its own band);
   von Mises peaks against yield.
 """
 from __future__ import annotations
@@ -71,8 +73,13 @@ from .bars import Bar, Interface, run_bars
 from .gain import ARCHITECTURES
 
 FIDELITIES = ("rigid", "1d", "axisymmetric", "3d")
-CHAIN_FIELDS = ("name", "architecture", "launch_speed", "fidelity", "gap", "restitution", "damping", "end_time",
-                "pad_stiffness", "pad_thickness", "pad_damping")
+CHAIN_FIELDS = ("name", "architecture", "launch_speed", "fidelity", "gap", "restitution", "damping", "damping_type",
+                "damping_band", "end_time", "pad_stiffness", "pad_thickness", "pad_damping")
+# The chain's structural damping: a band over each body's first DAMPING_BAND free-free modes, where a
+# sharp impact puts its energy (``verify band_damping_modes`` checks 2% over 1:20), or stiffness-
+# proportional at the first mode (LS-DYNA's *DAMPING_PART_STIFFNESS; overdamps the modes above).
+DAMPING_TYPES = ("band", "stiffness")
+DAMPING_BAND = 20.0
 # The default end time follows a rigid chain this lossy, so a slower real chain still finishes.
 TIMING_RESTITUTION = 0.2
 # FE gaps in a stack shrink up the stack (the closed form's strike order) but stay resolvable.
@@ -93,6 +100,8 @@ class ChainSpec:
     pad_thickness: tuple[float, ...] = ()   # per interface [m]
     pad_damping: float = 0.02
     gaps: tuple[float, ...] = ()      # per interface of a launched chain, when given as a list [m]
+    damping_type: str = "band"        # DAMPING_TYPES
+    damping_band: float = DAMPING_BAND     # the band's high over low frequency
     launcher: dict | None = None      # the shot's summary and sizing when a [launcher] fired the chain
     shot: object = None               # and the shot itself (its histories)
 
@@ -136,7 +145,10 @@ def _spec(raw: dict, n: int, ck: Checker) -> ChainSpec:
 
     e = per_interface("restitution", 0.9, lambda d, k: ck.number(d, k, "chain", 0.9, 0.0, 1.0,
                                                                   "a coefficient of restitution", low_open=True))
-    damping = ck.number(c, "damping", "chain", 0.02, 0.0, 1.0, "a damping ratio", high_open=True)
+    damping = ck.number(c, "damping", "chain", 0.02, 0.0, 0.5, "a damping ratio", high_open=True)
+    damping_type = ck.choice(c, "damping_type", "chain", DAMPING_TYPES, "band")
+    damping_band = ck.number(c, "damping_band", "chain", DAMPING_BAND, 1.0, 1000.0, "a frequency ratio",
+                             low_open=True)
     if "launcher" in raw and "launch_speed" in c:
         ck.fail("chain.launch_speed", f"the [launcher] sets the launch speed; give one or the other, got "
                                       f"{c['launch_speed']}")
@@ -165,7 +177,7 @@ def _spec(raw: dict, n: int, ck: Checker) -> ChainSpec:
                                            1e-3, positive=True)
     return ChainSpec(str(c.get("name", "chain")), arch, speed, fidelity, gap, e, damping,
                      ck.quantity(c, "end_time", "chain", "time", 0.0, nonnegative=True) or None,
-                     pads if thickness else (), thickness, pad_damping, gaps)
+                     pads if thickness else (), thickness, pad_damping, gaps, damping_type, damping_band)
 
 
 def _height(body) -> float:
@@ -178,8 +190,8 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
              end_time: float = 1.0, frequencies: list[float] | None = None,
              masses: list[float] | None = None) -> dict:
     """The chain as an ordinary raw scene: bodies stacked along z, contact between neighbours;
-    each body damped (``spec.damping`` of critical, stiffness-proportional) at its own first
-    frequency in ``frequencies`` [Hz] unless it has a damping of its own; the pads (with the
+    each body damped (``spec.damping`` of critical) over its own band from its first frequency in
+    ``frequencies`` [Hz] (or stiffness-proportional at it) unless it has a damping of its own; the pads (with the
     bodies' ``masses`` for their dashpots) as compression-only springs across the gaps.
 
     Launched chain: the test article stands on z = 0, each heavier body above the next with the
@@ -217,7 +229,7 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
         out["outputs"] = raw["outputs"]
     if spec.damping and frequencies:
         for b, f in zip(bodies, frequencies):
-            b.setdefault("damping", {"ratio": spec.damping, "frequency": f, "type": "stiffness"})
+            b.setdefault("damping", structural_damping(spec, f))
     if masses and any(spec.pad_stiffness):
         pairs = [c for c in contacts if "b" in c]          # the body-body interfaces, k = 0 .. n - 2
         # the spring's extension is the change of the faces' distance: nothing until the gap has
@@ -231,14 +243,26 @@ def fe_scene(raw: dict, spec: ChainSpec, kinematics: str, heights: list[float] |
     return out
 
 
+def structural_damping(spec: ChainSpec, first: float) -> dict:
+    """The damping table of a chain body whose first free-free frequency is ``first`` [Hz]."""
+    if spec.damping_type == "band":
+        return {"type": "band", "ratio": spec.damping, "low": first, "high": spec.damping_band * first}
+    return {"type": "stiffness", "ratio": spec.damping, "frequency": first}
+
+
+def _damping_words(spec: ChainSpec) -> str:
+    return (f"band over each body's first mode to {spec.damping_band:g} times it" if spec.damping_type == "band"
+            else "stiffness-proportional at each body's first mode")
+
+
 def _pad_name(interface: str) -> str:
     return f"pad_{interface}"
 
 
 def first_frequencies(scene, heights: list[float]) -> list[float]:
-    """Each body's first free-free longitudinal frequency as a bar, c0 / 2L [Hz]: where the chain
-    puts its structural damping, so that a small stiff body is damped as much as a large one at
-    its own first mode (stiffness-proportional damping grows with frequency)."""
+    """Each body's first free-free longitudinal frequency as a bar, c0 / 2L [Hz]: where each body's
+    structural damping starts (band) or is set (stiffness-proportional, which grows with frequency), so
+    that a small stiff body is damped as much as a large one at its own first mode."""
     return [scene.material_of(b).c_bar / (2 * h) for b, h in zip(scene.bodies, heights)]
 
 
@@ -447,13 +471,15 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
                 for k in range(len(bars) - 1)]
         r = run_bars(bars, gaps, end_time, damping_ratio=[b.damping.ratio if b.damping else 0.0 for b in scene.bodies],
                      damping_frequency=[b.damping.frequency if b.damping else 0.0 for b in scene.bodies],
+                     damping_band=[(b.damping.low, b.damping.high) if b.damping and b.damping.kind == "band" else None
+                                   for b in scene.bodies],
                      anvil_gap=spec.gap if stack else None)
         wall = r.wall_time_s
         h = r.history
         if stack:           # the anvil's force is not recorded; its impulse shows in body 1's velocity
             h[f"contact.{iface_names[0]}.normal_z"] = np.zeros(len(h["time"]))
         model = (f"1d: {sum(1 for _ in bars)} elastic{'-plastic' if any(b.yield_stress < math.inf for b in bars) else ''}"
-                 f" bars, kinematic contact, structural damping {spec.damping:g}; {r.steps} steps, "
+                 f" bars, kinematic contact, structural damping {spec.damping:g} ({_damping_words(spec)}); {r.steps} steps, "
                  f"{r.element_cycles_per_s:.3g} element-cycles/s, energy balance {r.energy_balance_error:.1e}")
         stages = stage_table(h, r.masses, contacts, "z", ("z",))
         stress = dict(r.interface_stress)

@@ -20,6 +20,7 @@ from .. import compat
 from ..geometry import MeshedScene, region_facets
 from ..parts.catalog import PARTS
 from ..scene import Scene
+from ..scene.damping import describe_damping
 from . import kinematics as kin
 from ..elements import one_point
 from ..elements.cells import cell_orientation
@@ -94,6 +95,7 @@ class Model:
     constraints: list[Constraint] = field(default_factory=list)
     loads: list[Load] = field(default_factory=list)
     alpha: float = 0.0                          # mass-proportional damping [1/s]
+    body_damping: tuple = ()                    # per body, the damping that acts on it (its own or the scene's)
     body_mass: np.ndarray = None                # (bodies,) global masses [kg]
     one_point: bool = False                     # reduced quads/hexes: elements/one_point.py kernels
     hourglass_form: int = 0                     # one_point.HOURGLASS_FORMS
@@ -259,6 +261,7 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                   cell_material=cell_material, kernel_cells=kernel_cells, params=params, curves=curves,
                   cell_kind=kin.CELL_KINDS[cell_name], cell_sign=cell_sign, N=N, dN=dN, wq=wq, alpha=alpha,
                   body_mass=body_mass,
+                  body_damping=tuple(b.damping or scene.damping for b in scene.bodies),
                   one_point=one_point_cells, hourglass_form=one_point.HOURGLASS_FORMS[scene.hourglass],
                   hourglass_coefficient=scene.hourglass_coefficient, bodies=tuple(scene.bodies),
                   contacts=tuple(scene.contacts), springs=tuple(scene.springs), cavities=tuple(scene.cavities),
@@ -429,15 +432,11 @@ def describe(model: Model, sc: Scene) -> str:
     if sc.gravity:
         lines.append(f"  gravity: {sc.gravity} m/s^2")
     if sc.damping:
-        d = sc.damping
-        a, be = d.coefficients()
-        lines.append(f"  damping: {d.kind}, {d.ratio:.3g} of critical at {d.frequency:.6g} Hz "
-                     f"(alpha = {a:.4g} 1/s, beta = {be:.4g} s)"
+        lines.append(f"  damping: {describe_damping(sc.damping)}"
                      + (", bodies with their own below" if any(b.damping for b in sc.bodies) else ""))
     for b in sc.bodies:
         if b.damping and not b.rigid:
-            lines.append(f"  damping of {b.name}: stiffness, {b.damping.ratio:.3g} of critical at "
-                         f"{b.damping.frequency:.6g} Hz (beta = {b.damping.coefficients()[1]:.4g} s)")
+            lines.append(f"  damping of {b.name}: {describe_damping(b.damping)}")
     if model.mass_scaling is not None:
         lines.append("  " + model.mass_scaling.describe())
     return "\n".join(lines)

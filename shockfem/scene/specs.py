@@ -15,7 +15,7 @@ SHAPES = tuple(PARTS) + ("box", "mesh")
 # Named regions of the shapes outside the catalog of parts (which names its own).
 BOX_REGIONS = {2: ("left", "right", "bottom", "top"), 3: ("left", "right", "front", "back", "bottom", "top")}
 BC_TYPES = ("fixed", "symmetry", "velocity", "force")
-DAMPING_TYPES = ("mass", "stiffness", "rayleigh")
+DAMPING_TYPES = ("mass", "stiffness", "rayleigh", "band")
 FIELDS = ("displacement", "velocity", "von_mises", "pressure", "plastic_strain", "plastic_strain_rate", "stress",
           "strain")
 INTEGRATIONS = ("reduced", "full")
@@ -103,18 +103,23 @@ class Material:
 
 @dataclass(frozen=True)
 class Damping:
-    ratio: float          # fraction of critical at `frequency`
-    frequency: float      # [Hz]
-    kind: str             # mass | stiffness | rayleigh
+    ratio: float          # fraction of critical at `frequency` (band: over [low, high])
+    frequency: float      # [Hz] (band: the band's geometric centre)
+    kind: str             # mass | stiffness | rayleigh | band
+    low: float = 0.0      # band: its lowest and highest frequencies [Hz]
+    high: float = 0.0
 
     def coefficients(self) -> tuple[float, float]:
         """Rayleigh coefficients (alpha [1/s], beta [s]) with zeta(omega) = alpha/(2 omega) + beta omega/2.
 
         ``mass``: all of the ratio from alpha; ``stiffness``: all from beta; ``rayleigh``:
         half from each, so that zeta = ratio at the given frequency and zeta is
-        smallest there (the usual two-term choice with both terms equal at omega).
+        smallest there (the usual two-term choice with both terms equal at omega); ``band``:
+        none (its Maxwell terms, ``materials/band_damping.py``, act beside the material).
         """
         import math
+        if self.kind == "band":
+            return 0.0, 0.0
         omega = 2 * math.pi * self.frequency
         if self.kind == "mass":
             return 2 * self.ratio * omega, 0.0

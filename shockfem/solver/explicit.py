@@ -37,13 +37,14 @@ from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
 from . import guards, nodal
+from .band import BandDamping
 
 
 @dataclass
 class Energies:
     kinetic: float = 0.0
     internal: float = 0.0          # stored (elastic) energy = internal work less all the parts below
-    damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts)
+    damping: float = 0.0           # dissipated by Rayleigh damping (mass and stiffness parts) and band damping
     hourglass: float = 0.0         # work of the hourglass forces (one-point elements)
     plastic: float = 0.0           # plastic work int sigma : d eps_p dV
     bulk_viscosity: float = 0.0    # dissipated by the artificial bulk viscosity
@@ -236,6 +237,8 @@ class ExplicitSolver:
         if initial_velocity is not None:
             self.v[:] = initial_velocity(self.x)
         self._internal_force(0.0)
+        # band-damped bodies' Maxwell terms, driven by the internal force from here on (None if no band)
+        self.band = BandDamping.of(m, self.f_int, self.u)
         self._external_force(0.0)
         for source in self.sources:
             self.log_messages += source.begin(self.x, self.v)
@@ -409,7 +412,7 @@ class ExplicitSolver:
     def stable_step(self) -> float:
         """safety x the critical step; active contact springs add to the highest frequency of the nodes
         they join (omega^2 <= omega_elements^2 + omega_contact^2, Gershgorin), so the steps combine."""
-        dt = self.dt_stable
+        dt = self.dt_stable * (self.band.step_factor if self.band else 1.0)
         if math.isfinite(self.dt_contact):
             dt = 1.0 / math.sqrt(1.0 / dt ** 2 + 1.0 / self.dt_contact ** 2)
         return self.model.safety_factor * dt
@@ -457,6 +460,8 @@ class ExplicitSolver:
 
         # internal and external forces at t_{n+1}
         damping_power, hourglass_power, viscosity_power, plastic_work = self._internal_force(dt)
+        # band damping's Maxwell terms on the new internal force (what their dashpots took, over the ranks)
+        band_loss = self._sum(self.band.step(self.f_int, self.u, dt, m.num_owned)) if self.band else 0.0
         t2 = time.perf_counter()
         self._external_force(self.t)
         self._contact_forces(dt)
@@ -482,11 +487,12 @@ class ExplicitSolver:
         if m.rigid:
             kinetic += self._rigid_loads(dt)
         e.damping += damping_work
-        e.damping += dt * damping_power
+        e.damping += dt * damping_power + band_loss
         e.hourglass += dt * hourglass_power
         e.bulk_viscosity += dt * viscosity_power
         e.plastic += plastic_work
-        e.internal += w_int + w_int2 - dt * (damping_power + hourglass_power + viscosity_power) - plastic_work
+        e.internal += (w_int + w_int2 - dt * (damping_power + hourglass_power + viscosity_power) - plastic_work
+                       - band_loss)
         e.external += w_ext + w_ext2 + reaction_work
         e.contact -= w_con + w_con2 + wall_work
         for source in self.sources:

@@ -10,6 +10,7 @@ from .foundation_cases import (axisymmetric_vs_3d, bar_wave, bar_wave_tets, body
 from .contact_cases import (contact_parallel, hertz_spheres, rod_on_constraint_wall, rod_on_rod, rod_on_rod_3d,
                             rod_on_wall, sliding_block, thick_rods, tunnel_slide, unequal_rods)
 from .spring_cases import spring_oscillator
+from .damping_cases import band_damping_modes, rayleigh_frequency_dependence
 from .material_point import material_point
 from .plasticity_cases import plastic_wave, taylor_bar, taylor_bar_3d, taylor_bar_full
 from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_half_sine
@@ -39,6 +40,8 @@ CASES = {
     "axisymmetric_vs_3d": axisymmetric_vs_3d,
     "rayleigh_damping": rayleigh_damping,
     "body_damping": body_damping,
+    "band_damping_modes": band_damping_modes,
+    "rayleigh_frequency_dependence": rayleigh_frequency_dependence,
     "rod_on_rod": rod_on_rod,
     "rod_on_wall": rod_on_wall,
     "rod_on_constraint_wall": rod_on_constraint_wall,

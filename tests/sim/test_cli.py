@@ -19,6 +19,8 @@ def test_check_ok():
     p = shockfem("check", SCENE)
     assert p.returncode == 0, p.stderr
     assert "ok" in p.stdout
+    # the bar is driven at 5 m/s under 2% mass damping at 8.6 kHz: alpha = 2 zeta w = 2161 1/s brakes it
+    assert "WARNING: body bar: the scene's mass-proportional damping" in p.stdout and "alpha = 2161 1/s" in p.stdout
 
 
 def test_bad_scene_lists_every_problem_and_exits_2(tmp_path):

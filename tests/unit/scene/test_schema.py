@@ -389,3 +389,33 @@ def test_curve_elements_default_and_its_range():
     for bad in (4, 12.5, "12", True):
         raw["scene"]["curve_elements"] = bad
         assert any(p.startswith("scene.curve_elements: must be a whole number") for p in _problems(raw))
+
+
+def test_band_damping_reads_its_band_and_refuses_a_bad_one():
+    raw = base()
+    raw["bodies"][0]["damping"] = {"type": "band", "ratio": 0.02, "low": "1 kHz", "high": "20 kHz"}
+    d = resolve(raw).bodies[0].damping
+    assert (d.kind, d.ratio, d.low, d.high) == ("band", 0.02, 1e3, 2e4)
+    assert d.coefficients() == (0.0, 0.0)         # no Rayleigh part: its Maxwell terms act beside the material
+    scene_wide = base()
+    scene_wide["damping"] = {"type": "band", "ratio": 0.02, "low": "1 kHz", "high": "20 kHz"}
+    assert resolve(scene_wide).damping == d        # the same table for every body without its own
+    raw["bodies"][0]["damping"] = {"type": "band", "ratio": 0.02, "low": "20 kHz", "high": "1 kHz",
+                                   "frequency": "1 kHz"}
+    text = "\n".join(_problems(raw))
+    assert "bodies[0].damping.frequency: unknown field" in text
+    assert "bodies[0].damping.high: band damping needs 0 < low < high" in text
+
+
+def test_mass_damping_on_a_moving_body_warns_and_a_held_one_does_not():
+    from shockfem.scene.damping import mass_damping_warnings
+    raw = base()
+    raw["damping"] = {"ratio": 0.02, "frequency": "10 kHz", "type": "mass"}
+    (warning,) = mass_damping_warnings(resolve(raw))
+    # alpha = 2 zeta w = 2513 1/s; at the body's 5 m/s: 12566 m/s^2
+    assert "body bar" in warning and "alpha = 2513 1/s" in warning and "1.257e+04 m/s^2" in warning
+    raw["boundary"] = [{"region": "bar.bottom", "type": "fixed"}]
+    assert mass_damping_warnings(resolve(raw)) == []
+    raw["damping"]["type"] = "stiffness"
+    raw.pop("boundary")
+    assert mass_damping_warnings(resolve(raw)) == []
