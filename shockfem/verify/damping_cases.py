@@ -79,7 +79,7 @@ def modal_decay(t: np.ndarray, q: np.ndarray, qdot: np.ndarray, dt: float, nomin
 
 
 def band_damping_modes(size, workdir):
-    """Band damping of 2% over [f1, 20 f1]: modes 1, 2, 5, 10 and 20 each decay at 2% (10%: the issue's
+    """Band damping of 2% over [f1, 20 f1]: modes 1, 2, 5, 10 and 20 each decay at 2% (10%: the acceptance
     tolerance; the fitted terms hold 2% within 0.8% over the band, ``fit_band``); the damping energy
     is what the modes' decays take (5%: each mode's initial energy from its velocity shape, the modes
     exchanging a little through the lumped mass's off-diagonal share); the balance closes."""
@@ -104,7 +104,7 @@ def band_damping_modes(size, workdir):
 
 def rayleigh_frequency_dependence(size, workdir):
     """Rayleigh damping of 2% at sqrt(20) f1, half from mass and half from stiffness: each mode decays at
-    zeta(w) = alpha / (2 w) + beta w / 2, 4.7% at modes 1 and 20, 2% between (10%: the issue's
+    zeta(w) = alpha / (2 w) + beta w / 2, 4.7% at modes 1 and 20, 2% between (10%: the acceptance
     tolerance)."""
     f1 = rayleigh_love_f1(RADIUS, LENGTH)
     f_ref = math.sqrt(20) * f1

@@ -169,7 +169,7 @@ def test_band_damping_in_bars_dissipates_monotonically_and_less_than_stiffness_d
         assert r.energy_balance_error < (3e-3 if name == "stiffness" else 1e-3)
         if name == "band":
             assert np.all(np.diff(r.history["energy.damping"]) >= -1e-12 * r.history["energy.kinetic"][0])
-    # the figures from the end velocities, 0.997 undamped and 0.873 stiffness-proportional (the stage
+    # the restitutions from the end velocities, 0.997 undamped and 0.873 stiffness-proportional (the stage
     # table's, read at separation: 0.9975 and 0.8758); the band between them (0.90)
     assert e["none"] == pytest.approx(0.997, abs=0.002) and e["stiffness"] == pytest.approx(0.873, abs=0.005)
     assert e["stiffness"] + 0.01 < e["band"] < e["none"] - 0.01
