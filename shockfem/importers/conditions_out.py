@@ -51,6 +51,12 @@ class Regions:
         if not out:
             self.mapper.problems.append(error("its nodes cover no whole boundary facet of any body: shockfem puts "
                                               "conditions and contacts on facets; give the nodes of whole faces"))
+            return out
+        covered = {int(n) for r in out for n in self.mapper.meshes[r.split(".")[0]].region_nodes(name)}
+        if len(node_ids - covered):
+            self.mapper.notes.append(error(f"{len(node_ids - covered)} of its {len(node_ids)} nodes are on no whole "
+                                           "boundary facet of the set: left out of the region (shockfem puts "
+                                           "conditions on facets)"))
         return out
 
     def from_segments(self, segments, name: str, error) -> list[str]:

@@ -34,6 +34,10 @@ class BodyMesh:
         if self.facets is None:
             self.facets = boundary_facets(self.cells, self.element)
 
+    def region_nodes(self, name: str) -> np.ndarray:
+        """The deck ids of the nodes of region ``name``'s facets."""
+        return np.unique(self.node_ids[self.facets[self.regions[name]]])
+
     def facets_within(self, node_ids) -> np.ndarray:
         """The boundary facets all of whose nodes are among ``node_ids`` (deck ids)."""
         inside = np.isin(self.node_ids, np.asarray(list(node_ids), dtype=np.int64))

@@ -216,14 +216,16 @@ def test_motion_wall_single_surface_and_node_constraints(tmp_path):
                       "*RIGIDWALL_PLANAR", f"{0:10}", f"{0.0:10}{0.0:10}{-1.0:10}{0.0:10}{0.0:10}{0.0:10}",
                       "*SET_PART_LIST", f"{3:10}", f"{1:10}{2:10}",
                       "*CONTACT_AUTOMATIC_SINGLE_SURFACE", f"{3:10}{0:10}{2:10}", f"{0.0:10}", f"{1.0:10}",
-                      "*BOUNDARY_SPC_NODE"] + [f"{n:10}{0:10}{1:10}{0:10}{0:10}" for n in (9, 12, 6, 3)]
-    s = deck_to_scene(_write(tmp_path, lines), MM_MS).scene
+                      "*BOUNDARY_SPC_NODE"] + [f"{n:10}{0:10}{1:10}{0:10}{0:10}" for n in (9, 12, 6, 3, 1)]
+    out = deck_to_scene(_write(tmp_path, lines), MM_MS)
+    s = out.scene
+    assert any("1 of its 5 nodes are on no whole boundary facet" in n for n in out.notes)
     held, motion = s["boundary"]            # constraints first, then motions
     assert (motion["region"], motion["type"], motion["direction"]) == ("plate.nodes5", "velocity", "z")
     # the curve times SF = -2: 0 -> -2 mm/ms (= m/s) over 0.01 ms, then held
     assert [[to_si(t, "time"), to_si(v, "velocity")] for t, v in motion["history"]] == [
         [0.0, 0.0], [pytest.approx(1e-5, rel=EXACT), pytest.approx(-2.0, rel=EXACT)], [pytest.approx(1e-3, rel=EXACT), pytest.approx(-2.0, rel=EXACT)]]
-    # nodes 3, 6, 9, 12 are the block's x = 2 mm face: held in x
+    # nodes 3, 6, 9, 12 are the block's x = 2 mm face: held in x (a fifth, node 1, is on no facet of the set)
     assert held == {"region": "block.held_x", "type": "velocity", "direction": "x", "value": "0.0 mm/ms"}
     walls = [c for c in s["contact"] if c.get("method") == "constraint"]
     assert [w["a"] for w in walls] == ["block", "plate"]
