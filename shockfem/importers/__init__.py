@@ -21,7 +21,11 @@ def import_model(source: str, out: str | None = None, units: str | None = None):
     from .write import write_import
     if not os.path.isfile(source):
         raise SceneError([f"{source}: no such file"])
-    out = out or os.path.splitext(source)[0] + ".toml"
+    if out is None:
+        out = os.path.splitext(source)[0] + ".toml"
+        if os.path.exists(out) and not _written_by_import(out):
+            raise SceneError([f"{out} exists and was not written by shockfem import: give the scene's name "
+                              "with --out"])
     try:
         if source.lower().endswith(ABAQUS_FILES):
             from .abaqus import inp_to_scene
@@ -36,3 +40,9 @@ def import_model(source: str, out: str | None = None, units: str | None = None):
     except DeckError as e:
         raise SceneError(e.problems) from None
     return write_import(model, out, source, units_set.name)
+
+
+def _written_by_import(path: str) -> bool:
+    """Whether a scene file is one an import wrote (its first line says so), safe to write again."""
+    with open(path, errors="replace") as fh:
+        return fh.readline().startswith("# Imported by `shockfem import`")

@@ -244,3 +244,15 @@ def test_rigid_motion_and_partial_velocity_are_refused(tmp_path):
     problems = "\n".join(_problems(_write(tmp_path, lines)))
     assert "*BOUNDARY_PRESCRIBED_MOTION_RIGID card 1: part 2: a rigid body driven along a curve" in problems
     assert "*INITIAL_VELOCITY card 1: node set 5 covers 4 of body plate's 8 nodes" in problems
+
+
+def test_default_scene_never_overwrites_a_scene_of_its_own(tmp_path):
+    """Beside the deck by default, written again by a later import, but a hand-written scene of the same
+    name is kept (--out names another)."""
+    deck = tmp_path / "block.k"
+    deck.write_text(PLAIN.read_text())
+    first = import_model(str(deck), None, "mm-ms-kg-kN")
+    assert first.scene == str(tmp_path / "block.toml")
+    import_model(str(deck), None, "mm-ms-kg-kN")                        # its own: written again
+    (tmp_path / "block.toml").write_text("[scene]\n")
+    assert "was not written by shockfem import" in _problems(str(deck))[0]
