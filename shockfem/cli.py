@@ -292,7 +292,9 @@ def _dispatch(args) -> int:
 
 
 def _check(args) -> int:
-    print(f"{args.scene}: ok ({check_raw(_raw(args), warn=lambda w: print(f'WARNING: {w}'))})")
+    what = check_raw(_raw(args), warn=lambda w: print(f"WARNING: {w}"),
+                     base_dir=os.path.dirname(os.path.abspath(args.scene)))     # mesh files beside the scene
+    print(f"{args.scene}: ok ({what})")
     return EXIT_OK
 
 

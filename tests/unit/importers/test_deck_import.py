@@ -128,10 +128,13 @@ def test_no_unit_set_is_refused_by_the_command(tmp_path, capsys):
     assert "not consistent" in capsys.readouterr().err
 
 
-def test_the_command_writes_scene_meshes_and_report(tmp_path, capsys):
+def test_the_command_writes_scene_meshes_and_report(tmp_path, capsys, monkeypatch):
     assert main(["import", str(PLAIN), "--out", str(tmp_path / "x.toml"), "--units", "mm-ms-kg-kN"]) == 0
     assert (tmp_path / "x.toml").exists() and (tmp_path / "x_meshes" / "block.msh").exists()
     assert "Keywords not mapped" in capsys.readouterr().out
+    # checked from another folder: the meshes are found beside the scene
+    monkeypatch.chdir(DECKS)
+    assert main(["check", str(tmp_path / "x.toml")]) == 0
 
 
 def test_refused_material_shell_and_missing_set(tmp_path):
