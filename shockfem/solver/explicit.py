@@ -238,7 +238,7 @@ class ExplicitSolver:
             self.v[:] = initial_velocity(self.x)
         self._internal_force(0.0)
         # band-damped bodies' Maxwell terms, driven by the internal force from here on (None if no band)
-        self.band = BandDamping.of(m, self.f_int, self.u)
+        self.band = BandDamping.of(self.model, self.f_int, self.u)
         self._external_force(0.0)
         for source in self.sources:
             self.log_messages += source.begin(self.x, self.v)
