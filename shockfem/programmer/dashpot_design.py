@@ -4,7 +4,8 @@ This is the fixture study's chosen design (``shockfem study fixture``, section 4
 written as a law of the payload, so that the whole machine (``shockfem.machine``) sizes its fixture
 the way the study did for any article: the striker carries a housing full of oil; the article stands
 on a light piston in its bore; a metering pin holds the force m A_g on piston and article over the
-relative stroke (``programmer.concepts.metering_pin_area`` with the two masses' reduced mass).  Four
+relative stroke (``fluid.orifice.area_for_force`` at the relative speed a constant force leaves the two
+masses, the pin's opening never beyond the orifice law's range).  Four
 handles, factors on that closed form (the pin's opening, the liquid column over the stroke, the force
 the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead on the lumped model
 (``programmer.lumped_dashpot``) to a pulse inside the specification's band narrowed by
@@ -12,6 +13,7 @@ the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -24,12 +26,14 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
-from .concepts import least_throttling_pressure, metering_pin_area
+from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force
 from .lumped_dashpot import LumpedDashpot, simulate
 from .requirement import requirement
 
-# the oil (a mineral hydraulic oil) and the orifice's discharge coefficient
+# the oil (a mineral hydraulic oil) and the discharge coefficient of the study's first orifice law
 OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
+# the orifice's law the dashpot is designed on (``fluid/orifice.py``)
+ORIFICE_LAW = AREA_RATIO
 # the bore clears the article by ``clearance``; the piston's thickness; the metering pin's points; the
 # liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
 DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
@@ -87,12 +91,14 @@ def carrier_density() -> float:
 
 
 def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, handles=START,
-                   seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO) -> dict:
+                   seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO,
+                   law: OrificeLaw = ORIFICE_LAW) -> dict:
     """The fluid dashpot for ``pulse`` on an article of ``article_mass`` [kg] in a bore of
     ``bore_radius`` [m]: a piston the article stands on, the metering pin that holds the force m A_g on
     the payload (article, piston and a ``seat_mass`` riding with them) over the relative stroke against a
-    striker of ``striker_ratio`` times the payload, its opening never wider than the bore.  ``handles``
-    (``HANDLES``) scale that closed form; the start is the closed form itself.  SI throughout."""
+    striker of ``striker_ratio`` times the payload, by the orifice ``law``, its opening never wider than
+    the law's largest area ratio.  ``handles`` (``HANDLES``) scale that design; the start is the design
+    itself.  SI throughout."""
     pin_scale, column_over_stroke, force_factor, speed_factor = handles
     area = math.pi * bore_radius ** 2
     m_piston = carrier_density() * area * DASHPOT["piston_thickness"]
@@ -103,11 +109,15 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
     reduced = reduced_mass(payload, M)
     force = force_factor * payload * pulse.peak
     stroke = reduced * V * V / (2 * force)
-    rho, cd = OIL["density"], OIL["discharge"]
+    rho = OIL["density"]
     strokes = np.linspace(0.0, stroke, DASHPOT["pin_points"])
-    pin = [min(pin_scale * metering_pin_area(x, area, force, reduced, V, rho, cd), area) for x in strokes]
-    p_least = least_throttling_pressure(V, rho, cd)
-    return {"handles": dict(zip(HANDLES, map(float, handles))),
+    largest = law.largest_ratio * area
+    code = law.code()
+    # the relative speed the constant force leaves: v^2 = V^2 - 2 F x / mu (mu the reduced mass)
+    speeds = np.sqrt(np.maximum(V * V - 2.0 * force * strokes / reduced, 0.0))
+    pin = [min(pin_scale * area_for_force(force, v, rho, area, largest, code), largest) for v in speeds]
+    p_least = piston_force(largest, V, rho, area, code) / area
+    return {"handles": dict(zip(HANDLES, map(float, handles))), "orifice_law": dataclasses.asdict(law),
             "bore_radius": bore_radius, "piston_area": area, "piston_mass": m_piston, "article_mass": article_mass,
             "seat_mass": seat_mass, "payload_mass": payload,
             "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
@@ -117,10 +127,10 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
 
 
 def dashpot_lumped(d: dict) -> LumpedDashpot:
-    """The lumped model (``programmer.lumped_dashpot``) of a dashpot design."""
+    """The lumped model (``programmer.lumped_dashpot``) of a dashpot design, on the design's orifice law."""
     return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
                          d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), OIL["density"],
-                         OIL["bulk_modulus"], OIL["discharge"])
+                         OIL["bulk_modulus"], OIL["discharge"], law=OrificeLaw(**d["orifice_law"]))
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,

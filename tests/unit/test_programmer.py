@@ -97,7 +97,8 @@ def _scipy_lumped_dashpot(d, end_time, samples):
     def rates(t, y):
         ratio = y[3] / (rho0 * max(V0 - A * y[0], 1e-12 * V0))
         p = liquid.pressure(ratio, K, n)
-        mdot = liquid.orifice_mass_flow(ratio, float(np.interp(y[0], pin_s, pin_a)), d.discharge, K, n, rho0)
+        mdot = liquid.orifice_mass_flow(ratio, float(np.interp(y[0], pin_s, pin_a)), A, d.orifice_law().code(), K, n,
+                                        rho0)
         return [y[1] - y[2], -p * A / d.striker_mass, p * A / d.payload_mass, -mdot]
     mass0 = rho0 * (1.0 + n * d.initial_pressure / K) ** (1.0 / n) * V0
     return solve_ivp(rates, (0.0, end_time), [0.0, d.speed, 0.0, mass0], t_eval=np.linspace(0.0, end_time, samples),
