@@ -186,7 +186,9 @@ class LiquidCavity(ForceSource):
         return [self.pressure, self.volume, self.outflow, self.orifice_area()]
 
     def summary(self) -> dict:
-        return {"walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
+        return {"model": "control volume at one pressure, fixed-Cd orifice; leaves out the liquid's inertia and "
+                         "waves, the velocity of approach and the jet's reaction (fluid/column.py has them)",
+                "walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": self.energy(), "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled}

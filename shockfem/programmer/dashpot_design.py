@@ -27,6 +27,8 @@ from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
 from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force
+from .column_dashpot import simulate_column
+from .dashpot_validity import Limit, dashpot_limits, lumped_holds
 from .lumped_dashpot import LumpedDashpot, simulate
 from .requirement import requirement
 
@@ -165,4 +167,28 @@ def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, se
     if echo:
         echo(f"  dashpot design: {res.nfev} lumped runs")
     d = design(tuple(res.x))
-    return d, simulate(dashpot_lumped(d), end, LUMPED_SAMPLES), int(res.nfev)
+    run = simulate(dashpot_lumped(d), end, LUMPED_SAMPLES)
+    d.update(check_design(d, run, pulse))
+    if echo:
+        echo("  " + "; ".join(Limit(**{k: v for k, v in lim.items() if k != "holds"}).describe()
+                              for lim in d["limits"]))
+    return d, run, int(res.nfev)
+
+
+def check_design(d: dict, run, pulse: PulseSpec) -> dict:
+    """The dashpot's range checks on its lumped ``run`` (``dashpot_validity``) and, where the lumped model
+    leaves its range, the same design on the liquid column (``column_dashpot``) with its pulse and its
+    own checks: what a designer must read before trusting the lumped pulse."""
+    lumped = dashpot_lumped(d)
+    limits = dashpot_limits(lumped, run)
+    out = {"limits": [lim.as_dict() for lim in limits], "lumped_holds": lumped_holds(limits)}
+    if not out["lumped_holds"]:
+        column = simulate_column(lumped, pulse.record_end(), LUMPED_SAMPLES)
+        metrics, band = pulse.band(column.t, column.acceleration)
+        out["column_check"] = {"peak": float(metrics.peak), "duration": float(metrics.duration),
+                               "velocity_change": float(metrics.velocity_change), "band_passed": bool(band.passed),
+                               "peak_pressure": float(column.pressure.max()),
+                               "peak_floor_pressure": float(column.floor_pressure.max()),
+                               "limits": [lim.as_dict() for lim in dashpot_limits(lumped, column)],
+                               **column.summary}
+    return out
