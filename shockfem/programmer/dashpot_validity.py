@@ -11,7 +11,7 @@
     transit time      the column's L / c over the pulse's rise (10% to 90% of its peak): one pressure at
                       every point of the liquid needs many transits per rise, below ``LUMPED_TRANSIT``
     cavitation        the lumped liquid at zero pressure while the stroke goes on (it would part), or
-                      the column's cavity opening
+                      the column's cavity opening while the striker still closes on the payload
 
 The lumped model (``lumped_dashpot``) is the design model only where all of them hold; else the column
 (``column_dashpot``) is, within its own area ratio and Mach number.
@@ -31,6 +31,8 @@ LUMPED_MACH = INCOMPRESSIBLE_MACH
 COLUMN_MACH = 0.5
 LUMPED_LIQUID_MASS = 0.1
 LUMPED_TRANSIT = 0.1
+# a column parted by less than this share of its volume has not cavitated (the void's round-off)
+PARTED = 1e-6
 
 
 @dataclass(frozen=True)
@@ -77,7 +79,8 @@ def dashpot_limits(d: LumpedDashpot, run) -> list[Limit]:
     transit = d.column / c / rise_time(run.t, run.acceleration)
     stroking = relative > 1e-3 * d.speed
     if hasattr(run, "cavity"):
-        cavity = float(np.max(run.cavity)) / (d.piston_area * d.column)
+        # while the stroke goes on: after it the payload leaves the oil, which is no cavitation
+        cavity = float(np.max(run.cavity[stroking], initial=0.0)) / (d.piston_area * d.column)
     else:
         loaded = np.flatnonzero(run.pressure > 0.0)
         after = np.arange(len(run.t)) > (loaded[0] if len(loaded) else len(run.t))
@@ -88,7 +91,7 @@ def dashpot_limits(d: LumpedDashpot, run) -> list[Limit]:
             Limit("piston Mach number in the liquid", mach, COLUMN_MACH, "column"),
             Limit("liquid mass / payload", liquid, LUMPED_LIQUID_MASS, "lumped"),
             Limit("column transit time / pulse rise", transit, LUMPED_TRANSIT, "lumped"),
-            Limit("cavitation (lumped: parts while stroking; column: cavity / column volume)", cavity, 0.0,
+            Limit("cavitation (lumped: parts while stroking; column: cavity / column volume)", cavity, PARTED,
                   "lumped and column")]
 
 
