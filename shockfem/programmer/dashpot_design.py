@@ -5,7 +5,7 @@ written as a law of the payload, so that the whole machine (``shockfem.machine``
 the way the study did for any article: the striker carries a housing full of oil; the article stands
 on a light piston in its bore; a metering pin holds the force m A_g on piston and article over the
 relative stroke (``fluid.orifice.area_for_force`` at the relative speed a constant force leaves the two
-masses, the pin's opening never beyond the orifice law's range).  Four
+masses, the pin's opening never beyond the orifice law's largest area ratio).  Four
 handles, factors on that closed form (the pin's opening, the liquid column over the stroke, the force
 the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead on the lumped model
 (``programmer.lumped_dashpot``) to a pulse inside the specification's band narrowed by
@@ -26,7 +26,7 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
-from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force
+from ..fluid.orifice import FIXED_CD, OrificeLaw, area_for_force, piston_force
 from .column_dashpot import simulate_column
 from .dashpot_validity import Limit, dashpot_limits, lumped_holds
 from .lumped_dashpot import LumpedDashpot, simulate
@@ -34,8 +34,10 @@ from .requirement import requirement
 
 # the oil (a mineral hydraulic oil) and the discharge coefficient of the study's first orifice law
 OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
-# the orifice's law the dashpot is designed on (``fluid/orifice.py``)
-ORIFICE_LAW = AREA_RATIO
+# the orifice's law the dashpot is designed on (``fluid/orifice.py``): still the study's first law (fixed
+# Cd, no approach, no jet, the pin open to the whole bore), whose designs ``check_design`` reports outside
+# its range and runs on the liquid column; ``AREA_RATIO`` is the law a design inside its range uses
+ORIFICE_LAW = FIXED_CD
 # the bore clears the article by ``clearance``; the piston's thickness; the metering pin's points; the
 # liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
 DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
