@@ -67,3 +67,13 @@ def test_the_law_is_iso_5167s_orifice_within_three_percent(beta):
     C = 0.5961 + 0.0261 beta^2 - 0.216 beta^8.  Measured: -0.5%, +1.0%, +2.7% (``verify orifice_law``)."""
     rhg = 0.5961 + 0.0261 * beta ** 2 - 0.216 * beta ** 8
     assert orifice.iso_discharge_coefficient(beta ** 2) == pytest.approx(rhg, rel=0.03)
+
+
+def test_the_fixed_law_cuts_the_closed_form_metering_pin():
+    """Under the fixed-Cd law the designer's inverse is fixtures.md's closed form
+    a = (A^1.5 / Cd) sqrt(rho / (2F)) v (``programmer.concepts.metering_pin_area`` at stroke 0, speed v):
+    the bisection's 1e-12 of the bore."""
+    from shockfem.programmer.concepts import metering_pin_area
+    F, v = 5e5, 400.0
+    closed = metering_pin_area(0.0, A, F, 1.0, v, RHO, 0.7)
+    assert orifice.area_for_force(F, v, RHO, A, A, FIXED_CD.code()) == pytest.approx(closed, rel=1e-10)
