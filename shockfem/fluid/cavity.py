@@ -7,8 +7,10 @@ outward normals face the liquid; the cavity's other walls are held still):
                                                         in axisymmetry), v_f its mean velocity
     M        : the liquid's mass, less what the orifice has let out;  rho = M / V
     p        = K / n ((rho / rho0)^n - 1)               gauge pressure, Tait's law (``liquid.py``)
-    mdot     = Cd a rho min(sqrt(2 p / rho), c)         the orifice jet (``liquid.py``), taken at the
-                                                        step's end (backward Euler)
+    mdot     = Cd a rho min(sqrt(2 p / rho), c)         the orifice jet (``orifice.py``'s fixed-Cd law,
+                                                        without the velocity of approach or the jet's
+                                                        reaction), taken at the step's end (backward
+                                                        Euler)
     f        = -p S_f / (nodes per facet) on each wall node: the liquid pushes the walls away from it,
                                                         on the current geometry (a follower load)
 
@@ -32,6 +34,7 @@ from ..forces.source import ForceSource
 from ..model import Model
 from ..scene.specs import Cavity
 from . import liquid
+from .orifice import OrificeLaw
 
 
 class LiquidCavity(ForceSource):
@@ -91,6 +94,9 @@ class LiquidCavity(ForceSource):
         self.max_pressure = 0.0
         curve = np.array(spec.orifice, dtype=float)
         self._stroke, self._area = curve[:, 0], curve[:, 1]
+        # the cavity's law: a fixed Cd on the jet, no velocity of approach (a passage of the orifice's area
+        # is never read with ``approach`` off), no jet reaction: the control volume's cheap fidelity
+        self._law = OrificeLaw(discharge=spec.discharge, approach=False, jet=False).code()
 
     # ---------------------------------------------------------------- state
     def density_ratio(self) -> float:
@@ -116,7 +122,8 @@ class LiquidCavity(ForceSource):
         """The mass the orifice lets out over the step, at the pressure it leaves behind
         (``liquid.outflow_over_step``: backward Euler), through the area of the step's stroke."""
         sp = self.spec
-        return liquid.outflow_over_step(self.mass_liquid, self.volume, dt, self.orifice_area(), sp.discharge,
+        area = self.orifice_area()
+        return liquid.outflow_over_step(self.mass_liquid, self.volume, dt, area, area, self._law,
                                         sp.bulk_modulus, sp.tait_exponent, sp.density)
 
     # ---------------------------------------------------------------- geometry
@@ -179,7 +186,9 @@ class LiquidCavity(ForceSource):
         return [self.pressure, self.volume, self.outflow, self.orifice_area()]
 
     def summary(self) -> dict:
-        return {"walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
+        return {"model": "control volume at one pressure, fixed-Cd orifice; leaves out the liquid's inertia and "
+                         "waves, the velocity of approach and the jet's reaction (fluid/column.py has them)",
+                "walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": self.energy(), "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled}

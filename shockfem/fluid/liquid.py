@@ -5,8 +5,9 @@
                                               modulus K at rest); never below 0 (the liquid cavitates
                                               rather than pulls)
     c    = sqrt(dp / drho) = sqrt(K (rho / rho0)^(n - 1) / rho0)
-    mdot = Cd a rho min(sqrt(2 p / rho), c)   the orifice jet (Bernoulli, quasi-steady, into a space
-                                              at zero gauge pressure), held at the sound speed
+    mdot                                      the orifice jet (``orifice.py``: quasi-steady, into a
+                                              space at zero gauge pressure, held at the sound speed),
+                                              at the liquid's pressure and density
 
 Compiled (numba, without fastmath: the same arithmetic as Python's), since the cavity solves its
 outflow with them every step (``outflow_over_step``) and the lumped dashpot's integrator calls them at
@@ -17,6 +18,8 @@ from __future__ import annotations
 import math
 
 from numba import njit
+
+from . import orifice
 
 
 @njit(cache=True)
@@ -31,13 +34,11 @@ def sound_speed(ratio: float, K: float, n: float, rho0: float) -> float:
 
 
 @njit(cache=True)
-def orifice_mass_flow(ratio: float, area: float, discharge: float, K: float, n: float, rho0: float) -> float:
-    """The orifice's mass rate [kg/s] from liquid at the density ratio ``ratio``."""
-    p = pressure(ratio, K, n)
-    if p <= 0.0:
-        return 0.0
-    rho = rho0 * ratio
-    return discharge * area * rho * min(math.sqrt(2.0 * p / rho), sound_speed(ratio, K, n, rho0))
+def orifice_mass_flow(ratio: float, area: float, passage: float, law, K: float, n: float, rho0: float) -> float:
+    """The mass rate [kg/s] through an orifice of ``area`` in a passage of area ``passage`` from liquid at
+    the density ratio ``ratio``, by the orifice ``law`` (``orifice.OrificeLaw.code``)."""
+    return orifice.mass_flow(pressure(ratio, K, n), rho0 * ratio, sound_speed(ratio, K, n, rho0), area, passage,
+                             law)
 
 
 def compression_energy(ratio: float, K: float, n: float, rho0: float) -> float:
@@ -50,7 +51,7 @@ def compression_energy(ratio: float, K: float, n: float, rho0: float) -> float:
 
 
 @njit(cache=True)
-def outflow_over_step(mass: float, volume: float, dt: float, area: float, discharge: float, K: float, n: float,
+def outflow_over_step(mass: float, volume: float, dt: float, area: float, passage: float, law, K: float, n: float,
                       rho0: float) -> float:
     """The mass m an orifice of ``area`` lets out of ``mass`` of liquid in ``volume`` over a step ``dt``, at
     the pressure it leaves behind (backward Euler: m = dt mdot(M - m)), by bisection to 1e-13 of the mass:
@@ -58,12 +59,12 @@ def outflow_over_step(mass: float, volume: float, dt: float, area: float, discha
     step's compression, K dV / V, can exceed the pressure itself: taking the outflow at the start-of-step
     pressure would overshoot it every step."""
     high = mass - rho0 * volume
-    if high <= 0.0 or orifice_mass_flow(mass / (rho0 * volume), area, discharge, K, n, rho0) == 0.0:
+    if high <= 0.0 or orifice_mass_flow(mass / (rho0 * volume), area, passage, law, K, n, rho0) == 0.0:
         return 0.0
     low = 0.0
     for _ in range(60):
         mid = 0.5 * (low + high)
-        if mid - dt * orifice_mass_flow((mass - mid) / (rho0 * volume), area, discharge, K, n, rho0) > 0.0:
+        if mid - dt * orifice_mass_flow((mass - mid) / (rho0 * volume), area, passage, law, K, n, rho0) > 0.0:
             high = mid
         else:
             low = mid

@@ -4,7 +4,8 @@ This is the fixture study's chosen design (``shockfem study fixture``, section 4
 written as a law of the payload, so that the whole machine (``shockfem.machine``) sizes its fixture
 the way the study did for any article: the striker carries a housing full of oil; the article stands
 on a light piston in its bore; a metering pin holds the force m A_g on piston and article over the
-relative stroke (``programmer.concepts.metering_pin_area`` with the two masses' reduced mass).  Four
+relative stroke (``fluid.orifice.area_for_force`` at the relative speed a constant force leaves the two
+masses, the pin's opening never beyond the orifice law's largest area ratio).  Four
 handles, factors on that closed form (the pin's opening, the liquid column over the stroke, the force
 the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead on the lumped model
 (``programmer.lumped_dashpot``) to a pulse inside the specification's band narrowed by
@@ -12,6 +13,7 @@ the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -24,12 +26,18 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
-from .concepts import least_throttling_pressure, metering_pin_area
+from ..fluid.orifice import FIXED_CD, OrificeLaw, area_for_force, piston_force
+from .column_dashpot import simulate_column
+from .dashpot_validity import Limit, dashpot_limits, lumped_holds
 from .lumped_dashpot import LumpedDashpot, simulate
 from .requirement import requirement
 
-# the oil (a mineral hydraulic oil) and the orifice's discharge coefficient
+# the oil (a mineral hydraulic oil) and the discharge coefficient of the study's first orifice law
 OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
+# the orifice's law the dashpot is designed on (``fluid/orifice.py``): still the study's first law (fixed
+# Cd, no approach, no jet, the pin open to the whole bore), whose designs ``check_design`` reports outside
+# its range and runs on the liquid column; ``AREA_RATIO`` is the law a design inside its range uses
+ORIFICE_LAW = FIXED_CD
 # the bore clears the article by ``clearance``; the piston's thickness; the metering pin's points; the
 # liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
 DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
@@ -87,12 +95,14 @@ def carrier_density() -> float:
 
 
 def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, handles=START,
-                   seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO) -> dict:
+                   seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO,
+                   law: OrificeLaw = ORIFICE_LAW) -> dict:
     """The fluid dashpot for ``pulse`` on an article of ``article_mass`` [kg] in a bore of
     ``bore_radius`` [m]: a piston the article stands on, the metering pin that holds the force m A_g on
     the payload (article, piston and a ``seat_mass`` riding with them) over the relative stroke against a
-    striker of ``striker_ratio`` times the payload, its opening never wider than the bore.  ``handles``
-    (``HANDLES``) scale that closed form; the start is the closed form itself.  SI throughout."""
+    striker of ``striker_ratio`` times the payload, by the orifice ``law``, its opening never wider than
+    the law's largest area ratio.  ``handles`` (``HANDLES``) scale that design; the start is the design
+    itself.  SI throughout."""
     pin_scale, column_over_stroke, force_factor, speed_factor = handles
     area = math.pi * bore_radius ** 2
     m_piston = carrier_density() * area * DASHPOT["piston_thickness"]
@@ -103,11 +113,15 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
     reduced = reduced_mass(payload, M)
     force = force_factor * payload * pulse.peak
     stroke = reduced * V * V / (2 * force)
-    rho, cd = OIL["density"], OIL["discharge"]
+    rho = OIL["density"]
     strokes = np.linspace(0.0, stroke, DASHPOT["pin_points"])
-    pin = [min(pin_scale * metering_pin_area(x, area, force, reduced, V, rho, cd), area) for x in strokes]
-    p_least = least_throttling_pressure(V, rho, cd)
-    return {"handles": dict(zip(HANDLES, map(float, handles))),
+    largest = law.largest_ratio * area
+    code = law.code()
+    # the relative speed the constant force leaves: v^2 = V^2 - 2 F x / mu (mu the reduced mass)
+    speeds = np.sqrt(np.maximum(V * V - 2.0 * force * strokes / reduced, 0.0))
+    pin = [min(pin_scale * area_for_force(force, v, rho, area, largest, code), largest) for v in speeds]
+    p_least = piston_force(largest, V, rho, area, code) / area
+    return {"handles": dict(zip(HANDLES, map(float, handles))), "orifice_law": dataclasses.asdict(law),
             "bore_radius": bore_radius, "piston_area": area, "piston_mass": m_piston, "article_mass": article_mass,
             "seat_mass": seat_mass, "payload_mass": payload,
             "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
@@ -117,10 +131,10 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
 
 
 def dashpot_lumped(d: dict) -> LumpedDashpot:
-    """The lumped model (``programmer.lumped_dashpot``) of a dashpot design."""
+    """The lumped model (``programmer.lumped_dashpot``) of a dashpot design, on the design's orifice law."""
     return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
                          d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), OIL["density"],
-                         OIL["bulk_modulus"], OIL["discharge"])
+                         OIL["bulk_modulus"], OIL["discharge"], law=OrificeLaw(**d["orifice_law"]))
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
@@ -155,4 +169,28 @@ def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, se
     if echo:
         echo(f"  dashpot design: {res.nfev} lumped runs")
     d = design(tuple(res.x))
-    return d, simulate(dashpot_lumped(d), end, LUMPED_SAMPLES), int(res.nfev)
+    run = simulate(dashpot_lumped(d), end, LUMPED_SAMPLES)
+    d.update(check_design(d, run, pulse))
+    if echo:
+        echo("  " + "; ".join(Limit(**{k: v for k, v in lim.items() if k != "holds"}).describe()
+                              for lim in d["limits"]))
+    return d, run, int(res.nfev)
+
+
+def check_design(d: dict, run, pulse: PulseSpec) -> dict:
+    """The dashpot's range checks on its lumped ``run`` (``dashpot_validity``) and, where the lumped model
+    leaves its range, the same design on the liquid column (``column_dashpot``) with its pulse and its
+    own checks: what a designer must read before trusting the lumped pulse."""
+    lumped = dashpot_lumped(d)
+    limits = dashpot_limits(lumped, run)
+    out = {"limits": [lim.as_dict() for lim in limits], "lumped_holds": lumped_holds(limits)}
+    if not out["lumped_holds"]:
+        column = simulate_column(lumped, pulse.record_end(), LUMPED_SAMPLES)
+        metrics, band = pulse.band(column.t, column.acceleration)
+        out["column_check"] = {"peak": float(metrics.peak), "duration": float(metrics.duration),
+                               "velocity_change": float(metrics.velocity_change), "band_passed": bool(band.passed),
+                               "peak_pressure": float(column.pressure.max()),
+                               "peak_floor_pressure": float(column.floor_pressure.max()),
+                               "limits": [lim.as_dict() for lim in dashpot_limits(lumped, column)],
+                               **column.summary}
+    return out

@@ -5,12 +5,16 @@ A striker of mass M (carrying the housing and its liquid) closes at V on a paylo
 piston and the article, at rest).  The liquid between them, of volume V(s) = V0 - A s for the
 relative stroke s, holds a mass that the orifice lets out; its pressure and jet follow
 ``fluid/liquid.py`` (the same laws as the finite-element cavity), the orifice area is the metering
-pin's table of s:
+pin's table of s, the orifice's law one of ``fluid/orifice.py``'s (``law``: the study's first law, a
+fixed Cd with no velocity of approach or jet reaction, unless another is given):
 
-    m x_p'' = p A,   M x_s'' = -p A,   s = x_s - x_p,   M_l' = -mdot(M_l / (rho0 V(s)), a(s))
+    m x_p'' = p A - J,   M x_s'' = -p A,   s = x_s - x_p,   M_l' = -mdot(M_l / (rho0 V(s)), a(s), A)
 
-Left out, as in the cavity: the liquid's inertia and waves, and everything elastic in the bodies
-(the finite-element run has that); ``shockfem study fixture`` shows the two agree.
+with J = mdot (u_j - u1) the jet's reaction on the piston (``orifice.jet_reaction``; 0 for a law
+without it).  Left out: the liquid's inertia and waves (the column of ``programmer/column_dashpot.py``
+has them), and everything elastic in the bodies (the finite-element run has that).  Its range: the
+column's transit time short against the pulse's rise, the piston slow against the liquid's sound
+speed, the liquid light against the payload (``programmer/dashpot_validity.py`` checks them).
 """
 from __future__ import annotations
 
@@ -20,7 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..fluid import liquid
+from ..fluid import liquid, orifice
+from ..fluid.orifice import OrificeLaw
 
 
 @dataclass(frozen=True)
@@ -36,6 +41,10 @@ class LumpedDashpot:
     discharge: float                    # Cd
     tait_exponent: float = 1.0
     initial_pressure: float = 0.0       # a pre-charge [Pa] (gauge), as the cavity's
+    law: OrificeLaw | None = None       # the orifice's law; None: ``discharge`` fixed, as the cavity's
+
+    def orifice_law(self) -> OrificeLaw:
+        return self.law or OrificeLaw(discharge=self.discharge, approach=False, jet=False)
 
 
 @dataclass(frozen=True)
@@ -43,6 +52,7 @@ class LumpedRun:
     t: np.ndarray                       # [s]
     acceleration: np.ndarray            # the payload's [m/s^2]
     pressure: np.ndarray                # [Pa]
+    jet_force: np.ndarray               # the jet's reaction J on the piston [N]
     stroke: np.ndarray                  # [m]
     payload_speed: np.ndarray           # [m/s]
     striker_speed: np.ndarray           # [m/s]
@@ -60,7 +70,7 @@ def simulate(d: LumpedDashpot, end_time: float, samples: int = 4000) -> LumpedRu
     A, K, n, rho0 = d.piston_area, d.bulk_modulus, d.tait_exponent, d.density
     V0 = A * d.column
     pin = np.array(d.pin, dtype=float).reshape(-1, 2)
-    constants = np.array([A, d.striker_mass, d.payload_mass, V0, rho0, K, n, d.discharge])
+    constants = np.concatenate([[A, d.striker_mass, d.payload_mass, V0, rho0, K, n], d.orifice_law().code()])
     t = np.linspace(0.0, end_time, samples)
     mass0 = rho0 * (1.0 + n * d.initial_pressure / K) ** (1.0 / n) * V0
     y = np.empty((samples, 4))
@@ -70,7 +80,8 @@ def simulate(d: LumpedDashpot, end_time: float, samples: int = 4000) -> LumpedRu
     if done < samples:
         raise RuntimeError(f"lumped dashpot: the step fell below round-off at t = {t[done]:.6g} s")
     p = np.array([_pressure(constants, row) for row in y])
-    return LumpedRun(t, p * A / d.payload_mass, p, y[:, 0], y[:, 2], y[:, 1])
+    jet = np.array([_jet(constants, pin[:, 0], pin[:, 1], row) for row in y])
+    return LumpedRun(t, (p * A - jet) / d.payload_mass, p, jet, y[:, 0], y[:, 2], y[:, 1])
 
 
 RTOL, ATOL = 1e-8, 1e-12        # the integration's tolerances (scipy's meaning)
@@ -89,7 +100,7 @@ def _tableau():
 def _liquid(constants, y):
     """The liquid's density ratio and gauge pressure in the state ``y`` = (stroke, striker speed, payload
     speed, liquid mass), in its volume V0 - A s (kept above 1e-12 V0)."""
-    A, _, _, V0, rho0, K, n, _ = constants
+    A, V0, rho0, K, n = constants[0], constants[3], constants[4], constants[5], constants[6]
     ratio = y[3] / (rho0 * max(V0 - A * y[0], 1e-12 * V0))
     return ratio, liquid.pressure(ratio, K, n)
 
@@ -101,15 +112,30 @@ def _pressure(constants, y):
 
 
 @njit(cache=True)
+def _outflow(constants, pin_s, pin_a, y):
+    """The orifice's mass rate and the jet's reaction on the piston in the state ``y``."""
+    A, rho0, K, n, law = constants[0], constants[4], constants[5], constants[6], constants[7:]
+    ratio, _ = _liquid(constants, y)
+    area = np.interp(y[0], pin_s, pin_a)
+    mdot = liquid.orifice_mass_flow(ratio, area, A, law, K, n, rho0)
+    return mdot, orifice.jet_reaction(mdot, rho0 * ratio, area, A, law)
+
+
+@njit(cache=True)
+def _jet(constants, pin_s, pin_a, y):
+    return _outflow(constants, pin_s, pin_a, y)[1]
+
+
+@njit(cache=True)
 def _rates(constants, pin_s, pin_a, y, out):
     """dy/dt of (stroke, striker speed, payload speed, liquid mass), into ``out``."""
-    A, M, m, _, rho0, K, n, Cd = constants
-    ratio, p = _liquid(constants, y)
-    area = np.interp(y[0], pin_s, pin_a)
+    A, M, m = constants[0], constants[1], constants[2]
+    _, p = _liquid(constants, y)
+    mdot, jet = _outflow(constants, pin_s, pin_a, y)
     out[0] = y[1] - y[2]
     out[1] = -p * A / M
-    out[2] = p * A / m
-    out[3] = -liquid.orifice_mass_flow(ratio, area, Cd, K, n, rho0)
+    out[2] = (p * A - jet) / m
+    out[3] = -mdot
 
 
 @njit(cache=True)

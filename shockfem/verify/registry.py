@@ -22,6 +22,7 @@ from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
 from .dashpot_cases import fluid_dashpot
+from .column_cases import liquid_column, orifice_law
 from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
                                 penetration_yaw)
@@ -67,6 +68,8 @@ CASES = {
     "cone_push": cone_push,
     "cone_rebound": cone_rebound,
     "fluid_dashpot": fluid_dashpot,
+    "orifice_law": orifice_law,
+    "liquid_column": liquid_column,
     "forrestal": forrestal,
     "penetration_rigid": penetration_rigid,
     "penetration_wave": penetration_wave,

@@ -89,7 +89,7 @@ def _scipy_lumped_dashpot(d, end_time, samples):
     as ``simulate``): the reference its compiled copy of that integrator must reproduce."""
     import numpy as np
     from scipy.integrate import solve_ivp
-    from shockfem.fluid import liquid
+    from shockfem.fluid import liquid, orifice
     A, K, n, rho0 = d.piston_area, d.bulk_modulus, d.tait_exponent, d.density
     V0 = A * d.column
     pin_s, pin_a = np.array([p[0] for p in d.pin]), np.array([p[1] for p in d.pin])
@@ -97,8 +97,10 @@ def _scipy_lumped_dashpot(d, end_time, samples):
     def rates(t, y):
         ratio = y[3] / (rho0 * max(V0 - A * y[0], 1e-12 * V0))
         p = liquid.pressure(ratio, K, n)
-        mdot = liquid.orifice_mass_flow(ratio, float(np.interp(y[0], pin_s, pin_a)), d.discharge, K, n, rho0)
-        return [y[1] - y[2], -p * A / d.striker_mass, p * A / d.payload_mass, -mdot]
+        area, law = float(np.interp(y[0], pin_s, pin_a)), d.orifice_law().code()
+        mdot = liquid.orifice_mass_flow(ratio, area, A, law, K, n, rho0)
+        jet = orifice.jet_reaction(mdot, rho0 * ratio, area, A, law)
+        return [y[1] - y[2], -p * A / d.striker_mass, (p * A - jet) / d.payload_mass, -mdot]
     mass0 = rho0 * (1.0 + n * d.initial_pressure / K) ** (1.0 / n) * V0
     return solve_ivp(rates, (0.0, end_time), [0.0, d.speed, 0.0, mass0], t_eval=np.linspace(0.0, end_time, samples),
                      rtol=1e-8, atol=1e-12, max_step=end_time / 2000)

@@ -1,0 +1,191 @@
+"""The orifice of a fluid dashpot: the quasi-steady flow through an area a in a piston (or plate) that
+the liquid approaches through a passage of area A, into a space at the downstream pressure.
+
+Seen from the orifice, liquid at gauge pressure p and speed u1 = Q / A in the passage leaves as a jet
+of area Cc a at the downstream pressure (0 gauge) and speed u_j = Q / (Cc a).  Bernoulli from the
+passage to the jet's contracted section (the losses of a thin orifice are in Cc; they happen after it,
+where the jet mixes):
+
+    p = rho u_j^2 / 2 (1 - (Cc n)^2),     n = a / A,     mdot = rho Cc a u_j
+      = rho Cc a sqrt(2 p / (rho (1 - (Cc n)^2)))
+
+the flow-meter form with the velocity of approach (ISO 5167-1's 1 / sqrt(1 - beta^4) with the jet's
+own contraction).  The contraction of a thin sharp-edged orifice against the area ratio is
+Idelchik's (Handbook of Hydraulic Resistance, 3rd ed., 1994, diagram 4-9, thin-walled orifice,
+Re > 1e5): the total-pressure loss referred to the passage's speed, with the jet entering a large
+space (f0 / f2 -> 0),
+
+    zeta = (1 + 0.707 sqrt(1 - n))^2 / n^2       p + rho u1^2 / 2 = zeta rho u1^2 / 2
+
+which is the law above with
+
+    Cc(n) = 1 / (1 + 0.707 sqrt(1 - n))          0.586 at n -> 0, 0.667 at n = 0.5, 1 at n = 1.
+
+``shockfem verify orifice_law`` checks it against ISO 5167-2's Reader-Harris/Gallagher coefficient at
+three area ratios.  Its range of validity (``VALID_AREA_RATIO``): the thin sharp-edged orifice
+of ISO 5167-2 (beta = d / D <= 0.75, n <= 0.56), where it agrees with the standard within 3%; above
+that the jet hardly contracts, the pressure a given flow needs falls to zero at n = 1, and the law is
+Idelchik's extrapolation, not a measured coefficient.  Reynolds number: both sources hold for a
+turbulent orifice (Re_D > 1e4 to 1e5); at the end of a stroke the flow slows below that and the
+coefficient rises toward a laminar orifice's.
+
+The jet's momentum: a control volume moving with the piston from the passage (pressure p, speed u1)
+to the jet's contracted section (0 gauge, u_j) gives the force of the liquid on the piston
+
+    F = p A - mdot (u_j - u1)
+
+(the jet's reaction takes from p A what the liquid gains accelerating through the orifice); with
+Bernoulli, F = rho A (u_j - u1)^2 / 2, the Borda-Carnot loss.  A law that pushes with p A alone
+overstates the force by mdot (u_j - u1).
+
+The laws a model picks (``OrificeLaw``): the study's first law (fixed Cd, no velocity of approach, no
+jet reaction) kept for comparison, and the area-ratio law with approach and jet (the default).
+Compiled (numba): the kernels call it every stage of an integration.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+# the coefficient of Idelchik's thin-orifice contraction term, 0.707 = 1 / sqrt(2) (diagram 4-9)
+IDELCHIK_CONTRACTION = 0.707
+# the largest area ratio of ISO 5167-2's thin orifice plates (beta <= 0.75), where the law is checked
+VALID_AREA_RATIO = 0.75 ** 2
+# 1 - (Cc n)^2 is kept above this: at n -> 1 the law lets any flow pass at no pressure (Idelchik's Cc
+# -> 1), which a stiff integration cannot follow; 1e-3 is reached only above n = 1 - 5e-7
+APPROACH_FLOOR = 1e-3
+# the law's codes in a kernel's parameter array (``OrificeLaw.code``)
+FIXED, IDELCHIK = 0.0, 1.0
+
+
+@dataclass(frozen=True)
+class OrificeLaw:
+    """How an orifice passes liquid.  ``discharge``: a fixed coefficient, or None for Idelchik's
+    contraction against the area ratio; ``approach``: count the passage's velocity of approach;
+    ``jet``: take the jet's momentum from the force on the piston; ``largest_ratio``: the largest area
+    ratio a designer may cut (the law's range)."""
+    discharge: float | None = None
+    approach: bool = True
+    jet: bool = True
+    largest_ratio: float = VALID_AREA_RATIO
+
+    def code(self) -> np.ndarray:
+        """The law as four floats for the compiled kernels: (law, fixed Cd, approach, jet)."""
+        return np.array([FIXED if self.discharge is not None else IDELCHIK,
+                         self.discharge if self.discharge is not None else 0.0,
+                         1.0 if self.approach else 0.0, 1.0 if self.jet else 0.0])
+
+    def describe(self) -> str:
+        cd = f"Cd {self.discharge:g} fixed" if self.discharge is not None else "Idelchik's Cc(a / A)"
+        return (f"quasi-steady orifice, {cd}, {'with' if self.approach else 'without'} the velocity of approach, "
+                f"{'with' if self.jet else 'without'} the jet's reaction on the piston")
+
+
+# the study's first law (which let the orifice open to the whole bore), and the area-ratio law
+FIXED_CD = OrificeLaw(discharge=0.7, approach=False, jet=False, largest_ratio=1.0)
+AREA_RATIO = OrificeLaw()
+
+
+@njit(cache=True)
+def contraction(n: float) -> float:
+    """Idelchik's jet contraction of a thin sharp-edged orifice at the area ratio n = a / A."""
+    return 1.0 / (1.0 + IDELCHIK_CONTRACTION * math.sqrt(max(1.0 - n, 0.0)))
+
+
+@njit(cache=True)
+def jet_coefficient(n: float, law) -> float:
+    """The jet's coefficient Cc: the law's fixed one, or Idelchik's at n."""
+    return law[1] if law[0] == FIXED else contraction(n)
+
+
+@njit(cache=True)
+def approach_factor(cc: float, n: float, law) -> float:
+    """1 - (Cc n)^2 with the velocity of approach (kept above ``APPROACH_FLOOR``), else 1."""
+    return max(1.0 - (cc * n) ** 2, APPROACH_FLOOR) if law[2] > 0.0 else 1.0
+
+
+@njit(cache=True)
+def mass_flow(p: float, rho: float, c: float, a: float, A: float, law) -> float:
+    """The mass rate [kg/s] through an orifice of area ``a`` from a passage of area ``A`` holding liquid
+    of density ``rho`` at gauge pressure ``p`` (sound speed ``c``), the jet's speed held at ``c``."""
+    if p <= 0.0 or a <= 0.0:
+        return 0.0
+    n = min(a / A, 1.0)
+    cc = jet_coefficient(n, law)
+    u_jet = min(math.sqrt(2.0 * p / (rho * approach_factor(cc, n, law))), c)
+    return rho * cc * a * u_jet
+
+
+@njit(cache=True)
+def jet_reaction(mdot: float, rho: float, a: float, A: float, law) -> float:
+    """mdot (u_j - u1) [N]: what the jet's momentum takes from p A on the piston (0 if the law leaves
+    the jet out)."""
+    if law[3] <= 0.0 or mdot <= 0.0 or a <= 0.0:
+        return 0.0
+    n = min(a / A, 1.0)
+    return mdot * (mdot / (rho * jet_coefficient(n, law) * a) - mdot / (rho * A))
+
+
+@njit(cache=True)
+def pressure_for_flow(Q: float, rho: float, a: float, A: float, law) -> float:
+    """The gauge pressure that drives a volume rate ``Q`` [m^3/s] through the orifice (the inverse of
+    ``mass_flow`` below the sound speed)."""
+    if Q <= 0.0:
+        return 0.0
+    n = min(a / A, 1.0)
+    cc = jet_coefficient(n, law)
+    u_jet = Q / (cc * a)
+    return 0.5 * rho * u_jet * u_jet * approach_factor(cc, n, law)
+
+
+def iso_discharge_coefficient(n: float, law: OrificeLaw = AREA_RATIO) -> float:
+    """The law's flow written as ISO 5167's Q = C / sqrt(1 - beta^4) a sqrt(2 dp / rho), dp = p (the
+    downstream tapping at the contracted jet, corner tappings): C = Cc sqrt((1 - n^2) / (1 - (Cc n)^2))."""
+    code = law.code()
+    cc = jet_coefficient(n, code)
+    return cc * math.sqrt((1.0 - n * n) / approach_factor(cc, n, code))
+
+
+@njit(cache=True)
+def piston_force(a: float, speed: float, rho: float, A: float, law) -> float:
+    """The force [N] of incompressible liquid on a piston of area ``A`` with an orifice ``a`` driven into
+    it at ``speed`` (Q = A speed): p A less the jet's reaction."""
+    p = pressure_for_flow(A * speed, rho, a, A, law)
+    return p * A - jet_reaction(rho * A * speed, rho, a, A, law)
+
+
+@njit(cache=True)
+def area_for_force(force: float, speed: float, rho: float, A: float, largest: float, law) -> float:
+    """The orifice area that holds ``force`` on the piston at ``speed`` (``piston_force`` falls as the
+    area grows), by bisection to 1e-12 of ``largest``; ``largest`` if even that area throttles above
+    ``force``; 0 at no speed."""
+    if speed <= 0.0:
+        return 0.0
+    if piston_force(largest, speed, rho, A, law) >= force:
+        return largest
+    low, high = 0.0, largest
+    for _ in range(100):
+        mid = 0.5 * (low + high)
+        if piston_force(mid, speed, rho, A, law) > force:
+            low = mid
+        else:
+            high = mid
+        if high - low <= 1e-12 * largest:
+            break
+    return 0.5 * (low + high)
+
+
+# a law without the velocity of approach holds while the term it drops, (Cc n)^2, stays below 5%
+APPROACH_NEGLIGIBLE = 0.05
+
+
+def valid_area_ratio(law: OrificeLaw) -> float:
+    """The largest area ratio at which ``law`` holds: ISO 5167-2's plates for a law with the approach,
+    (Cc n)^2 <= 5% for one without (n <= 0.32 at Cd 0.7)."""
+    if law.approach:
+        return VALID_AREA_RATIO
+    cc = law.discharge if law.discharge is not None else contraction(0.0)
+    return math.sqrt(APPROACH_NEGLIGIBLE) / cc
