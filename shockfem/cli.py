@@ -524,7 +524,8 @@ def _amplifier(args) -> int:
 def _programmer(args) -> int:
     from .programmer.concepts import crushable_pad, orifice_dashpot, split_cone
     from .programmer.report import format_report
-    from .programmer.requirement import SHAPES, requirement
+    from .programmer.requirement import requirement
+    from .programmer.shapes import SHAPES
     from .scene.checker import Checker
     from .scene.library import LIBRARY
     from .units import to_si

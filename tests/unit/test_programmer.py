@@ -75,13 +75,21 @@ def test_command_prints_and_writes_json(tmp_path):
 
 
 def test_command_lists_every_bad_option():
-    p = _shockfem("programmer", "--article", "-1 lb", "--shape", "square", "--peak", "10 m", "--duration", "5 ms",
+    p = _shockfem("programmer", "--article", "-1 lb", "--shape", "rectangle", "--peak", "10 m", "--duration", "5 ms",
                   "--friction", "1.5", "--ring", "cheese")
     assert p.returncode == 2 and "Traceback" not in p.stderr
-    for expected in ("--article: must be > 0", "--peak: expected an acceleration", "--shape: must be one of",
+    for expected in ("--article: must be > 0", "--peak: expected an acceleration",
                      "--friction: must be in [0, 1), got 1.5", "--ring: must be one of"):
         assert expected in p.stderr, p.stderr
 
+
+def test_command_refuses_an_unknown_shape_with_its_choices():
+    """--shape is a list of choices (the same in every command that takes it): argparse refuses another
+    with the choices and the usage, exit 2."""
+    p = _shockfem("programmer", "--article", "12 lb", "--shape", "square", "--peak", "10000 gee", "--duration",
+                  "5 ms")
+    assert p.returncode == 2 and "Traceback" not in p.stderr
+    assert "--shape: invalid choice: 'square'" in p.stderr and "half-sine" in p.stderr, p.stderr
 
 
 def _scipy_lumped_dashpot(d, end_time, samples):
