@@ -28,7 +28,7 @@ from ..materials.band_damping import BandTerms, decay_and_gain, fit_band, maxwel
 
 @njit(cache=True, fastmath=True)
 def add_band_forces(f_int, u, nodes, num_owned, f_prev, u_prev, r, q, decay, gain, weight):
-    """Advance the Maxwell terms ``r``, ``q`` (terms, len(nodes), gdim) of ``nodes`` over a step with the
+    """Advance the Maxwell terms ``r``, ``q`` (len(nodes), gdim, terms) of ``nodes`` over a step with the
     new ``f_int`` and ``u`` (their values a step earlier in ``f_prev``, ``u_prev``, updated here) and add
     sum_k r_k to ``f_int``.  Returns the terms' work over the step, 0.5 (R_n + R_n+1) . du, and what their
     springs store after it, 0.5 sum_k q_k . r_k [J], over the owned nodes (module docstring)."""
@@ -48,10 +48,10 @@ def add_band_forces(f_int, u, nodes, num_owned, f_prev, u_prev, r, q, decay, gai
             after = 0.0
             kept = 0.0
             for k in range(terms):
-                before += r[k, j, i]
-                rk, qk = maxwell_update(r[k, j, i], q[k, j, i], df, du, decay[k], gain[k], weight[k])
-                r[k, j, i] = rk
-                q[k, j, i] = qk
+                before += r[j, i, k]
+                rk, qk = maxwell_update(r[j, i, k], q[j, i, k], df, du, decay[k], gain[k], weight[k])
+                r[j, i, k] = rk
+                q[j, i, k] = qk
                 after += rk
                 kept += qk * rk
             f_int[n, i] += after
@@ -68,7 +68,8 @@ class BandGroup:
         self.nodes = nodes.astype(np.int64)
         self.tau = np.array(terms.tau)
         self.weight = np.array(terms.weight)
-        shape = (len(terms.tau), len(nodes), f_int.shape[1])
+        # the terms innermost: a node's terms are updated together, from one cache line
+        shape = (len(nodes), f_int.shape[1], len(terms.tau))
         self.r = np.zeros(shape)
         self.q = np.zeros(shape)
         self.f_prev = f_int[nodes].copy()
