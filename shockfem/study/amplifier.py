@@ -236,9 +236,20 @@ def damping_models(rep: Report, restitution: dict):
             f"{biggest[1]:.3f}: most of that loss is 2% of damping acting on the sharp wave of an impact, which "
             "carries energy at every harmonic, each losing 4 pi zeta of its energy per cycle; the rest, "
             f"{biggest[0] - biggest[1]:.3f}, is the stiffness-proportional model overdamping the harmonics."
-            if biggest and biggest[0] > 0.01 else "")
-            + " Elastic-plastic pairs lose far more to yielding than to either damping, and the 1d stiffness "
-            "column runs on coarser bars, which moves its plastic restitution by more than the damping does.")
+            if biggest and biggest[0] > 0.01 else "") + _plastic_words(restitution, losses))
+
+
+def _plastic_words(restitution: dict, losses: dict) -> str:
+    """Whether the elastic-plastic pairs lose more to yielding (1 - e undamped) than to either damping."""
+    plastic = [k for k in losses if "plastic" in k]
+    yielding = [1 - e for (key, _, damping), e in restitution.items() if key in plastic and damping == "none" and e]
+    damped = [abs(x) for key in plastic for pair in losses[key] for x in pair]
+    if not yielding or not damped:
+        return ""
+    return (f" Elastic-plastic pairs lose {min(yielding):.2f} to {max(yielding):.2f} of restitution undamped, "
+            + ("far more than either damping takes" if min(yielding) > 3 * max(damped) else
+               f"against up to {max(damped):.3f} for the damping")
+            + " (the 1d stiffness column runs on coarser bars, which moves its plastic restitution too).")
 
 
 def _sweep_reading(rep: Report, curves: dict) -> str:
