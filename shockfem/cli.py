@@ -1,5 +1,5 @@
 """The ``shockfem`` command: run, check, mesh, metrics, modes, amplifier, programmer, launcher,
-design-machine, study, sweep, verify, bench (``shockfem COMMAND --help`` for each).
+design-machine, study, sweep, verify, bench, warm (``shockfem COMMAND --help`` for each).
 
 Exit codes: 0 ok, 2 bad input (every problem listed, no traceback), 3 run stopped as
 unstable (outputs kept), 1 a verification case failed, 130 / 143 interrupted by SIGINT / SIGTERM.
@@ -203,6 +203,11 @@ def _bench_arguments(b):
     _json_argument(b, "the results")
     b.add_argument("--quick", action="store_true", help="small meshes only (a smoke test)")
     b.add_argument("--steps", type=int, default=200, help="time steps timed at each mesh size")
+
+
+def _warm_arguments(w):
+    w.add_argument("names", nargs="*", metavar="FAMILY_OR_SCENE", default=["axisymmetric", "3d"],
+                   help="a family (axisymmetric, 3d) or a scene file (default: both families)")
 
 
 @dataclass(frozen=True)
@@ -611,6 +616,12 @@ def _metrics(args) -> int:
     return EXIT_OK
 
 
+def _warm(args) -> int:
+    from .warm import warm
+    warm(args.names, report=lambda name, cpu_s: print(f"{name}: {cpu_s:.1f} s CPU", flush=True))
+    return EXIT_OK
+
+
 COMMANDS = {
     "run": Command("run a scene and write a run directory, or resume a stopped run", _run_arguments, _run),
     "check": Command("validate a scene without running it", _check_arguments, _check),
@@ -636,6 +647,8 @@ COMMANDS = {
     "import": Command(IMPORT_HELP, import_arguments, import_command),
     "verify": Command("verification against exact and published solutions", _verify_arguments, _verify),
     "bench": Command("element-cycles per second at several mesh sizes", _bench_arguments, _bench),
+    "warm": Command("compile numba's kernels into their cache, so that later runs compute at once", _warm_arguments,
+                    _warm),
 }
 
 

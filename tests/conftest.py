@@ -1,6 +1,7 @@
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 import pytest
@@ -27,19 +28,21 @@ def pytest_collection_modifyitems(items):
 
 @pytest.hookimpl(tryfirst=True)
 def pytest_sessionstart(session):
-    """numba's kernels compiled once, before pytest-xdist starts its workers (``tests/warm_kernels.py``, one
-    process per group, both cores): on a clean checkout the first tests' processes would each compile them.
+    """numba's kernels compiled once, before pytest-xdist starts its workers (``shockfem warm``, one process
+    per family, both cores): on a clean checkout the first tests' processes would each compile them.
     Only for a suite on workers (``-n``, as ``make test``); not in the workers themselves, nor with
     ``SHOCKFEM_WARM=0``."""
     workers = getattr(session.config.option, "numprocesses", None)
     if not workers or hasattr(session.config, "workerinput") or os.environ.get("SHOCKFEM_WARM", "1") == "0":
         return
-    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "warm_kernels.py")
     t0 = time.perf_counter()
-    groups = [subprocess.Popen([sys.executable, script, group], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               text=True) for group in ("axisymmetric", "3d")]
-    for group, proc in zip(("axisymmetric", "3d"), groups):
-        out, _ = proc.communicate()
-        if proc.returncode != 0:          # the tests that run these kernels will say what is wrong
-            sys.stderr.write(f"warm_kernels.py {group} failed:\n{out[-2000:]}\n")
-    sys.stderr.write(f"numba kernels compiled or loaded in {time.perf_counter() - t0:.0f} s (tests/warm_kernels.py)\n")
+    with tempfile.TemporaryDirectory() as meshes:       # the warm-up's meshes out of the repository's cache
+        env = dict(os.environ, SHOCKFEM_MESH_CACHE=meshes)
+        families = ("axisymmetric", "3d")
+        procs = [subprocess.Popen([sys.executable, "-m", "shockfem", "warm", family], stdout=subprocess.PIPE,
+                                  stderr=subprocess.STDOUT, text=True, env=env) for family in families]
+        for family, proc in zip(families, procs):
+            out, _ = proc.communicate()
+            if proc.returncode != 0:          # the tests that run these kernels will say what is wrong
+                sys.stderr.write(f"shockfem warm {family} failed:\n{out[-2000:]}\n")
+    sys.stderr.write(f"numba kernels compiled or loaded in {time.perf_counter() - t0:.0f} s (shockfem warm)\n")

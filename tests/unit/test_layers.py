@@ -29,7 +29,7 @@ LAYERS = [
     {"runner"},
     {"modal", "launcher", "amplifier", "programmer", "penetration"},
     {"machine"},
-    {"verify", "study", "bench"},
+    {"verify", "study", "bench", "warm"},
     {"api", "cli", "__main__", "__init__"},
 ]
 RANK = {name: k for k, layer in enumerate(LAYERS) for name in layer}
