@@ -60,12 +60,18 @@ class CompileRecorder:
                 self.pass_stack[-1][2] += took
 
 
-class _Listener:
-    def __init__(self, callback):
-        self.callback = callback
+def _listener(callback):
+    """A numba event listener that hands every event, start and end, to ``callback``."""
+    from numba.core import event
 
-    def notify(self, event):
-        self.callback(event)
+    class Forward(event.Listener):
+        def on_start(self, ev):
+            callback(ev)
+
+        def on_end(self, ev):
+            callback(ev)
+
+    return Forward()
 
 
 def machine_code_bytes(key: str) -> tuple[int, str]:
@@ -114,8 +120,8 @@ def main(argv=None) -> int:
     from shockfem.runner import run_scene
     from shockfem.scene import read_toml, resolve
     rec = CompileRecorder()
-    event.register("numba:compile", _Listener(rec.on_compile))
-    event.register("numba:run_pass", _Listener(rec.on_pass))
+    event.register("numba:compile", _listener(rec.on_compile))
+    event.register("numba:run_pass", _listener(rec.on_pass))
     t_import = time.process_time() - t0
     raw = read_toml(args.scene)
     raw["scene"]["end_time"] = args.steps_s

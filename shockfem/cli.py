@@ -284,10 +284,14 @@ def console() -> int:
     of them took 0.14 s of a 2.1 s ``shockfem run`` as they start, and the interpreter's last ones 0.40-0.47 s
     after it.  The young generations still collect as often as before, and with them the garbage a time
     loop makes; at the end, files and MPI are closed, and the memory goes back to the system with the
-    process.  ``main`` itself leaves the collector alone: a program that calls it goes on."""
+    process.  ``main`` itself leaves the collector alone: a program that calls it goes on.
+
+    ``main`` runs on a deep data stack (``data_stack.py``): numba's compile of a first run stops mapping and
+    unmapping the interpreter's frame blocks millions of times."""
+    from .data_stack import call_on_deep_data_stack
     young, middle, _ = gc.get_threshold()
     gc.set_threshold(young, middle, FULL_COLLECTION_EVERY)
-    code = main()
+    code = call_on_deep_data_stack(main)
     gc.freeze()
     return code
 

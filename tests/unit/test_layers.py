@@ -14,7 +14,7 @@ import shockfem
 PACKAGE = pathlib.Path(shockfem.__file__).parent
 
 LAYERS = [
-    {"units", "errors", "compat", "version", "mpi_start", "dolfinx_start", "numba_cache"},
+    {"units", "errors", "compat", "version", "mpi_start", "dolfinx_start", "numba_cache", "data_stack"},
     {"materials"},
     {"elements"},
     {"parts"},

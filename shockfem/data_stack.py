@@ -1,0 +1,36 @@
+"""A call whose Python frames all fit in one block of the interpreter's data stack.
+
+CPython 3.11 keeps its frames on a data stack made of blocks ("chunks", 16 kB at first): a call that does not
+fit in the current block maps a new one (``mmap``), and the return from the block's first frame unmaps it
+(``munmap``).  A program that calls and returns again and again at a block's boundary pays two system calls
+and a page fault each time (CPython issue gh-142183, fixed in 3.13 and later by keeping one free block).
+numba's compiler, deep recursive Python, does just that: the first ``shockfem run`` of
+``studies/foundation/bar_impact.toml`` from an empty cache made 2.2 million ``mmap`` and ``munmap`` calls
+and spent 9 of its 43 s of CPU in the kernel (``docs/performance.md``, "Compile time").
+
+``call_on_deep_data_stack`` calls a function from a frame that reserves ``RESERVED_SLOTS`` slots of
+evaluation stack (its code object's ``co_stacksize``, raised): the interpreter gives that frame a block of
+its own, twice its size, and the frames of everything it calls fill the rest of that block, so that no
+boundary is crossed below a depth of thousands of frames.  It changes no result, only where the frames'
+memory comes from; the block (2 MB) lives as long as the call.
+"""
+from __future__ import annotations
+
+import types
+
+# slots of 8 bytes: 1 MB of frames above the call, more than numba's deepest compile needs
+RESERVED_SLOTS = 1 << 17
+
+
+def _call(fn, args, kwargs):
+    return fn(*args, **kwargs)
+
+
+_deep_call = types.FunctionType(_call.__code__.replace(co_stacksize=_call.__code__.co_stacksize + RESERVED_SLOTS),
+                                _call.__globals__, "call_on_deep_data_stack")
+
+
+def call_on_deep_data_stack(fn, *args, **kwargs):
+    """``fn(*args, **kwargs)``, its frames in one large block of the interpreter's data stack (module
+    docstring)."""
+    return _deep_call(fn, args, kwargs)
