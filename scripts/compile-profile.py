@@ -33,11 +33,13 @@ class CompileRecorder:
         self.pass_stack = []
         self.kernels = collections.defaultdict(lambda: {"signatures": 0, "own_s": 0.0, "total_s": 0.0})
         self.passes = collections.Counter()
+        self.dispatchers = {}
 
     def on_compile(self, event):
         if event.is_start:
             disp = event.data["dispatcher"]
             key = f"{disp.py_func.__module__}.{disp.py_func.__qualname__}"
+            self.dispatchers.setdefault(key, set()).add(disp)
             self.stack.append([key, time.process_time(), 0.0])
         else:
             key, start, nested = self.stack.pop()
@@ -74,24 +76,9 @@ def _listener(callback):
     return Forward()
 
 
-def machine_code_bytes(key: str) -> tuple[int, str]:
-    """The machine code size (bytes of assembly text, all signatures) of dispatcher ``key`` and its
-    ``inline`` option."""
-    import importlib
-    module, _, name = key.rpartition(".")
-    while module:
-        try:
-            obj = importlib.import_module(module)
-            break
-        except ImportError:
-            module, _, outer = module.rpartition(".")
-            name = f"{outer}.{name}"
-    for part in name.split("."):
-        obj = getattr(obj, part, None)
-        if obj is None:                   # a closure (the lanes' kernels): not reachable by name
-            return -1, "?"
-    size = sum(len(obj.inspect_asm(sig)) for sig in obj.signatures)
-    return size, obj.targetoptions.get("inline", "never")
+def machine_code(dispatchers) -> str:
+    """The assembly of every signature the ``dispatchers`` (one kernel's: a closure may have several) compiled."""
+    return "".join(d.inspect_asm(sig) for d in dispatchers for sig in d.signatures)
 
 
 def inline_always_functions() -> int:
@@ -112,10 +99,13 @@ def main(argv=None) -> int:
     parser.add_argument("scene", help="a scene TOML")
     parser.add_argument("--steps-s", type=float, default=2e-6, help="simulated time to run [s]")
     parser.add_argument("--top", type=int, default=25, help="kernels listed, by their own time")
+    parser.add_argument("--asm", metavar="DIR", help="write each kernel's assembly into DIR (to compare two builds)")
     args = parser.parse_args(argv)
     os.environ.setdefault("SHOCKFEM_PICTURES", "0")
     t0 = time.process_time()
     from numba.core import event
+
+    import shockfem.materials            # numba's inliner as every run compiles with it (numba_inline.py)
 
     from shockfem.runner import run_scene
     from shockfem.scene import read_toml, resolve
@@ -139,9 +129,9 @@ def main(argv=None) -> int:
     print("|---|---:|---:|---:|---:|")
     ranked = sorted(rec.kernels.items(), key=lambda kv: -kv[1]["own_s"])
     for key, k in ranked[:args.top]:
-        size, _ = machine_code_bytes(key)
-        code = f"{size / 1024:.0f}" if size >= 0 else "-"
-        print(f"| `{key.replace('shockfem.', '')}` | {k['signatures']} | {k['own_s']:.1f} | {k['total_s']:.1f} | {code} |")
+        size = len(machine_code(rec.dispatchers[key]))
+        print(f"| `{key.replace('shockfem.', '')}` | {k['signatures']} | {k['own_s']:.1f} | {k['total_s']:.1f} | "
+              f"{size / 1024:.0f} |")
     rest = ranked[args.top:]
     if rest:
         print(f"| {len(rest)} others | {sum(k['signatures'] for _, k in rest)} | "
@@ -150,6 +140,11 @@ def main(argv=None) -> int:
     print("|---|---:|")
     for name, took in rec.passes.most_common(8):
         print(f"| {name} | {took:.1f} |")
+    if args.asm:
+        os.makedirs(args.asm, exist_ok=True)
+        for key, dispatchers in rec.dispatchers.items():
+            with open(os.path.join(args.asm, key + ".s"), "w", encoding="utf-8") as f:
+                f.write(machine_code(dispatchers))
     return 0
 
 

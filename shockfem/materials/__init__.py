@@ -2,5 +2,10 @@
 
 The element kernels (``shockfem.elements``) call ``update.update_stress`` at each integration point:
 objective rotation, the slotted ring's hoop constraint and the row's law (``laws.LAWS``), then
-``viscosity.viscous_stress`` for the force stress.  This package imports nothing else of shockfem.
+``viscosity.viscous_stress`` for the force stress.  This package imports nothing else of shockfem but
+``numba_inline``, which makes numba's inlining of these laws into every kernel several times faster to
+compile (every run imports this package before its first compile).
 """
+from ..numba_inline import share_var_locations
+
+share_var_locations()

@@ -14,7 +14,7 @@ import shockfem
 PACKAGE = pathlib.Path(shockfem.__file__).parent
 
 LAYERS = [
-    {"units", "errors", "compat", "version", "mpi_start", "dolfinx_start", "numba_cache", "data_stack"},
+    {"units", "errors", "compat", "version", "mpi_start", "dolfinx_start", "numba_cache", "data_stack", "numba_inline"},
     {"materials"},
     {"elements"},
     {"parts"},
