@@ -227,7 +227,7 @@ class ExplicitSolver:
         self._prescribed_at = -1        # the step ``_prescribed_motion`` was last evaluated at
         self._body_sums_at = None       # (step, t) ``_body_sums`` was last evaluated at
         self._step_largest = np.zeros(2)    # the buffers of a step's two reductions over the ranks
-        self._step_sums = np.zeros(14)
+        self._step_sums = np.zeros(15)
         self._reaction_dofs = None      # ``reactions``' held dofs by region, made at its first call
 
     def _start(self, initial_velocity):
@@ -460,8 +460,8 @@ class ExplicitSolver:
 
         # internal and external forces at t_{n+1}
         damping_power, hourglass_power, viscosity_power, plastic_work = self._internal_force(dt)
-        # band damping's Maxwell terms on the new internal force (what their dashpots took, over the ranks)
-        band_loss = self._sum(self.band.step(self.f_int, self.u, dt, m.num_owned)) if self.band else 0.0
+        # band damping's Maxwell terms on the new internal force (what their dashpots took on this rank)
+        band_loss = self.band.step(self.f_int, self.u, dt, m.num_owned) if self.band else 0.0
         t2 = time.perf_counter()
         self._external_force(self.t)
         self._contact_forces(dt)
@@ -476,9 +476,9 @@ class ExplicitSolver:
             # the step's sums over the ranks in one buffer reduction, a non-finite node counted with them
             sums = self._step_sums
             sums[:] = (damping_work, reaction_work, damping_power, hourglass_power, viscosity_power,
-                       plastic_work, w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic, bad >= 0)
+                       plastic_work, band_loss, w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic, bad >= 0)
             self.comm.Allreduce(MPI.IN_PLACE, sums, op=MPI.SUM)
-            (damping_work, reaction_work, damping_power, hourglass_power, viscosity_power, plastic_work,
+            (damping_work, reaction_work, damping_power, hourglass_power, viscosity_power, plastic_work, band_loss,
              w_int, w_ext, w_con, w_int2, w_ext2, w_con2, kinetic, non_finite) = sums.tolist()
             if non_finite:
                 self._stop_on_every_rank(self._not_finite(bad))
