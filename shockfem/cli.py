@@ -629,8 +629,9 @@ def _warm(args) -> int:
 COMMANDS = {
     "run": Command("run a scene and write a run directory, or resume a stopped run", _run_arguments, _run),
     "check": Command("validate a scene without running it", _check_arguments, _check),
-    "mesh": Command("mesh a scene's bodies (cached in meshes/ or $SHOCKFEM_MESH_CACHE), report their quality and "
-                    "write the mesh as XDMF", _mesh_arguments, _mesh),
+    "mesh": Command("mesh a scene's bodies (cached in the checkout's meshes/ for its own scenes, else in "
+                    "~/.cache/shockfem/meshes, or in $SHOCKFEM_MESH_CACHE), report their quality and write the mesh "
+                    "as XDMF", _mesh_arguments, _mesh),
     "metrics": Command("(re)compute the shock metrics of a run directory: pulses, spectra, stage table (into its "
                        "summary.json, with plots)", _metrics_arguments, _metrics),
     "modes": Command("natural frequencies and mode shapes of a body (SLEPc)", _modes_arguments, _modes),

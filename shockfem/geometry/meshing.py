@@ -3,8 +3,9 @@
 All bodies go into one gmsh model and so into one dolfinx mesh: one function space,
 one dofmap and one kernel call serve every body, and the bodies stay disconnected (they
 share no nodes).  Cell tags are body numbers (1, 2, ...); facet tags number every named
-region ``body.region``.  The gmsh file is cached in ``meshes/`` under a hash of what
-determines it, so rerunning a scene does not remesh.
+region ``body.region``.  The gmsh file is cached (``default_cache_dir``: the checkout's ``meshes/``
+for its own scenes, the user's cache folder for others) under a hash of what determines it, so
+rerunning a scene does not remesh.
 """
 from __future__ import annotations
 
@@ -36,10 +37,21 @@ class MeshedScene:
     source: str                  # path of the gmsh file used
 
 
-def default_cache_dir() -> str:
-    here = os.path.dirname(os.path.abspath(__file__))
-    repo_meshes = os.path.normpath(os.path.join(here, "..", "..", "meshes"))
-    return os.environ.get("SHOCKFEM_MESH_CACHE", repo_meshes)
+def default_cache_dir(scene_folder: str = "") -> str:
+    """Where meshes are cached: the folder ``SHOCKFEM_MESH_CACHE`` names; else the checkout's ``meshes/``
+    for a scene inside the checkout (``scene_folder``; a scene built in code counts from the working
+    folder); else the user's cache folder, ``$XDG_CACHE_HOME/shockfem/meshes`` (``~/.cache/...`` when
+    unset, the XDG base directory specification), so that a scene run from elsewhere never writes
+    into the checkout."""
+    if os.environ.get("SHOCKFEM_MESH_CACHE"):
+        return os.environ["SHOCKFEM_MESH_CACHE"]
+    checkout = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))   # shockfem/geometry/
+    repo_meshes = os.path.join(checkout, "meshes")
+    folder = os.path.realpath(scene_folder or os.getcwd())
+    if os.path.isdir(repo_meshes) and os.path.commonpath([folder, checkout]) == checkout:
+        return repo_meshes
+    user_cache = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(user_cache, "shockfem", "meshes")
 
 
 def _file_stamp(path: str | None) -> str | None:
@@ -311,7 +323,7 @@ def build_mesh(scene: Scene, comm=MPI.COMM_WORLD, cache_dir: str | None = None,
     """Mesh (or load from the cache) the scene's bodies and distribute the mesh over ``comm``."""
     import gmsh
 
-    cache_dir = cache_dir or default_cache_dir()
+    cache_dir = cache_dir or default_cache_dir(scene.folder)
     key = mesh_key(scene)
     msh_path = os.path.join(cache_dir, f"{scene.name}-{key}.msh")
     regions_path = msh_path[:-4] + ".regions.json"

@@ -10,6 +10,7 @@ and the shock table.  Nothing here imports dolfinx: a scene can be checked on an
 from __future__ import annotations
 
 import dataclasses
+import os
 from typing import Any
 
 from .bodies import read_bodies
@@ -60,7 +61,12 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         raise SceneError(ck.problems)
     return Scene(**settings, materials=materials, bodies=tuple(bodies), boundaries=tuple(boundaries),
                  contacts=tuple(contacts), damping=damping, outputs=outputs, springs=tuple(springs), shock=shock,
-                 cavities=tuple(cavities), penetration=penetration)
+                 cavities=tuple(cavities), penetration=penetration, folder=_folder(base_dir))
+
+
+def _folder(base_dir: str) -> str:
+    """The scene's folder, absolute; "" for a scene built in code (no file, ``base_dir`` left at ".")."""
+    return "" if base_dir == "." else os.path.abspath(base_dir)
 
 
 def to_plain(scene: Scene) -> dict[str, Any]:

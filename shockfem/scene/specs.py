@@ -336,6 +336,7 @@ class Scene:
     checkpoint_interval: float = 0.0             # simulated time between checkpoints [s]; 0: on signals only
     mass_scaling_step: float = 0.0               # [s] elements below this step get mass (model/mass_scaling.py); 0: off
     mass_scaling_limit: float = 0.05             # the largest share of a body's mass the scaling may add
+    folder: str = ""                             # the scene file's folder (absolute); "": built in code
 
     @property
     def gdim(self) -> int:
