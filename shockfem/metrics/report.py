@@ -188,15 +188,23 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
     summary["shock"] = result
     write_json_atomic(os.path.join(run_dir, "summary.json"), summary)
     if plots:
-        from ..output.plots import ChannelPlots, plot_stages
-        drawn = [name for name in arrays if result["channels"][name].get("pulse")]
-        if drawn:
-            with ChannelPlots() as plots:
-                for name in drawn:
-                    plots.pulse(os.path.join(run_dir, f"pulse_{name}.png"), name, arrays[name],
-                                result["channels"][name])
-                    plots.srs(os.path.join(run_dir, f"srs_{name}.png"), name, arrays[name]["srs"])
-        if stages:
-            plot_stages(os.path.join(run_dir, "stages.png"), result["stages"])
+        try:
+            _draw(run_dir, result, arrays)
+        except Exception as e:          # the metrics are written: a figure that cannot be drawn costs only itself
+            lines.append(f"WARNING: the shock metrics' figures were not drawn ({type(e).__name__}: {e})")
     return result, lines
+
+
+def _draw(run_dir: str, result: dict, arrays: dict):
+    """The pulse and spectrum of each channel with a pulse, and the stages' velocity gain."""
+    from ..output.plots import ChannelPlots, plot_stages
+    drawn = [name for name in arrays if result["channels"][name].get("pulse")]
+    if drawn:
+        with ChannelPlots() as plots:
+            for name in drawn:
+                plots.pulse(os.path.join(run_dir, f"pulse_{name}.png"), name, arrays[name],
+                            result["channels"][name])
+                plots.srs(os.path.join(run_dir, f"srs_{name}.png"), name, arrays[name]["srs"])
+    if result["stages"]:
+        plot_stages(os.path.join(run_dir, "stages.png"), result["stages"])
 

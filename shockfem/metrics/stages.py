@@ -86,8 +86,24 @@ class Stage:
     peak_force: float              # [N]
 
     def as_dict(self) -> dict:
-        """Plain data, with null where a ratio has no meaning (strict JSON has no NaN)."""
-        return {k: (None if isinstance(v, float) and not np.isfinite(v) else v) for k, v in asdict(self).items()}
+        """Plain data; a ratio with no meaning is left out and named in ``not_measured`` with the reason
+        (strict JSON has no NaN)."""
+        out = asdict(self)
+        absent = {k: NOT_MEASURED[k] for k, v in out.items() if isinstance(v, float) and not np.isfinite(v)}
+        for k in absent:
+            del out[k]
+        if absent:
+            out["not_measured"] = absent
+        return out
+
+
+# why a stage's ratio can have no value
+NOT_MEASURED = {
+    "restitution": "the bodies did not close (no approach speed to divide by)",
+    "velocity_ratio": "every body starts at rest: no launch speed to divide by (the motion comes from a "
+                      "prescribed boundary or a load)",
+    "vibration_share": "every body starts at rest: no launch energy to divide by",
+}
 
 
 def vibration_energy(h: dict, bodies: dict[str, float], axes: tuple[str, ...]) -> np.ndarray:

@@ -130,15 +130,20 @@ def _log_axes(ax):
         axis.set_minor_formatter(NullFormatter())
 
 
-def plot_stages(path: str, stages: list[dict]) -> str:
-    """Velocity ratio (struck body's speed over the launch speed) after each contact event."""
+def plot_stages(path: str, stages: list[dict]) -> str | None:
+    """Velocity ratio (struck body's speed over the launch speed) after each contact event; None (nothing
+    drawn) when no stage has one (every body started at rest: ``metrics.stages.NOT_MEASURED``)."""
+    stages = [s for s in stages if "velocity_ratio" in s]
+    if not stages:
+        return None
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4))
     labels = [f"{s['striker']} -> {s['struck']}" for s in stages]
     ratios = [s["velocity_ratio"] for s in stages]
     bars = ax.bar(range(len(stages)), ratios, color="C0")
     for bar, s in zip(bars, stages):
-        ax.annotate(f"e = {s['restitution']:.3f}", (bar.get_x() + bar.get_width() / 2, bar.get_height()),
+        e = f"e = {s['restitution']:.3f}" if "restitution" in s else "e not measured"
+        ax.annotate(e, (bar.get_x() + bar.get_width() / 2, bar.get_height()),
                     ha="center", va="bottom", fontsize=8)
     ax.set_xticks(range(len(stages)))
     ax.set_xticklabels(labels, rotation=20, fontsize=8)
