@@ -42,8 +42,8 @@ if TYPE_CHECKING:
 def check_raw(raw: dict, warn=None, base_dir: str = ".") -> str:
     """What ``shockfem check`` does to a raw scene (plain, chain or launcher): read every field through
     the checker; returns what it is, or raises ``SceneError`` listing every problem.  ``warn(sentence)``,
-    if given, hears what a valid scene should still change (mass damping on a free body); ``base_dir``: the
-    folder the scene's mesh files are relative to (the scene file's)."""
+    if given, hears what a valid scene should still change (mass damping on a free body, ``scene.advice``'s
+    warnings); ``base_dir``: the folder the scene's mesh files are relative to (the scene file's)."""
     from .scene import is_chain, is_launcher_scene
     if is_chain(raw):
         from .amplifier.chain import resolve_chain
@@ -55,9 +55,10 @@ def check_raw(raw: dict, warn=None, base_dir: str = ".") -> str:
         design = f", design: muzzle velocity {resolve_design(raw)[0]:.6g} m/s" if "design" in raw else ""
         return f"launcher {name}, bore {gun.bore:.6g} m, barrel {gun.length:.6g} m{design}"
     from .scene import resolve
+    from .scene.advice import scene_warnings
     from .scene.damping import mass_damping_warnings
     scene = resolve(raw, base_dir=base_dir)
-    for warning in mass_damping_warnings(scene) if warn else ():
+    for warning in mass_damping_warnings(scene) + scene_warnings(scene) if warn else ():
         warn(warning)
     return f"{scene.kinematics}, {len(scene.bodies)} bodies, end time {scene.end_time:.6g} s"
 
