@@ -65,12 +65,13 @@ class Report:
         self.write()
 
     def run_pictures(self, run: str, subject: str, shown: str = ""):
-        """The deformed shape of the run in ``run`` (a directory beside the report) at its highest von
-        Mises stress and at its end (the run's ``peak_stress.png`` and ``final_shape.png``), captioned
+        """The deformed shape of the run in ``run`` (a directory beside the report) at its field frame of
+        highest von Mises stress and at its end (the run's ``peak_stress.png`` and ``final_shape.png``), captioned
         with ``subject`` ("The five-mass design, axisymmetric (10 mm),") and ``shown`` (what the picture
         shows or leaves out); a sentence instead where the run drew none (``SHOCKFEM_PICTURES=0``, or a
         run that stopped early)."""
-        pictures = (("peak_stress.png", "at its highest von Mises stress"), ("final_shape.png", "at the end of its run"))
+        pictures = (("peak_stress.png", "at the field frame of its highest von Mises stress"),
+                    ("final_shape.png", "at the end of its run"))
         drawn = [(name, when) for name, when in pictures if os.path.exists(self.path(f"{run}/{name}"))]
         for name, when in drawn:
             self.figure(f"{run}/{name}", f"{subject} {when}: deformed at true scale, coloured by von Mises stress"
