@@ -21,12 +21,14 @@ from .model import build_model, describe
 from .output.fields import FieldWriter, write_final_shape
 from .output import checkpoint
 from .output.consumers import (Checkpoints, FieldFrames, HistoryRows, LoopState, ProgressBar, StopRules,
-                               body_maxima, track_max_von_mises)
+                               body_maxima)
 from .output.history import HistoryRecorder
+from .output.peak_stress import PeakStress
 from .output.picture_process import PictureProcess, pictures_wanted
 from .output.plots import plot_histories
 from .output.rundir import RunDirectory
 from .scene import Scene, to_plain
+from .scene.advice import scene_warnings
 from .scene.damping import mass_damping_warnings
 from .materials.layout import S_EPS
 from .solver.explicit import ExplicitSolver
@@ -204,6 +206,8 @@ class _Run:
                                             "started": time.strftime("%Y-%m-%dT%H:%M:%S"),
                                             "resumed_from": self.resumed})
         say(f"shockfem: scene '{scene.name}', {scene.kinematics}, {comm.size} process(es)")
+        for warning in scene_warnings(scene):
+            say(f"WARNING: {warning}")
         if resume is not None:
             say(f"resuming from the checkpoint at t = {resume['time']:.6g} s (step {resume['step']}, written "
                 f"{resume['written']})")
@@ -246,12 +250,13 @@ class _Run:
             self.history.record()
             if self.fields:
                 self.fields.write(0.0)
-            self.state = LoopState.start(scene.outputs, scene.checkpoint_interval, len(scene.bodies))
+            self.state = LoopState.start(scene.outputs, scene.checkpoint_interval)
         else:
             self.history.resume(self.comm.bcast(state["history"], root=0))
             for sec, saved in zip(self.history.sections, state["sections"]):
                 checkpoint.restore(sec, saved)
             self.state = replace(state["loop"], resumed=self.resumed)
+        self.peaks = PeakStress(self.solver, self.state.peak_stress)
 
     # ------------------------------------------------------------------ loop
     def loop(self, progress: bool, on_step):
@@ -260,8 +265,9 @@ class _Run:
         self.checkpoints = Checkpoints(self._save_checkpoint, loop.checkpoint, scene.end_time)
         if progress and self.comm.rank == 0 and not self.quiet:
             self.bar = ProgressBar(scene.end_time, self.solver.t)
-        consumers = [HistoryRows(self.history, loop.history, scene.end_time),
-                     FieldFrames(self.solver, self.fields, loop.fields, loop.max_von_mises),
+        consumers = [lambda s: self.peaks.update(s.t),
+                     HistoryRows(self.history, loop.history, scene.end_time),
+                     FieldFrames(self.fields, loop.fields),
                      StopRules(loop, scene.energy_error_limit),
                      self._log_messages,
                      self.checkpoints]
@@ -289,7 +295,8 @@ class _Run:
                 "sections": [checkpoint.capture(sec, seen) for sec in self.history.sections],
                 "history": self.history.array() if self.comm.rank == 0 else None,
                 "fields_last": self.fields.last if self.fields else None,
-                "loop": replace(self.state, wall=self.state.wall + time.perf_counter() - self.wall0),
+                "loop": replace(self.state, wall=self.state.wall + time.perf_counter() - self.wall0,
+                                peak_stress=self.peaks.state()),
                 "mesh": checkpoint.mesh_fingerprint(self.model.X0)}
         return checkpoint.write(self.out_dir, self.comm, self.solver.step, self.solver.t, kept, self.scene,
                                 self.origin)
@@ -314,20 +321,19 @@ class _Run:
                 self.stop.finishing()
             if self.bar is not None:
                 self.bar.close(solver.t)
-            track_max_von_mises(solver, self.state.max_von_mises)
             if self.fields:
                 if status != "completed":
                     self.fields.write(solver.t)   # the state at the stop, for the diagnosis
                 self.fields.close()
                 write_final_shape(rd.file("final_shape.xdmf"), solver)
             self.history.write(rd.file("history.h5"), rd.file("history.csv"))
-            summary = _summary(scene, solver, status, diagnosis, wall, self.state.max_von_mises)
+            summary = _summary(scene, solver, status, diagnosis, wall, self.peaks.per_body())
             summary["sections"] = {sec.name: sec.summary() for sec in self.history.sections}
             checkpoint_time = self.checkpoints.wall_time if self.checkpoints is not None else 0.0
             summary["checkpoints"] = {"interval": scene.checkpoint_interval, "wall_time_s": checkpoint_time,
                                       "resumed_from": self.resumed}
-            summary["warnings"] = mass_damping_warnings(scene) + run_warnings(summary)
-            for warning in summary["warnings"]:
+            summary["warnings"] = mass_damping_warnings(scene) + scene_warnings(scene) + run_warnings(summary)
+            for warning in mass_damping_warnings(scene) + run_warnings(summary):    # the scene's: said at the start
                 say(f"WARNING: {warning}")
             if status == "completed" and comm.rank == 0:
                 checkpoint.clear(self.out_dir)
@@ -350,8 +356,9 @@ class _Run:
             if self.pictures is not None:
                 rigid = {rb.index for rb in self.model.rigid}
                 self.pictures.request(self.out_dir, [i for i in range(len(self.model.bodies)) if i not in rigid])
-            plot_histories(self.out_dir, [b.name for b in self.scene.bodies])
-            summary["shock"] = _shock_metrics(self.out_dir, self.say)
+            _never_failing("the history plots", self.say, plot_histories, self.out_dir,
+                           [b.name for b in self.scene.bodies])
+            summary["shock"] = _never_failing("the shock metrics", self.say, _shock_metrics, self.out_dir, self.say)
             if self.pictures is not None:
                 self.pictures.collect(self.say)
         elif self.pictures is not None:
@@ -402,6 +409,16 @@ class _StopOnSignal:
         self.previous = {}
 
 
+def _never_failing(what: str, say, fn, *args):
+    """``fn(*args)``, or None and a warning in the log if it raises: no metric or figure may fail a run whose
+    steps are done (its summary.json is written before)."""
+    try:
+        return fn(*args)
+    except Exception as e:
+        say(f"WARNING: {what} were not made ({type(e).__name__}: {e}); the run's results are complete")
+        return None
+
+
 def _shock_metrics(out_dir: str, say) -> dict | None:
     """Pulse metrics, spectra and the stage table (``metrics/report.py``), added to summary.json."""
     from .metrics.report import shock_report
@@ -422,7 +439,7 @@ def _max_plastic_strain(solver: ExplicitSolver) -> np.ndarray:
     return body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
 
 
-def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, max_vm) -> dict:
+def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, peaks: list[dict]) -> dict:
     m = solver.model
     v, _ = solver.body_means()
     e = solver.energy
@@ -455,13 +472,16 @@ def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall:
                    # LS-DYNA's internal energy holds the plastic work: the same ratio as each body's below
                    "hourglass_to_internal": abs(e.hourglass) / max(abs(e.internal + e.plastic), 1e-300),
                    "contact": e.contact, "external_work": e.external, "balance": e.balance,
+                   "balance_reference": e.largest,
                    "balance_error": e.balance_error},
         "models": describe(m, scene).splitlines(),
         "mass_scaling": m.mass_scaling.as_dict() if m.mass_scaling is not None else None,
         **force_sources.summaries(solver.sources),     # "contacts", "springs", "cavities", "penetration"
         "bodies": {b.name: {"mass": float(m.body_mass[i]), "rigid": b.rigid,
                             "velocity_final": [float(c) for c in v[i]],
-                            "max_von_mises": float(max_vm[i]),
+                            # tracked every step at every point (``output/peak_stress.py``)
+                            "max_von_mises": peaks[i]["max_von_mises"],
+                            "max_von_mises_time": peaks[i]["time"], "max_von_mises_at": peaks[i]["at"],
                             "max_plastic_strain": float(max_eps[i]),
                             "kinetic_energy": float(energies["kinetic"][i]),
                             "internal_energy": float(energies["internal"][i]),

@@ -614,6 +614,19 @@ class ContactPair(ForceSource):
         return [*self.force_a, *self.friction_a]
 
     # ------------------------------------------------------------ results
+    def surfaces(self) -> list:
+        """The pair's surfaces (one against a rigid wall)."""
+        return [s for s in (self.a, self.b) if s is not None]
+
+    def interference_overlaps(self) -> tuple[np.ndarray, np.ndarray]:
+        """The area [m^2] and initial overlap [m] of each node of surface a this rank owns that starts
+        inside the other surface, when an interference pushes the overlaps out (empty otherwise)."""
+        if self._offset0 is None:
+            return np.zeros(0), np.zeros(0)
+        depth = -self._offset0[0][self.passes[0].rows]
+        inside = depth > 0.0
+        return self.own_area_a[inside], depth[inside]
+
     def restitution(self) -> float | None:
         """e = -(v_a' - v_b') . n / ((v_a - v_b) . n), n the direction of the impulse on a;
         from the body mean velocities before first contact and after final separation."""

@@ -6,8 +6,8 @@ The run loop is
         for consume in consumers:
             consume(step)
 
-and every consumer is a callable of the read-only ``Step``: the history's rows, the field frames (with the
-bodies' largest von Mises stress so far), the stop rules (``solver/guards.py``), the log of the solver's
+and every consumer is a callable of the read-only ``Step``: the bodies' peak von Mises stress (every step,
+``peak_stress.py``), the history's rows, the field frames, the stop rules (``solver/guards.py``), the log of the solver's
 messages, the checkpoints, the API's ``on_step``, the signal check and the progress bar.  What the loop
 must carry across a checkpoint (when each cadence is next due, the running maxima) is one ``LoopState``,
 pickled whole with the checkpoint.
@@ -21,7 +21,6 @@ import numpy as np
 from mpi4py import MPI
 
 from ..solver import guards
-from .cell_fields import von_mises
 
 # a time counts as reached within this share of it (a sum of steps lands a few ulps short of a cadence's time)
 DUE_SHARE = 1e-9
@@ -43,17 +42,18 @@ class LoopState:
     history: Cadence
     fields: Cadence
     checkpoint: Cadence
-    max_von_mises: np.ndarray        # per body, the largest von Mises stress of the frames so far [Pa]
+    peak_stress: dict | None = None  # this rank's running peaks (``PeakStress.state``), at a checkpoint
     plastic_before: float = 0.0      # the plastic work at the step before [J] (``guards.plastic_work_fell``)
+    balance_at_start_up: float = 0.0  # |energy balance| at the start-up's last step [J] (``guards.balance_beyond``)
     wall: float = 0.0                # wall time of the loop before a resume [s]
     resumed: list = field(default_factory=list)
 
     @classmethod
-    def start(cls, outputs, checkpoint_interval: float, bodies: int) -> "LoopState":
+    def start(cls, outputs, checkpoint_interval: float) -> "LoopState":
         """At t = 0: each cadence first due one interval on."""
         return cls(Cadence(outputs.history_interval, outputs.history_interval),
                    Cadence(outputs.field_interval, outputs.field_interval),
-                   Cadence(checkpoint_interval, checkpoint_interval), np.zeros(bodies))
+                   Cadence(checkpoint_interval, checkpoint_interval))
 
 
 def body_maxima(solver, per_cell: np.ndarray) -> np.ndarray:
@@ -64,12 +64,6 @@ def body_maxima(solver, per_cell: np.ndarray) -> np.ndarray:
         sel = m.cell_body[:len(per_cell)] == i
         out[i] = solver.comm.allreduce(float(per_cell[sel].max()) if sel.any() else 0.0, op=MPI.MAX)
     return out
-
-
-def track_max_von_mises(solver, max_vm: np.ndarray):
-    """Raise each body's largest von Mises stress so far, ``max_vm``, to the current stresses'.  Collective."""
-    vm = von_mises(solver.sigma).max(axis=1) if len(solver.sigma) else np.zeros(0)
-    np.maximum(max_vm, body_maxima(solver, vm), out=max_vm)
 
 
 class HistoryRows:
@@ -85,15 +79,14 @@ class HistoryRows:
 
 
 class FieldFrames:
-    """Every ``fields`` interval: the bodies' largest von Mises stress so far, and a frame of the fields
-    when they are written (``writer``, or None).  Collective."""
+    """Every ``fields`` interval, a frame of the fields when they are written (``writer``, or None).
+    Collective."""
 
-    def __init__(self, solver, writer, cadence: Cadence, max_von_mises: np.ndarray):
-        self.solver, self.writer, self.cadence, self.max_von_mises = solver, writer, cadence, max_von_mises
+    def __init__(self, writer, cadence: Cadence):
+        self.writer, self.cadence = writer, cadence
 
     def __call__(self, s):
         if self.cadence.due(s.t):
-            track_max_von_mises(self.solver, self.max_von_mises)
             if self.writer:
                 self.writer.write(s.t)
             self.cadence.next += self.cadence.interval
@@ -106,7 +99,9 @@ class StopRules:
         self.loop, self.balance_limit = loop, balance_limit
 
     def __call__(self, s):
-        guards.check_step(s, self.loop.plastic_before, self.balance_limit)
+        if s.step == guards.START_UP_STEPS:
+            self.loop.balance_at_start_up = abs(s.energy.balance)
+        guards.check_step(s, self.loop.plastic_before, self.balance_limit, self.loop.balance_at_start_up)
         self.loop.plastic_before = s.energy.plastic
 
 

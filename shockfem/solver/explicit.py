@@ -38,6 +38,7 @@ from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
 from . import guards, nodal
 from .band import BandDamping
+from .energy_scale import energy_scale
 
 
 @dataclass
@@ -54,6 +55,7 @@ class Energies:
     external: float = 0.0          # work of loads and prescribed velocities
     initial: float = 0.0           # kinetic energy at t = 0
     peak: float = 0.0              # largest energy in play so far (the balance reference)
+    scale: float = 0.0             # the energy the run will put in play, known at t = 0 (``energy_scale``)
 
     @property
     def balance(self) -> float:
@@ -62,8 +64,9 @@ class Energies:
 
     @property
     def largest(self) -> float:
-        """The largest energy in play so far, the initial total if it dominates: the scale of the energy checks."""
-        return max(self.peak, self.initial)
+        """The largest energy in play so far, or the energy the run will put in play (``energy_scale``) if
+        that is larger: the scale of the energy checks."""
+        return max(self.peak, self.initial, self.scale)
 
     @property
     def balance_error(self) -> float:
@@ -247,6 +250,7 @@ class ExplicitSolver:
         self._rigid_loads(0.0)
         self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
         self.energy.peak = self.energy.initial
+        self.energy.scale = energy_scale(m, self.contacts, self.energy.initial)
         self.dt_first = self.dt_stable    # the reference of a collapsing step (``steps``)
 
     def _set_initial_velocity(self):

@@ -69,7 +69,7 @@ def test_no_checkpoints_with_a_zero_interval():
 
 
 def test_the_stop_rules_follow_the_plastic_work():
-    loop = LoopState.start(SimpleNamespace(history_interval=0.0, field_interval=1.0), 0.0, bodies=1)
+    loop = LoopState.start(SimpleNamespace(history_interval=0.0, field_interval=1.0), 0.0)
     rules = StopRules(loop, balance_limit=0.05)
     rules(next(_steps(1e-6, 1e-6, plastic=0.2, internal=-0.2, kinetic=1.0)))
     assert loop.plastic_before == 0.2
@@ -78,6 +78,6 @@ def test_the_stop_rules_follow_the_plastic_work():
 
 
 def test_the_loop_state_starts_one_interval_on():
-    loop = LoopState.start(SimpleNamespace(history_interval=2e-6, field_interval=1e-5), 3e-5, bodies=2)
+    loop = LoopState.start(SimpleNamespace(history_interval=2e-6, field_interval=1e-5), 3e-5)
     assert (loop.history.next, loop.fields.next, loop.checkpoint.next) == (2e-6, 1e-5, 3e-5)
-    assert np.array_equal(loop.max_von_mises, np.zeros(2)) and loop.resumed == []
+    assert loop.peak_stress is None and loop.balance_at_start_up == 0.0 and loop.resumed == []

@@ -30,20 +30,32 @@ def test_plastic_work_may_stay_but_not_fall():
 def test_a_non_finite_balance_stops_and_falls_through_the_others():
     nan = _step(plastic=math.nan)
     guards.plastic_work_fell(nan, plastic_before=1.0)         # not its business: NaN is no fall
-    guards.balance_beyond(nan, limit=0.01)
+    guards.balance_beyond(nan, limit=0.01, at_start_up=0.0)
     with pytest.raises(UnstableRun, match="not finite"):
         guards.energy_not_finite(nan)
     with pytest.raises(UnstableRun, match="not finite"):
-        guards.check_step(nan, plastic_before=1.0, balance_limit=0.01)
+        guards.check_step(nan, plastic_before=1.0, balance_limit=0.01, balance_at_start_up=0.0)
 
 
 def test_the_balance_limit_holds_after_the_start_up():
     # a balance of 0.5 J over the largest 10 J: 5%
     off = dict(external=-0.5)
-    guards.balance_beyond(_step(**off), limit=0.06)
-    guards.balance_beyond(_step(step=guards.START_UP_STEPS, **off), limit=0.01)
+    guards.balance_beyond(_step(**off), limit=0.06, at_start_up=0.0)
+    guards.balance_beyond(_step(step=guards.START_UP_STEPS, **off), limit=0.01, at_start_up=0.0)
     with pytest.raises(UnstableRun, match="energy balance error 0.05 exceeds the limit 0.01"):
-        guards.balance_beyond(_step(**off), limit=0.01)
+        guards.balance_beyond(_step(**off), limit=0.01, at_start_up=0.0)
+
+
+def test_a_grown_imbalance_is_energy_being_created_and_a_flat_one_does_not_advise_a_shorter_step():
+    """0.5 J of imbalance over the largest 10 J: grown from 1 mJ at the start-up's end it is an instability
+    (lower the safety factor); at 0.4 J then, it has not grown (a shrink fit's flat start-up imbalance, whose
+    energy scale was not known, read so): no shorter step is advised."""
+    off = dict(external=-0.5)
+    with pytest.raises(UnstableRun, match="energy is being created.*Lower scene.safety_factor"):
+        guards.balance_beyond(_step(**off), limit=0.01, at_start_up=1e-3)
+    with pytest.raises(UnstableRun, match="not an instability of the step") as stop:
+        guards.balance_beyond(_step(**off), limit=0.01, at_start_up=0.4)
+    assert "safety_factor" not in stop.value.diagnosis and "energy_error_limit" in stop.value.diagnosis
 
 
 def _solver(dt_stable, internal=0.0, step=100):
