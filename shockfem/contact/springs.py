@@ -12,7 +12,8 @@ averaged nodes).  With n the unit direction from end a to end b:
                                       zero while F(e) >= 0: the dashpot acts in contact only)
 
 Its stable step joins the element steps like a contact spring: the two-mass oscillator of the
-ends, omega^2 = k_max (1/M_a + 1/M_b), shortened by the dashpot.
+ends, omega^2 = k_max (1/M_a + 1/M_b), shortened by the dashpot.  That oscillator is the model, not a
+mesh mode: its period 2 pi / omega bounds the step for accuracy too (``ExplicitSolver.accuracy_step``).
 """
 from __future__ import annotations
 
@@ -78,8 +79,10 @@ class DiscreteSpring(ForceSource):
         if k_max > 0:
             omega = math.sqrt(k_max / m_eff)
             self.dt_limit = damped_step(2.0 / omega, spec.damping / k_max)
+            self.period = 2.0 * math.pi / omega    # of the ends' oscillation at the stiffest slope [s]
         else:
             self.dt_limit = 2.0 * m_eff / spec.damping        # a dashpot alone: explicit decay of v
+            self.period = math.inf
         self.tension = 0.0
         self.extension = 0.0
         self.max_tension = 0.0

@@ -70,6 +70,8 @@ class LiquidCavity(ForceSource):
         rigid_bodies = np.unique(body[rigid])
         self._rigid_group = np.where(rigid, np.searchsorted(rigid_bodies, body), -1)
         self._group_area = np.zeros(len(rigid_bodies))
+        self._group_mass = model.body_mass[rigid_bodies] if len(rigid_bodies) else np.zeros(0)
+        self.period = math.inf           # of the liquid spring on its rigid walls' bodies [s] (``compute``)
         self._x = np.empty((len(self.global_nodes), self.gdim))
         self._v = np.empty_like(self._x)
         self._S = np.empty((len(self.facets), self.gdim))
@@ -160,8 +162,22 @@ class LiquidCavity(ForceSource):
         self.work += _wall_forces(self.f, self._f_old, self.facets, S, self.pressure, v, dt)
         # the liquid as a volume spring, K_t = dp / d(ln rho), on the walls' nodes
         K_t = self.spec.bulk_modulus * self.density_ratio() ** self.spec.tait_exponent
-        return _stable_step(S, self.facets, self._rigid_group, self._group_area, self.mass,
-                            K_t / max(self.volume, 1e-300))
+        limit = _stable_step(S, self.facets, self._rigid_group, self._group_area, self.mass,
+                             K_t / max(self.volume, 1e-300))
+        self.period = self._lumped_period(S, K_t)
+        return limit
+
+    def _lumped_period(self, S: np.ndarray, K_t: float) -> float:
+        """2 pi / omega of the liquid spring on the rigid bodies among its walls, omega^2 = (K_t / V) A_g A / M_g
+        (``_stable_step``'s bound for a rigid wall: A_g its area, A the walls' whole area, M_g its body's mass),
+        inf without one.  That oscillation is the model (a piston on a liquid column), not a mesh mode: it
+        bounds the step for accuracy too (``ExplicitSolver.accuracy_step``).  A deformable wall's node is a
+        mesh mode, as an element's, and left out."""
+        if not len(self._group_area):
+            return math.inf
+        whole = float(np.sqrt((S * S).sum(axis=1)).sum())
+        omega2 = K_t / max(self.volume, 1e-300) * whole * float(np.max(self._group_area / self._group_mass))
+        return 2.0 * math.pi / math.sqrt(omega2) if omega2 > 0.0 else math.inf
 
     def add_forces(self, f: np.ndarray):
         self.exchange.add_to(self.f, f)

@@ -110,6 +110,7 @@ class Model:
     gravity: tuple | None = None                # [m/s^2]
     thickness: float = 1.0                      # plane-strain depth [m]
     safety_factor: float = 0.9                  # of the stable step
+    max_time_step: float = 0.0                  # [s] the scene's bound of the step for accuracy; 0: none
     plastic: bool = False                       # does any deformable body yield?
     point_state: bool = False                   # a state at every point (plastic bodies, slotted rings)
     mass_scaling: "mass_scaling.MassScaling | None" = None   # what the scaling added, if the scene asked for it
@@ -268,7 +269,8 @@ def build_model(scene: Scene, meshed: MeshedScene) -> Model:
                   penetration=scene.penetration,
                   accelerometers=tuple(scene.shock.accelerometers),
                   sections=tuple(scene.outputs.sections), gravity=scene.gravity,
-                  thickness=scene.thickness, safety_factor=scene.safety_factor, plastic=plastic,
+                  thickness=scene.thickness, safety_factor=scene.safety_factor,
+                  max_time_step=scene.max_time_step, plastic=plastic,
                   point_state=plastic or bool(slotted), mass_scaling=scaling)
     model.rigid = [_rigid_body(model, i) for i in rigid_ids]
     _add_boundaries(model, scene)

@@ -9,7 +9,7 @@ from .specs import ELEMENTS, HOURGLASS_FORMS, INTEGRATIONS, KINEMATICS
 SCENE_FIELDS = ("name", "kinematics", "element", "end_time", "safety_factor", "thickness", "energy_error_limit",
                 "integration", "hourglass", "hourglass_coefficient", "gravity", "bulk_viscosity_quadratic",
                 "bulk_viscosity_linear", "curve_elements", "checkpoint_interval", "mass_scaling_step",
-                "mass_scaling_limit")
+                "mass_scaling_limit", "max_time_step")
 
 
 def read_settings(ck: Checker, raw: dict) -> dict:
@@ -38,6 +38,8 @@ def read_settings(ck: Checker, raw: dict) -> dict:
     # and the largest share of a body's mass it may add before the run is refused
     ms_step = ck.quantity(s, "mass_scaling_step", "scene", "time", default=0.0, nonnegative=True)
     ms_limit = ck.quantity(s, "mass_scaling_limit", "scene", "dimensionless", default=0.05, positive=True)
+    # an upper bound of the step for accuracy (0: the stable step and the lumped oscillators' bound only)
+    max_dt = ck.quantity(s, "max_time_step", "scene", "time", default=0.0, nonnegative=True)
     curve = s.get("curve_elements", 24)
     if not isinstance(curve, int) or isinstance(curve, bool) or not 6 <= curve <= 360:
         ck.fail("scene.curve_elements", f"must be a whole number of elements round a circle in [6, 360], got {curve!r}")
@@ -57,4 +59,4 @@ def read_settings(ck: Checker, raw: dict) -> dict:
                 thickness=thickness, energy_error_limit=elimit, integration=integration, hourglass=hourglass,
                 hourglass_coefficient=hg_coef, gravity=gravity if any(gravity) else (),
                 bulk_viscosity=bulk_viscosity, curve_elements=curve, checkpoint_interval=checkpoint,
-                mass_scaling_step=ms_step, mass_scaling_limit=ms_limit)
+                mass_scaling_step=ms_step, mass_scaling_limit=ms_limit, max_time_step=max_dt)

@@ -337,6 +337,7 @@ class Scene:
     mass_scaling_step: float = 0.0               # [s] elements below this step get mass (model/mass_scaling.py); 0: off
     mass_scaling_limit: float = 0.05             # the largest share of a body's mass the scaling may add
     folder: str = ""                             # the scene file's folder (absolute); "": built in code
+    max_time_step: float = 0.0                   # [s] the step's upper bound for accuracy; 0: none
 
     @property
     def gdim(self) -> int:
