@@ -23,7 +23,7 @@ def test_the_compiled_pass_finds_the_numpy_peak_and_its_cell():
     vm = von_mises(sigma[cells])
     # the same formula in another order: round-off of 1e16 Pa^2
     assert largest_von_mises2(sigma, cells) == pytest.approx(vm.max() ** 2, rel=1e-12)
-    assert where_largest(sigma, cells) == cells[np.argmax(vm.max(axis=1))]
+    assert where_largest(sigma, cells, largest_von_mises2(sigma, cells)) == cells[np.argmax(vm.max(axis=1))]
 
 
 def test_each_body_keeps_its_peak_with_when_and_where():
