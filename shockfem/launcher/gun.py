@@ -156,6 +156,11 @@ def air_ahead_pressure(gun: Gun, v: float) -> float:
     return gun.ambient_pressure * (1 + g * (g + 1) / 4 * M * M + g * M * math.sqrt(1 + ((g + 1) / 4) ** 2 * M * M))
 
 
+# an opening time below this share of the longest shot is an instant (double precision resolves times to
+# 2.2e-16 of t; the integrator's steps need far more)
+INSTANT_OPENING = 1e-9
+
+
 def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.0,
          stop_speed: float | None = None) -> Shot:
     """Integrate the shot from the valve opening until the projectile leaves the barrel (or
@@ -178,6 +183,9 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     U_r0, U_b0 = m_r0 * gas.cv * Tr0, m_b0 * gas.cv * T_b0
     E0 = U_r0 + U_b0
     c0 = gas.sound_speed(pr0, Tr0)
+    # a valve that opens faster than the integrator can resolve on the shot's time scale opens at once: its
+    # opening, a piece of its own, would leave the integrator a step with t + h = t, and no way out
+    t_open = gun.opening_time if gun.opening_time > INSTANT_OPENING * max_time else 0.0
     simple = gun.gas_inertia == "simple-wave"
     lagrange = gun.gas_inertia == "lagrange"
 
@@ -189,7 +197,7 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
         T_r, T_b = gas.temperature(m_r, U_r), gas.temperature(m_b, U_b)
         mdot, h = 0.0, 0.0
         if not no_valve and not simple:
-            opening = 1.0 if gun.opening_time <= 0 else min(t / gun.opening_time, 1.0)
+            opening = 1.0 if t_open <= 0 else min(t / t_open, 1.0)
             a_eff = gun.discharge_coefficient * gun.valve_area * opening
             if p_r >= p_b:
                 mdot = orifice_flow(gas, a_eff, p_r, T_r, p_b)
@@ -256,7 +264,7 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     # projectile that stops while the reservoir still feeds the barrel starts again from rest
     pieces = []
     t_start, y_start = 0.0, y0
-    stops = ([gun.opening_time] if (not no_valve and 0 < gun.opening_time < max_time) else []) + [max_time]
+    stops = ([t_open] if (not no_valve and 0 < t_open < max_time) else []) + [max_time]
     for _ in range(MAX_PIECES):
         t_stop = next(t for t in stops if t > t_start)
         piece = solve_ivp(rhs, (t_start, t_stop), y_start, method=METHOD, rtol=rtol, atol=atol,
