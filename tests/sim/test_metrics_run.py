@@ -5,6 +5,7 @@ import os
 import subprocess
 import sys
 
+import h5py
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -106,14 +107,35 @@ def test_penetration_carries_a_payload_into_the_crater_law(tmp_path):
 def test_the_peak_stress_is_the_impacts_not_the_frames(run_dir):
     """The run writes no field frame (--no-fields; the scene's interval is its end, 70 us): the peak von Mises
     stress is tracked every step.  1D theory puts the impact's stress at rho c0 v / 2 = 7850 x 5172 x 1 / 2 =
-    20.3 MPa in both rods (E = 210 GPa, nu = 0.3: the bar speed c0 = sqrt(E / rho)), from the first contact
-    to the unloading at 2 L / c0 = 38.7 us.  At 1 mm (4 elements across) the front's Pochhammer ringing and
-    the penalty's overshoot raise it: 15%.  Taken from the frames, the target's peak read 10.6 MPa at the
-    scene's own size."""
+    20.3 MPa in both rods (c0 = sqrt(E / rho)) from the first contact to the unloading at 2 L / c0 = 38.7 us;
+    the peak may not fall below it (5%: the penalty's give).  At a point it is higher: the rods ring
+    (Pochhammer-Chree) most on the axis next to the contact, where the peak was measured, 33.7 MPa (1.66 x)
+    at 17.8 us at 1 mm.  Taken from the frames, the striker's peak read 6.0 MPa here (10.6 MPa for the
+    target at the scene's own size)."""
     bodies = json.load(open(run_dir / "summary.json"))["bodies"]
+    impact = 7850 * (210e9 / 7850) ** 0.5 * 1.0 / 2
     for name in ("striker", "target"):
         b = bodies[name]
-        assert b["max_von_mises"] == pytest.approx(7850 * (210e9 / 7850) ** 0.5 / 2, rel=0.15), name
-        assert 0.0 < b["max_von_mises_time"] < 2 * 0.1 / (210e9 / 7850) ** 0.5 + 5e-6
+        assert 0.95 * impact < b["max_von_mises"] < 2.0 * impact, name
+        assert 0.0 < b["max_von_mises_time"] < 2 * 0.1 / (210e9 / 7850) ** 0.5
         r, z = b["max_von_mises_at"]
         assert 0.0 <= r <= 2.5e-3 and (0.0 <= z <= 0.1 if name == "target" else 0.1 <= z <= 0.2001)
+
+
+def test_the_tracked_peak_is_the_largest_of_every_steps_stresses(tmp_path):
+    """With a field frame every step, the largest von Mises stress of all frames is each body's tracked peak,
+    reached at its time (a frame holds the von Mises stress of each cell's mean stress: of its one point here)."""
+    out = tmp_path / "every_step"
+    p = shockfem("run", SCENE, "--out", str(out), "--no-progress", "--set", 'scene.end_time="20 us"',
+                 "--set", 'outputs.field_interval="0.001 us"', "--set", 'bodies.striker.element_size="1 mm"',
+                 "--set", 'bodies.target.element_size="1 mm"')
+    assert p.returncode == 0, p.stderr
+    bodies = json.load(open(out / "summary.json"))["bodies"]
+    with h5py.File(out / "fields.h5") as h5:
+        body = h5["mesh/body"][()]
+        frames = [(float(g.attrs["time"]), g["von_mises"][()]) for g in h5["frames"].values()]
+    assert len(frames) > 100
+    for k, name in enumerate(("striker", "target")):
+        t, peak = max(((t, vm[body == k + 1].max()) for t, vm in frames), key=lambda f: f[1])
+        assert bodies[name]["max_von_mises"] == pytest.approx(peak, rel=1e-12)
+        assert bodies[name]["max_von_mises_time"] == pytest.approx(t, rel=1e-12)
