@@ -6,11 +6,11 @@ The run loop is
         for consume in consumers:
             consume(step)
 
-and every consumer is a callable of the read-only ``Step``: the bodies' peak von Mises stress (every step,
-``peak_stress.py``), the history's rows, the field frames, the stop rules (``solver/guards.py``), the log of the solver's
-messages, the checkpoints, the API's ``on_step``, the signal check and the progress bar.  What the loop
-must carry across a checkpoint (when each cadence is next due, the running maxima) is one ``LoopState``,
-pickled whole with the checkpoint.
+and every consumer is a callable of the read-only ``Step``: the bodies' peak von Mises stress (every
+step, ``peak_stress.py``), the history's rows, the field frames, the stop rules (``solver/guards.py``), the
+log of the solver's messages, the checkpoints, the API's ``on_step``, the signal check and the progress bar.
+What the loop must carry across a checkpoint (when each cadence is next due, the running peaks) is one
+``LoopState``, pickled whole with the checkpoint.
 """
 from __future__ import annotations
 
