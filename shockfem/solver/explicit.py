@@ -259,7 +259,7 @@ class ExplicitSolver:
         self._rigid_loads(0.0)
         self.energy.initial = self.energy.kinetic = self._kinetic_energy(self.v)
         self.energy.peak = self.energy.initial
-        self.energy.scale = energy_scale(m, self.contacts, self.energy.initial)
+        self.energy.scale = energy_scale(self.model, self.contacts, self.energy.initial)
         self.dt_first = self.dt_stable    # the reference of a collapsing step (``steps``)
 
     def _set_initial_velocity(self):
