@@ -9,7 +9,8 @@ factor.  Per element: strain (x_{i+1} - x_i) / h - 1, stress by a bilinear J2 re
 beta E d(eps)/dt (damping ratio zeta at a reference frequency: beta = 2 zeta / omega), or a band
 damping that holds zeta over a band of frequencies (``materials/band_damping.py``: Maxwell terms
 driven by each element's stress increments, as the finite-element solver drives them by its
-nodal forces, ``solver/band.py``).  No bulk
+nodal forces, ``solver/band.py``; a band-damped bar's Young's modulus is its dynamic modulus at the
+band's reference frequency, the elastic law running with E / Re(K(w_ref) / K)).  No bulk
 viscosity: in 1D it smears the unloading front and lengthens the measured contact (9% at 100
 elements per bar), where refinement costs almost nothing.
 
@@ -36,6 +37,7 @@ read a finite-element run.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass, field
@@ -273,10 +275,20 @@ def _band_tables(band_terms: list, counts: list[int], dt: float) -> tuple[np.nda
     return decay, gain, weight
 
 
+def _relaxed(bar: Bar, terms, band: tuple | None, reference: float | None) -> Bar:
+    """The bar its elastic law runs with: under band damping ``terms`` its E divided by Re(K(w_ref) / K)
+    (``materials/band_damping.py``; ``reference`` None: the band's geometric centre)."""
+    if terms is None:
+        return bar
+    f_ref = math.sqrt(band[0] * band[1]) if reference is None else reference
+    return dataclasses.replace(bar, E=bar.E * terms.relaxed_scale(f_ref))
+
+
 def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safety_factor: float = 0.9,
              damping_ratio: float | list[float] = 0.0, damping_frequency: float | list[float] | None = None,
              samples: int = 2000, anvil_gap: float | None = None, tethers: tuple = (),
-             damping_band: tuple | list | None = None) -> BarsResult:
+             damping_band: tuple | list | None = None,
+             damping_reference: float | list | None = None) -> BarsResult:
     """Run a chain of bars (``interfaces[k]`` joins bars k and k + 1) to ``end_time``.
 
     ``tethers``: ``Tether`` springs between the middle nodes of two bars.
@@ -284,7 +296,9 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
     ``damping_ratio`` is the structural damping of the bars at ``damping_frequency`` (default: the
     first free-free frequency c0 / 2L of the first bar); either may be one value per bar.
     ``damping_band``: (low, high) [Hz], or one per bar (None for a bar: stiffness-proportional): the
-    bars' ``damping_ratio`` held over that band instead (``materials/band_damping.py``)."""
+    bars' ``damping_ratio`` held over that band instead (``materials/band_damping.py``), a bar's ``E``
+    being its dynamic modulus at ``damping_reference`` [Hz] (one or one per bar; None: the band's
+    geometric centre; 0: ``E`` is static)."""
     if len(interfaces) != len(bars) - 1:
         raise ValueError(f"{len(bars)} bars need {len(bars) - 1} interfaces, got {len(interfaces)}")
     xs, ms, owner, elems, h0s, areas, Es, sys_, Hs, betas = [], [], [], [], [], [], [], [], [], []
@@ -293,6 +307,9 @@ def run_bars(bars: list[Bar], interfaces: list[Interface], end_time: float, safe
              else [damping_frequency or bars[0].c0 / (2 * bars[0].length)] * len(bars))
     bands = (damping_band if isinstance(damping_band, list) else [damping_band] * len(bars))
     band_terms = [fit_band(r, *band) if band and r > 0 else None for r, band in zip(ratios, bands)]
+    references = (damping_reference if isinstance(damping_reference, (list, tuple))
+                  else [damping_reference] * len(bars))
+    bars = [_relaxed(b, t, band, ref) for b, t, band, ref in zip(bars, band_terms, bands, references)]
     beta_of = [2 * r / (2 * math.pi * f) if r > 0 and f > 0 and t is None else 0.0
                for r, f, t in zip(ratios, freqs, band_terms)]
     left, right = [], []

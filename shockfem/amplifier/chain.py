@@ -473,6 +473,8 @@ def run_chain_scene(raw: dict, out_dir: str, fidelity: str | None = None, progre
                      damping_frequency=[b.damping.frequency if b.damping else 0.0 for b in scene.bodies],
                      damping_band=[(b.damping.low, b.damping.high) if b.damping and b.damping.kind == "band" else None
                                    for b in scene.bodies],
+                     damping_reference=[b.damping.reference_frequency if b.damping and b.damping.kind == "band"
+                                        else None for b in scene.bodies],
                      anvil_gap=spec.gap if stack else None)
         wall = r.wall_time_s
         h = r.history

@@ -27,8 +27,18 @@ Emmerich & Korn's linearised condition Im K(w) = 2 zeta Re K(w) at frequencies a
 What it costs, by causality (Kramers-Kronig): the body is stiffer at high frequencies, Re K(w) / K
 rising from 1 (static) by about (4 zeta / pi) ln(f_high / f_low) across the band (7.6% for 2% over
 1:20; the wave speed by half that), and at frequencies far above the band by sum_k g_k, which
-shortens the stable step by 1 / sqrt(1 + sum_k g_k) (``BandTerms.step_factor``).  The material's
-moduli are the static (relaxed) ones.
+shortens the stable step by 1 / sqrt(1 + sum_k g_k) (``BandTerms.step_factor``).
+
+The material's moduli are the body's at a reference frequency f_ref (the band's geometric centre
+unless the scene says): as the constant-Q formulations define the unrelaxed moduli from the one
+measured at a reference frequency (Emmerich & Korn 1987; Liu & Archuleta 2006: the unrelaxed
+modulus from the phase velocity at a reference frequency), the elastic law runs with
+
+    E_relaxed = E / Re(K(w_ref) / K)        (``BandTerms.relaxed_scale``),
+
+so that Re K(w_ref) is the given modulus.  A wave of frequency w then runs sqrt(Re K(w) / Re K(w_ref))
+times as fast as the given moduli say: slower below f_ref, faster above (the dispersion the band
+keeps, by causality).  f_ref = 0 keeps the static moduli.
 
 Each Maxwell term is integrated exactly over a step for a force rate constant within it:
 
@@ -40,6 +50,7 @@ the rest of its work r_k . du is what its dashpot dissipates (the damping energy
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -84,6 +95,16 @@ class BandTerms:
         omega = _band_omegas(self.low, self.high, SAMPLES_PER_TERM * len(self.tau) * 4)
         return float(np.abs(self.ratio_at(omega) / self.ratio - 1.0).max())
 
+    def relaxed_scale(self, reference: float) -> float:
+        """1 / Re(K(w_ref) / K): the factor on a material's moduli that makes them its dynamic moduli at
+        ``reference`` [Hz] (module docstring); 1 at ``reference`` = 0 (the given moduli are static)."""
+        return 1.0 / float(self.modulus(2.0 * math.pi * reference).real)
+
+    def dispersion(self, frequency, reference: float) -> np.ndarray:
+        """Re K(w) / Re K(w_ref) at ``frequency`` [Hz] (array): the squared ratio of a wave's speed (a mode's
+        frequency) at ``frequency`` to what the moduli given at ``reference`` [Hz] say."""
+        return self.modulus(2.0 * np.pi * np.asarray(frequency, dtype=float)).real * self.relaxed_scale(reference)
+
     @property
     def stiffening(self) -> float:
         """sum_k g_k: how much stiffer than static the body is far above the band."""
@@ -100,6 +121,7 @@ def _band_omegas(low: float, high: float, count: int) -> np.ndarray:
     return 2.0 * math.pi * np.geomspace(low, high, max(count, 2))
 
 
+@functools.lru_cache(maxsize=64)
 def fit_band(ratio: float, low: float, high: float) -> BandTerms:
     """The fewest Maxwell terms (at most MAX_TERMS) whose zeta(w) stays within RIPPLE of ``ratio`` over
     [``low``, ``high``] [Hz] (module docstring: Emmerich & Korn's least squares, weights >= 0).

@@ -2,9 +2,12 @@
 and its slots; columns ``materials/layout.py``) and one row of hardening-curve points per row."""
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from ..materials import layout
+from ..materials.band_damping import fit_band
 from ..materials.laws import LAWS
 from ..scene import Damping, Material
 
@@ -18,7 +21,8 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
 
     ``damping``: one for all rows or one per row.  The stiffness-proportional damping coefficient
     beta [s] and the bulk viscosity sit in the table because they act through the material:
-    viscous stresses beta C : d and -q I.  ``slot_widths``: per row, the total width of a slotted
+    viscous stresses beta C : d and -q I.  A row with band damping holds the material's moduli
+    relaxed (``relaxed_material``): the body's own row, since every body has one.  ``slot_widths``: per row, the total width of a slotted
     ring's slots (axisymmetric split cones, ``materials/slotted.py``), 0 for a full ring.
     """
     per_row = damping if isinstance(damping, list) else [damping] * len(materials)
@@ -28,6 +32,7 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
     table = np.zeros((n, layout.NUM_PARAMS))
     curves = np.zeros((n, points, 2))
     for i, m in enumerate(materials):
+        m = relaxed_material(m, per_row[i])
         row = table[i]
         row[layout.P_RHO] = m.rho
         row[layout.P_LAMBDA] = m.lam
@@ -41,3 +46,15 @@ def parameter_table(materials: list[Material], damping: list[Damping | None] | D
         if law.pack is not None:
             law.pack(row, curves[i], m.plasticity or m.crush or m.rubber)
     return table, curves
+
+
+def relaxed_material(material: Material, damping: Damping | None) -> Material:
+    """The material a body's elastic law runs with: as given, or under a band damping its moduli divided
+    by Re(K(w_ref) / K), so that the body's dynamic modulus at the band's reference frequency is the
+    given one (``materials/band_damping.py``).  Only Young's modulus scales (Poisson's ratio, the density
+    and the yield stresses stay), so lambda, mu and the wave speed follow, and with the wave speed the
+    stable step."""
+    if damping is None or damping.kind != "band":
+        return material
+    scale = fit_band(damping.ratio, damping.low, damping.high).relaxed_scale(damping.reference_frequency)
+    return dataclasses.replace(material, E=material.E * scale)

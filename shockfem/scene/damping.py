@@ -2,8 +2,9 @@
 
 A Rayleigh table is ``{type = "mass" | "stiffness" | "rayleigh", ratio, frequency}``: the ratio of
 critical at one frequency, growing above it (stiffness) or below it (mass).  A band table is
-``{type = "band", ratio, low, high}``: the ratio held over [low, high] by Maxwell terms
-(``materials/band_damping.py``, LS-DYNA's *DAMPING_FREQUENCY_RANGE_DEFORM).
+``{type = "band", ratio, low, high, reference}``: the ratio held over [low, high] by Maxwell terms
+(``materials/band_damping.py``, LS-DYNA's *DAMPING_FREQUENCY_RANGE_DEFORM), the body's materials
+being its moduli at ``reference`` (default the band's geometric centre; 0 Hz: static).
 """
 from __future__ import annotations
 
@@ -26,16 +27,17 @@ def read_damping(ck: Checker, raw: dict, path: str, kinds=DAMPING_TYPES, default
         ratio = ck.quantity(d, "ratio", path, "dimensionless", nonnegative=True, upper=1.0)
         freq = ck.quantity(d, "frequency", path, "frequency", positive=True)
         return Damping(ratio, freq, kind)
-    ck.unknown(d, ("ratio", "low", "high", "type"), path)
+    ck.unknown(d, ("ratio", "low", "high", "reference", "type"), path)
     ratio = ck.quantity(d, "ratio", path, "dimensionless", positive=True, upper=0.5)
     low = ck.quantity(d, "low", path, "frequency", positive=True)
     high = ck.quantity(d, "high", path, "frequency", positive=True)
+    reference = ck.quantity(d, "reference", path, "frequency", nonnegative=True) if "reference" in d else None
     if low > 0 and high > 0 and 0 < ratio < 0.5:
         try:
             fit_band(ratio, low, high)
         except ValueError as e:
             ck.fail(f"{path}.high", f"{e} (high must be above low)")
-    return Damping(ratio, math.sqrt(low * high) if low > 0 and high > 0 else 0.0, "band", low, high)
+    return Damping(ratio, math.sqrt(low * high) if low > 0 and high > 0 else 0.0, "band", low, high, reference)
 
 
 def read_scene_damping(ck: Checker, raw: dict) -> Damping | None:
@@ -51,18 +53,45 @@ def read_body_damping(ck: Checker, b: dict, path: str) -> Damping:
     return read_damping(ck, b, f"{path}.damping", ("stiffness", "band"), "stiffness")
 
 
+# Laws whose moduli a band's reference frequency may rescale: Hooke's law and J2's elastic part (its
+# yield stresses and hardening stay: they are strengths, not the elastic response the terms stiffen).
+# A crushable foam's and a rubber's response at large strain is their crush curve's and strain energy's,
+# which a measured dynamic modulus does not define: those take a band only with static moduli.
+RESCALED_LAWS = ("elastic", "j2")
+
+
+def check_band_laws(ck: Checker, bodies, materials: dict, scene_damping: Damping | None) -> None:
+    """Refuse a band that would rescale the moduli of a law outside ``RESCALED_LAWS`` (a foam, a rubber)
+    unless its ``reference`` is 0 Hz (the material's moduli static, nothing rescaled)."""
+    for i, b in enumerate(bodies):
+        d = b.damping or scene_damping
+        m = materials.get(b.material)
+        if b.rigid or d is None or d.kind != "band" or m is None or m.law in RESCALED_LAWS or d.reference == 0.0:
+            continue
+        path = f"bodies[{i}].damping" if b.damping else "damping"
+        ck.fail(f"{path}.reference", f"body {b.name}'s material {m.name} is a {m.law}: a band damping takes its "
+                f"moduli as given at a reference frequency by rescaling Hooke's moduli, which has no meaning for "
+                f"a {m.law}'s {'crush curve' if m.law == 'foam' else 'strain energy'}. Set reference = \"0 Hz\" "
+                f"(its moduli static, the body stiffer than them across the band) or give it "
+                f"damping.type = \"stiffness\"")
+
+
 def describe_damping(d: Damping) -> str:
     """One line of the run's summary for a damping table."""
     if d.kind == "band":
         terms = fit_band(d.ratio, d.low, d.high)
-        foot, centre = terms.modulus(2 * math.pi * np.array([d.low, d.frequency])).real
-        # the material's moduli are the static ones: waves run sqrt(Re K / K) faster, and a pulse whose
-        # duration is a wave's transit (a rod's 2L/c0) is that much shorter
+        ref = d.reference_frequency
+        # the moduli are the body's at the reference frequency (E / Re K(w_ref) in the elastic law): a wave
+        # of frequency f runs sqrt(Re K(w) / Re K(w_ref)) times what they say, the band's dispersion
+        foot, top = np.sqrt(terms.dispersion([d.low, d.high], ref)) - 1.0
+        held = (f"the material's moduli held at {ref:.4g} Hz (elastic law at E x {terms.relaxed_scale(ref):.4f})"
+                if ref > 0 else "the material's moduli static (the body stiffer across the band)")
         return (f"band, {d.ratio:.3g} of critical over {d.low:.6g} to {d.high:.6g} Hz ({len(terms.tau)} Maxwell "
-                f"terms, within {terms.ripple():.1%} over the band; stiffer than static by {centre - 1:.1%} at "
-                f"{d.frequency:.4g} Hz, by {terms.stiffening:.1%} far above: stable step x {terms.step_factor:.3f}; "
-                f"waves {math.sqrt(foot) - 1:.1%} faster at {d.low:.4g} Hz, {math.sqrt(centre) - 1:.1%} at "
-                f"{d.frequency:.4g} Hz than the static moduli give, transit-timed pulses that much shorter)")
+                f"terms, within {terms.ripple():.1%} over the band); {held}; by causality waves still disperse: "
+                f"{foot:+.1%} at {d.low:.4g} Hz, {top:+.1%} at {d.high:.4g} Hz against the moduli's speed, so a "
+                f"pulse timed by a wave's transit shifts by up to that much as its spectrum sits low or high in "
+                f"the band; the stable step x {terms.step_factor / math.sqrt(terms.relaxed_scale(ref)):.3f} of the "
+                f"moduli's (the body {terms.stiffening:.1%} stiffer than relaxed far above the band)")
     a, b = d.coefficients()
     return f"{d.kind}, {d.ratio:.3g} of critical at {d.frequency:.6g} Hz (alpha = {a:.4g} 1/s, beta = {b:.4g} s)"
 

@@ -18,7 +18,7 @@ from .boundaries import read_boundaries
 from .cavities import read_cavities
 from .checker import Checker, SceneError
 from .contacts import read_contacts, read_springs
-from .damping import read_scene_damping
+from .damping import check_band_laws, read_scene_damping
 from .materials import read_materials
 from .outputs import read_outputs
 from .penetration import read_penetration
@@ -55,6 +55,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     if tunnel is not None:
         contacts.append(tunnel)     # the target's tunnel is a contact with the projectile's sides
     damping = read_scene_damping(ck, raw)
+    check_band_laws(ck, bodies, materials, damping)
     outputs = read_outputs(ck, raw, bodies, end_time)
     shock = read_shock(ck, raw, body_regions, kin, end_time)
     if ck.problems:

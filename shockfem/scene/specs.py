@@ -108,6 +108,13 @@ class Damping:
     kind: str             # mass | stiffness | rayleigh | band
     low: float = 0.0      # band: its lowest and highest frequencies [Hz]
     high: float = 0.0
+    reference: float | None = None   # band: where the material's moduli hold [Hz]; None: the centre, 0: static
+
+    @property
+    def reference_frequency(self) -> float:
+        """A band's reference frequency [Hz]: where the body's dynamic moduli are the material's
+        (``materials/band_damping.py``); the band's geometric centre unless the scene gives one."""
+        return self.frequency if self.reference is None else self.reference
 
     def coefficients(self) -> tuple[float, float]:
         """Rayleigh coefficients (alpha [1/s], beta [s]) with zeta(omega) = alpha/(2 omega) + beta omega/2.

@@ -49,3 +49,39 @@ def test_maxwell_update_is_exact_for_a_constant_rate():
             r, q = maxwell_update(r, q, dt, dt, decay[0], gain[0], g)
         assert r == pytest.approx(exact, rel=1e-12)
         assert q == pytest.approx(exact / g, rel=1e-12)      # the spring's stretch: r = g K q, K = 1 here
+
+
+def test_moduli_given_at_the_reference_frequency():
+    """The relaxed moduli E / Re K(w_ref) make the body's dynamic modulus at w_ref the given one: 1 / 1.0918 at
+    the centre of 2% over 1:20 (the fit's Re K / K there), nothing at 0 Hz (static); waves then run
+    sqrt(Re K(w) / Re K(w_ref)) of the moduli's speed, -2.0% at the band's foot and +2.0% at its top."""
+    terms = fit_band(0.02, 1.0, 20.0)
+    centre = math.sqrt(20.0)
+    assert terms.relaxed_scale(centre) * terms.modulus(2 * math.pi * centre).real == pytest.approx(1.0, rel=1e-14)
+    assert terms.relaxed_scale(centre) == pytest.approx(1 / 1.0918, rel=1e-4)
+    assert terms.relaxed_scale(0.0) == 1.0
+    assert np.sqrt(terms.dispersion([1.0, centre, 20.0], centre)) - 1 == pytest.approx([-0.0196, 0.0, 0.0200],
+                                                                                        abs=5e-4)
+
+
+def test_a_band_bodys_row_holds_relaxed_moduli_and_a_plain_bodys_the_given_ones():
+    """Two bodies of one J2 steel, one band-damped: each body has its own row; only the band body's elastic
+    constants (lambda, mu, the wave speed that sets the stable step) scale, by 1 / Re K(w_ref) and its square
+    root; its density, yield curve and kinematic modulus stay; a foam row at reference 0 Hz is unchanged."""
+    from shockfem.model.materials import parameter_table
+    from shockfem.materials import layout
+    from shockfem.scene import Damping, Material
+    from shockfem.scene.specs import Plasticity
+    j2 = Plasticity(((0.0, 300e6), (0.1, 400e6)), 1e9, 0.0, 0.0, "plastic-strain-rate", "test")
+    steel = Material("steel", 7850.0, 210e9, 0.3, plasticity=j2)
+    band = Damping(0.02, math.sqrt(1e3 * 2e4), "band", 1e3, 2e4)
+    static = Damping(0.02, math.sqrt(1e3 * 2e4), "band", 1e3, 2e4, 0.0)
+    params, curves = parameter_table([steel, steel, steel], [band, None, static])
+    scale = fit_band(0.02, 1e3, 2e4).relaxed_scale(math.sqrt(1e3 * 2e4))
+    for column, power in ((layout.P_LAMBDA, 1.0), (layout.P_MU, 1.0), (layout.P_WAVE_SPEED, 0.5)):
+        assert params[0, column] == pytest.approx(scale ** power * params[1, column], rel=1e-14)
+        assert params[2, column] == params[1, column]
+    assert params[1, layout.P_MU] == steel.mu and params[1, layout.P_WAVE_SPEED] == steel.c_dilatational
+    for column in (layout.P_RHO, layout.P_KINEMATIC, layout.P_CURVE_POINTS):
+        assert params[0, column] == params[1, column]
+    assert np.array_equal(curves[0], curves[1])

@@ -407,16 +407,43 @@ def test_band_damping_reads_its_band_and_refuses_a_bad_one():
     assert "bodies[0].damping.high: band damping needs 0 < low < high" in text
 
 
-def test_band_damping_summary_says_how_much_faster_its_waves_run():
-    """The run's summary line of a band gives the consequence a user of pulse durations needs: waves
-    sqrt(Re K / K) faster than the static modulus gives (2% over 1:20: Re K / K = 1.049 at the band's foot,
-    1.092 at its centre, ``fit_band``; 2.4% and 4.5% in wave speed)."""
+def test_band_damping_summary_says_where_the_moduli_hold_and_what_disperses():
+    """The run's summary line of a band says at which frequency the material's moduli hold (the band's
+    geometric centre by default: the elastic law at E / Re K(w_c) = E x 0.9159 for 2% over 1:20, Re K / K =
+    1.0918 there, ``fit_band``) and how far waves still run from the moduli's speed across the band,
+    sqrt(Re K(w) / Re K(w_c)) - 1 = -2.0% at its foot and +2.0% at its top (1.0495 and 1.1360 against
+    1.0918); with reference = 0 Hz the moduli are static and waves run 2.4% to 6.6% faster."""
     from shockfem.scene.damping import describe_damping
     raw = base()
     raw["bodies"][0]["damping"] = {"type": "band", "ratio": 0.02, "low": "1 kHz", "high": "20 kHz"}
     line = describe_damping(resolve(raw).bodies[0].damping)
-    assert "waves 2.4% faster at 1000 Hz, 4.5% at 4472 Hz" in line, line
-    assert "pulses" in line and "shorter" in line, line
+    assert "moduli held at 4472 Hz (elastic law at E x 0.9159)" in line, line
+    assert "-2.0% at 1000 Hz, +2.0% at 2e+04 Hz" in line, line
+    raw["bodies"][0]["damping"]["reference"] = "0 Hz"
+    line = describe_damping(resolve(raw).bodies[0].damping)
+    assert "moduli static" in line and "+2.4% at 1000 Hz, +6.6% at 2e+04 Hz" in line, line
+
+
+def test_band_reference_reads_with_units_and_defaults_to_the_centre():
+    raw = base()
+    raw["bodies"][0]["damping"] = {"type": "band", "ratio": 0.02, "low": "1 kHz", "high": "20 kHz"}
+    assert resolve(raw).bodies[0].damping.reference_frequency == pytest.approx(4472.136, rel=1e-6)
+    raw["bodies"][0]["damping"]["reference"] = "2 kHz"
+    assert resolve(raw).bodies[0].damping.reference_frequency == 2e3
+    raw["bodies"][0]["damping"]["reference"] = "-2 kHz"
+    assert "bodies[0].damping.reference: must be >= 0" in "\n".join(_problems(raw))
+
+
+def test_band_on_a_foam_needs_static_moduli():
+    """A foam's crush curve is not a modulus a reference frequency rescales: a band on it is refused unless
+    its reference is 0 Hz (the scene-wide band alike)."""
+    raw = base()
+    raw["materials"]["steel"].update({"crush_curve": [[0, "1 MPa"]], "tension_cutoff": "1 MPa"})
+    raw["damping"] = {"type": "band", "ratio": 0.02, "low": "1 kHz", "high": "20 kHz"}
+    text = "\n".join(_problems(raw))
+    assert "damping.reference: body bar's material steel is a foam" in text and 'reference = "0 Hz"' in text, text
+    raw["damping"]["reference"] = "0 Hz"
+    assert resolve(raw).damping.reference == 0.0
 
 
 def test_mass_damping_on_a_moving_body_warns_and_a_held_one_does_not():
