@@ -102,6 +102,14 @@ def _cropped(image: np.ndarray, margin: int = 12) -> np.ndarray:
     return image[top:bottom, left:right]
 
 
+def _wrapped(title: str, width_px: float) -> str:
+    """Each line of ``title`` broken at spaces to fit ``width_px`` pixels at 9 pt and 110 dpi (a
+    character is about 7.6 pixels wide there), so that a long title on a narrow picture is not cut."""
+    import textwrap
+    chars = max(20, int(width_px / 7.6))
+    return "\n".join(piece for line in title.splitlines() for piece in (textwrap.wrap(line, chars) or [""]))
+
+
 def _compose(image, path: str, title: str, arrows, colours=None):
     """The rendered shape, cropped to the bodies, as a matplotlib figure: the title above, the axes'
     directions beside the shape, and (``colours``: label with its unit, (low, high), colour map) a colour
@@ -118,10 +126,13 @@ def _compose(image, path: str, title: str, arrows, colours=None):
     image = _cropped(image)
     dpi = 110
     w, h = image.shape[1] / dpi, image.shape[0] / dpi           # inches, one image pixel a figure pixel
-    tall, top = h >= w, 0.55
+    tall = h >= w
     bar = colours is not None
     side, below = ((1.4 if bar else 1.0), 0.0) if tall else (0.0, (1.1 if bar else 0.9))
-    W, H = max(w + side, 4.5 if bar else 3.0), h + top + below      # inches: room for the title's line
+    W = max(w + side, 4.5 if bar else 3.0)                          # inches
+    title = _wrapped(title, W * dpi)
+    top = 0.1 + 0.16 * (title.count("\n") + 1) if title else 0.1    # a 9 pt line is 0.16 in
+    H = h + top + below
     fig = plt.figure(figsize=(W, H), dpi=dpi)
     ax = fig.add_axes([0.0, below / H, w / W, h / H])
     ax.imshow(image, interpolation="none")

@@ -110,9 +110,13 @@ def _paraview(path, picture, display):
 
 
 def _picture_ok(path, size=(700, 900)):
+    """A coloured body, not an empty view: ``size`` exactly (ParaView's screenshot), or with ``size=None``
+    (the run's own pictures, cropped to the bodies, their size following the shape) between 300 and 1,400
+    pixels on each side."""
     image = matplotlib.image.imread(str(path))
     colours = np.unique(image.reshape(-1, image.shape[-1]).round(3), axis=0)
-    return image.shape[:2] == size and len(colours) > 50     # a coloured body, not an empty view
+    fits = image.shape[:2] == size if size else all(300 <= n <= 1400 for n in image.shape[:2])
+    return fits and len(colours) > 50
 
 
 @pytest.mark.parametrize("kinematics", list(KINEMATICS))
@@ -128,7 +132,7 @@ def test_fields_open_in_paraview_pyvista_and_meshio(tmp_path, kinematics, displa
     assert _picture_ok(tmp_path / "fields.png")
     # the run's own pictures (output/render.py): the peak-stress frame and the final shape
     for picture in ("peak_stress.png", "final_shape.png"):
-        assert _picture_ok(out / picture, (900, 900)), picture
+        assert _picture_ok(out / picture, None), picture
 
     reader = meshio.xdmf.TimeSeriesReader(str(out / "fields.xdmf"))
     points, cells = reader.read_points_cells()

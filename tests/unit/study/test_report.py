@@ -30,7 +30,7 @@ def test_run_pictures_show_what_the_run_drew(tmp_path):
     rep.run_pictures("half", "The other run,")
     rep.run_pictures("none", "The third run,")
     text = (tmp_path / "report.md").read_text()
-    assert "![The design, at its highest von Mises stress: deformed at true scale" in text
+    assert "![The design, at the field frame of its highest von Mises stress: deformed at true scale" in text
     assert "](full/peak_stress.png)" in text and "](full/final_shape.png)" in text
     assert "](half/final_shape.png)" in text and "](half/peak_stress.png)" not in text
     assert "No peak_stress.png of the other run in `half/`" in text
