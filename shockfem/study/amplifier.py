@@ -529,8 +529,9 @@ def cylinders_vs_plates(rep: Report, d, size: str, runs: "ChainRuns"):
              "launched chain, axisymmetric, 2% damping, 1 mm gaps. Occupied volume: the envelope of the "
              "stack, a cylinder of the widest body's diameter and the bodies' total length (gaps aside). Elastic "
              "steel at 10 m/s (the geometry's own losses: waves and radial modes) and "
-             f"{MATERIAL} at the design's {d.launch_speed:.4g} m/s (with yielding). Each body is damped 2% at its "
-             "own first mode, and its elements are a quarter of its length, at most "
+             f"{MATERIAL} at the design's {d.launch_speed:.4g} m/s (with yielding). Each body is damped 2% "
+             "over a band from its own first mode up (the chains' default band damping), and its elements are "
+             "a quarter of its length, at most "
              f"{SIZES[size]['plate_h'] * 1e3:g} mm. Restitution: each pair's first impact.")
     rows, curves = [], {}
     for name, raw, (key, shape, sizes) in plate_cases(d, size):
@@ -674,8 +675,9 @@ def elastic_interfaces(rep: Report, d, size: str, runs_of: "ChainRuns"):
     for e in ASSUMED_RESTITUTION:
         g = rigid.launched_chain(masses, d.launch_speed, e).final[-1] / d.launch_speed
         runs.append([f"rigid, e = {e:g} assumed", "-", ", ".join([f"{e:.3f}"] * (n - 1)), "no", e, g, "-", "-"])
-    rep.text("The padded design at every fidelity (launched chain, 2% structural damping on each body at its own "
-             f"first mode) with 1 mm gaps before the pads, and with {sequenced * 1e3:.0f} mm gaps that let each "
+    rep.text("The padded design at every fidelity (launched chain, 2% structural damping on each body over a "
+             f"band from its own first mode up) with 1 mm gaps before the pads, and with {sequenced * 1e3:.0f} mm "
+             "gaps that let each "
              "stage end before the next begins; and the rigid chain at the restitutions the paper assumes. "
              "Restitution per stage: each pair's first contact, meaningless when contacts overlap (the bodies "
              "then act as one chain of springs). Effective restitution: the one e that gives the rigid chain of "
