@@ -20,8 +20,7 @@ from .geometry.quality import check_mesh
 from .model import build_model, describe
 from .output.fields import FieldWriter, write_final_shape
 from .output import checkpoint
-from .output.consumers import (Checkpoints, FieldFrames, HistoryRows, LoopState, ProgressBar, StopRules,
-                               body_maxima)
+from .output.consumers import Checkpoints, FieldFrames, HistoryRows, LoopState, ProgressBar, StopRules
 from .output.history import HistoryRecorder
 from .output.peak_stress import PeakStress
 from .output.picture_process import PictureProcess, pictures_wanted
@@ -432,11 +431,21 @@ def _shock_metrics(out_dir: str, say) -> dict | None:
     return result
 
 
+def _body_maxima(solver, per_cell: np.ndarray) -> np.ndarray:
+    """The largest value of a per-cell quantity in every body, over all ranks."""
+    m = solver.model
+    out = np.zeros(len(m.bodies))
+    for i in range(len(out)):
+        sel = m.cell_body[:len(per_cell)] == i
+        out[i] = solver.comm.allreduce(float(per_cell[sel].max()) if sel.any() else 0.0, op=MPI.MAX)
+    return out
+
+
 def _max_plastic_strain(solver: ExplicitSolver) -> np.ndarray:
     """Per body (the plastic strain only grows, so its final value is its maximum)."""
     if not solver.model.plastic:
         return np.zeros(len(solver.model.bodies))
-    return body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
+    return _body_maxima(solver, solver.plastic_state[:, :, S_EPS].max(axis=1))
 
 
 def _summary(scene: Scene, solver: ExplicitSolver, status: str, diagnosis, wall: float, peaks: list[dict]) -> dict:

@@ -17,9 +17,6 @@ from __future__ import annotations
 import sys
 from dataclasses import dataclass, field
 
-import numpy as np
-from mpi4py import MPI
-
 from ..solver import guards
 
 # a time counts as reached within this share of it (a sum of steps lands a few ulps short of a cadence's time)
@@ -54,16 +51,6 @@ class LoopState:
         return cls(Cadence(outputs.history_interval, outputs.history_interval),
                    Cadence(outputs.field_interval, outputs.field_interval),
                    Cadence(checkpoint_interval, checkpoint_interval))
-
-
-def body_maxima(solver, per_cell: np.ndarray) -> np.ndarray:
-    """The largest value of a per-cell quantity in every body, over all ranks."""
-    m = solver.model
-    out = np.zeros(len(m.bodies))
-    for i in range(len(out)):
-        sel = m.cell_body[:len(per_cell)] == i
-        out[i] = solver.comm.allreduce(float(per_cell[sel].max()) if sel.any() else 0.0, op=MPI.MAX)
-    return out
 
 
 class HistoryRows:
