@@ -42,6 +42,10 @@ class LiquidCavity(ForceSource):
 
     kind = "cavity"
 
+    @property
+    def oscillator(self) -> str:
+        return f"cavity '{self.name}' on its rigid walls"
+
     def __init__(self, model: Model, spec: Cavity):
         self.spec = spec
         self.name = spec.name

@@ -17,6 +17,8 @@ The rest of the protocol is what the run reads of it:
     energy()          the energy it has taken from the bodies so far, minus its work on them [J]
     columns(axes)     its history columns, (name, unit) each; ``history()`` their values at t
     summary()         what summary.json says of it at the end
+    period, oscillator   the period [s] of the lumped oscillation it sets (inf: none), which bounds the step
+                      for accuracy (``ExplicitSolver.accuracy_step``), and what oscillates, for the log
 
 A source that holds nodes kinematically rather than by a force (a constraint wall) sets
 ``holds_motion`` and implements ``take_velocities`` and ``hold`` (``ExplicitSolver.advance``).  Its energy
@@ -24,6 +26,8 @@ and the others' are counted by the solver from the nodal forces (``energy.contac
 source's own share, for its summary and for the check that the shares add up.
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -35,6 +39,12 @@ class ForceSource:
     kind = ""              # the registry's name for this kind of source (``registry.SOURCES``)
     holds_motion = False   # holds nodes on a surface inside the velocity update (``take_velocities``, ``hold``)
     name = ""
+    period = math.inf      # of the lumped oscillation the source sets [s] (inf: none)
+
+    @property
+    def oscillator(self) -> str:
+        """What oscillates at ``period``, for the log."""
+        return f"{self.kind} '{self.name}'"
 
     def rows(self) -> np.ndarray:
         """The local nodes whose row of ``f_con`` ``apply`` can write."""

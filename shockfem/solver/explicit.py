@@ -431,12 +431,11 @@ class ExplicitSolver:
         return self.model.safety_factor * dt
 
     def accuracy_step(self) -> float:
-        """The step's bound for accuracy [s]: 1 / ``LUMPED_STEPS_PER_PERIOD`` of the shortest period of the
-        discrete springs and of the liquids against rigid bodies, and the scene's ``max_time_step``; inf if
-        none.  Said once in the log when it sets the step."""
-        period, source = min([(s.period, f"spring '{s.name}'") for s in self.springs]
-                             + [(c.period, f"cavity '{c.name}' on its rigid walls") for c in self.cavities],
-                             default=(math.inf, ""))
+        """The step's bound for accuracy [s]: 1 / ``LUMPED_STEPS_PER_PERIOD`` of the shortest period a force
+        source sets (``ForceSource.period``: a discrete spring's, a liquid's against rigid bodies), and the
+        scene's ``max_time_step``; inf if none.  Said once in the log when it sets the step."""
+        shortest = min(self.sources, key=lambda s: s.period, default=None)
+        period, source = (shortest.period, shortest.oscillator) if shortest else (math.inf, "")
         bound = period / LUMPED_STEPS_PER_PERIOD
         if 0.0 < self.model.max_time_step < bound:
             bound, source = self.model.max_time_step, "scene.max_time_step"
