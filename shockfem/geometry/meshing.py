@@ -96,10 +96,13 @@ def _elements(dim: int, entities, gmsh_type: int) -> np.ndarray:
 
 
 def _reset_options():
-    """gmsh options are global: every body starts from the same ones."""
+    """gmsh options are global: every body starts from gmsh's defaults of the options a body sets, and a
+    process that goes on to use gmsh itself finds them so after a mesh (a quad body's full-quad
+    recombination left set made a user's own recombined plate mesh lose cells)."""
     import gmsh
     for name, value in (("Mesh.Algorithm", 6), ("Mesh.Algorithm3D", 1), ("Mesh.RecombineAll", 0),
-                        ("Mesh.SubdivisionAlgorithm", 0), ("Mesh.MeshSizeMax", 1e22), ("Mesh.MeshSizeMin", 0.0),
+                        ("Mesh.RecombinationAlgorithm", 1), ("Mesh.SubdivisionAlgorithm", 0),
+                        ("Mesh.MeshSizeMax", 1e22), ("Mesh.MeshSizeMin", 0.0),
                         ("Mesh.MeshSizeFromCurvature", 0), ("Mesh.MeshSizeExtendFromBoundary", 1),
                         ("Mesh.MeshSizeFromPoints", 1)):
         gmsh.option.setNumber(name, value)
