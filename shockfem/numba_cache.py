@@ -2,7 +2,7 @@
 
 numba keys a cached function on its own file's time stamp and size only: a compiled function that calls
 one defined in another module keeps that module's old code in its cache after the module changes (numba
-issue #1833, a documented limitation).  shockfem's passes call across modules everywhere (a contact
+GitHub issue 1833, a documented limitation).  shockfem's passes call across modules everywhere (a contact
 pair's fused step in ``contact/pair_step.py`` calls ``contact/kernels.py``; the element passes call the
 materials' updates), so an update of one file could leave runs computing with a mix of old and new code.
 It happened (a measured case): after ``contact/kernels.py`` changed, the 3D two-rod

@@ -1,4 +1,4 @@
-"""numba keys a cached function on its own file only (numba issue #1833): a compiled function calling one
+"""numba keys a cached function on its own file only (numba GitHub issue 1833): a compiled function calling one
 from another module keeps the old code after that module changes.  ``shockfem.numba_cache.drop_stale_caches``
 drops the caches of every module whose import closure changed.  On a package of three modules (``a`` calls
 ``b``'s compiled function, ``c`` stands alone), after ``b`` changes: without the drop, ``a`` still returns
