@@ -28,6 +28,7 @@ DIMENSIONS = {
     "area": "[length] ** 2",
     "volume": "[length] ** 3",
     "temperature": "[temperature]",
+    "specific_heat": "[length] ** 2 / [time] ** 2 / [temperature]",
     "angle": "",
     "dimensionless": "",
 }
@@ -37,7 +38,7 @@ SI_UNITS = {
     "length": "m", "mass": "kg", "time": "s", "velocity": "m/s", "angular_velocity": "rad/s",
     "acceleration": "m/s**2", "force": "N", "pressure": "Pa", "density": "kg/m**3",
     "frequency": "Hz", "strain_rate": "1/s", "energy": "J", "stiffness": "N/m", "damping": "N*s/m", "slowness": "s/m",
-    "area": "m**2", "volume": "m**3", "temperature": "K", "angle": "rad",
+    "area": "m**2", "volume": "m**3", "temperature": "K", "specific_heat": "J/(kg*K)", "angle": "rad",
     "dimensionless": "",
 }
 

@@ -7,19 +7,22 @@ outward normals face the liquid; the cavity's other walls are held still):
                                                         in axisymmetry), v_f its mean velocity
     M        : the liquid's mass, less what the orifice has let out;  rho = M / V
     p        = K / n ((rho / rho0)^n - 1)               gauge pressure, Tait's law (``liquid.py``)
-    mdot     = Cd a rho min(sqrt(2 p / rho), c)         the orifice jet (``orifice.py``'s fixed-Cd law,
-                                                        without the velocity of approach or the jet's
-                                                        reaction), taken at the step's end (backward
-                                                        Euler)
+    mdot     = rho Cc a u_j                             the orifice jet by the scene's law (``orifice.py``:
+                                                        the sharp-edged law with the velocity of approach
+                                                        in the passage A, or a fixed Cd without it), taken
+                                                        at the step's end (backward Euler)
     f        = -p S_f / (nodes per facet) on each wall node: the liquid pushes the walls away from it,
-                                                        on the current geometry (a follower load)
+                                                        on the current geometry (a follower load); on the
+                                                        last wall (the orifice's) p less J / A_w, the jet's
+                                                        reaction J = mdot (u_j - u1) (sharp-edged law)
 
 with a the orifice area: fixed, or a table of the stroke (displaced volume / piston area: a
 metering pin).  A cavity given no volume is closed by its walls, and its volume is taken from their current
 positions every step (divergence theorem).  The liquid's energy is the work the walls do on it, split into what it stores
 (the compression energy of M at rho) and what the orifice throttles, the integral of p mdot / rho
-(the jet's kinetic energy, turned to heat downstream).  The walls' nodes see the liquid as a spring
-of stiffness K A^2 / V (a rigid wall: its body's mass), which bounds the stable step.
+(the jet's kinetic energy, turned to heat downstream), less the jet reaction's work on the orifice's
+wall.  The walls' nodes see the liquid as a spring of stiffness K A^2 / V (a rigid wall: its body's
+mass), which bounds the stable step.  The passage A is ``orifice.piston_area``, or the last wall's area.
 """
 from __future__ import annotations
 
@@ -34,7 +37,60 @@ from ..forces.source import ForceSource
 from ..model import Model
 from ..scene.specs import Cavity
 from . import liquid
-from .orifice import OrificeLaw
+from . import orifice
+from .orifice import AREA_RATIO, OrificeLaw
+
+
+def orifice_law(spec: Cavity) -> OrificeLaw:
+    """The scene's orifice law (``scene/cavities.py``): the sharp-edged law with the velocity of approach and
+    the jet's reaction, or a fixed Cd without either."""
+    if spec.law == "fixed_cd":
+        return OrificeLaw(discharge=spec.discharge, approach=False, jet=False, largest_ratio=1.0)
+    return AREA_RATIO
+
+
+class WallNodes:
+    """The walls' nodes of a liquid source, compact over the ranks (``NodeExchange``): the facets of each
+    wall in the walls' order (``facets``, ``wall_of_facet``), each node's moving mass (a rigid body's node
+    moves with its whole body) and its rigid body's place among the walls' rigid bodies (-1: deformable).
+    Collective."""
+
+    def __init__(self, model: Model, spec: Cavity):
+        surfaces = [build_surface(model, w) for w in spec.walls]
+        facets = [s.facets for s in surfaces]
+        if not any(len(f) for f in facets):
+            raise ModelError(f"cavity '{spec.name}': its walls {', '.join(spec.walls)} have no facets")
+        width = max(f.shape[1] for f in facets)
+        if any(f.shape[1] != width for f in facets):
+            raise ModelError(f"cavity '{spec.name}': walls of mixed facet kinds")
+        self.counts = [len(f) for f in facets]
+        self.global_nodes = np.unique(np.concatenate([f.ravel() for f in facets]))
+        self.exchange = NodeExchange(model, self.global_nodes)
+        self.facets = np.searchsorted(self.global_nodes, np.concatenate(facets))
+        self.wall_of_facet = np.repeat(np.arange(len(facets)), self.counts)
+        body = self.exchange.gather(model.node_body[:, None].astype(float))[:, 0].astype(int)
+        mass = self.exchange.gather(model.mass[:, None])[:, 0]
+        for rb in model.rigid:
+            mass[body == rb.index] = model.body_mass[rb.index]
+        self.mass = mass
+        rigid = np.isin(body, [rb.index for rb in model.rigid])
+        rigid_bodies = np.unique(body[rigid])
+        self.rigid_group = np.where(rigid, np.searchsorted(rigid_bodies, body), -1)
+        self.group_area = np.zeros(len(rigid_bodies))
+        self.group_mass = model.body_mass[rigid_bodies] if len(rigid_bodies) else np.zeros(0)
+
+    def lumped_period(self, S: np.ndarray, stiffness_per_area2: float) -> float:
+        """2 pi / omega of the liquid spring on the rigid bodies among the walls, omega^2 = (K_t / V) A_g A /
+        M_g (``_stable_step``'s bound for a rigid wall: A_g its area, A the walls' whole area, M_g its body's
+        mass, ``group_area`` as ``_stable_step`` left it), inf without one.  That oscillation is the model
+        (a piston on a liquid), not a mesh mode: it bounds the step for accuracy too
+        (``ExplicitSolver.accuracy_step``).  A deformable wall's node is a mesh mode, as an element's, and
+        left out."""
+        if not len(self.group_area):
+            return math.inf
+        whole = float(np.sqrt((S * S).sum(axis=1)).sum())
+        omega2 = stiffness_per_area2 * whole * float(np.max(self.group_area / self.group_mass))
+        return 2.0 * math.pi / math.sqrt(omega2) if omega2 > 0.0 else math.inf
 
 
 class LiquidCavity(ForceSource):
@@ -50,31 +106,14 @@ class LiquidCavity(ForceSource):
         self.spec = spec
         self.name = spec.name
         self.model = model
-        surfaces = [build_surface(model, w) for w in spec.walls]
-        facets = [s.facets for s in surfaces]
-        if not any(len(f) for f in facets):
-            raise ModelError(f"cavity '{spec.name}': its walls {', '.join(spec.walls)} have no facets")
-        width = max(f.shape[1] for f in facets)
-        if any(f.shape[1] != width for f in facets):
-            raise ModelError(f"cavity '{spec.name}': walls of mixed facet kinds")
-        self.global_nodes = np.unique(np.concatenate([f.ravel() for f in facets]))
-        self.exchange = NodeExchange(model, self.global_nodes)
-        self.facets = np.searchsorted(self.global_nodes, np.concatenate(facets))
+        walls = WallNodes(model, spec)
+        self.walls = walls
+        self.global_nodes, self.exchange, self.facets = walls.global_nodes, walls.exchange, walls.facets
         self.gdim = model.gdim
         self.axisymmetric = model.axisymmetric
-        # per compact node: its body, and the mass that moves with it (a rigid body moves whole)
-        body = self.exchange.gather(model.node_body[:, None].astype(float))[:, 0].astype(int)
-        mass = self.exchange.gather(model.mass[:, None])[:, 0]
-        for rb in model.rigid:
-            mass[body == rb.index] = model.body_mass[rb.index]
-        self.mass = mass
-        # per compact node, its rigid body's place among the walls' rigid bodies (-1: deformable), whose
-        # nodes share their body's area in the stable step
-        rigid = np.isin(body, [rb.index for rb in model.rigid])
-        rigid_bodies = np.unique(body[rigid])
-        self._rigid_group = np.where(rigid, np.searchsorted(rigid_bodies, body), -1)
-        self._group_area = np.zeros(len(rigid_bodies))
-        self._group_mass = model.body_mass[rigid_bodies] if len(rigid_bodies) else np.zeros(0)
+        self.mass = walls.mass
+        # the orifice's wall (the last), where the sharp-edged law's jet reaction acts
+        self._orifice_wall = walls.wall_of_facet == len(spec.walls) - 1
         self.period = math.inf           # of the liquid spring on its rigid walls' bodies [s] (``compute``)
         self._x = np.empty((len(self.global_nodes), self.gdim))
         self._v = np.empty_like(self._x)
@@ -100,9 +139,18 @@ class LiquidCavity(ForceSource):
         self.max_pressure = 0.0
         curve = np.array(spec.orifice, dtype=float)
         self._stroke, self._area = curve[:, 0], curve[:, 1]
-        # the cavity's law: a fixed Cd on the jet, no velocity of approach (a passage of the orifice's area
-        # is never read with ``approach`` off), no jet reaction: the control volume's cheap fidelity
-        self._law = OrificeLaw(discharge=spec.discharge, approach=False, jet=False).code()
+        self.law = orifice_law(spec)
+        self._law = self.law.code()
+        # the passage the liquid approaches the orifice through: the piston's area, or the orifice wall's own
+        S0 = area_vectors(model, self.exchange.gather(model.X0), self.facets)
+        self.passage = spec.piston_area or float(np.linalg.norm(S0[self._orifice_wall].sum(axis=0)))
+        if self.passage <= 0.0 and self._area.max() > 0.0:
+            raise ModelError(f"cavity '{spec.name}': its last wall {spec.walls[-1]} has no net area (a closed "
+                             f"surface) to approach the orifice through: give orifice.piston_area")
+        self._p_facet = np.zeros(len(self.facets))       # the pressure on each facet (the jet's taken off)
+        self.jet_force = 0.0             # the jet's reaction on the orifice's wall [N]
+        self.jet_work = 0.0              # its work on that wall [J]
+        self.max_area_ratio = 0.0        # the largest orifice area over the passage's
 
     # ---------------------------------------------------------------- state
     def density_ratio(self) -> float:
@@ -129,7 +177,7 @@ class LiquidCavity(ForceSource):
         (``liquid.outflow_over_step``: backward Euler), through the area of the step's stroke."""
         sp = self.spec
         area = self.orifice_area()
-        return liquid.outflow_over_step(self.mass_liquid, self.volume, dt, area, area, self._law,
+        return liquid.outflow_over_step(self.mass_liquid, self.volume, dt, area, self.passage, self._law,
                                         sp.bulk_modulus, sp.tait_exponent, sp.density)
 
     # ---------------------------------------------------------------- geometry
@@ -144,7 +192,7 @@ class LiquidCavity(ForceSource):
         """Advance the liquid over the step just taken (``v`` is v_n+1/2), then the pressure forces on
         the walls at t_n+1.  Returns the step limit of the liquid's stiffness.  Collective.
 
-        Its loops are compiled (``_flux``, ``_wall_forces``, ``_stable_step``): a cavity has a few
+        Its loops are compiled (``_flux``, ``wall_forces``, ``_stable_step``): a cavity has a few
         walls' facets, and numpy's calls on them took most of a dashpot run's step."""
         x = self.exchange.gather(x_local, out=self._x)
         v = self.exchange.gather(v_local, out=self._v)
@@ -163,25 +211,30 @@ class LiquidCavity(ForceSource):
             self.throttled += taken * self.pressure_of(ratio) / (self.spec.density * ratio)
         self.pressure = self.pressure_of(self.density_ratio())
         self.max_pressure = max(self.max_pressure, self.pressure)
-        self.work += _wall_forces(self.f, self._f_old, self.facets, S, self.pressure, v, dt)
+        self._jet(S, v, dt)
+        self.work += wall_forces(self.f, self._f_old, self.facets, S, self._p_facet, v, dt)
         # the liquid as a volume spring, K_t = dp / d(ln rho), on the walls' nodes
         K_t = self.spec.bulk_modulus * self.density_ratio() ** self.spec.tait_exponent
-        limit = _stable_step(S, self.facets, self._rigid_group, self._group_area, self.mass,
-                             K_t / max(self.volume, 1e-300))
-        self.period = self._lumped_period(S, K_t)
+        w = self.walls
+        limit = _stable_step(S, self.facets, w.rigid_group, w.group_area, self.mass, K_t / max(self.volume, 1e-300))
+        self.period = w.lumped_period(S, K_t / max(self.volume, 1e-300))
         return limit
 
-    def _lumped_period(self, S: np.ndarray, K_t: float) -> float:
-        """2 pi / omega of the liquid spring on the rigid bodies among its walls, omega^2 = (K_t / V) A_g A / M_g
-        (``_stable_step``'s bound for a rigid wall: A_g its area, A the walls' whole area, M_g its body's mass),
-        inf without one.  That oscillation is the model (a piston on a liquid column), not a mesh mode: it
-        bounds the step for accuracy too (``ExplicitSolver.accuracy_step``).  A deformable wall's node is a
-        mesh mode, as an element's, and left out."""
-        if not len(self._group_area):
-            return math.inf
-        whole = float(np.sqrt((S * S).sum(axis=1)).sum())
-        omega2 = K_t / max(self.volume, 1e-300) * whole * float(np.max(self._group_area / self._group_mass))
-        return 2.0 * math.pi / math.sqrt(omega2) if omega2 > 0.0 else math.inf
+    def _jet(self, S: np.ndarray, v: np.ndarray, dt: float):
+        """The pressure on each facet: the cavity's, less J / A_w on the orifice's wall (its area A_w), J the
+        jet's reaction at this step's outflow (0 for the fixed-Cd law); and J's work on that wall over the step
+        (its velocity into the liquid, the volume it sweeps over its area)."""
+        self._p_facet[:] = self.pressure
+        area = self.orifice_area()
+        if area > 0.0:
+            self.max_area_ratio = max(self.max_area_ratio, area / self.passage)
+        rho = self.spec.density * self.density_ratio()
+        self.jet_force = orifice.jet_reaction(self.outflow, rho, area, self.passage, self._law)
+        if self.jet_force > 0.0:
+            on = self._orifice_wall
+            A_w = float(np.linalg.norm(S[on].sum(axis=0)))
+            self._p_facet[on] -= self.jet_force / A_w
+            self.jet_work += dt * self.jet_force * _flux(v, self.facets[on], S[on]) / A_w
 
     def add_forces(self, f: np.ndarray):
         self.exchange.add_to(self.f, f)
@@ -206,12 +259,17 @@ class LiquidCavity(ForceSource):
         return [self.pressure, self.volume, self.outflow, self.orifice_area()]
 
     def summary(self) -> dict:
-        return {"model": "control volume at one pressure, fixed-Cd orifice; leaves out the liquid's inertia and "
-                         "waves, the velocity of approach and the jet's reaction (fluid/column.py has them)",
+        limit = orifice.valid_area_ratio(self.law)
+        return {"model": f"control volume at one pressure, {self.law.describe()}; leaves out the liquid's inertia and "
+                         f"waves, cavitation below 0 gauge (model = \"column\" has them)",
                 "walls": list(self.spec.walls), "volume": self.volume, "initial_volume": self.initial_volume,
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": self.energy(), "energy_stored": self.stored_energy() - self.initial_stored,
-                "energy_throttled": self.throttled}
+                "energy_throttled": self.throttled, "jet_reaction_work": self.jet_work,
+                "heating": self.throttled / max(self.out_mass, 1e-300) / self.spec.heat_capacity,
+                "validity": [{"name": "orifice area ratio a / A", "value": self.max_area_ratio, "limit": limit,
+                              "holds": bool(self.max_area_ratio <= limit)}],
+                "outside": [] if self.max_area_ratio <= limit else ["orifice area ratio a / A"]}
 
 
 @njit(cache=True)
@@ -252,26 +310,26 @@ def _flux(v, facets, S):
 
 
 @njit(cache=True)
-def _wall_forces(f, f_old, facets, S, pressure, v, dt):
-    """The pressure's forces on the walls' nodes into ``f`` (-p S_f shared equally by a facet's nodes),
-    and the work they did over the step, dt/2 (f_old + f) . v; ``f_old`` becomes ``f``."""
+def wall_forces(f, f_old, facets, S, pressure, v, dt):
+    """The pressure's forces on the walls' nodes into ``f`` (-p_f S_f shared equally by a facet's nodes,
+    ``pressure`` one per facet), and the work they did over the step, dt/2 (f_old + f) . v; ``f_old``
+    becomes ``f``."""
     nf, nn = facets.shape
     f[:] = 0.0
     for k in range(nn):
         for i in range(nf):
             for j in range(f.shape[1]):
-                f[facets[i, k], j] -= pressure * S[i, j] / nn
+                f[facets[i, k], j] -= pressure[i] * S[i, j] / nn
     return trapezoidal_work(f, f_old, v, dt)
 
 
 @njit(cache=True)
-def _stable_step(S, facets, rigid_group, group_area, mass, stiffness_per_area2):
-    """2 / omega, omega^2 <= max over nodes of (K_t / V) a_i A / m_i: the liquid as a volume spring
-    (Gershgorin on -dp/dV S_i S_j); a_i the node's share of the walls' area (a rigid wall's nodes move
-    with their body: their group's whole area, and their body's mass), A the walls' whole area.
-    ``stiffness_per_area2`` = K_t / V."""
+def node_areas(S, facets, rigid_group, group_area, n_nodes):
+    """Each wall node's share of the walls' area (a facet's area shared equally by its nodes; a rigid wall's
+    nodes move with their body: their group's whole area, summed into ``group_area``), and the walls' whole
+    area."""
     nf, nn = facets.shape
-    a_node = np.zeros(len(mass))
+    a_node = np.zeros(n_nodes)
     whole = 0.0
     for i in range(nf):
         area = 0.0
@@ -282,11 +340,23 @@ def _stable_step(S, facets, rigid_group, group_area, mass, stiffness_per_area2):
         for k in range(nn):
             a_node[facets[i, k]] += area / nn
     group_area[:] = 0.0
-    for a in range(len(mass)):
+    for a in range(n_nodes):
         if rigid_group[a] >= 0:
             group_area[rigid_group[a]] += a_node[a]
+    share = np.empty(n_nodes)
+    for a in range(n_nodes):
+        share[a] = group_area[rigid_group[a]] if rigid_group[a] >= 0 else a_node[a]
+    return share, whole
+
+
+@njit(cache=True)
+def _stable_step(S, facets, rigid_group, group_area, mass, stiffness_per_area2):
+    """2 / omega, omega^2 <= max over nodes of (K_t / V) a_i A / m_i: the liquid as a volume spring
+    (Gershgorin on -dp/dV S_i S_j); a_i the node's share of the walls' area (``node_areas``: a rigid
+    wall's nodes share their group's whole area, and their body's mass), A the walls' whole area.
+    ``stiffness_per_area2`` = K_t / V."""
+    share, whole = node_areas(S, facets, rigid_group, group_area, len(mass))
     omega2 = 0.0
     for a in range(len(mass)):
-        share = group_area[rigid_group[a]] if rigid_group[a] >= 0 else a_node[a]
-        omega2 = max(omega2, stiffness_per_area2 * share * whole / mass[a])
+        omega2 = max(omega2, stiffness_per_area2 * share[a] * whole / mass[a])
     return 2.0 / math.sqrt(omega2) if omega2 > 0.0 else np.inf

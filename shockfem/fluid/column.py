@@ -60,6 +60,9 @@ COURANT = 0.95                 # forward Euler with Rusanov's flux is stable up 
 EMPTY = 1e-9
 # the liquid's end is parted from the piston when the gap exceeds this share of the column's length
 GAP = 1e-12
+# the wall faces' acoustic Riemann solution and Rusanov's flux hold the column's range below this Mach number
+# of the walls and of the liquid through its grid (``docstring``: the wall's Mach number well below 1)
+MACH_LIMIT = 0.5
 # the energy accounts, by index in ``LiquidColumn.accounts``
 W_FLOOR, W_PISTON, OUT_MASS, OUT_MOMENTUM, OUT_ENERGY, JET_HEAT = range(6)
 ACCOUNTS = ("work of the floor [J]", "work of the piston [J]", "mass out [kg]", "momentum out [N s]",
@@ -257,7 +260,7 @@ def column_step(m, q, x, x_piston, area_x, area_a, liquid, law, v_floor, v_pisto
         p_piston = pv
         u_star = u[N - 1] + (p[N - 1] - pv) / zN
         # the liquid reaches the piston within the step: it lands on it
-        w_end = min(u_star, (x_piston + dt * v_piston - x[N]) / dt)
+        w_end = min(u_star, (x_piston + dt * v_piston - x[N]) / dt) if dt > 0.0 else u_star
     else:
         p_piston, u_star, mdot = _piston_face(rho[N - 1], u[N - 1], p[N - 1], v_piston, a_orifice, A_face[N],
                                               liquid, law)
@@ -335,6 +338,23 @@ def column_void(m, x, area_x, area_a, liquid):
     return total
 
 
+@njit(cache=True)
+def column_mach(m, q, x, area_x, area_a, liquid, v_floor, v_end):
+    """The largest Mach number of the liquid through the grid, |u - w| / c over the cells (w the cell's
+    grid velocity, between the floor's and the liquid end's)."""
+    N = len(m)
+    L = x[-1] - x[0]
+    largest = 0.0
+    for i in range(N):
+        if m[i] <= 0.0:
+            continue
+        A = _interpolate(0.5 * (x[i] + x[i + 1]) - x[0], area_x, area_a)
+        rho = m[i] / (A * (x[i + 1] - x[i]))
+        w = v_floor + (0.5 * (x[i] + x[i + 1]) - x[0]) / L * (v_end - v_floor)
+        largest = max(largest, abs(q[i] / m[i] - w) / sound_speed(rho, liquid))
+    return largest
+
+
 class LiquidColumn:
     """A column of ``cells`` finite volumes from a floor at ``x_floor`` to a piston at ``x_piston``,
     the liquid at rest at ``pressure0`` [Pa gauge] moving with ``velocity0`` [m/s]; ``area``: the
@@ -395,12 +415,31 @@ class LiquidColumn:
     def mass(self) -> float:
         return float(self.m.sum())
 
+    def volume(self) -> float:
+        """The column's volume from the floor to the liquid's end [m^3]."""
+        A = np.interp(0.5 * (self.x[1:] + self.x[:-1]) - self.x[0], self.area_x, self.area_a)
+        return float(np.dot(A, np.diff(self.x)))
+
     def energy(self) -> float:
         return column_energy(self.m, self.q, self.x, self.area_x, self.area_a, self._liquid)
 
     def void(self) -> float:
         """The column's cavity [m^3]: the gap at the piston and the parted cells' void."""
         return self.gap() + column_void(self.m, self.x, self.area_x, self.area_a, self._liquid)
+
+    def wall_impedances(self) -> tuple[float, float]:
+        """rho c of the liquid at the floor and at the liquid's end [Pa s/m]: what a wall moving against it
+        feels per unit area and speed (the acoustic Riemann solution)."""
+        out = []
+        for i in (0, len(self.m) - 1):
+            A = self.area(0.5 * (self.x[i] + self.x[i + 1]) - self.x[0])
+            rho = max(self.m[i] / (A * (self.x[i + 1] - self.x[i])), vapour_density(self._liquid))
+            out.append(rho * sound_speed(rho, self._liquid))
+        return out[0], out[1]
+
+    def mach(self, v_floor: float, v_piston: float) -> float:
+        """The largest Mach number of the liquid through its grid (``column_mach``)."""
+        return column_mach(self.m, self.q, self.x, self.area_x, self.area_a, self._liquid, v_floor, v_piston)
 
     def pressures(self) -> np.ndarray:
         A = np.interp(0.5 * (self.x[1:] + self.x[:-1]) - self.x[0], self.area_x, self.area_a)

@@ -38,6 +38,11 @@ def _spring(model, spec):
 
 
 def _cavity(model, spec):
+    """A [[cavity]] by its model: the control volume (``fluid/cavity.py``) or the liquid column
+    (``fluid/column_source.py``); both are the kind "cavity", summarised under "cavities"."""
+    if spec.model == "column":
+        from ..fluid.column_source import ColumnSource
+        return ColumnSource(model, spec)
     from ..fluid.cavity import LiquidCavity
     return LiquidCavity(model, spec)
 

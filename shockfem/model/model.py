@@ -413,10 +413,19 @@ def describe(model: Model, sc: Scene) -> str:
         orifice = (f"fixed orifice {cv.orifice[0][1] * 1e6:.4g} mm^2" if len(cv.orifice) == 1
                    else f"metering pin, {len(cv.orifice)}-point area table over {cv.orifice[-1][0] * 1e3:.4g} mm "
                         f"of stroke")
-        lines.append(f"  cavity {cv.name}: liquid {cv.density:g} kg/m^3, K {cv.bulk_modulus / 1e9:.4g} GPa ({law}), "
-                     f"{cv.volume * 1e6:.4g} cm^3 at {cv.initial_pressure / 1e6:.4g} MPa, {orifice}, Cd {cv.discharge:g}; "
+        orifice += (f", fixed Cd {cv.discharge:g} (no velocity of approach, no jet reaction)" if cv.law == "fixed_cd"
+                    else ", Idelchik's sharp-edged law with the velocity of approach and the jet's reaction")
+        liquid = f"liquid {cv.density:g} kg/m^3, K {cv.bulk_modulus / 1e9:.4g} GPa ({law})"
+        if cv.model == "column":
+            lines.append(f"  cavity {cv.name}: {liquid}, {orifice}; a 1D compressible column of {cv.cells} finite "
+                         f"volumes from the floor {cv.walls[0]} to the piston face {cv.walls[1]}: the liquid's mass "
+                         f"and waves, cavitation at {cv.vapour_pressure / 1e6:.4g} MPa gauge; no friction on the "
+                         f"bore, no return flow through the orifice, no lateral flow")
+            continue
+        lines.append(f"  cavity {cv.name}: {liquid}, "
+                     f"{cv.volume * 1e6:.4g} cm^3 at {cv.initial_pressure / 1e6:.4g} MPa, {orifice}; "
                      f"walls {', '.join(cv.walls)} (the rest held still); lumped control volume: one pressure, "
-                     f"quasi-steady Bernoulli orifice capped at the sound speed, no liquid inertia or waves, no "
+                     f"quasi-steady orifice capped at the sound speed, no liquid inertia or waves, no "
                      f"cavitation below 0 gauge")
     if sc.penetration:
         pn = sc.penetration

@@ -213,18 +213,34 @@ class Contact:
 
 @dataclass(frozen=True)
 class Cavity:
-    """A liquid-filled cavity discharging through an orifice (``fluid/cavity.py``): a control volume
-    bounded by body surfaces, the rest of its walls held still."""
+    """A liquid-filled cavity discharging through an orifice, by one of ``CAVITY_MODELS``: a control volume
+    at one pressure bounded by body surfaces, the rest of its walls held still (``fluid/cavity.py``), or a
+    compressible column along the bore between two walls, the floor and the piston face the orifice
+    passes through (``fluid/column_source.py``)."""
     name: str
-    walls: tuple[str, ...]           # "body.region" surfaces that bound the liquid (their normals face it)
+    walls: tuple[str, ...]           # "body.region" surfaces that bound the liquid (their normals face it);
+                                     # a column: exactly (floor, piston face)
     volume: float                    # initial liquid volume [m^3]; 0: the walls close the cavity and give it
     density: float                   # liquid density at zero gauge pressure [kg/m^3]
     bulk_modulus: float              # K [Pa] at zero gauge pressure
     tait_exponent: float             # n of p = K/n ((rho/rho0)^n - 1); 1: linear
-    discharge: float                 # orifice discharge coefficient Cd [-]
+    discharge: float                 # the fixed_cd law's discharge coefficient Cd [-] (0 for sharp_edged)
     orifice: tuple[tuple[float, float], ...]    # (stroke [m], area [m^2]); one pair: a fixed orifice
-    piston_area: float               # displaced volume / piston_area = stroke [m^2]; 0 for a fixed orifice
+    piston_area: float               # displaced volume / piston_area = stroke [m^2]; the passage the liquid
+                                     # approaches the orifice through; 0: the orifice wall's own area
     initial_pressure: float = 0.0    # gauge [Pa] (a pre-charged cavity)
+    model: str = "control_volume"    # one of CAVITY_MODELS
+    law: str = "sharp_edged"         # the orifice law, one of ORIFICE_LAWS
+    cells: int = 200                 # a column's finite volumes
+    vapour_pressure: float = -1.0e5  # gauge [Pa]: a column parts below it (a control volume at 0 gauge)
+    heat_capacity: float = 1900.0    # c_p [J/(kg K)] of the liquid (its heating)
+    section: tuple[tuple[float, float], ...] = ()   # a column's (distance from the floor [m], the liquid's
+                                                    # section [m^2]): a metering pin fixed to the floor
+
+
+# the cavity's models and orifice laws (``fluid/cavity.py``, ``fluid/column_source.py``, ``fluid/orifice.py``)
+CAVITY_MODELS = ("control_volume", "column")
+ORIFICE_LAWS = ("sharp_edged", "fixed_cd")
 
 
 @dataclass(frozen=True)

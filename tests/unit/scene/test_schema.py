@@ -298,14 +298,62 @@ def test_cavity_resolves_and_its_problems_are_listed():
     c = resolve(raw).cavities[0]
     assert c.volume == pytest.approx(25e-6) and c.initial_pressure == 1e6 and c.tait_exponent == 1.0
     assert c.orifice == ((0.0, 3e-4), (5e-3, 0.0)) and c.piston_area == pytest.approx(12e-4)
-    assert c.discharge == 0.7
+    # the defaults: the control volume, the sharp-edged law (no fixed Cd), the column's oil
+    assert c.model == "control_volume" and c.law == "sharp_edged" and c.discharge == 0.0
+    assert c.vapour_pressure == -1e5 and c.heat_capacity == 1900.0
     raw["cavity"] = [{"walls": ["bar.nose"], "volume": "-1 cm^3", "liquid": {"density": "870 kg/m^3"},
-                      "orifice": {"area": "1 mm^2", "area_curve": [[0, 1]], "discharge": 1.5}, "colour": "red"}]
+                      "orifice": {"area": "1 mm^2", "area_curve": [[0, 1]], "law": "fixed_cd", "discharge": 1.5},
+                      "colour": "red"}]
     text = "\n".join(_problems(raw))
     for expected in ("cavity[0].walls: body 'bar' has regions", "cavity[0].volume: must be > 0",
                      "cavity[0].liquid.bulk_modulus: missing", "cavity[0].orifice: give area (a fixed orifice) or",
                      "cavity[0].orifice.discharge: must be < 1.0, got 1.5", "cavity[0].colour: unknown field"):
         assert expected in text, text
+
+
+def _column(**fields):
+    raw = base()
+    raw["cavity"] = [{"name": "oil", "model": "column", "walls": ["bar.bottom", "bar.top"],
+                      "liquid": {"density": "870 kg/m^3", "bulk_modulus": "1.5 GPa", "vapour_pressure": "-0.1 MPa",
+                                 "heat_capacity": "1.9 kJ/(kg K)"},
+                      "orifice": {"area_curve": [["0 mm", "300 mm^2"], ["5 mm", "0 mm^2"]], "law": "sharp_edged"},
+                      **fields}]
+    return raw
+
+
+def test_a_column_cavity_resolves():
+    c = resolve(_column(cells=120, section=[["0 m", "10 cm^2"], ["1 m", "8 cm^2"]])).cavities[0]
+    assert c.model == "column" and c.walls == ("bar.bottom", "bar.top") and c.cells == 120
+    assert c.heat_capacity == pytest.approx(1900.0) and c.vapour_pressure == pytest.approx(-1e5)
+    assert c.section == ((0.0, pytest.approx(1e-3)), (1.0, pytest.approx(8e-4)))
+    assert c.piston_area == 0.0            # a column's metering pin needs none: its stroke is its length's
+
+
+@pytest.mark.parametrize("change, field, words", [
+    ({"walls": ["bar.bottom"]}, "cavity[0].walls", "exactly two walls"),
+    ({"cells": 3}, "cavity[0].cells", "whole number of finite volumes"),
+    ({"cells": 20.5}, "cavity[0].cells", "whole number"),
+    ({"model": "lumped"}, "cavity[0].model", "must be one of control_volume, column"),
+    ({"section": [["0 m", "-1 cm^2"]]}, "cavity[0].section", "must be > 0"),
+    ({"orifice": {"area": "1 mm^2", "discharge": 0.7}}, "cavity[0].orifice.discharge", "fixed_cd law's"),
+    ({"orifice": {"area": "1 mm^2", "law": "fixed_cd"}}, "cavity[0].orifice.discharge", "missing"),
+    ({"orifice": {"area": "1 mm^2", "law": "borda"}}, "cavity[0].orifice.law", "must be one of"),
+    ({"liquid": {"density": "870 kg/m^3", "bulk_modulus": "1.5 GPa", "vapour_pressure": "1 MPa"}},
+     "cavity[0].liquid.vapour_pressure", "at or below 0"),
+    ({"liquid": {"density": "870 kg/m^3", "bulk_modulus": "1.5 GPa", "heat_capacity": "5 m"}},
+     "cavity[0].liquid.heat_capacity", ""),
+])
+def test_bad_column_fields_are_named(change, field, words):
+    problems = _problems(_column(**change))
+    assert any(p.startswith(f"{field}:") and words in p for p in problems), problems
+
+
+def test_column_fields_on_a_control_volume_are_refused():
+    raw = _column(cells=100)
+    raw["cavity"][0]["model"] = "control_volume"
+    raw["cavity"][0]["volume"] = "1 cm^3"
+    raw["cavity"][0]["orifice"]["piston_area"] = "10 cm^2"
+    assert any(p.startswith("cavity[0].cells: only a column") for p in _problems(raw))
 
 
 def test_nan_and_infinity_in_the_new_fields_are_named():
