@@ -23,6 +23,7 @@ from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
 from .dashpot_cases import fluid_dashpot
 from .column_cases import liquid_column, orifice_law
+from .column_fe_cases import column_fe
 from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
                                 penetration_yaw)
@@ -70,6 +71,7 @@ CASES = {
     "fluid_dashpot": fluid_dashpot,
     "orifice_law": orifice_law,
     "liquid_column": liquid_column,
+    "column_fe": column_fe,
     "forrestal": forrestal,
     "penetration_rigid": penetration_rigid,
     "penetration_wave": penetration_wave,
