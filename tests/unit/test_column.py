@@ -88,3 +88,29 @@ def test_the_range_checks_flag_the_studys_first_design():
     assert limits[("liquid mass / payload", "lumped")].value == pytest.approx(3.619 / 5.822, rel=1e-3)
     assert not lumped_holds(list(limits.values()))
     assert np.isfinite(limits[("column transit time / pulse rise", "lumped")].value)
+
+
+def test_the_compiled_interpolation_is_numpys():
+    """``column._interpolate`` (the section and the pin's table at every face) against np.interp, the ends
+    held, to round-off."""
+    from shockfem.fluid.column import _interpolate
+    rng = np.random.default_rng(3)
+    xs = np.cumsum(rng.uniform(0.01, 0.2, 40))
+    ys = rng.uniform(1e-4, 1e-2, 40)
+    for x in np.concatenate([rng.uniform(xs[0] - 0.5, xs[-1] + 0.5, 200), xs]):
+        assert _interpolate(x, xs, ys) == pytest.approx(float(np.interp(x, xs, ys)), rel=1e-12)
+    assert _interpolate(0.3, np.array([0.0, 1.0]), np.array([2.0, 2.0])) == 2.0
+
+
+def test_the_linear_laws_shortcut_is_taits_at_n_1():
+    """pressure, density, sound speed and the vapour density of the linear law without powers equal Tait's
+    general forms at n = 1 (n slightly off 1 takes the general path): to 1e-6 of the general at n = 1 + 1e-9."""
+    from shockfem.fluid.column import density, pressure, sound_speed, vapour_density
+    linear = ColumnLiquid().params()
+    general = ColumnLiquid(tait_exponent=1.0 + 1e-9).params()
+    for rho in (800.0, 870.0, 900.0):
+        assert pressure(rho, linear) == pytest.approx(pressure(rho, general), rel=1e-6, abs=1e-3)
+        assert sound_speed(rho, linear) == pytest.approx(sound_speed(rho, general), rel=1e-6)
+    for p in (-5e4, 0.0, 3e8):
+        assert density(p, linear) == pytest.approx(density(p, general), rel=1e-9)
+    assert vapour_density(linear) == pytest.approx(vapour_density(general), rel=1e-9)
