@@ -143,10 +143,13 @@ def versus_lumped(size, workdir):
     rms = float(np.sqrt(np.mean((fe - lumped.acceleration[after]) ** 2))) / peak
     n = element_count(solver)
     s = solver.cavities[0].summary()
-    return [check("column_fe.vs_lumped.acceleration_rms_over_peak [-, abs]", 0.0, rms, 0.01, wall, n, absolute=True),
-            check("column_fe.vs_lumped.peak_acceleration [m/s^2]", peak, float(np.max(np.abs(acc))), 0.01, wall, n),
+    # measured 0.17% RMS (the bodies' leapfrog against the lumped model's symplectic Euler on the column's
+    # steps, and the forces' half-step lag), the peak 0.008%, the speed 0.011%, the mass out 0.012%: 0.5%
+    # for each (the jet's reaction alone, 2 Cc n / (1 + Cc n), is 11% of p A at this area ratio)
+    return [check("column_fe.vs_lumped.acceleration_rms_over_peak [-, abs]", 0.0, rms, 0.005, wall, n, absolute=True),
+            check("column_fe.vs_lumped.peak_acceleration [m/s^2]", peak, float(np.max(np.abs(acc))), 0.005, wall, n),
             check("column_fe.vs_lumped.piston_speed_at_end [m/s]", lumped.payload_speed[-1], v[-1], 0.005, wall, n),
-            check("column_fe.vs_lumped.mass_out [kg]", lumped.summary["mass out [kg]"], s["mass_out"], 0.01, wall, n),
+            check("column_fe.vs_lumped.mass_out [kg]", lumped.summary["mass out [kg]"], s["mass_out"], 0.005, wall, n),
             check("column_fe.vs_lumped.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
                   absolute=True)]
 
@@ -179,6 +182,8 @@ def control_volume_recovered(size, workdir):
     t_cv, acc_cv = np.array(cv_rows).T
     exact = a0 / (1 + a0 * t / V0) ** 2
     n = element_count(solver)
+    # 1%: the cavity's own acceptance bound on the same pulse (verify fluid_dashpot: 0.54% there); measured
+    # 0.81% (the column's oil, 0.2% of the piston's mass, and its ringing), 0.40% of a0 from the cavity's run
     return [check("column_fe.control_volume.deceleration_vs_exact [-, abs]", 0.0,
                   float(np.abs(acc / exact - 1).max()), 0.01, wall, n, absolute=True),
             check("column_fe.control_volume.deceleration_vs_cavity [-, abs]", 0.0,

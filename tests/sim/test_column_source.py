@@ -68,3 +68,18 @@ def test_the_columns_energy_accounts_close(tmp_path):
     # the run's balance holds with the liquid as one of its force sources
     assert solver.energy.balance_error < 1e-6
     assert s["outside"] == [] and np.isfinite(s["heating"])
+
+
+@pytest.mark.parametrize("walls, words", [
+    (["floor.bottom", "piston.bottom"], "must face the floor"),
+    (["piston.top", "floor.bottom"], "must lie beyond the floor"),     # facing, but outside the liquid
+    (["floor.top", "piston.top"], "must face the floor"),
+])
+def test_walls_that_do_not_face_each_other_are_refused(walls, words, tmp_path):
+    """A column's floor and piston face must face each other across the liquid: a ModelError (exit 2)
+    naming them, not a run."""
+    from shockfem.errors import ModelError
+    raw = column_scene("walls", "axisymmetric", 0.3, 20.0, 2.0, 10.0, 0.0, {"area": 1e-4}, 1e-4, 0.01)
+    raw["cavity"][0]["walls"] = walls
+    with pytest.raises(ModelError, match=words):
+        _solver(raw, tmp_path)
