@@ -211,6 +211,11 @@ class LiquidCavity(ForceSource):
             ratio = self.density_ratio()
             self.outflow = taken / dt
             self.throttled += taken * self.pressure_of(ratio) / (self.spec.density * ratio)
+        else:
+            # at the start: the jet of a pre-charged cavity already flows at its pressure
+            sp = self.spec
+            self.outflow = liquid.orifice_mass_flow(self.density_ratio(), self.orifice_area(), self.passage, self._law,
+                                                    sp.bulk_modulus, sp.tait_exponent, sp.density)
         self.pressure = self.pressure_of(self.density_ratio())
         self.max_pressure = max(self.max_pressure, self.pressure)
         self._jet(S, v, dt)
