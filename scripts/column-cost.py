@@ -43,7 +43,7 @@ def run(path: str, out: str) -> float:
                    check=True, capture_output=True)
     with open(os.path.join(out, "summary.json")) as fh:
         s = json.load(fh)
-    return s["wall_time_s"], s["steps"], s["cavities"]["oil"]
+    return s["wall_time_s"], s["steps"], {**s["cavities"]["oil"], "pulse": s["shock"]["channels"]["article"]["pulse"]}
 
 
 def main():
@@ -60,11 +60,16 @@ def main():
         run(paths[model], os.path.join(work, f"warm_{model}"))
     ratios = []
     for k in range(pairs):
-        cv, steps_cv, _ = run(paths["control_volume"], os.path.join(work, f"cv{k}"))
+        cv, steps_cv, cv_summary = run(paths["control_volume"], os.path.join(work, f"cv{k}"))
         col, steps_col, summary = run(paths["column"], os.path.join(work, f"col{k}"))
         ratios.append(col / cv)
         print(f"pair {k}: control volume {cv:.2f} s ({steps_cv} steps), column {col:.2f} s ({steps_col} steps, "
               f"{summary['column_substeps']} column steps): ratio {col / cv:.3f}", flush=True)
+    residual = summary["coupling_residual"] / summary["energy_taken"]
+    for name, s in (("control volume", cv_summary), ("column", summary)):
+        print(f"{name}: the article's peak {s['pulse']['peak'] / 9.80665:.0f} g (CFC 1000), velocity change "
+              f"{s['pulse']['velocity_change']:.2f} m/s")
+    print(f"the column's coupling residual: {residual:.2g} of the walls' work on the liquid")
     print(f"median ratio column / control volume over {pairs} pairs: {statistics.median(ratios):.3f}")
 
 
