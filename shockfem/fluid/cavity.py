@@ -273,7 +273,7 @@ class LiquidCavity(ForceSource):
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": self.energy(), "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled, "jet_reaction_work": self.jet_work,
-                "heating": self.throttled / max(self.out_mass, 1e-300) / self.spec.heat_capacity,
+                "jet_heating": self.throttled / max(self.out_mass, 1e-300) / self.spec.heat_capacity,
                 "validity": [{"name": "orifice area ratio a / A", "value": self.max_area_ratio, "limit": limit,
                               "holds": bool(self.max_area_ratio <= limit)}],
                 "outside": [] if self.max_area_ratio <= limit else ["orifice area ratio a / A"]}
