@@ -195,10 +195,11 @@ def control_volume_recovered(size, workdir):
     t_cv, acc_cv = np.array(cv_rows).T
     exact = a0 / (1 + a0 * t / V0) ** 2
     n = element_count(solver)
-    # 1%: the cavity's own acceptance bound on the same pulse (verify fluid_dashpot: 0.54% there); measured
-    # 0.81% (the column's oil, 0.2% of the piston's mass, and its ringing), 0.40% of a0 from the cavity's run
+    # against the exact law (incompressible, massless liquid): measured 0.81% at the coarse size, 0.91% at
+    # the default (the cavity itself: 0.54%; the column adds its oil, 0.2% of the piston's mass, and its
+    # ringing at 2 L / c): 1.5%; against the cavity's run 0.40% and 0.36% of a0: 1%
     return [check("column_fe.control_volume.deceleration_vs_exact [-, abs]", 0.0,
-                  float(np.abs(acc / exact - 1).max()), 0.01, wall, n, absolute=True),
+                  float(np.abs(acc / exact - 1).max()), 0.015, wall, n, absolute=True),
             check("column_fe.control_volume.deceleration_vs_cavity [-, abs]", 0.0,
                   float(np.abs(np.interp(t_cv, t, acc) - acc_cv).max() / a0), 0.01, wall, n, absolute=True),
             check("column_fe.control_volume.speed_at_3tau [m/s]", V0 / 4, -v[-1], 0.01, wall, n)]
