@@ -83,7 +83,8 @@ class WallNodes:
     def lumped_period(self, S: np.ndarray, stiffness_per_area2: float, whole: float | None = None) -> float:
         """2 pi / omega of the liquid spring on the rigid bodies among the walls, omega^2 = (K_t / V) A_g A /
         M_g (``_stable_step``'s bound for a rigid wall: A_g its area, A the walls' whole area, M_g its body's
-        mass, ``group_area`` as ``_stable_step`` left it; ``whole`` if known), inf without one.  That oscillation is the model
+        mass, ``group_area`` as ``_stable_step`` left it; ``whole`` if known), inf without one.  That
+        oscillation is the model
         (a piston on a liquid), not a mesh mode: it bounds the step for accuracy too
         (``ExplicitSolver.accuracy_step``).  A deformable wall's node is a mesh mode, as an element's, and
         left out."""

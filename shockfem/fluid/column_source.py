@@ -303,7 +303,8 @@ class ColumnSource(ForceSource):
                          f"bore, liquid returning through the orifice, lateral flow (1D: one pressure across the "
                          f"bore at each station) and the heating's effect on the pressure",
                 "walls": list(self.spec.walls), "axis": [float(c) for c in self.axis], "cells": self.spec.cells,
-                "initial_length": self.initial_length, "length": col.length(), "section_at_piston": col.area(col.length()),
+                "initial_length": self.initial_length, "length": col.length(),
+                "section_at_piston": col.area(col.length()),
                 "liquid_mass": col.mass() + float(col.accounts[2]),
                 "floor_pressure": col.floor_pressure, "piston_pressure": col.piston_pressure,
                 "max_floor_pressure": self.max["floor_pressure"], "max_piston_pressure": self.max["piston_pressure"],

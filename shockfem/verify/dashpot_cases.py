@@ -132,7 +132,8 @@ def fixed_orifice(size, workdir, kinematics="axisymmetric"):
     a0 = k * V0 ** 2 / M
     T = 3 * V0 / a0
     steady = k * V0 ** 2 / A
-    solver, wall, (t, v, a, p) = _run(_scene("fixed_orifice", size, T, V0, {"area": a_orifice, "law": "fixed_cd", "discharge": cd},
+    orifice = {"area": a_orifice, "law": "fixed_cd", "discharge": cd}
+    solver, wall, (t, v, a, p) = _run(_scene("fixed_orifice", size, T, V0, orifice,
                                              steady, kinematics=kinematics), workdir)
     exact = a0 / (1 + a0 * t / V0) ** 2
     n = element_count(solver)
@@ -232,7 +233,8 @@ def fluid_dashpot(size, workdir):
     """The fluid dashpot: a sealed cavity is a spring, a fixed orifice gives the exact a0 / (1 + a0 t / V0)^2,
     a metering pin a flat pulse."""
     return (sealed_cavity(size, workdir) + sealed_cavity(size, workdir, "3d") + fixed_orifice(size, workdir)
-            + fixed_orifice(size, workdir, "3d") + lumped_fixed_orifice(size, workdir) + sharp_edged_orifice(size, workdir)
+            + fixed_orifice(size, workdir, "3d") + lumped_fixed_orifice(size, workdir)
+            + sharp_edged_orifice(size, workdir)
             + metering_pin(size, workdir)
             + metering_pin(size, workdir, "3d")
             + enclosed_volume(size, workdir))

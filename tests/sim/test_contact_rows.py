@@ -1,8 +1,8 @@
 """The solver clears only the rows of ``f_con`` that contact-like forces write
 (``ExplicitSolver._rows_with_contact_forces``: each pair, cavity and target adds through its own
 ``NodeExchange``, a spring to its end nodes).  Were any of them to write another row, that row would keep
-its force step after step; so at every step of a pair, a spring, a liquid cavity, a liquid column and a penetrated target,
-every other row must still be exactly zero, and the forces must act (a test that cannot fail otherwise).
+its force step after step; so at every step of a pair, a spring, a liquid cavity, a liquid column and a penetrated
+target, every other row must still be exactly zero, and the forces must act (a test that cannot fail otherwise).
 
 On the same scenes every source answers the rest of its protocol (``forces/source.py``): its history gives as
 many values as it names columns, and the sources' own energies add up to the solver's contact account, which
