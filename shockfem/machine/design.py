@@ -277,7 +277,8 @@ def models(spec: MachineSpec) -> list[str]:
         "waves are left out (the fixture study's finite-element runs agree within 1%)",
         "housing: Lame thick cylinder and a clamped plate at the peak oil pressure",
         f"amplifier: the {spec.architecture} in 1D (`amplifier.bars`: elastic bars, pads as spring-dashpots, "
-        "2% structural damping), its gain read as an effective restitution; lateral motion, friction on the guides "
+        "2% structural damping held over each body's first modes: band damping), its gain read as an effective "
+        "restitution; lateral motion, friction on the guides "
         "and the pads' own mass left out",
         "launcher: the lumped gas gun (`launcher.gun`: valve, Lagrange gas inertia, air ahead) and ASME VIII-1 walls",
         "stops: absorbers by closed forms (`machine.stops`: a constant-force hydraulic buffer, or an aluminium "

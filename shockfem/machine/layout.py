@@ -148,7 +148,7 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     def add_stop(s: Stop, name: str, x: float, outer: float, inner: float) -> float:
         """A stop's absorber on the axis from ``x`` over its own length; returns where it ends (its stroke
         and its length both end there: the body runs into it)."""
-        items.append(Item(name, "stop", x, s.length, outer, inner, s.absorber_mass, s.kind,
+        items.append(Item(name, "stop", x, s.length, outer, inner, s.absorber_mass, s.short,
                           f"{s.kind}: {s.force / 1e6:.3g} MN peak over {s.stroke:.3g} m"))
         stops.append(s)
         stop_end[s.body] = x + s.length

@@ -112,13 +112,14 @@ def _layout(spec: MachineSpec, launcher: Launcher, fixture) -> Layout:
                  gun_thrust(launcher))
 
 
-def _arrangement(name: str, launcher: Launcher, fixture, layout: Layout, feasible: bool, notes: list[str]
-                 ) -> Arrangement:
+def _arrangement(name: str, launcher: Launcher, fixture, layout: Layout, feasible: bool, notes: list[str],
+                 extra: float = 0.0) -> Arrangement:
+    """An arrangement's row; ``extra``: mass it carries beyond its layout's parts (a sabot) [kg]."""
     g = launcher.design.gun
     return Arrangement(name, launcher.projectile_mass, launcher.design.muzzle_velocity, launcher.launch_energy,
                        fixture.striker_mass, fixture.striker_speed, g.bore, g.length, g.reservoir_pressure,
                        g.reservoir_volume, launcher.stored_energy, launcher.design.weight,
-                       sum(i.mass for i in layout.items) if layout else math.nan,
+                       sum(i.mass for i in layout.items) + extra if layout else math.nan,
                        layout.overall_length if layout else math.nan, feasible, notes)
 
 
@@ -173,12 +174,12 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     diameter = 2 * fixture.housing_outer_radius if with_sabot else None
     L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores)
     layout = _layout(spec, L, fixture)
-    notes = [f"sabot {sabot:.3g} kg (aluminium cone)" if sabot else
+    notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine, its own stop not designed)" if sabot else
              ("no sabot: the striker fills the bore" if with_sabot else "the sabot's mass left out (a lower bound)")]
     if not L.design.feasible:
         notes.append(L.design.note)
     name = "(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot"
-    return _arrangement(name, L, fixture, layout, L.design.feasible, notes)
+    return _arrangement(name, L, fixture, layout, L.design.feasible, notes, sabot)
 
 
 def white_paper_launcher(spec: MachineSpec, launched: float, speed: float) -> tuple[Launcher, bool]:
@@ -368,14 +369,17 @@ def map_figure(points: list[MapPoint], path: str):
                         (p.duration * 1e3, p.peak / G0), fontsize=6, xytext=(4, 4), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
+        ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
+        ax.set_xlim(min(ds) / 1.6, max(ds) * 2.2)
+        ax.set_ylim(min(ps) / 1.4, max(ps) * 1.6)
         ax.set_xlabel("pulse duration [ms]")
         ax.set_ylabel("peak [g]")
         ax.set_title(f"{a / LB:.0f} lb article", fontsize=9)
         ax.grid(alpha=0.3, which="both")
-    for k, (m, c) in marks.items():
-        axes[0][0].scatter([], [], marker=m, color=c, label=f"{k} wins")
-    axes[0][0].legend(fontsize=7, loc="lower left")
-    fig.suptitle("The lightest machine (gun and moving masses) that gives the pulse; "
-                 "a/b: the amplifier's mass over the direct gun's", fontsize=9)
+    handles = [axes[0][0].scatter([], [], marker=m, color=c, label=f"{k} wins") for k, (m, c) in marks.items()]
+    fig.legend(handles=handles, fontsize=7, loc="lower center", ncol=len(marks))
+    fig.suptitle("The lightest machine (gun and moving masses) that gives the pulse\n"
+                 "a/b: the amplifier's mass over the direct gun's (massless sabot)", fontsize=9)
+    fig.subplots_adjust(bottom=0.22, top=0.82)
     save(fig, path)
     return path

@@ -97,6 +97,12 @@ class Stop:
         d["limits"] = [lim.as_dict() for lim in self.limits]
         return d
 
+    @property
+    def short(self) -> str:
+        """The absorber in a parts list's few words."""
+        return ("Al honeycomb" if self.kind.startswith("crushable") else
+                "water brake + buffer" if self.kind.startswith("water") else "oil buffer")
+
 
 def allowed_force(mass: float, length: float, rho: float, allowable: float, deceleration: float | None = None,
                   max_force: float = math.inf) -> tuple[float, str]:

@@ -225,7 +225,8 @@ def verdict(machines: dict, rows: list) -> str:
     computed = [(ld.ratio, ld.component, lb) for lb in ok for ld in machines[lb].loads if not ld.sized]
     if computed:
         r, component, lb = max(computed)
-        out.append(f"every pad, stop, wall and the frame is sized to its allowable; of the stresses no sizing set, the "
+        out.append(f"every pad, wall and the frame is sized to its allowable, every stop to the force its body's inertia "
+                   f"or the gun's thrust allows; of the stresses no sizing set, the "
                    f"highest is the {component} at {r:.2f} of its allowable ({lb} lb)")
     # commercial parts: the guides
     fastest = max(machines[lb].layout.fastest_guided_speed for lb in payloads)
