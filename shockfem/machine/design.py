@@ -32,10 +32,11 @@ from .stops import OIL_TEMPERATURE_RISE
 
 # the largest single part a road carries without a special permit: Council Directive 96/53/EC (2.55 m wide,
 # 40 t gross), on a standard semi-trailer's 13.6 m deck with about 24 t of payload; the frame and the rails
-# are sectioned and joined on site, so they are not single parts
+# are sectioned and joined on site, and the tank's volume may be a bank of vessels piped together (the same
+# steel for the same p V), so none of them is a single part
 TRANSPORT = {"length": 13.6, "width": 2.55, "mass": 24e3}
 TRANSPORT_SOURCE = "Council Directive 96/53/EC; a 13.6 m semi-trailer deck, about 24 t payload"
-SECTIONED = ("frame", "rail")
+SECTIONED = ("frame", "rail", "tank")
 
 
 @dataclass

@@ -31,6 +31,7 @@ RAIL_SIZE = (0.06, 0.020)         # a rail's square section: this share of the b
 GAP_TO_PAYLOAD = 0.05              # between the striker's mouth and the piston at rest [m]
 RING_CLEARANCE = 0.01              # a stop ring's bore over the body that passes through it [m]
 RING_OUTER = 1.3                  # a stop ring's (and the collar it meets) outer diameter over the body's
+                                  # (or over the ring's bore, where the next body is the wider)
 STOP_MARGIN = 0.05                 # free run past the next body's far end before a stop engages [m]
 
 
@@ -157,10 +158,11 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     ring_end = 0.0
     for k, b in enumerate(bodies[:-1]):
         inner = bodies[k + 1]["diameter"] + RING_CLEARANCE
+        # the collar the stop meets reaches past the ring's bore even where the next body is the wider
+        outer = RING_OUTER * max(b["diameter"], inner)
         s = design_stop(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable,
-                        ring_area(RING_OUTER * b["diameter"], inner), pressure, None, max_force)
-        ring_end = add_stop(s, f"stop_{b['name']}", max(fronts[k + 1] + STOP_MARGIN, ring_end), RING_OUTER * b["diameter"],
-                            inner)
+                        ring_area(outer, inner), pressure, None, max_force)
+        ring_end = add_stop(s, f"stop_{b['name']}", max(fronts[k + 1] + STOP_MARGIN, ring_end), outer, inner)
     striker = bodies[-1]
     inner = 2 * fixture.bore_radius + RING_CLEARANCE
     s = design_stop("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable,

@@ -43,9 +43,9 @@ from ..launcher.gun import barrel_length_for, fire, white_paper_gun
 from ..programmer.dashpot_design import DASHPOT, PulseSpec, striker_speed
 from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
-from ..units import FT, G0, IN, LB, PSI
+from ..units import FT, G0, LB
 from .design import Machine, gun_thrust
-from .fixture import bore_radius, design_fixture, floor_thickness
+from .fixture import bore_radius, design_fixture
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import Layout, place
 from .spec import MachineSpec
@@ -380,6 +380,6 @@ def map_figure(points: list[MapPoint], path: str):
     fig.legend(handles=handles, fontsize=7, loc="lower center", ncol=len(marks))
     fig.suptitle("The lightest machine (gun and moving masses) that gives the pulse\n"
                  "a/b: the amplifier's mass over the direct gun's (massless sabot)", fontsize=9)
-    fig.subplots_adjust(bottom=0.22, top=0.82)
+    fig.subplots_adjust(bottom=0.27, top=0.82)
     save(fig, path)
     return path

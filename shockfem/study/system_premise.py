@@ -4,7 +4,6 @@ side by side (``study/system.py`` runs them after the machines are designed)."""
 from __future__ import annotations
 
 import copy
-import math
 import os
 
 from ..amplifier import rigid
@@ -32,6 +31,13 @@ def energy(rep: Report, machines: dict, lb: int):
                                 "gun's losses [MJ]", "interfaces [MJ]", "to the stops [MJ]", "fixture's oil [MJ]",
                                 "payload [MJ]", "payload / stored [-]", "closure [-]"], rows,
               ["{}"] + ["{:.4g}"] * 8 + ["{:.2%}", "{:+.3%}"])
+    for n, x in machines.items():
+        if abs(x.energy.closure) > 5e-3:
+            short = x.launcher.design.muzzle_velocity < x.spec.launch_speed * (1 - 1e-3)
+            rep.text(f"The {n} lb table does not close ({x.energy.closure:+.1%}): "
+                     + (f"its gun fires the first mass at {x.launcher.design.muzzle_velocity:.4g} m/s, the chain was "
+                        f"launched at {x.spec.launch_speed:.4g} (the gun falls short: section 6)." if short else
+                        "the models disagree on the speeds they hand each other: " + "; ".join(x.energy.notes[1:]) + "."))
     m = machines[lb]
     e = m.energy
     rep.text(f"The {lb} lb machine's shot, row by row (`{lb}lb/machine.md` has it too). Each row comes from the "
@@ -70,8 +76,8 @@ def limits(rep: Report, machines: dict):
               ["{}", "{}", "{}", "{}", "{:.3f}", "{}"])
     rep.text("A machine is FEASIBLE only when every limit holds (every stress against its own material's allowable, "
              "each absorber's limits, the dashpot oil's heating a shot, the largest single part against the road's "
-             "envelope: 13.6 m, 2.55 m, 24 t, Council Directive 96/53/EC on a standard semi-trailer) and every "
-             "part's model found a design. `<N>lb/machine.md` lists every limit with its basis and source.")
+             "envelope: 13.6 m, 2.55 m, 24 t, Council Directive 96/53/EC on a standard semi-trailer, the frame, rails "
+             "and tank sectioned) and every part's model found a design. `<N>lb/machine.md` lists every limit with its basis and source.")
     for n, m in machines.items():
         if not m.feasible:
             rep.text(f"**{n} lb, NOT FEASIBLE**: " + "; ".join(m.problems) + ".")
