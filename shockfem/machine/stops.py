@@ -139,14 +139,17 @@ def hydraulic_buffer(body: str, mass: float, speed: float, force: float, ring_ar
     oil = OIL["density"] * area * stroke
     heating = energy / (oil * OIL_HEAT_CAPACITY)
     joukowsky = OIL["density"] * OIL_SOUND_SPEED * speed
+    # a buffer behind a water brake meets the body at its Joukowsky speed, and the working pressure is the
+    # one of the allowed heating: those two are at their limits by design
     limits = [
         Limit(f"stop of {body} (hydraulic buffer)", "impact pressure rho c v", joukowsky, pressure, "Pa",
-              "Joukowsky: a piston started suddenly on the oil", "the cylinder's working pressure (buffer_pressure)"),
+              "Joukowsky: a piston started suddenly on the oil", "the cylinder's working pressure (buffer_pressure)",
+              sized=joukowsky >= pressure * (1 - 1e-9)),
         Limit(f"stop of {body} (hydraulic buffer)", "piston Mach number in the oil", speed / OIL_SOUND_SPEED,
               BUFFER_MACH, "-", "v / sqrt(K / rho)", "the lumped orifice law's range (programmer.dashpot_validity)"),
         Limit(f"stop of {body} (hydraulic buffer)", "oil temperature rise a shot", heating, OIL_TEMPERATURE_RISE, "K",
               "E / (rho A x c_p): the swept oil keeps the energy", "mineral oil to 80 C from 20 C; nitrile seals "
-              "(Parker ORD 5700)"),
+              "(Parker ORD 5700)", sized=heating >= OIL_TEMPERATURE_RISE * (1 - 1e-9)),
     ]
     return {"kind": "hydraulic buffer", "stroke": stroke, "force": force, "length": length,
             "absorber_mass": steel + oil, "consumed": 0.0, "limits": limits,
