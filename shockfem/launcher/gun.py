@@ -109,6 +109,9 @@ class Shot:
     wall_time_s: float = 0.0
     note: str = ""
     travel: float = 0.0              # distance moved in the barrel [m]
+    # where the gas's initial internal energy went [J]: "initial", "gas_left" (its internal energy at the
+    # end), "gas_kinetic" (the Lagrange column's), "projectile", "friction", "air_ahead"
+    energies: dict = field(default_factory=dict)
 
     def summary(self) -> dict:
         d = {k: v for k, v in asdict(self).items() if k not in ("history", "gun")}
@@ -306,9 +309,12 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     reached_speed = bool(len(sol.t_events[2]))
     note = "" if left or reached_speed else (f"the projectile is still in the barrel at x = {x:.4g} m after {t_end:.4g} s"
                             if t_end >= max_time else f"the projectile stopped in the barrel at x = {x:.4g} m")
+    energies = {"initial": float(W_sw if simple else E0), "gas_left": float(0.0 if simple else U_r + U_b),
+                "gas_kinetic": float(gas_ke), "projectile": float(kinetic), "friction": float(W_f),
+                "air_ahead": float(W_air)}
     return Shot(gun, float(v), left, float(t_end), float(np.max(np.abs(hist["acceleration"]))),
                 float(np.max(hist["p_base"])), float(efficiency), float(abs(balance)), hist, describe(gun),
-                time.perf_counter() - t0, note, float(x))
+                time.perf_counter() - t0, note, float(x), energies)
 
 
 def barrel_length_for(gun: Gun, speed: float, longest: float = 1e4) -> float:

@@ -1,5 +1,11 @@
 """The whole machine from the article and the pulse: fixture -> amplifier -> launcher -> layout, then
-the operating loads and stresses on every component against its allowable, the totals, and what binds.
+the operating loads and stresses on every component against its allowable, every part's limits, the
+energy of a shot, the totals, and what binds.
+
+The verdict rests on ``limits`` (``machine.limits.Limit``): every stress against its part's own
+allowable, the stops' absorbers' limits, the oil's heating, the largest part against what a road can
+carry, and the amplifier's own (its pads', when it has them).  FEASIBLE only when all hold and every
+part's model found a design; otherwise each broken limit is listed with its ratio.
 
 The order is the data flow: the pulse and the article fix the fixture (the dashpot and the striker's
 mass and speed), the striker fixes the amplifier (its masses at the restitution its 1D model gives),
@@ -13,14 +19,24 @@ import os
 import time
 from dataclasses import asdict, dataclass, field
 
-from ..amplifier import rigid
-from ..scene.library import initial_yield_stress, property_si
+from ..scene.library import LIBRARY, initial_yield_stress, property_si
 from ..units import G0, format_si
 from .amplifier import Amplifier, check_with_first_mass, design_amplifier
+from .energy import EnergyTable, chain_record, energy_table
 from .fixture import Fixture, design_fixture
 from .launcher import Launcher, design_launcher
 from .layout import GUIDES_PER_BODY, Layout, place, rail_section, shoe_length
+from .limits import Limit, broken
 from .spec import REFERENCE_ARTICLE, MachineSpec
+from .stops import OIL_TEMPERATURE_RISE
+
+# the largest single part a road carries without a special permit: Council Directive 96/53/EC (2.55 m wide,
+# 40 t gross), on a standard semi-trailer's 13.6 m deck with about 24 t of payload; the frame and the rails
+# are sectioned and joined on site, and the tank's volume may be a bank of vessels piped together (the same
+# steel for the same p V), so none of them is a single part
+TRANSPORT = {"length": 13.6, "width": 2.55, "mass": 24e3}
+TRANSPORT_SOURCE = "Council Directive 96/53/EC; a 13.6 m semi-trailer deck, about 24 t payload"
+SECTIONED = ("frame", "rail", "tank")
 
 
 @dataclass
@@ -45,6 +61,8 @@ class Machine:
     launcher: Launcher
     layout: Layout
     loads: list[Load]
+    limits: list[Limit]
+    energy: EnergyTable
     totals: dict
     binding: list[str]
     models: list[str]
@@ -56,15 +74,18 @@ class Machine:
         spec = asdict(self.spec)
         return {"spec": spec, "fixture": self.fixture.as_dict(), "amplifier": self.amplifier.as_dict(),
                 "launcher": self.launcher.as_dict(), "layout": self.layout.as_dict(),
-                "loads": [{**asdict(ld), "ratio": ld.ratio} for ld in self.loads], "totals": self.totals,
+                "loads": [{**asdict(ld), "ratio": ld.ratio} for ld in self.loads],
+                "limits": [lim.as_dict() for lim in self.limits], "broken": [lim.as_dict() for lim in broken(self.limits)],
+                "energy": self.energy.as_dict(), "totals": self.totals,
                 "binding": self.binding, "models": self.models, "wall_time_s": self.wall_time_s,
                 "feasible": self.feasible, "problems": self.problems}
 
 
-def final_speeds(spec: MachineSpec, amp: Amplifier) -> list[float]:
-    """Each mass's speed once the rigid chain at the effective restitution has no gap closing."""
-    chain = (rigid.launched_chain if spec.architecture == "launched-chain" else rigid.stack_on_anvil)
-    return [abs(v) for v in chain(amp.masses, spec.launch_speed, amp.restitution).final]
+def record_of(spec: MachineSpec, amp: Amplifier):
+    """The chain's energies and final speeds (``energy.chain_record``): its last 1D run's, or the rigid
+    chain's at the design's restitution."""
+    return chain_record(amp.masses, [b["name"] for b in amp.bodies], spec.launch_speed, amp.restitution,
+                        spec.architecture, amp.runs[-1] if amp.runs else None)
 
 
 def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, fixture: Fixture | None = None
@@ -86,12 +107,57 @@ def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, 
     rho = property_si(spec.material, "density", "density")
     Y = initial_yield_stress(spec.material)
     S = Y / spec.safety_factor
-    layout = place(launcher, amp, fixture, rho, S, spec.catch, spec.material, final_speeds(spec, amp))
+    record = record_of(spec, amp) if amp.masses else None
+    speeds = [record.final_speeds[b["name"]] for b in amp.bodies] if record else []
+    layout = place(launcher, amp, fixture, rho, S, spec.catch, spec.material, speeds, spec.oil_pressure,
+                   gun_thrust(launcher))
     loads = operating_loads(spec, fixture, amp, launcher, layout, S)
-    totals = _totals(fixture, amp, launcher, layout)
-    binding, problems = _binding(spec, fixture, amp, launcher, layout, loads)
-    return Machine(spec, fixture, amp, launcher, layout, loads, totals, binding, models(spec),
+    limits = part_limits(spec, fixture, amp, layout, loads)
+    energy = energy_table(launcher, amp, fixture, layout.stops, record)
+    totals = _totals(fixture, amp, launcher, layout, energy)
+    binding, problems = _binding(spec, fixture, amp, launcher, layout, limits)
+    return Machine(spec, fixture, amp, launcher, layout, loads, limits, energy, totals, binding, models(spec),
                    time.perf_counter() - t0, not problems, problems)
+
+
+def gun_thrust(launcher: Launcher) -> float:
+    """The gun's peak force on its projectile [N]: its mass times its peak acceleration (the frame carries it
+    back to the breech; no stop need ask more)."""
+    return launcher.projectile_mass * launcher.design.peak_acceleration
+
+
+def _allowable_source(load: Load, spec: MachineSpec) -> str:
+    """Where a load's allowable comes from."""
+    if load.component.startswith("launcher"):
+        return "ASME VIII-1 allowable of the vessel's steel"
+    name = REFERENCE_ARTICLE["library"] if load.component == "article base" else spec.material
+    return f"{name} yield / {spec.safety_factor:g} ({LIBRARY[name]['source'].split(';')[0]})"
+
+
+def part_limits(spec: MachineSpec, fixture: Fixture, amp: Amplifier, layout: Layout, loads: list[Load]
+                ) -> list[Limit]:
+    """Every part's limits: each load's stress against its allowable, the stops' absorbers', the oil's
+    heating a shot, the largest single part against the road's envelope, and the amplifier's own."""
+    out = [Limit(ld.component, "stress", ld.stress, ld.allowable, "Pa", f"{ld.basis} ({ld.load})",
+                 _allowable_source(ld, spec), ld.sized) for ld in loads]
+    for st in layout.stops:
+        out += st.limits
+    out.append(Limit("dashpot oil", "temperature rise a shot", fixture.oil_heating, OIL_TEMPERATURE_RISE, "K",
+                     "the energy the orifice throttles kept by the oil", "mineral oil to 80 C from 20 C; nitrile "
+                     "seals (Parker ORD 5700)"))
+    parts = [i for i in layout.items if i.kind not in SECTIONED]
+    longest = max(parts, key=lambda i: i.length)
+    widest = max(parts, key=lambda i: i.diameter)
+    heaviest = max(parts, key=lambda i: i.mass)
+    out += [Limit(f"{longest.name} (the longest part)", "length for transport", longest.length, TRANSPORT["length"],
+                  "m", "its length on the axis", TRANSPORT_SOURCE),
+            Limit(f"{widest.name} (the widest part)", "width for transport", widest.diameter, TRANSPORT["width"], "m",
+                  "its outer diameter", TRANSPORT_SOURCE),
+            Limit(f"{heaviest.name} (the heaviest part)", "mass for transport", heaviest.mass, TRANSPORT["mass"], "kg",
+                  "its mass", TRANSPORT_SOURCE)]
+    # the amplifier's own limits (its pads', when the amplifier carries them)
+    out += list(getattr(amp, "limits", []))
+    return out
 
 
 def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, layout: Layout, S: float) -> list[Load]:
@@ -132,9 +198,10 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
                     a_Y / spec.safety_factor, "its mass times the pulse's peak over its base (the piston's face); "
                                               "4340's allowable"))
     for st in layout.stops:
-        out.append(Load(f"stop of {st.body}", f"{st.mass:.4g} kg at {st.speed:.1f} m/s: {st.force / 1e6:.3g} MN over "
-                                             f"{st.stroke:.3g} m", st.stress, S,
-                        f"rho L a in the stopped body; deceleration: {st.limit}", sized="inertia" in st.limit))
+        out.append(Load(f"stop of {st.body}", f"{st.mass:.4g} kg at {st.speed:.1f} m/s: {st.force / 1e6:.3g} MN peak "
+                                             f"over {st.stroke:.3g} m ({st.kind})", st.stress, S,
+                        f"rho L a in the stopped body at the peak; allowed force: {st.limit}",
+                        sized=st.stress >= S * (1 - 1e-6)))
     # the guides: each moving body's weight on its sliding shoes, as bearing pressure on the rails
     for it in layout.items:
         if it.kind in ("mass", "housing", "piston"):
@@ -151,7 +218,7 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
     return out
 
 
-def _totals(fixture, amp, launcher, layout) -> dict:
+def _totals(fixture, amp, launcher, layout, energy: EnergyTable) -> dict:
     items = layout.items
     mass = sum(i.mass for i in items)
     g = launcher.design.gun
@@ -169,11 +236,16 @@ def _totals(fixture, amp, launcher, layout) -> dict:
         "reservoir_pressure": g.reservoir_pressure, "bore": g.bore, "barrel_travel": g.length,
         "oil_heating_per_shot": fixture.oil_heating,
         "energy_to_stops": sum(s.energy for s in layout.stops),
+        "gas_work": energy.gas_work, "energy_closure": energy.closure,
+        "stops_mass": sum(s.absorber_mass for s in layout.stops),
+        "stops_length": sum(s.length for s in layout.stops),
+        "consumed_per_shot": sum(s.consumed for s in layout.stops),
     }
 
 
-def _binding(spec, fixture, amp, launcher, layout, loads) -> tuple[list[str], list[str]]:
-    """What binds (limits reached, stresses at their allowable by design) and what fails (problems)."""
+def _binding(spec, fixture, amp, launcher, layout, limits: list[Limit]) -> tuple[list[str], list[str]]:
+    """What binds (limits reached, stresses at their allowable by design) and what fails (problems: a
+    model that found no design, and every broken limit with its ratio, the worst first)."""
     binding, problems = [], []
     dimension = {"bore": "length", "length": "length", "reservoir_pressure": "pressure", "reservoir_volume": "volume"}
     for b in launcher.design.binding:
@@ -188,10 +260,9 @@ def _binding(spec, fixture, amp, launcher, layout, loads) -> tuple[list[str], li
         problems.append("fixture: the lumped pulse is outside the specification's band")
     if not amp.feasible:
         problems.append(f"amplifier: {amp.reason}")
-    for ld in loads:
-        if ld.ratio > 1 + 1e-6:
-            problems.append(f"{ld.component}: {ld.stress / 1e6:.4g} MPa over the allowable {ld.allowable / 1e6:.4g} MPa "
-                            f"({ld.ratio:.2f})")
+    for lim in broken(limits):
+        problems.append(f"{lim.component}: {lim.quantity} {lim.value:.4g} {lim.unit} against {lim.limit:.4g} "
+                        f"{lim.unit}, over by {100 * (lim.ratio - 1):.0f}% ({lim.source})")
     longest = max((i for i in layout.items if i.kind not in ("frame", "rail")), key=lambda i: i.length)
     binding.append(f"length: the longest part is the {longest.name} ({longest.length:.3g} m of the "
                    f"{layout.overall_length:.3g} m)")
@@ -207,9 +278,13 @@ def models(spec: MachineSpec) -> list[str]:
         "waves are left out (the fixture study's finite-element runs agree within 1%)",
         "housing: Lame thick cylinder and a clamped plate at the peak oil pressure",
         f"amplifier: the {spec.architecture} in 1D (`amplifier.bars`: elastic bars, pads as spring-dashpots, "
-        "2% structural damping), its gain read as an effective restitution; lateral motion, friction on the guides "
+        "2% structural damping held over each body's first modes: band damping), its gain read as an effective "
+        "restitution; lateral motion, friction on the guides "
         "and the pads' own mass left out",
         "launcher: the lumped gas gun (`launcher.gun`: valve, Lagrange gas inertia, air ahead) and ASME VIII-1 walls",
-        "stops, guides and frame: closed forms (a bar stopped at one end, the weight on sliding shoes, ties); "
-        "foundations, bolts and bending of the frame left out",
+        "stops: absorbers by closed forms (`machine.stops`: a constant-force hydraulic buffer, or an aluminium "
+        "honeycomb crushed at its steady-shock stress), each at the force the stopped body's inertia allows",
+        "guides and frame: closed forms (the weight on sliding shoes, ties); foundations, bolts and bending of the "
+        "frame left out",
+        "energy: the gun's own accounts, the chain's stage table, the fixture's lumped run (`machine.energy`)",
     ]

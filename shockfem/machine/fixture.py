@@ -72,6 +72,11 @@ class Fixture:
     lumped_runs: int
     redesigns: int
     design: dict                  # the dashpot design (``programmer.dashpot_design``), the pin table included
+    # the work the oil's forces take from the two bodies over the record, integrated from the lumped run's
+    # pressure, jet and speeds: int (p A (v_s - v_p) + J v_p) dt [J] (the energy table's fixture row)
+    oil_work: float = math.nan
+    # the payload's parting speed over the closing speed, (v_p - v_s) / V at the record's end [-]
+    restitution: float = math.nan
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -135,7 +140,7 @@ def design_fixture(spec: MachineSpec, echo=None) -> Fixture:
     throttled = (0.5 * d["striker_mass"] * d["striker_speed"] ** 2 - 0.5 * d["striker_mass"] * striker_after ** 2
                  - 0.5 * d["payload_mass"] * payload_after ** 2)
     R_ok = R if math.isfinite(R) else math.nan
-    return Fixture(
+    fixture = Fixture(
         spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"], ratio, d["striker_mass"],
         d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()), p, R_ok, t_floor + depth,
         t_floor, depth, housing if math.isfinite(R) else math.nan, redesigns > 0 or R_wall > R_mass,
@@ -144,4 +149,16 @@ def design_fixture(spec: MachineSpec, echo=None) -> Fixture:
         float(band.worst_excess), payload_after, striker_after, float(np.trapz(run.striker_speed, run.t)),
         float(np.trapz(run.payload_speed, run.t)),
         throttled / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, redesigns, d)
+    fixture.oil_work = oil_work(run, d["piston_area"])
+    fixture.restitution = (payload_after - striker_after) / d["striker_speed"]
+    return fixture
+
+
+def oil_work(run, area: float) -> float:
+    """The work the oil takes from striker and payload [J]: its pressure p A on the relative motion and
+    the jet's reaction J on the payload (``programmer.lumped_dashpot``: m x_p'' = p A - J, M x_s'' = -p A),
+    by the trapezoidal rule over the run's samples."""
+    jet = getattr(run, "jet_force", np.zeros_like(run.t))
+    power = run.pressure * area * (run.striker_speed - run.payload_speed) + jet * run.payload_speed
+    return float(np.trapz(power, run.t))
 

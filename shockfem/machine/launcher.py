@@ -30,10 +30,24 @@ class Launcher:
 
 def design_launcher(spec: MachineSpec, masses: list[float], starts: int = 3) -> Launcher:
     launched = masses[0] if spec.architecture == "launched-chain" else sum(masses)
-    limits = Limits(max_length=spec.max_barrel_length, max_bore=spec.max_bore, max_pressure=spec.max_pressure)
-    d = lightest_launcher(white_paper_gun(launched, spec.gas), spec.launch_speed, limits, SIZING, starts=starts)
+    return launcher_for(spec, launched, spec.launch_speed, starts)
+
+
+def launcher_for(spec: MachineSpec, launched: float, speed: float, starts: int = 3, min_bore: float = 0.0,
+                 report_binding: bool = True) -> Launcher:
+    """The lightest gun within the spec's limits firing ``launched`` [kg] at ``speed``, its bore at least
+    ``min_bore`` (a projectile that must fit)."""
+    limits = Limits(max_length=spec.max_barrel_length, max_bore=spec.max_bore, max_pressure=spec.max_pressure,
+                    **({"min_bore": min_bore} if min_bore else {}))
+    d = lightest_launcher(white_paper_gun(launched, spec.gas), speed, limits, SIZING, starts=starts,
+                          report_binding=report_binding)
+    return launcher_of(d, launched)
+
+
+def launcher_of(d, launched: float) -> Launcher:
+    """A gun design (``launcher.design.LauncherDesign``) with its walls, gas and energies."""
     g = d.gun
-    gas = GASES[spec.gas]
+    gas = GASES[g.gas]
     return Launcher(d, sizing(g, SIZING), launched,
                     gas.mass_for(g.reservoir_pressure, g.reservoir_temperature, g.reservoir_volume),
                     g.reservoir_pressure * g.reservoir_volume / (gas.gamma - 1),

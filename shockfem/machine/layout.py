@@ -6,12 +6,11 @@ a gap beyond its mouth, then the arrest: every moving body is stopped by a ring 
 bore lets the smaller bodies ahead of it pass (masses shrink along the chain), the payload last by its
 catcher.
 
-* Each body is stopped over its own length (the stop then takes no more of the machine than the body,
-  and the frame carries the force m v^2 / (2 L)), or over more where that would pass its inertia's
-  limit: a body stopped at one end at deceleration a carries rho L a at the stop (a bar pushed from one
-  end), at most the allowable S, so a <= S / (rho L).  Stroke v^2 / (2 a), force m a, energy m v^2 / 2.
-  The payload's catcher is the spec's (half the test pulse's peak by default: the arrest must not be the
-  harsher shock).
+* Each body's stop is an absorber (``stops.py``: a hydraulic buffer or a crushable, the shortest within
+  its limits) at the force its inertia allows (a body stopped at one end at deceleration a carries
+  rho L a at the stop, at most the allowable S); the payload's catcher at the spec's deceleration (half
+  the test pulse's peak by default: the arrest must not be the harsher shock).  Each absorber takes its
+  own length on the axis, after the previous one.
 * Guides: two rails under every body, sliding shoes under it (its weight their load): catalogue
   rolling carriages run at most ``ROLLING_CARRIAGE_SPEED`` (item Industrietechnik, PS 4 bearing carriages:
   v max 5 m/s), far below the bodies' speeds, so the shoes slide (wear strips on hardened rails).
@@ -24,27 +23,16 @@ import math
 from dataclasses import asdict, dataclass, field
 
 from ..programmer.dashpot_design import DASHPOT, OIL
-from ..units import G0
+from .stops import Stop, design_stop
 
 ROLLING_CARRIAGE_SPEED = 5.0       # [m/s], item PS 4 bearing carriages (catalogue)
 GUIDES_PER_BODY = 2               # rails under a body, one sliding shoe on each
 RAIL_SIZE = (0.06, 0.020)         # a rail's square section: this share of the body's diameter, at least [m]
 GAP_TO_PAYLOAD = 0.05              # between the striker's mouth and the piston at rest [m]
 RING_CLEARANCE = 0.01              # a stop ring's bore over the body that passes through it [m]
+RING_OUTER = 1.3                  # a stop ring's (and the collar it meets) outer diameter over the body's
+                                  # (or over the ring's bore, where the next body is the wider)
 STOP_MARGIN = 0.05                 # free run past the next body's far end before a stop engages [m]
-
-
-@dataclass
-class Stop:
-    body: str
-    mass: float                # [kg]
-    speed: float               # when it reaches its stop [m/s]
-    deceleration: float        # [m/s^2]
-    stroke: float              # [m]
-    force: float               # [N]
-    energy: float              # [J]
-    stress: float              # rho L a: the stopped body's inertia at the stop [Pa]
-    limit: str                 # what set the deceleration
 
 
 @dataclass
@@ -95,27 +83,18 @@ def shoe_length(diameter: float, length: float) -> float:
     return min(length, max(2 * h, 0.25 * diameter))
 
 
-def stop_for(body: str, mass: float, speed: float, length: float, rho: float, allowable: float,
-             deceleration: float | None = None, limit: str = "") -> Stop:
-    """The stop of a body of ``length`` at ``speed``: over its own length (so that stopping takes no
-    more of the machine than the body does, at the force its energy over that length needs), or longer
-    where that would pass its inertia's limit S / (rho L); at ``deceleration`` if given (the catcher)."""
-    if deceleration:
-        a, why = deceleration, limit
-    else:
-        a_inertia = allowable / (rho * length)
-        a_own = speed * speed / (2 * length)
-        a = min(a_own, a_inertia)
-        why = (f"over its own length ({a / G0:,.0f} g)" if a_own <= a_inertia
-               else f"its inertia: rho L a = allowable ({a / G0:,.0f} g)")
-    return Stop(body, mass, speed, a, speed * speed / (2 * a), mass * a, 0.5 * mass * speed * speed,
-                rho * length * a, why)
+def ring_area(outer: float, inner: float) -> float:
+    """The face a stop ring meets [m^2]: the body's (``outer`` its diameter) less the bore ``inner`` that
+    lets the next body pass."""
+    return math.pi * (outer * outer - inner * inner) / 4
 
 
 def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, material: str,
-          final_speeds: list[float]) -> Layout:
+          final_speeds: list[float], pressure: float, max_force: float = math.inf) -> Layout:
     """Every component's place on the axis, the stops, the guides and the frame.  ``final_speeds``: each
-    amplifier mass's speed after the chain (the striker's is the fixture's after the pulse)."""
+    amplifier mass's speed after the chain (the striker's is the fixture's after the pulse); ``pressure``:
+    the dashpot's design pressure (the hydraulic buffers' at most); ``max_force``: the most a stop may ask of
+    the frame."""
     g, size = launcher.design.gun, launcher.sizing
     items: list[Item] = []
     tank = size["tank"]
@@ -168,26 +147,32 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     stop_end: dict[str, float] = {}         # body -> where its stop's stroke ends
 
     def add_stop(s: Stop, name: str, x: float, outer: float, inner: float) -> float:
-        """A stop on the axis from ``x`` over its stroke; returns where it ends."""
-        items.append(Item(name, "stop", x, s.stroke, outer, inner, 0.0, material,
-                          f"{s.force / 1e6:.3g} MN over {s.stroke:.3g} m"))
+        """A stop's absorber on the axis from ``x`` over its own length; returns where it ends (its stroke
+        and its length both end there: the body runs into it)."""
+        items.append(Item(name, "stop", x, s.length, outer, inner, s.absorber_mass, s.short,
+                          f"{s.kind}: {s.force / 1e6:.3g} MN peak over {s.stroke:.3g} m"))
         stops.append(s)
-        stop_end[s.body] = x + s.stroke
+        stop_end[s.body] = x + s.length
         return stop_end[s.body]
-    # each amplifier mass's ring just past the next body, after the previous ring's stroke
+    # each amplifier mass's ring just past the next body, after the previous ring's absorber
     ring_end = 0.0
     for k, b in enumerate(bodies[:-1]):
-        s = stop_for(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable)
-        ring_end = add_stop(s, f"stop_{b['name']}", max(fronts[k + 1] + STOP_MARGIN, ring_end), 1.3 * b["diameter"],
-                            bodies[k + 1]["diameter"] + RING_CLEARANCE)
+        inner = bodies[k + 1]["diameter"] + RING_CLEARANCE
+        # the collar the stop meets reaches past the ring's bore even where the next body is the wider
+        outer = RING_OUTER * max(b["diameter"], inner)
+        s = design_stop(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable,
+                        ring_area(outer, inner), pressure, None, max_force)
+        ring_end = add_stop(s, f"stop_{b['name']}", max(fronts[k + 1] + STOP_MARGIN, ring_end), outer, inner)
     striker = bodies[-1]
-    s = stop_for("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable)
+    inner = 2 * fixture.bore_radius + RING_CLEARANCE
+    s = design_stop("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable,
+                    ring_area(RING_OUTER * striker["diameter"], inner), pressure, None, max_force)
     ring_end = add_stop(s, "stop_striker", max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end),
-                        1.3 * striker["diameter"], 2 * fixture.bore_radius + RING_CLEARANCE)
-    c = stop_for("payload", fixture.payload_mass, fixture.after_speed_payload, fixture.article_length, rho, allowable,
-                 catch, f"the catcher's deceleration ({catch / G0:,.0f} g)")
+                        RING_OUTER * striker["diameter"], inner)
+    c = design_stop("payload", fixture.payload_mass, fixture.after_speed_payload, fixture.article_length, rho,
+                    allowable, ring_area(RING_OUTER * 2 * fixture.bore_radius, 0.0), pressure, catch, max_force)
     add_stop(c, "catcher", max(payload_front + fixture.payload_travel + STOP_MARGIN, ring_end),
-             1.3 * striker["diameter"], 0.0)
+             RING_OUTER * striker["diameter"], 0.0)
     length = max(i.x0 + i.length for i in items)
     width = max(i.diameter for i in items)
     # guides: rails under every moving body from where it rests to its stop's end (the piston: the payload's)

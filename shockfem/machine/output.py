@@ -11,6 +11,8 @@ from ..units import FT, G0, IN, LB, PSI
 from .cad import read_step, write_step
 from .design import Machine
 from .drawing import draw_sheet
+from .energy import energy_figure
+from .limits import broken
 
 UNITS = {"mass": "kg", "length": "m", "speed": "m/s", "stress": "Pa", "pressure": "Pa", "energy": "J",
          "acceleration": "m/s^2", "force": "N", "stiffness": "N/m", "time": "s", "temperature rise": "K"}
@@ -33,10 +35,17 @@ def summary_lines(m: Machine) -> list[str]:
         f"  machine: {t['overall_length']:.3g} m long, {t['overall_width']:.3g} m wide, {t['machine_mass']:,.0f} kg; "
         f"the article gets {t['article_over_stored']:.2%} of the gas's stored energy",
     ]
+    e = m.energy
+    lines.append(f"  energy a shot: {e.stored / 1e6:.4g} MJ of gas stored, {e.gas_work / 1e6:.4g} MJ of gas work, "
+                 f"{L.launch_energy / 1e6:.4g} MJ launched, {t['energy_to_stops'] / 1e6:.4g} MJ to the stops, "
+                 f"{e.payload / 1e6:.3g} MJ to the payload (the parts close on the gas work to {e.closure:+.2%})")
+    lines.append("  stops: " + "; ".join(f"{st.body} {st.kind} {st.stroke:.3g} m stroke, {st.length:.3g} m long, "
+                                         f"{st.force / 1e6:.3g} MN" for st in m.layout.stops))
     lines += [f"  binds: {b}" for b in m.binding]
     lines += [f"  PROBLEM: {p}" for p in m.problems]
-    worst = max(m.loads, key=lambda ld: ld.ratio)
-    lines.append(f"  highest stress over allowable: {worst.component} {worst.ratio:.2f}")
+    worst = max(m.limits, key=lambda lim: lim.ratio)
+    lines.append(f"  {len(m.limits)} limits checked, {len(broken(m.limits))} broken; the highest ratio: {worst.component} "
+                 f"{worst.quantity} {worst.ratio:.2f}")
     return lines
 
 
@@ -73,17 +82,38 @@ def markdown(m: Machine) -> str:
               _table(["assumed e", "1D gain", "effective e", "striker speed 1D [m/s]", "first mass [kg]"],
                      [[f"{it['assumed']:.4f}", f"{it['gain_1d']:.4f}", f"{it['effective']:.4f}",
                        f"{it['striker_speed_1d']:.2f}", f"{it['first_mass']:,.1f}"] for it in a.iterations])]
-    parts += ["", "## Stops", "",
-              _table(["body", "mass [kg]", "speed [m/s]", "deceleration [g]", "stroke [m]", "force [MN]", "energy [kJ]",
-                      "what set it"],
-                     [[st.body, f"{st.mass:,.4g}", f"{st.speed:.1f}", f"{st.deceleration / G0:,.0f}", f"{st.stroke:.3f}",
-                       f"{st.force / 1e6:.3g}", f"{st.energy / 1e3:,.0f}", st.limit] for st in m.layout.stops])]
+    parts += ["", "## Stops (absorbers)", "",
+              _table(["body", "mass [kg]", "speed [m/s]", "absorber", "peak deceleration [g]", "stroke [m]",
+                      "peak force [MN]", "energy [kJ]", "own length [m]", "own mass [kg]", "used a shot [kg]",
+                      "allowed force", "detail"],
+                     [[st.body, f"{st.mass:,.4g}", f"{st.speed:.1f}", st.kind, f"{st.deceleration / G0:,.0f}",
+                       f"{st.stroke:.3f}", f"{st.force / 1e6:.3g}", f"{st.energy / 1e3:,.0f}", f"{st.length:.3f}",
+                       f"{st.absorber_mass:,.1f}", f"{st.consumed:,.1f}", st.limit, st.detail] for st in m.layout.stops])]
+    parts += ["", "## Energy of a shot", "", energy_markdown(m), "", "![energy](energy.png)"]
+    parts += ["", "## Limits (the verdict rests on these)", "", limits_markdown(m.limits)]
     parts += ["", "## Totals", "", _table(["quantity", "value"], [[k, f"{v:.6g}"] for k, v in t.items()]),
               "", "(SI: kg, m, m^2, J, Pa, K.)", "",
               f"Launcher: {g.bore / IN:.4g} in bore, {g.length / FT:.4g} ft of travel, {g.reservoir_volume:.4g} m^3 at "
               f"{g.reservoir_pressure / PSI:,.0f} psi; fixture lumped pulse {f.peak / G0:,.0f} g.",
               f"Designed in {m.wall_time_s:.1f} s."]
     return "\n".join(parts) + "\n"
+
+
+def energy_markdown(m: Machine) -> str:
+    e = m.energy
+    rows = [[r.name, f"{r.energy / 1e6:.4f}", f"{r.energy / e.gas_work:.2%}", "yes" if r.part else "-", r.note]
+            for r in e.rows]
+    rows.append(["the parts' sum", f"{e.parts / 1e6:.4f}", f"{e.parts / e.gas_work:.2%}", "", f"closure {e.closure:+.3%}"])
+    return _table(["where the energy is", "energy [MJ]", "of the gas work", "a part", "note"], rows) + "\n\n" + \
+        "\n".join(f"- {n}" for n in e.notes)
+
+
+def limits_markdown(limits) -> str:
+    return _table(["component", "quantity", "value", "limit", "unit", "ratio", "holds", "set by the design", "basis",
+                   "limit's source"],
+                  [[lim.component, lim.quantity, f"{lim.value:.4g}", f"{lim.limit:.4g}", lim.unit, f"{lim.ratio:.3f}",
+                    "yes" if lim.holds else "**NO**", "yes" if lim.sized else "-", lim.basis, lim.source]
+                   for lim in limits])
 
 
 def write_machine(m: Machine, out_dir: str) -> list[str]:
@@ -95,6 +125,8 @@ def write_machine(m: Machine, out_dir: str) -> list[str]:
     name = f"shock_tester_{m.spec.article_mass / LB:.3g}lb".replace(".", "_")
     cad_check = check_step(m, write_step(m, step, name), read_step(step))
     sheet = draw_sheet(m, os.path.join(out_dir, "drawing"))
+    figure = energy_figure(m.energy, os.path.join(out_dir, "energy.png"),
+                           f"The {m.spec.article_mass / LB:.3g} lb machine's shot")
     data = m.as_dict()
     data["units"] = UNITS
     data["cad"] = cad_check
@@ -103,7 +135,7 @@ def write_machine(m: Machine, out_dir: str) -> list[str]:
     path_md = os.path.join(out_dir, "machine.md")
     with open(path_md, "w") as fh:
         fh.write(markdown(m))
-    return [path_json, path_md, step, *sheet]
+    return [path_json, path_md, step, *sheet, figure]
 
 
 def check_step(m: Machine, written: list[dict], read_back: list[dict]) -> dict:
@@ -114,7 +146,8 @@ def check_step(m: Machine, written: list[dict], read_back: list[dict]) -> dict:
     by_part: dict[str, float] = {}
     for r in written:
         by_part[r["part"]] = by_part.get(r["part"], 0.0) + r["mass"]
-    designed = {i.name: i.mass for i in m.layout.items if i.mass}
+    # the stops' absorbers are drawn as the rings they act through (like the rails), not at their mass
+    designed = {i.name: i.mass for i in m.layout.items if i.mass and i.kind != "stop"}
     mass_error = {k: by_part.get(k, 0.0) / v - 1 for k, v in designed.items()}
     return {"solids": written, "names_read_back": sorted(back) == sorted(r["name"] for r in written),
             "max_volume_error": volume_error, "mass_error": mass_error,

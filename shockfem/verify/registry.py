@@ -17,7 +17,7 @@ from .metrics_cases import cfc_filter, pulse_shapes, rod_impact_metrics, srs_hal
 from .modal_cases import circular_plate, modal_rod, nafems_fv12
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
-from .machine_cases import machine_geometry
+from .machine_cases import direct_striker, machine_energy, machine_geometry
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
@@ -93,6 +93,8 @@ CASES = {
     "launcher_model": launcher_model,
     "launcher_design": launcher_design,
     "machine_geometry": machine_geometry,
+    "machine_energy": machine_energy,
+    "direct_striker": direct_striker,
     "lsdyna_decks": lsdyna_decks,
     **HARD,
 }

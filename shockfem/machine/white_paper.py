@@ -1,0 +1,88 @@
+"""The white paper's sizing claims set beside the design, at the white paper's assumptions and at the
+design's measured restitution.
+
+The claims (``compact-shock-tester-white-paper.md``): section 1.2, a 12 lb article (the chain's last mass)
+and four more masses give a rigid-body velocity change of 1600 ft/s at restitution 0.9, the first mass
+launched at 300-350 ft/s, the intermediate masses under 800 lb (under 4 ft^3 of steel), launched by a
+12 in x 6 ft gun at 2000 psi; a 30 lb flying target at 1600 ft/s would need a gun about 90 ft long at the
+same pressure; task 3, Eq. 2, a gain of five with four or five masses at e = 0.9.
+
+Each is computed by the project's models: the masses by the closed form (``amplifier.gain.design``), the
+gains by Eq. 2 (``amplifier.gain.stack_gain``, the stack on an anvil it describes) and the launched chain's
+(``chain_gain``), the guns by the lumped gun (``launcher.gun.fire``, the white paper's gun as
+``white_paper_gun`` describes it: 20 ft^3 at 2000 psi, an 8 in valve opening in 2 ms) and the barrel a speed
+needs (``barrel_length_for``), with the simple-wave gun (an infinite chamber of the bore's section) as the
+gas-dynamic bound of any barrel at that pressure.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from ..amplifier.gain import chain_gain, design, stack_gain
+from ..launcher.gun import barrel_length_for, fire, white_paper_gun
+from ..scene.library import property_si
+from ..units import FT, LB
+
+CLAIM = {"article": 12 * LB, "masses": 5, "velocity_change": 1600 * FT, "launch": (300 * FT, 350 * FT),
+         "intermediate": 800 * LB, "volume": 4 * FT ** 3, "e": 0.9, "gain": 5.0, "target": 30 * LB,
+         "target_speed": 1600 * FT, "target_gun": 90 * FT}
+
+
+def _chain(last: float, speed: float, launch: float, e: float, n: int, rho: float) -> dict:
+    d = design("launched-chain", last, speed, launch, e, n)
+    if not d.feasible:
+        return {k: math.nan for k in ("first", "intermediate", "volume", "eq2_gain", "chain_gain", "R", "wp_gun_muzzle")}
+    mid = sum(d.masses[1:-1])
+    R = d.masses[-1] / d.masses[0]
+    return {"masses": d.masses, "first": d.masses[0], "intermediate": mid, "volume": mid / rho,
+            "eq2_gain": stack_gain(e, R, n), "chain_gain": chain_gain(e, R, n), "R": R,
+            "wp_gun_muzzle": fire(white_paper_gun(d.masses[0]), samples=2).muzzle_velocity}
+
+
+def claims(m) -> list[dict]:
+    """The white paper's claims against the design ``m`` (a ``design.Machine``): rows of (claim, the white
+    paper's figure, the project's models at the white paper's assumptions, at the design, at the design's
+    restitution), SI."""
+    rho = property_si(m.spec.material, "density", "density")
+    launch = m.spec.launch_speed
+    n = m.spec.masses
+    e_d = m.amplifier.restitution
+    wp = _chain(CLAIM["article"], CLAIM["velocity_change"], launch, CLAIM["e"], n, rho)
+    striker, V = m.fixture.striker_mass, m.fixture.striker_speed
+    at_09 = _chain(striker, V, launch, CLAIM["e"], n, rho)
+    at_e = _chain(striker, V, launch, e_d, n, rho)
+    rows = [
+        {"claim": "intermediate masses (section 1.2) [kg]", "white_paper": CLAIM["intermediate"],
+         "wp_assumptions": wp.get("intermediate"), "design_at_0.9": at_09.get("intermediate"),
+         "design": at_e.get("intermediate"),
+         "note": "the white paper's last mass is the 12 lb article; the design's is the striker (the dashpot's "
+                 f"housing, {striker:.3g} kg at {V:.1f} m/s), {striker / CLAIM['article']:.3g} times heavier"},
+        {"claim": "their volume of steel [m^3]", "white_paper": CLAIM["volume"], "wp_assumptions": wp.get("volume"),
+         "design_at_0.9": at_09.get("volume"), "design": at_e.get("volume"), "note": f"at {rho:g} kg/m^3"},
+        {"claim": "first mass [kg]", "white_paper": math.nan, "wp_assumptions": wp.get("first"),
+         "design_at_0.9": at_09.get("first"), "design": m.amplifier.masses[0],
+         "note": f"launched at {launch / FT:.0f} ft/s (the white paper: 300-350)"},
+        {"claim": "Eq. 2 gain (a stack on an anvil) at the chain's mass ratio [-]", "white_paper": CLAIM["gain"],
+         "wp_assumptions": wp.get("eq2_gain"), "design_at_0.9": at_09.get("eq2_gain"), "design": at_e.get("eq2_gain"),
+         "note": "(1 + e)^n / (1 + R^(1/(n-1)))^(n-1) - 1, R the smallest over the largest mass"},
+        {"claim": "launched-chain gain at that ratio [-]", "white_paper": CLAIM["gain"],
+         "wp_assumptions": wp.get("chain_gain"), "design_at_0.9": at_09.get("chain_gain"),
+         "design": m.amplifier.gain_1d, "note": "the design column: the 1D padded chain's own gain"},
+        {"claim": "the white paper's 12 in x 6 ft gun at 2000 psi: first mass's muzzle speed [m/s]",
+         "white_paper": 325 * FT, "wp_assumptions": wp.get("wp_gun_muzzle"), "design_at_0.9": at_09.get("wp_gun_muzzle"),
+         "design": fire(white_paper_gun(m.amplifier.masses[0]), samples=2).muzzle_velocity,
+         "note": f"the design's own gun: {m.launcher.design.gun.bore / 0.0254:.3g} in x "
+                 f"{m.launcher.design.gun.length / FT:.3g} ft at {m.launcher.design.gun.reservoir_pressure / 6894.76:,.0f} psi"},
+    ]
+    g = white_paper_gun(CLAIM["target"])
+    lumped = barrel_length_for(g, CLAIM["target_speed"])
+    wave = barrel_length_for(dataclasses.replace(g, gas_inertia="simple-wave"), CLAIM["target_speed"])
+    rows.append({"claim": "barrel for a 30 lb flying target at 1600 ft/s, 12 in at 2000 psi [m]",
+                 "white_paper": CLAIM["target_gun"], "wp_assumptions": lumped, "design_at_0.9": math.nan,
+                 "design": math.nan,
+                 "note": f"the lumped gun with the white paper's 20 ft^3 tank and valve; a straight infinite chamber "
+                         f"of the bore's section (the simple-wave gun, no chambrage) needs {wave / FT:.3g} ft"
+                 if math.isfinite(wave) else "the lumped gun with the white paper's tank and valve; a straight "
+                                             "infinite chamber of the bore's section never reaches it"})
+    return rows
