@@ -343,7 +343,7 @@ class Measured:
         return asdict(self)
 
 
-def _parted(history: dict, names: list[str]) -> bool:
+def parted(history: dict, names: list[str]) -> bool:
     """No contact force over the last tenth of the record."""
     n = len(history["time"])
     return all(abs(history[f"contact.{c}.normal_z"][-max(n // 10, 2):]).max() == 0.0 for c in names)
@@ -385,7 +385,7 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
         s = res.summary
         h = read_history_csv(os.path.join(out_dir, "history.csv"))
         names = [c["name"] for c in raw["contact"]]
-        if _parted(h, names) or attempt:
+        if parted(h, names) or attempt:
             break
         raw["scene"]["end_time"] *= 2
         raw["outputs"] = {"field_interval": raw["scene"]["end_time"], "history_interval": raw["scene"]["end_time"] / 400}
@@ -399,7 +399,7 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
     return Measured((v_a - v_b) / iface.speed, out_dir, s["wall_time_s"], s["elements"], s["steps"],
                     s["energy"]["balance_error"], force / iface.face_area,
                     {b: bodies[b]["max_von_mises"] / Y for b in ("a", "b")},
-                    bodies["pad"]["plastic_work"] if "pad" in bodies else 0.0, _parted(h, names),
+                    bodies["pad"]["plastic_work"] if "pad" in bodies else 0.0, parted(h, names),
                     {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution},
                     note=f"about {work:.2g} cells x steps estimated")
 
