@@ -5,11 +5,12 @@ An interface is the two bodies of one collision (their masses, diameters and len
 them) closing at dv; its reduced mass M* = m_a m_b / (m_a + m_b) brings the energy W = M* dv^2 / 2 to
 the pad at its largest compression (rigid bodies; the bodies' own waves take a little of it).
 
-Sizing (``size_pad``), each pad as large across as the smaller face allows:
+Sizing (``size_pad``), each pad as large across as the smaller face allows (an elastomer no thinner than
+MIN_HEIGHT of its diameter):
 
 * elastomer disc: compressed, faces free to slide (uniaxial), Neo-Hookean (G = E / 3) to the largest
   strain at which both the working stress and the working strain hold; its volume stores W there,
-  V = W / w(strain), so its thickness is V / A;
+  V = W / w(strain), as wide as the face unless that makes it thinner than a quarter of its diameter;
 * yielding-metal disc: crushed to its working strain, spreading to the face's diameter there; its
   volume absorbs W as plastic work, V = W / w_p(strain);
 * crowned steel face: the crown whose contact radius at the Hertz yield onset is half the face's radius
@@ -57,6 +58,13 @@ CROWN_CONTACT = 0.5
 GAP = 1e-3
 # mesh resolutions: steel cells across a body's diameter, pad cells through its thickness
 RESOLUTIONS = {"smoke": (4, 2), "coarse": (8, 4), "default": (16, 8)}
+# an elastomer pad's least height over its diameter: its shape factor d / (4 t) at most 1, where a disc
+# whose faces slide is near uniaxial (the sizing's model); thinner, the faces' friction holds its rim and
+# stiffens it by up to (1 + 2 S^2) (bonded, Gent, Engineering with Rubber, ch. 8; check), and in the runs
+# a 2 mm pad on an 87 mm face squeezed out and went unstable
+MIN_HEIGHT = 0.25
+# a steel face's cells over the pad's, at most
+FACE_CELLS = 4
 # significant figures the cache (and the run) rounds an interface's inputs to
 FIGURES = 3
 # the largest run (cells times steps, as ``run_work`` estimates them) an interface gets, about 100 s on one
@@ -159,20 +167,27 @@ def _common_limits(iface: Interface, mat: PadMaterial, mass: float, force: float
                   "the chain's range of validity: its masses are the steel bodies', the pads left out")]
 
 
+def _working_strain(mat: PadMaterial, G: float) -> float:
+    """The largest strain inside both working limits (the stress rises monotonically with the strain)."""
+    strain = mat.working_strain
+    if neo_hookean_stress(G, strain) <= mat.working_stress:
+        return strain
+    lo, hi = 0.0, strain
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if neo_hookean_stress(G, mid) < mat.working_stress else (lo, mid)
+    return lo
+
+
 def _elastomer(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
     G = mat.youngs_modulus / 3
-    d = iface.face_diameter
-    area = math.pi * d * d / 4
-    # the largest strain inside both working limits (the stress rises monotonically with the strain)
-    strain = mat.working_strain
-    if neo_hookean_stress(G, strain) > mat.working_stress:
-        lo, hi = 0.0, strain
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (mid, hi) if neo_hookean_stress(G, mid) < mat.working_stress else (lo, mid)
-        strain = lo
+    strain = _working_strain(mat, G)
     w = neo_hookean_energy(G, strain)
-    t = iface.energy / (w * area)
+    # as wide as the face, or narrower where that would make it thinner than MIN_HEIGHT of its diameter
+    volume = iface.energy / w
+    d = min(iface.face_diameter, (4 * volume / (math.pi * MIN_HEIGHT)) ** (1 / 3))
+    area = math.pi * d * d / 4
+    t = volume / area
     mass = mat.density * area * t
     force = neo_hookean_stress(G, strain) * area
     k = force / (strain * t)
@@ -278,10 +293,14 @@ def interface_scene(iface: Interface, pad: PadDesign, resolution: str = "coarse"
     mat = pad_material(pad.material)
     padded = mat.kind in ("elastomer", "yielding metal")
     t = pad.thickness if padded else 0.0
+    h_pad = min(t / through, pad.diameter / across) if padded else math.inf
 
     def steel_body(name, d, L, z, v, crown=0.0):
+        # a face's cells at most FACE_CELLS of the pad's: a thin pad's nodes on a coarse steel face make
+        # the penalty contact unstable (a 2 mm pad on 27 mm cells created energy)
+        h = min(min(d, L) / across, FACE_CELLS * h_pad)
         b = {"name": name, "material": f"steel_{name}", "shape": "cylinder", "radius": d / 2, "length": L,
-             "element_size": min(d, L) / across, "position": [0.0, z], "velocity": [0.0, v],
+             "element_size": h, "position": [0.0, z], "velocity": [0.0, v],
              "damping": _band(STRUCTURAL_DAMPING, c0 / (2 * L))}
         if crown:
             b["bottom_crown"] = crown
@@ -299,7 +318,7 @@ def interface_scene(iface: Interface, pad: PadDesign, resolution: str = "coarse"
     if padded:
         materials["pad"] = mat.scene_material()
         p = {"name": "pad", "material": "pad", "shape": "cylinder", "radius": pad.diameter / 2, "length": t,
-             "element_size": min(t / through, pad.diameter / across), "position": [0.0, iface.struck_length]}
+             "element_size": h_pad, "position": [0.0, iface.struck_length]}
         if mat.kind == "elastomer":
             # its hysteresis over the band of its contact's frequencies (1 / (2 T) at its centre); a rubber's
             # band takes its moduli static (``scene.damping.check_band_laws``)

@@ -41,6 +41,15 @@ from .checks import check
 STEEL = "high_strength_steel"
 
 
+def _run_checks(name: str, reference: float, m, tolerance: float) -> list[dict]:
+    """A pad run's restitution against ``reference``, that its faces parted, and its energy balance (1%)."""
+    case = name.split(".")[0]
+    return [check(f"{name} [-]", reference, m.restitution, tolerance, m.wall_time_s, m.elements),
+            check(f"{case}.faces_parted [count]", 1, int(m.parted), 0.0, m.wall_time_s, m.elements, absolute=True),
+            check(f"{case}.energy_balance [-, abs]", 0.0, m.energy_balance_error, 0.01, m.wall_time_s, m.elements,
+                  absolute=True)]
+
+
 def pad_bars(size, workdir):
     """A bare flat interface of two equal-impedance rods (L 0.1 / 0.2 m, D 20 mm, 5 m/s): FE against 1D bars."""
     d, La, Lb, v = 0.02, 0.1, 0.2, 5.0
@@ -57,10 +66,7 @@ def pad_bars(size, workdir):
                  damping_reference=[None, None])
     v_a, v_b = r.history["a.v_z"][-1], r.history["b.v_z"][-1]
     e_1d = (v_b - v_a) / v
-    out = [check("pad_bars.restitution_vs_1d_bars [-]", e_1d, m.restitution, 0.03, m.wall_time_s, m.elements),
-           check("pad_bars.faces_parted [count]", 1, int(m.parted), 0.0, m.wall_time_s, m.elements, absolute=True),
-           check("pad_bars.energy_balance [-, abs]", 0.0, m.energy_balance_error, 0.01, m.wall_time_s, m.elements,
-                 absolute=True)]
+    out = _run_checks("pad_bars.restitution_vs_1d_bars", e_1d, m, 0.03)
     out[0]["note"] = (f"St Venant (undamped) L_a / L_b = {La / Lb:g}; the 1D bars with the band damping "
                       f"{e_1d:.4f}, the axisymmetric run {m.restitution:.4f}")
     return out
@@ -87,11 +93,7 @@ def pad_rigid(size, workdir):
     # with the mesh; the rest is the band's Maxwell terms, whose memory lets the pad go otherwise than a
     # Kelvin-Voigt dashpot of the same ratio, and their 2% ripple (``materials.band_damping.RIPPLE``).  A
     # lost hysteresis gives e near 1, a doubled ratio about 0.4
-    out = [check("pad_rigid.restitution_vs_rigid_pad [-]", e_rigid, m.restitution, 0.06, m.wall_time_s,
-                 m.elements),
-           check("pad_rigid.faces_parted [count]", 1, int(m.parted), 0.0, m.wall_time_s, m.elements, absolute=True),
-           check("pad_rigid.energy_balance [-, abs]", 0.0, m.energy_balance_error, 0.01, m.wall_time_s, m.elements,
-                 absolute=True)]
+    out = _run_checks("pad_rigid.restitution_vs_rigid_pad", e_rigid, m, 0.06)
     out[0]["note"] = (f"zeta = {mat.damping_ratio():.4f} from the rebound resilience {mat.resilience:g}; "
                       f"rigid masses {e_rigid:.4f}, finite elements {m.restitution:.4f}")
     return out

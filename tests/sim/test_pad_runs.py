@@ -35,14 +35,17 @@ def test_small_chain_takes_polyurethane_inside_its_limits(chain):
         assert {"stress", "strain", "stored energy per volume", "temperature rise a shot", "slenderness",
                 "stress (FE, von Mises)"} <= quantities
         # light, compact pads between compact masses restitute about as rigid masses on the pad's
-        # spring-dashpot (sqrt of the rebound resilience, 0.671 for 90A): the smoke meshes' runs put them
-        # within 10% of it (``verify pad_rigid`` checks a thin pad at 5%); a lost damping or a pad that
-        # bottoms out moves it by far more
+        # spring-dashpot (sqrt of the rebound resilience, 0.671 for 90A): the smoke meshes' runs (2 cells
+        # through the 10 mm pads) measured 0.6981 and 0.6977, 4.0% above it; 10% allows the mesh
+        # (``verify pad_rigid`` checks a pad at coarse size within 6%); a lost damping (e near 1) or a pad
+        # that bottoms out (steel on steel) moves it by far more
         assert st.restitution == pytest.approx(math.sqrt(0.45), rel=0.10), st.restitution
     gain = _chain_gain(spec, masses, bodies, [st.restitution for st in stages])
-    # a rigid three-mass chain of halving masses gains ((1 + e) / 1.5)^2 on its first pass
+    # a rigid three-mass chain of halving masses gains (1 + e_1) (1 + e_2) / 1.5^2 on its first pass, and
+    # this one has no later collision (measured equal to 2e-8: the two restitutions are close, so their
+    # mean's square differs from their product by (e_1 - e_2)^2 / 4, 1e-7)
     e = sum(st.restitution for st in stages) / 2
-    assert gain == pytest.approx(((1 + e) / 1.5) ** 2, rel=0.05)
+    assert gain == pytest.approx(((1 + e) / 1.5) ** 2, rel=1e-6)
 
 
 def test_the_cache_answers_the_same_interface_again(chain):
