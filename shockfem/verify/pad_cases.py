@@ -89,10 +89,10 @@ def pad_rigid(size, workdir):
     resolution = {"coarse": "coarse", "default": "default", "fine": "default"}[size]
     m = measure_restitution(iface, pad, os.path.join(workdir, "pad_rigid"), resolution)
     e_rigid = rigid.pad_restitution(mat.damping_ratio())
-    # 6%: measured 5.1% low at coarse size (0.6004 against 0.6325) and 3.7% at the default (0.6090), rising
-    # with the mesh; the rest is the band's Maxwell terms, whose memory lets the pad go otherwise than a
-    # Kelvin-Voigt dashpot of the same ratio, and their 2% ripple (``materials.band_damping.RIPPLE``).  A
-    # lost hysteresis gives e near 1, a doubled ratio about 0.4
+    # 6%: measured 4.6% above at coarse size (0.6615 against 0.6325) and 4.5% at the default (0.6610):
+    # converged, the difference the band's Maxwell terms, whose memory lets the pad go otherwise than a
+    # Kelvin-Voigt dashpot of the same ratio would, and their 2% ripple (``materials.band_damping.RIPPLE``).
+    # A lost hysteresis gives e near 1, a doubled ratio about 0.4
     out = _run_checks("pad_rigid.restitution_vs_rigid_pad", e_rigid, m, 0.06)
     out[0]["note"] = (f"zeta = {mat.damping_ratio():.4f} from the rebound resilience {mat.resilience:g}; "
                       f"rigid masses {e_rigid:.4f}, finite elements {m.restitution:.4f}")
