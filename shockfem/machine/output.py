@@ -27,7 +27,8 @@ def summary_lines(m: Machine) -> list[str]:
         f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band "
         f"{'pass' if f.band_passed else 'FAIL'}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
         f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; pads "
-        + ", ".join(f"{st.pad_material} (e {st.restitution:.3f})" for st in a.stages) + f" (finite elements); "
+        + ", ".join(f"{st.pad_material} (e {st.restitution:.3f}{'' if st.measured else ', estimate'})"
+                    for st in a.stages) + " (finite elements); "
         f"effective e {a.restitution:.4f}; the rigid chain of them gives the striker {a.striker_speed:.4g} m/s",
         f"  launcher: bore {g.bore / IN:.3g} in, barrel {g.length / FT:.3g} ft, {g.reservoir_volume:.3g} m^3 at "
         f"{g.reservoir_pressure / PSI:,.0f} psi ({g.gas}, {L.gas_mass:.4g} kg); barrel and tank {L.design.weight:,.0f} kg",
@@ -69,8 +70,10 @@ def markdown(m: Machine) -> str:
                       "FE interface stress [MPa]", "FE run [s]", "broken limits"],
                      [[st.pair, f"{st.closing_speed:.1f}", f"{gap:.3f}", st.pad_material, f"{st.pad_diameter * 1e3:.0f}",
                        f"{st.pad_thickness * 1e3:.0f}", f"{st.pad_mass:,.1f}", f"{st.pad_travel * 1e3:.0f}",
-                       f"{st.pad_energy / 1e3:,.0f}", f"{st.restitution:.3f}", f"{st.interface_stress / 1e6:.0f}",
-                       f"{st.run_wall_time_s:.3g}",
+                       f"{st.pad_energy / 1e3:,.0f}",
+                       f"{st.restitution:.3f}" + ("" if st.measured else " (estimate: not run)"),
+                       f"{st.interface_stress / 1e6:.0f}" if st.measured else "-",
+                       f"{st.run_wall_time_s:.3g}" if st.measured else "-",
                        "; ".join(f"{lim.quantity} {lim.ratio:.3g}x" for lim in st.limits if not lim.holds) or "none"]
                       for st, gap in zip(a.stages, a.gaps)])]
     parts += ["", "Pad limits (each stage):", "",

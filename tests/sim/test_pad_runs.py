@@ -2,12 +2,13 @@
 (``shockfem/machine/amplifier.py``), at smoke size: a three-mass chain small enough for polyurethane pads
 to hold every limit."""
 import dataclasses
+import json
 import math
 
 import pytest
 
 from shockfem.amplifier.gain import cylinder_size
-from shockfem.machine.amplifier import _chain_gain, _measure
+from shockfem.machine.amplifier import _amplifier, _chain_gain, _measure
 from shockfem.machine.pads import RunCache
 from shockfem.machine.spec import read_spec
 
@@ -55,3 +56,15 @@ def test_the_cache_answers_the_same_interface_again(chain):
     assert cache.hits == 2 and cache.misses == 0
     assert [st.restitution for st in again] == [st.restitution for st in stages]
     assert [st.run for st in again] == [st.run for st in stages]
+
+
+def test_the_amplifier_carries_every_stage_limit(chain):
+    """``Amplifier.limits``: every stage's limits, in order, and the JSON of the design names each one's ratio."""
+    spec, masses, bodies, stages, _, cache = chain
+    gain = _chain_gain(spec, masses, bodies, [st.restitution for st in stages])
+    amp = _amplifier(spec, (masses, bodies, stages, gain), 0.6, [], gain * spec.launch_speed, 690e6, cache, 0.0)
+    assert amp.limits == [lim for st in stages for lim in st.limits]
+    assert amp.feasible and amp.reason == ""
+    raw = json.loads(json.dumps(amp.as_dict()))
+    assert [lim["ratio"] for lim in raw["limits"]] == pytest.approx([lim.ratio for lim in amp.limits], rel=1e-12)
+    assert raw["restitutions"] == [st.restitution for st in stages]
