@@ -68,7 +68,8 @@ def markdown(m: Machine) -> str:
               _table(["stage", "closing speed [m/s]", "gap before the pad [m]", "pad", "diameter [mm]",
                       "thickness [mm]", "mass [kg]", "travel [mm]", "energy [kJ]", "restitution (FE) [-]",
                       "FE interface stress [MPa]", "FE run [s]", "broken limits"],
-                     [[st.pair, f"{st.closing_speed:.1f}", f"{gap:.3f}", st.pad_material, f"{st.pad_diameter * 1e3:.0f}",
+                     [[st.pair, f"{st.closing_speed:.1f}", f"{gap:.3f}", st.pad_material,
+                       f"{st.pad_diameter * 1e3:.0f}",
                        f"{st.pad_thickness * 1e3:.0f}", f"{st.pad_mass:,.1f}", f"{st.pad_travel * 1e3:.0f}",
                        f"{st.pad_energy / 1e3:,.0f}",
                        f"{st.restitution:.3f}" + ("" if st.measured else " (estimate: not run)"),
@@ -78,7 +79,8 @@ def markdown(m: Machine) -> str:
                       for st, gap in zip(a.stages, a.gaps)])]
     parts += ["", "Pad limits (each stage):", "",
               _table(["part", "quantity", "value", "limit", "unit", "ratio", "basis", "source"],
-                     [[lim.component, lim.quantity, f"{lim.value:.4g}", f"{lim.limit:.4g}", lim.unit, f"{lim.ratio:.3g}",
+                     [[lim.component, lim.quantity, f"{lim.value:.4g}", f"{lim.limit:.4g}", lim.unit,
+                       f"{lim.ratio:.3g}",
                        lim.basis, lim.source] for lim in a.limits])]
     parts += ["", "The other pad materials at each stage (worst limit ratio; sized, not run):", "",
               _table(["stage"] + [alt["material"] for alt in (a.stages[0].alternatives if a.stages else [])],

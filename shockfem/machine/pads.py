@@ -407,7 +407,8 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
         if parted(h, names) or attempt:
             break
         raw["scene"]["end_time"] *= 2
-        raw["outputs"] = {"field_interval": raw["scene"]["end_time"], "history_interval": raw["scene"]["end_time"] / 400}
+        end = raw["scene"]["end_time"]
+        raw["outputs"] = {"field_interval": end, "history_interval": end / 400}
     bodies = s["bodies"]
     v_a = bodies["a"]["velocity_final"][-1]
     struck = [b for b in ("b", "pad") if b in bodies]

@@ -112,7 +112,8 @@ def _sphere_on_flat(speed, radius, material, size, workdir):
     h = 0.001 * {"coarse": 2.0, "default": 1.0, "fine": 0.5}[size]
     a = (4 * radius * 0.5 * material["density"] * 4 / 3 * math.pi * radius ** 3 * speed ** 2
          / (math.pi * 3 * material["yield_stress"])) ** 0.25
-    contact = 4 * a * a / (2 * radius) / speed + 4 * radius / math.sqrt(material["youngs_modulus"] / material["density"])
+    c0 = math.sqrt(material["youngs_modulus"] / material["density"])
+    contact = 4 * a * a / (2 * radius) / speed + 4 * radius / c0
     raw = {"scene": {"name": f"johnson_{speed:g}", "kinematics": "axisymmetric", "end_time": contact},
            "materials": {"ball": material},
            "bodies": [{"name": "ball", "material": "ball", "shape": "sphere", "radius": radius, "element_size": h,
