@@ -12,12 +12,8 @@
   that never pulls at the pad's damping ratio (``amplifier.rigid.pad_restitution``).
 * ``pad_johnson``: an elastic-perfectly-plastic steel sphere on a rigid flat, far above its yield speed:
   Johnson's estimate (Contact Mechanics, 1985, sec. 11.5) of a fully plastic loading at the mean pressure
-  p_m = 3 Y and a Hertzian elastic unloading,
-
-      e^2 = (6 pi / 5) (p_m / E*) R / a,   a^4 = 4 R W / (pi p_m),   W = m V^2 / 2,
-
-  that is e = C (Y / E*)^(1/2) (W / (Y R^3))^(-1/8) with C = (18 pi / 5)^(1/2) (3 pi / 4)^(1/8) = 3.74
-  (derived here; Johnson prints 3.8, check), falling as V^(-1/4).  The exponent is the law's firm part
+  p_m = 3 Y and a Hertzian elastic unloading (``amplifier.interfaces.plastic_restitution``: the constant
+  3.74 derived from those two steps, which Johnson prints as 3.8), falling as V^(-1/4).  The exponent is the law's firm part
   (checked between 5 and 10 m/s); the constant rests on p_m = 3 Y, which Tabor's measured hardness puts
   at 2.8 to 3 Y, and on an unloading that leaves pile-up out.
 """
@@ -29,6 +25,7 @@ from dataclasses import replace
 
 from ..amplifier import rigid
 from ..amplifier.bars import Bar, Interface as BarInterface, run_bars
+from ..amplifier.interfaces import plastic_restitution
 from ..machine.pad_materials import pad_material
 from ..machine.pads import (DAMPING_BAND, STRUCTURAL_DAMPING, Interface, RunCache, measure_restitution, parted,
                             size_pad)
@@ -99,15 +96,6 @@ def pad_rigid(size, workdir):
     return out
 
 
-def johnson_restitution(speed: float, radius: float, rho: float, E: float, nu: float, Y: float) -> float:
-    """Johnson's fully plastic restitution of a sphere on a rigid flat (module docstring), p_m = 3 Y."""
-    e_star = E / (1 - nu * nu)
-    p_m = 3.0 * Y
-    W = 0.5 * rho * 4 / 3 * math.pi * radius ** 3 * speed ** 2
-    a = (4 * radius * W / (math.pi * p_m)) ** 0.25
-    return math.sqrt(6 * math.pi / 5 * p_m / e_star * radius / a)
-
-
 def _sphere_on_flat(speed, radius, material, size, workdir):
     h = 0.001 * {"coarse": 2.0, "default": 1.0, "fine": 0.5}[size]
     a = (4 * radius * 0.5 * material["density"] * 4 / 3 * math.pi * radius ** 3 * speed ** 2
@@ -137,8 +125,8 @@ def pad_johnson(size, workdir):
     material = {"density": 7850.0, "youngs_modulus": 210e9, "poisson_ratio": 0.3, "yield_stress": 1e9,
                 "tangent_modulus": 0.0}
     runs = {v: _sphere_on_flat(v, radius, material, size, workdir) for v in (5.0, 10.0)}
-    args = (radius, material["density"], material["youngs_modulus"], material["poisson_ratio"],
-            material["yield_stress"])
+    m = material["density"] * 4 / 3 * math.pi * radius ** 3
+    e_star = material["youngs_modulus"] / (1 - material["poisson_ratio"] ** 2)      # on a rigid flat
     out = []
     wall = sum(s["wall_time_s"] for _, s in runs.values())
     cells = runs[5.0][1]["elements"]
@@ -147,8 +135,8 @@ def pad_johnson(size, workdir):
         # 14 to 16% below the closed form, whose constant is an estimate: a mean pressure of 3 Y throughout
         # (Tabor's hardness: 2.8 to 3 Y; e goes as p_m^(5/8)), no elastic share of the loading, a Hertzian
         # unloading of the truncated sphere.  A yield stress off by 2 moves e by 54%, no plasticity to about 1
-        out.append(check(f"pad_johnson.V={v:g}.restitution [-]", johnson_restitution(v, *args), e, 0.20,
-                         s["wall_time_s"], s["elements"]))
+        johnson = plastic_restitution(v, m, radius, e_star, material["yield_stress"])
+        out.append(check(f"pad_johnson.V={v:g}.restitution [-]", johnson, e, 0.20, s["wall_time_s"], s["elements"]))
     slope = math.log(runs[10.0][0] / runs[5.0][0]) / math.log(2.0)
     # 0.05 on the exponent -1/4: between 5 and 10 m/s the elastic share of the loading (V_y / V)^(1/2) is
     # about 8%, which moves the local exponent by a few hundredths

@@ -127,3 +127,17 @@ def test_run_cache_keys_round_the_interface(tmp_path):
     pads = [size_pad(i.rounded(), "pu_95a", 0.6) for i in (FIRST, near)]
     assert cache.key(FIRST.rounded(), pads[0], "smoke") == cache.key(near.rounded(), pads[1], "smoke")
     assert cache.key(FIRST.rounded(), pads[0], "smoke") != cache.key(FIRST.rounded(), pads[0], "coarse")
+
+
+def test_plastic_restitution_is_johnsons_law():
+    """Johnson's form e = C (Y / E*)^(1/2) (W / (Y R^3))^(-1/8), C = (18 pi / 5)^(1/2) (3 pi / 4)^(1/8), from the
+    two steps it is derived from (to round-off), and its V^(-1/4)."""
+    from shockfem.amplifier.interfaces import plastic_restitution
+    m, R, E_star, Y, v = 0.0329, 0.01, 2.3e11, 1e9, 5.0
+    C = math.sqrt(18 * math.pi / 5) * (3 * math.pi / 4) ** 0.125
+    assert C == pytest.approx(3.74, abs=0.005)
+    W = 0.5 * m * v * v
+    assert plastic_restitution(v, m, R, E_star, Y) == pytest.approx(
+        C * math.sqrt(Y / E_star) * (W / (Y * R ** 3)) ** -0.125, rel=1e-12)
+    assert plastic_restitution(2 * v, m, R, E_star, Y) / plastic_restitution(v, m, R, E_star, Y) == pytest.approx(
+        2 ** -0.25, rel=1e-12)
