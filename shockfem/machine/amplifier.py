@@ -5,10 +5,12 @@ The masses are the closed form's (``amplifier.gain.design``: geometric ratios, t
 effective restitution e.  For each interface (the two bodies at their sizes, closing at the rigid
 chain's first-pass speed) every pad material of the library (``pad_materials``) is sized within its
 limits (``pads.size_pad``); the pad chosen is the one with the highest restitution estimate among those
-that keep every limit, or, when none does, the best-restituting elastomer (a crushed metal disc or
-bare steel returns too little of the energy for any gain: at e = 0.3, five masses give 2.9 at most),
-carried with its broken limits.  Each chosen interface then runs in finite elements (``pads.RunCache``,
-cached), which gives its restitution; the rigid chain of those restitutions, every collision
+that keep every limit, or, when none does, the elastomer that breaks its limits least (a crushed metal
+disc or bare steel returns too little of the energy for any gain: at e = 0.3, five masses give 2.9 at
+most), carried with its broken limits.  Each chosen interface then runs in finite elements
+(``pads.RunCache``, cached), which gives its restitution (a run past ``pads.MAX_WORK`` is not made: its
+pad, many times past its slenderness, keeps its material's estimate, ``Stage.measured`` False); the rigid
+chain of those restitutions, every collision
 followed (``amplifier.rigid.run_chain``), gives the gain, the gain the effective e (the one e with
 which the rigid chain of these masses gains as much), and the masses are designed again at that e
 until it settles (E_TOL) or the gain cannot be had with the masses given.
