@@ -56,8 +56,11 @@ PAD_MASS_SHARE = 0.1
 CROWN_CONTACT = 0.5
 # the gap the striker closes before it meets the pad [m]
 GAP = 1e-3
-# mesh resolutions: steel cells across a body's diameter, pad cells through its thickness
+# mesh resolutions: steel cells across a body's diameter, pad cells through its thickness; ESTIMATE runs
+# nothing and keeps each material's estimate (a study's quickest size: its pads are sized and checked,
+# their restitutions not measured)
 RESOLUTIONS = {"smoke": (4, 2), "coarse": (8, 4), "default": (16, 8)}
+ESTIMATE = "estimate"
 # an elastomer pad's least height over its diameter: its shape factor d / (4 t) at most 1, where a disc
 # whose faces slide is near uniaxial (the sizing's model); thinner, the faces' friction holds its rim and
 # stiffens it by up to (1 + 2 S^2) (bonded, Gent, Engineering with Rubber, ch. 8; check), and in the runs
@@ -392,13 +395,16 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
     faces have not parted at its end runs again twice as long, once."""
     from ..output.history_file import read_history_csv
     from ..runner import run_scene
+    def estimate(note: str) -> Measured:
+        return Measured(estimated_restitution(pad.material), "", 0.0, 0, 0, 0.0, math.nan, {}, 0.0, False,
+                        {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution}, note=note)
+    if resolution == ESTIMATE:
+        return estimate("not run (pad resolution 'estimate'): the material's estimate")
     raw = interface_scene(iface, pad, resolution)
     work = run_work(raw)
     if work > MAX_WORK:
-        return Measured(estimated_restitution(pad.material), "", 0.0, 0, 0, 0.0, math.nan, {}, 0.0, False,
-                        {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution},
-                        note=f"not run: about {work:.2g} cells x steps, over the {MAX_WORK:.0e} a pad run gets; "
-                             f"the material's estimate kept")
+        return estimate(f"not run: about {work:.2g} cells x steps, over the {MAX_WORK:.0e} a pad run gets; "
+                        f"the material's estimate kept")
     for attempt in range(2):
         res = run_scene(resolve(raw), out_dir, progress=False, write_fields=False, quiet=True)
         s = res.summary

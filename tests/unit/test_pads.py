@@ -141,3 +141,10 @@ def test_plastic_restitution_is_johnsons_law():
         C * math.sqrt(Y / E_star) * (W / (Y * R ** 3)) ** -0.125, rel=1e-12)
     assert plastic_restitution(2 * v, m, R, E_star, Y) / plastic_restitution(v, m, R, E_star, Y) == pytest.approx(
         2 ** -0.25, rel=1e-12)
+
+
+def test_estimate_resolution_runs_nothing(tmp_path):
+    """Pad resolution "estimate": the material's estimate, sqrt(R) for an elastomer, no run directory."""
+    m, pad = RunCache(str(tmp_path)).measure(SMALL, "pu_95a", "estimate")
+    assert not m.ran and m.restitution == pytest.approx(math.sqrt(0.40), rel=1e-12)
+    assert "estimate" in m.note and list(tmp_path.iterdir()) == [tmp_path / "pad_runs.json"]
