@@ -8,6 +8,10 @@ closing speed dv), used by the chain's rigid fidelity and by the study:
 * a crowned face (radius R on a flat, Hertz): the closing speed at which the material first
   yields, where the peak pressure p0 reaches 1.6 Y (Johnson, Contact Mechanics, 1985, sec. 6.2
   and 11.4);
+* a crowned face far above that speed (fully plastic): Johnson's restitution (Contact Mechanics,
+  sec. 11.5), a loading at the mean pressure p_m = 3 Y and a Hertzian elastic unloading,
+  e = C (Y / E*)^(1/2) (W / (Y R^3))^(-1/8), W = M* dv^2 / 2, C = (18 pi / 5)^(1/2) (3 pi / 4)^(1/8)
+  = 3.74 (derived from those two steps; Johnson prints 3.8: check), falling as dv^(-1/4);
 * a pad (linear spring k between the faces, bodies rigid): the peak force dv sqrt(k M*), and
   the stiffness that keeps it at a given force, with the pad's travel, stored energy and contact
   duration pi sqrt(M* / k).
@@ -66,3 +70,14 @@ def hertz_yield_speed(m_star: float, radius: float, e_star: float, yield_stress:
     delta = a * a / radius
     energy = 8 / 15 * e_star * math.sqrt(radius) * delta ** 2.5
     return math.sqrt(2 * energy / m_star)
+
+
+def plastic_restitution(dv: float, m_star: float, radius: float, e_star: float, yield_stress: float) -> float:
+    """Restitution of a crowned face of ``radius`` [m] (or a sphere) struck fully plastically at closing
+    speed dv [m/s] (module docstring): the energy W = M* dv^2 / 2 indents it at p_m = 3 Y to the contact
+    radius a, a^4 = 4 R W / (pi p_m) (a^2 = 2 R delta, the truncated sphere), and the Hertzian unloading
+    of that contact returns (3 pi^2 / 10) p_m^2 a^3 / E*, so e^2 = (6 pi / 5) (p_m / E*) R / a.  Valid far
+    above the yield onset (``hertz_yield_speed``), where the elastic share of the loading is small."""
+    p_m = 3.0 * yield_stress
+    a = (4 * radius * 0.5 * m_star * dv * dv / (math.pi * p_m)) ** 0.25
+    return math.sqrt(6 * math.pi / 5 * p_m / e_star * radius / a)

@@ -1,35 +1,51 @@
-"""The velocity amplifier that brings the striker (the fixture's housing) to its speed, with the
-restitution its own 1D model gives, not an assumed one.
+"""The velocity amplifier that brings the striker (the fixture's housing) to its speed, on pads of real
+materials whose restitutions its own finite-element runs measure.
 
-The masses are the closed form's (``amplifier.gain.design``: geometric ratios, the striker last) at a
-restitution e.  Every struck face carries a pad that holds the face stress at the allowable (yield / safety factor)
-(``amplifier.interfaces.pad_for_force`` on the rigid chain's closing speeds, as the amplifier study
-sizes them, section 6), the gaps let each stage end before the next begins.  The padded chain then
-runs in the ``1d`` fidelity (``amplifier.bars``: elastic bars, waves, the pads as springs, 2%
-structural damping), its gain gives the effective restitution (the one e with which the rigid chain of
-these masses gains as much), and the masses are designed again at that e, until it settles.  The first
-mass is a cylinder L = D until the launcher is known; ``check_with_first_mass`` runs the chain again
-with the first mass as the slug that fits the launcher's bore.
+The masses are the closed form's (``amplifier.gain.design``: geometric ratios, the striker last) at an
+effective restitution e.  For each interface (the two bodies at their sizes, closing at the rigid
+chain's first-pass speed) every pad material of the library (``pad_materials``) is sized within its
+limits (``pads.size_pad``); the pad chosen is the one with the highest restitution estimate among those
+that keep every limit, or, when none does, the elastomer that breaks its limits least (a crushed metal
+disc or bare steel returns too little of the energy for any gain: at e = 0.3, five masses give 2.9 at
+most), carried with its broken limits.  Each chosen interface then runs in finite elements
+(``pads.RunCache``, cached), which gives its restitution (a run past ``pads.MAX_WORK`` is not made: its
+pad, many times past its slenderness, keeps its material's estimate, ``Stage.measured`` False); the rigid
+chain of those restitutions, every collision
+followed (``amplifier.rigid.run_chain``), gives the gain, the gain the effective e (the one e with
+which the rigid chain of these masses gains as much), and the masses are designed again at that e
+until it settles (E_TOL) or the gain cannot be had with the masses given.
+
+The first mass is a cylinder L = D until the launcher is known; ``check_with_first_mass`` measures the
+first interface again with the first mass as the slug that fits the launcher's bore.  Each interface's
+checks are ``Limit``s, gathered in ``Amplifier.limits`` (the FE run's peak von Mises stress in the
+steel bodies among them).  Range of validity: the rigid chain leaves the pads' own mass out (each pad's
+``mass over the struck body's`` limit keeps it small) and the bodies' lateral motion and friction on
+their guides; the runs' restitutions are those of the spec's ``pad_resolution`` (smoke meshes unless
+it says otherwise, ``pads.RESOLUTIONS``).
 """
 from __future__ import annotations
 
 import math
 import os
+import time
 from dataclasses import asdict, dataclass, field
 
+from scipy.optimize import brentq
+
 from ..amplifier import rigid
-from ..amplifier.chain import run_chain_scene
 from ..amplifier.gain import cylinder_size, design
-from ..amplifier.interfaces import pad_for_force, reduced_mass
 from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
+from .limits import Limit, broken
+from .pad_materials import PAD_MATERIALS
+from .pads import Interface, Measured, PadDesign, RunCache, estimated_restitution, size_pad
 from .spec import MachineSpec
 
-PAD_DAMPING = 0.02          # the pads' damping ratio (rigid bodies on them: restitution 0.94)
-PAD_SPACE = 1.5             # a pad's free thickness over its travel
 ASPECT = 1.0                # the intermediate masses' length over diameter
 STRUCTURAL_DAMPING = 0.02
-E_TOL, MAX_ITERATIONS = 1e-3, 6
+# the effective restitution settles when an iteration moves it by less than this: the coarse runs'
+# restitutions move by some 0.005 when the geometry moves by a rounding (``pads.FIGURES``)
+E_TOL, MAX_ITERATIONS = 5e-3, 6
 # a stage's struck body moves about this share of v tau before its pad lets go (the amplifier study's
 # sequenced gaps)
 SEQUENCED = 0.6
@@ -39,16 +55,31 @@ MIN_GAP = 1e-3
 @dataclass
 class Stage:
     pair: str
-    closing_speed: float        # rigid chain at the pads' restitution [m/s]
-    pad_stiffness: float        # [N/m]
+    closing_speed: float        # rigid chain at the effective restitution [m/s]
+    pad_material: str           # ``pad_materials.PAD_MATERIALS``
+    pad_kind: str
+    pad_stiffness: float        # its secant, peak force over travel (rigid bodies) [N/m]
     pad_travel: float           # [m]
-    pad_thickness: float        # [m]
-    pad_energy: float           # [J]
-    contact_duration: float     # [s]
-    pad_diameter: float         # the smaller face's [m]
-    load_section: float         # the smaller of the two bodies' load-carrying sections [m^2]
-    face_stress: float          # the pad's peak force over it [Pa]
-    interface_stress_1d: float  # the 1D run's peak interface force over the smaller face [Pa]
+    pad_thickness: float        # free [m]
+    pad_diameter: float         # free [m] (0: no pad)
+    pad_mass: float             # [kg]
+    pad_energy: float           # M* dv^2 / 2 [J]
+    contact_duration: float     # estimated [s]
+    load_section: float         # the smaller of the two bodies' faces [m^2]
+    face_stress: float          # the pad's peak force (rigid bodies) over it [Pa]
+    interface_stress: float     # the FE run's peak contact force over it [Pa]
+    restitution: float          # the FE run's
+    run: str                    # its directory
+    run_wall_time_s: float
+    measured: bool = True       # its restitution from its run (False: the material's estimate, ``note``)
+    note: str = ""
+    limits: list = field(default_factory=list)          # of Limit
+    alternatives: list = field(default_factory=list)    # every material sized here: material, worst ratio
+
+    @property
+    def interface_stress_1d(self) -> float:
+        """The machine's loads table reads the interface's peak stress by this name (the FE run's now)."""
+        return self.interface_stress
 
 
 @dataclass
@@ -59,20 +90,43 @@ class Amplifier:
     launch_speed: float                   # [m/s]
     target_speed: float                   # the striker's [m/s]
     restitution: float                    # the effective e the masses are designed at
-    iterations: list[dict]                # e assumed -> 1D gain -> effective e
-    gain_1d: float
-    striker_speed_1d: float               # [m/s]
+    iterations: list[dict]                # e assumed -> measured e per interface -> gain -> effective e
+    gain: float                           # rigid chain at the measured restitutions
+    striker_speed: float                  # [m/s]
     gaps: list[float]                     # before each pad [m]
     stages: list[Stage]
-    peak_stress_over_yield: dict          # 1D, per body and interface
+    peak_stress_over_yield: dict          # FE runs: each steel body's peak von Mises over yield
     yield_stress: float                   # [Pa]
-    wall_time_s: float
+    wall_time_s: float                    # the pad runs' (cache hits cost nothing)
     feasible: bool = True
     reason: str = ""
-    runs: list[str] = field(default_factory=list)   # run directories of the 1D runs
+    runs: list[str] = field(default_factory=list)   # the pad runs' directories
+    limits: list = field(default_factory=list)      # every stage's Limit
+    cache: dict = field(default_factory=dict)       # the run cache's folder, hits and misses
+
+    @property
+    def restitutions(self) -> list[float]:
+        return [st.restitution for st in self.stages]
+
+    @property
+    def gain_1d(self) -> float:
+        """The name the machine's report and the system study read the chain's gain by."""
+        return self.gain
+
+    @property
+    def striker_speed_1d(self) -> float:
+        """The name the machine's report and the system study read the striker's speed by."""
+        return self.striker_speed
 
     def as_dict(self) -> dict:
-        return asdict(self)
+        out = asdict(self)
+        out["limits"] = [lim.as_dict() for lim in self.limits]
+        for st, raw in zip(self.stages, out["stages"]):
+            raw["limits"] = [lim.as_dict() for lim in st.limits]
+        out["restitutions"] = self.restitutions
+        # the names the system study and its tests read the chain's gain and the striker's speed by
+        out["gain_1d"], out["striker_speed_1d"] = self.gain, self.striker_speed
+        return out
 
 
 def _bodies(masses, fixture: Fixture, rho: float, first_diameter: float | None) -> list[dict]:
@@ -96,114 +150,195 @@ def load_section(body: dict) -> float:
     return math.pi * (body["diameter"] ** 2 - body.get("bore", 0.0) ** 2) / 4
 
 
-def _pads(masses, bodies, launch: float, allowable: float, architecture: str) -> list:
-    """The stiffest pad on each struck face that holds it at the ``allowable`` stress (rigid closing
-    speeds at the pads' own restitution)."""
-    dvs = rigid.first_closing_speeds(masses, launch, rigid.pad_restitution(PAD_DAMPING), architecture)
-    return [(dv, pad_for_force(dv, reduced_mass(masses[k], masses[k + 1]),
-                               allowable * min(load_section(bodies[k]), load_section(bodies[k + 1]))))
-            for k, dv in enumerate(dvs)]
+def _face_diameter(body: dict) -> float:
+    """The diameter of the solid face a pad bears on: a cylinder's; the housing's wall as a disc of the
+    same section (its floor closes the bore on the struck side)."""
+    return math.sqrt(4 * load_section(body) / math.pi)
 
 
-def _chain_raw(spec: MachineSpec, bodies, fixture: Fixture, stiffness: list[float], thickness: list[float],
-               gaps: list[float]) -> dict:
-    """The padded chain as a chain scene (``amplifier.chain``), fidelity 1d: its pads' stiffness and
-    thickness and the gaps before them, one per interface."""
+def interfaces(spec: MachineSpec, masses, bodies, e: float) -> list[Interface]:
+    """The chain's interfaces at the rigid chain's first-pass closing speeds at restitution ``e``."""
+    dvs = rigid.first_closing_speeds(masses, spec.launch_speed, e, spec.architecture)
+    allowable = initial_yield_stress(spec.material) / spec.safety_factor
+    return [Interface(f"{bodies[k]['name']}_{bodies[k + 1]['name']}", masses[k], _face_diameter(bodies[k]),
+                      bodies[k]["length"], masses[k + 1], _face_diameter(bodies[k + 1]), bodies[k + 1]["length"],
+                      dv, spec.material, allowable) for k, dv in enumerate(dvs)]
+
+
+def choose_pad(iface: Interface, materials=tuple(PAD_MATERIALS)) -> tuple[PadDesign, list[dict]]:
+    """The pad for ``iface`` (module docstring) and every material's sized pad as (material, worst limit
+    ratio, estimated restitution)."""
+    sized = [(size_pad(iface, m, estimated_restitution(m)), estimated_restitution(m)) for m in materials]
+    table = [{"material": p.material, "worst": p.worst, "estimated_restitution": e,
+              "broken": [f"{lim.quantity} {lim.ratio:.3g}x" for lim in broken(list(p.limits))]} for p, e in sized]
+    holding = [(p, e) for p, e in sized if p.feasible]
+    if holding:
+        return max(holding, key=lambda pe: pe[1])[0], table
+    elastomers = [(p, e) for p, e in sized if p.kind == "elastomer"] or sized
+    return min(elastomers, key=lambda pe: pe[0].worst)[0], table
+
+
+def _chain_gain(spec: MachineSpec, masses, bodies, e: list[float]) -> float:
+    """The gain of the rigid chain of ``masses`` with restitution e[k] at interface k, every collision
+    followed (a stack falls on an anvil of the chain's mean restitution)."""
+    n = len(masses)
+    lengths = [b["length"] for b in bodies]
+    if spec.architecture == "launched-chain":
+        r = rigid.run_chain(masses, [spec.launch_speed] + [0.0] * (n - 1), lengths, [MIN_GAP] * (n - 1), e)
+    else:
+        r = rigid.run_chain(masses, [-spec.launch_speed] * n, lengths, [MIN_GAP] * (n - 1), e,
+                            anvil=sum(e) / len(e), anvil_gap=MIN_GAP)
+    return abs(r.final[-1]) / spec.launch_speed
+
+
+def _gaps(spec: MachineSpec, masses, e: float, stages: list[Stage]) -> list[float]:
+    """Launched chain: body k + 1 moves about SEQUENCED v tau while pad k is loaded; the gap after it lets
+    that stage end before the next begins."""
+    if spec.architecture != "launched-chain":
+        return [MIN_GAP] * len(stages)
+    speeds = rigid.launched_chain(masses, spec.launch_speed, e).first_pass
+    return [MIN_GAP] + [max(MIN_GAP, SEQUENCED * speeds[k + 1] * stages[k].contact_duration)
+                        for k in range(len(stages) - 1)]
+
+
+def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], allowable: float) -> Stage:
+    measured = [Limit(f"body {'striker' if body == 'a' else 'struck'} of {iface.name}", "stress (FE, von Mises)",
+                      over * initial_yield_stress(iface.steel), allowable, "Pa",
+                      "the interface's finite-element run: the body's peak von Mises stress",
+                      f"{iface.steel}: yield / safety factor") for body, over in m.peak_stress_over_yield.items()]
+    k = pad.peak_force / pad.travel if pad.travel else 0.0
+    return Stage(iface.name, iface.speed, pad.material, pad.kind, k, pad.travel, pad.thickness, pad.diameter,
+                 pad.mass, pad.energy, pad.contact_time, iface.face_area, pad.peak_force / iface.face_area,
+                 m.peak_interface_stress, m.restitution, m.run, m.wall_time_s, m.ran, m.note,
+                 list(pad.limits) + measured, table)
+
+
+def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, echo) -> list[Stage]:
+    allowable = initial_yield_stress(spec.material) / spec.safety_factor
+    stages = []
+    for iface in interfaces(spec, masses, bodies, e):
+        pad, table = choose_pad(iface)
+        m, pad = cache.measure(iface, pad.material, resolution)
+        stages.append(_stage(iface.rounded(), pad, m, table, allowable))
+        if echo:
+            echo(f"    {iface.name}: {pad.material} at {iface.speed:.4g} m/s -> e = {m.restitution:.4f} "
+                 + (f"({'cached' if m.cached else 'run'}, {m.elements} cells, {m.steps} steps, "
+                    f"{m.wall_time_s:.3g} s)" if m.ran else f"({m.note})"))
+    return stages
+
+
+def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=None, resolution: str | None = None,
+                     cache_dir: str | None = None) -> Amplifier:
+    """The amplifier for the fixture's striker (module docstring); the pad runs in ``cache_dir`` (default
+    ``out_dir/pad_runs``) at ``resolution`` (``pads.RESOLUTIONS``; default the spec's ``pad_resolution``)."""
+    resolution = resolution or spec.pad_resolution
+    rho = property_si(spec.material, "density", "density")
+    Y = initial_yield_stress(spec.material)
+    V, M = fixture.striker_speed, fixture.striker_mass
+    cache = RunCache(cache_dir or os.path.join(out_dir, "pad_runs"))
+    e = max(estimated_restitution(m) for m in PAD_MATERIALS)
+    iterations, last, t0 = [], None, time.perf_counter()
+    for it in range(MAX_ITERATIONS):
+        d = design(spec.architecture, M, V, spec.launch_speed, e, spec.masses)
+        if not d.feasible:
+            reason = d.reason + (" (the measured restitutions)" if iterations else "")
+            return _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0)
+        bodies = _bodies(d.masses, fixture, rho, None)
+        stages = _measure(spec, d.masses, bodies, e, cache, resolution, echo)
+        gain = _chain_gain(spec, d.masses, bodies, [st.restitution for st in stages])
+        e_eff = rigid.effective_restitution(d.masses, spec.launch_speed, gain, spec.architecture)
+        iterations.append({"assumed": e, "measured": [st.restitution for st in stages], "gain": gain,
+                           "effective": e_eff, "striker_speed": gain * spec.launch_speed, "first_mass": d.masses[0],
+                           "pads": [st.pad_material for st in stages]})
+        last = (d.masses, bodies, stages, gain)
+        if echo:
+            echo(f"  amplifier: e = {e:.4f} -> measured " + ", ".join(f"{st.restitution:.3f}" for st in stages)
+                 + f" -> gain {gain:.4f} -> effective e {e_eff:.4f}")
+        if not math.isfinite(e_eff):
+            return _infeasible(spec, last, e, iterations, V, Y, cache,
+                               f"no restitution in (0, 1] gives the rigid chain the gain {gain:.4g}", t0)
+        if abs(e_eff - e) < E_TOL:
+            break
+        e = e_eff
+    return _amplifier(spec, last, e, iterations, V, Y, cache, t0)
+
+
+def _amplifier(spec, last, e, iterations, V, Y, cache: RunCache, t0, reason: str = "") -> Amplifier:
+    masses, bodies, stages, gain = last
+    speed = gain * spec.launch_speed
+    limits = [lim for st in stages for lim in st.limits]
+    peaks = {}
+    for st in stages:
+        a, b = st.pair.split("_", 1)
+        for name, lim in zip((a, b), [lim for lim in st.limits if lim.quantity == "stress (FE, von Mises)"]):
+            peaks[name] = max(peaks.get(name, 0.0), lim.value / Y)
+    on_target = abs(speed / V - 1) < 0.02
+    if not reason and not on_target:
+        reason = f"the chain brings the striker to {speed:.4g} m/s, not {V:.4g}"
+    if not reason and broken(limits):
+        reason = "pads outside their limits: " + "; ".join(lim.describe() for lim in broken(limits)[:3])
+    return Amplifier(spec.architecture, list(masses), bodies, spec.launch_speed, V, e, iterations, gain, speed,
+                     _gaps(spec, masses, e, stages), stages, peaks, Y, sum(st.run_wall_time_s for st in stages),
+                     not reason, reason, [st.run for st in stages], limits,
+                     {"folder": cache.folder, "hits": cache.hits, "misses": cache.misses,
+                      "wall_time_s": time.perf_counter() - t0})
+
+
+def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier:
+    """No chain of these masses makes the gain: the last one designed (if any) with the reason."""
+    if last is None:
+        return Amplifier(spec.architecture, [], [], spec.launch_speed, V, e, iterations, math.nan, math.nan, [], [],
+                         {}, Y, 0.0, False, reason, [], [], {"folder": cache.folder, "hits": cache.hits,
+                                                             "misses": cache.misses})
+    return _amplifier(spec, last, e, iterations, V, Y, cache, t0, reason)
+
+
+def check_with_first_mass(spec: MachineSpec, fixture: Fixture, amp: Amplifier, bore: float, out_dir: str,
+                          resolution: str | None = None, cache_dir: str | None = None) -> Amplifier:
+    """The designed chain measured again with its first mass the slug of the launcher's bore."""
+    resolution = resolution or spec.pad_resolution
+    if not amp.masses:
+        return amp
+    rho = property_si(spec.material, "density", "density")
+    bodies = _bodies(amp.masses, fixture, rho, bore)
+    cache = RunCache(cache_dir or amp.cache.get("folder") or os.path.join(out_dir, "pad_runs"))
+    t0 = time.perf_counter()
+    stages = _measure(spec, amp.masses, bodies, amp.restitution, cache, resolution, None)
+    gain = _chain_gain(spec, amp.masses, bodies, [st.restitution for st in stages])
+    out = _amplifier(spec, (amp.masses, bodies, stages, gain), amp.restitution, amp.iterations, amp.target_speed,
+                     amp.yield_stress, cache, t0, "" if amp.feasible else amp.reason)
+    return out
+
+
+def pad_damping(e: float) -> float:
+    """The damping ratio of a spring-dashpot pad that never pulls whose rigid restitution is ``e``."""
+    return float(brentq(lambda z: rigid.pad_restitution(z) - e, 0.0, 0.99, xtol=1e-12))
+
+
+def chain_scene(spec: MachineSpec, amp: Amplifier, fixture: Fixture) -> dict:
+    """The designed chain as a chain scene (``amplifier.chain``, fidelity 1d): each pad a spring of its
+    secant stiffness and its free thickness, the gaps as designed, the pads damped to restitute the
+    effective e (the chain scene's pads share one damping ratio)."""
     rho = property_si(spec.material, "density", "density")
     steel = fixture.housing_steel_mass / rho
     scene_bodies = []
-    for b in bodies[:-1]:
+    for b in amp.bodies[:-1]:
         scene_bodies.append({"name": b["name"], "material": "steel", "shape": "cylinder", "radius": b["diameter"] / 2,
                              "length": b["length"], "element_size": b["diameter"] / 4})
-    h = bodies[-1]
+    h = amp.bodies[-1]
     scene_bodies.append({"name": "striker", "material": "housing", "shape": "carrier", "radius": h["diameter"] / 2,
                          "length": h["length"], "seat_radius": h["bore"] / 2, "seat_depth": h["bore_depth"],
                          "element_size": h["diameter"] / 4})
+    # a bare or crowned face has no pad: a stiff spring across a millimetre stands for its contact
+    stiffness = [st.pad_stiffness or 1e12 for st in amp.stages]
+    thickness = [st.pad_thickness or 1e-3 for st in amp.stages]
+    gaps = amp.gaps
     return {"chain": {"name": "amplifier", "architecture": spec.architecture, "launch_speed": spec.launch_speed,
                       "fidelity": "1d", "gap": gaps if spec.architecture == "launched-chain" else gaps[0],
                       "restitution": 0.9, "damping": STRUCTURAL_DAMPING,
-                      "pad_stiffness": stiffness, "pad_thickness": thickness, "pad_damping": PAD_DAMPING},
+                      "pad_stiffness": stiffness, "pad_thickness": thickness,
+                      "pad_damping": pad_damping(min(max(amp.restitution, 0.05), 0.999))},
             # the striker's oil rides in its bore: its mass smeared into the housing's steel
             "materials": {"steel": {"library": spec.material},
                           "housing": {"library": spec.material, "density": fixture.striker_mass / steel}},
             "bodies": scene_bodies}
-
-
-def chain_scene(spec: MachineSpec, amp: Amplifier, fixture: Fixture) -> dict:
-    """The designed chain as a chain scene (``amplifier.chain``, fidelity 1d), its pads and gaps as designed."""
-    return _chain_raw(spec, amp.bodies, fixture, [st.pad_stiffness for st in amp.stages],
-                      [st.pad_thickness for st in amp.stages], amp.gaps)
-
-
-def _run(spec, masses, bodies, fixture, out_dir, label):
-    allowable = initial_yield_stress(spec.material) / spec.safety_factor
-    pads = _pads(masses, bodies, spec.launch_speed, allowable, spec.architecture)
-    if spec.architecture == "launched-chain":
-        # body k + 1 moves about SEQUENCED v tau while pad k is loaded: the gap after it lets that stage
-        # end before the next begins
-        speeds = rigid.launched_chain(masses, spec.launch_speed, rigid.pad_restitution(PAD_DAMPING)).first_pass
-        gaps = [MIN_GAP] + [max(MIN_GAP, SEQUENCED * speeds[k + 1] * pads[k][1].duration)
-                            for k in range(len(pads) - 1)]
-    else:
-        gaps = [MIN_GAP] * len(pads)
-    where = os.path.join(out_dir, label)
-    raw = _chain_raw(spec, bodies, fixture, [p.stiffness for _, p in pads], [PAD_SPACE * p.travel for _, p in pads],
-                     gaps)
-    result = run_chain_scene(raw, where, "1d", progress=False, echo=lambda *a: None)
-    return pads, gaps, result, where
-
-
-def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=None) -> Amplifier:
-    rho = property_si(spec.material, "density", "density")
-    Y = initial_yield_stress(spec.material)
-    V, M = fixture.striker_speed, fixture.striker_mass
-    e = rigid.pad_restitution(PAD_DAMPING)
-    iterations, runs, wall = [], [], 0.0
-    for it in range(MAX_ITERATIONS):
-        d = design(spec.architecture, M, V, spec.launch_speed, e, spec.masses)
-        if not d.feasible:
-            return Amplifier(spec.architecture, [], [], spec.launch_speed, V, e, iterations, math.nan, math.nan,
-                             math.nan, [], {}, Y, wall, False, d.reason, runs)
-        bodies = _bodies(d.masses, fixture, rho, None)
-        pads, gaps, result, where = _run(spec, d.masses, bodies, fixture, out_dir, f"iteration_{it + 1}")
-        runs.append(where)
-        wall += result["wall_time_s"]
-        e_eff = rigid.effective_restitution(d.masses, spec.launch_speed, result["gain"], spec.architecture)
-        iterations.append({"assumed": e, "gain_1d": result["gain"], "effective": e_eff,
-                           "striker_speed_1d": result["test_article_speed"], "first_mass": d.masses[0]})
-        if echo:
-            echo(f"  amplifier: e = {e:.4f} -> 1D gain {result['gain']:.4f} -> effective e {e_eff:.4f}")
-        if not math.isfinite(e_eff):
-            return Amplifier(spec.architecture, d.masses, bodies, spec.launch_speed, V, e, iterations,
-                             result["gain"], result["test_article_speed"], gaps, [], {}, Y, wall, False,
-                             f"no restitution in (0, 1] gives the rigid chain the 1D gain {result['gain']:.4g}", runs)
-        if abs(e_eff - e) < E_TOL:
-            break
-        e = e_eff
-    return _amplifier(spec, d.masses, bodies, pads, gaps, result, e, iterations, V, Y, wall, runs)
-
-
-def _amplifier(spec, masses, bodies, pads, gaps, result, e, iterations, V, Y, wall, runs) -> Amplifier:
-    stress = result["peak_stress"]
-    names = [b["name"] for b in bodies]
-    stages = []
-    for k, (dv, p) in enumerate(pads):
-        key = f"{names[k]}_{names[k + 1]}"
-        area = min(load_section(bodies[k]), load_section(bodies[k + 1]))
-        pad_diameter = min(bodies[k]["diameter"], bodies[k + 1]["diameter"])
-        stages.append(Stage(key, dv, p.stiffness, p.travel, PAD_SPACE * p.travel, p.energy, p.duration, pad_diameter, area,
-                            p.stiffness * p.travel / area, float(stress.get(key, math.nan))))
-    feasible = abs(result["test_article_speed"] / V - 1) < 0.02
-    return Amplifier(spec.architecture, list(masses), bodies, spec.launch_speed, V, e, iterations, result["gain"],
-                     result["test_article_speed"], gaps, stages, dict(result["stress_over_yield"]), Y, wall, feasible,
-                     "" if feasible else f"the 1D chain brings the striker to {result['test_article_speed']:.4g} m/s, "
-                                         f"not {V:.4g}", runs)
-
-
-def check_with_first_mass(spec: MachineSpec, fixture: Fixture, amp: Amplifier, bore: float, out_dir: str) -> Amplifier:
-    """The designed chain run again in 1D with its first mass the slug of the launcher's bore."""
-    rho = property_si(spec.material, "density", "density")
-    bodies = _bodies(amp.masses, fixture, rho, bore)
-    pads, gaps, result, where = _run(spec, amp.masses, bodies, fixture, out_dir, "with_launcher_slug")
-    return _amplifier(spec, amp.masses, bodies, pads, gaps, result, amp.restitution, amp.iterations, amp.target_speed,
-                      amp.yield_stress, result["wall_time_s"], amp.runs + [where])

@@ -12,8 +12,9 @@ file is written in millimetres (it says so: SI_UNIT(.MILLI.,.METRE.)) and read b
 an earlier import left OpenCASCADE in (it keeps one for the whole process); the machine's axis is z (the
 tank at z = 0, the catcher last), y up, x across.  Pressure parts are hollow (their steel only), the
 striker's housing is its steel with the oil a solid of its own, the article the catalogue's ogive standing
-on its base.  Rails, shoes and stop rings are drawn to show the arrangement: their sections are not
-designed (their loads are, in ``machine.json``), so they carry no designed mass.
+on its base, each pad of its material's density.  Rails, shoes and stop rings are drawn to show the
+arrangement: their sections are not designed (their loads are, in ``machine.json``), so they carry no
+designed mass.
 """
 from __future__ import annotations
 
@@ -31,6 +32,7 @@ from ..parts.catalog import PARTS, solid_ogive
 from ..programmer.dashpot_design import OIL
 from ..scene.library import property_si
 from .layout import rail_geometry, shoe_length
+from .pad_materials import pad_material
 from .spec import REFERENCE_ARTICLE
 
 
@@ -115,7 +117,7 @@ def solids(machine) -> list[tuple[str, int, float, str]]:
         elif it.kind == "article":
             add(it.name, article_solid(it), property_si(REFERENCE_ARTICLE["library"], "density", "density"))
         elif it.kind == "pad":
-            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)
+            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], pad_material(it.material).density)
         elif it.kind == "stop":
             add(it.name, _tube(it.x0, it.length, it.diameter / 2, it.inner / 2) if it.inner
                 else [_cylinder(it.x0, it.length, it.diameter / 2)], 0.0)

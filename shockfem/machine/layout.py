@@ -121,9 +121,10 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         else:
             stage = amp.stages[k - 1]
             pad_rear = (x_breech + g.length + slug["length"] if k == 1 else fronts[-1]) + amp.gaps[k - 1]
-            items.append(Item(f"pad_{stage.pair}", "pad", pad_rear, stage.pad_thickness,
-                              stage.pad_diameter, 0.0, 0.0, "elastomer",
-                              f"{stage.pad_stiffness / 1e6:.4g} MN/m, {stage.pad_travel * 1e3:.0f} mm travel"))
+            if stage.pad_thickness:         # a crowned or bare steel face has no pad of its own
+                items.append(Item(f"pad_{stage.pair}", "pad", pad_rear, stage.pad_thickness,
+                                  stage.pad_diameter, 0.0, stage.pad_mass, stage.pad_material,
+                                  f"{stage.pad_stiffness / 1e6:.4g} MN/m, {stage.pad_travel * 1e3:.0f} mm travel"))
             rear = pad_rear + stage.pad_thickness
         if b["name"] == "striker":
             items.append(Item(b["name"], "housing", rear, b["length"], b["diameter"], b["bore"],

@@ -28,8 +28,10 @@ def summary_lines(m: Machine) -> list[str]:
         f"{f.striker_mass:.4g} kg at {f.striker_speed:.4g} m/s ({f.striker_speed / FT:.0f} ft/s); lumped pulse "
         f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band "
         f"{'pass' if f.band_passed else 'FAIL'}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
-        f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; effective e "
-        f"{a.restitution:.4f} (1D); the 1D chain gives the striker {a.striker_speed_1d:.4g} m/s",
+        f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; pads "
+        + ", ".join(f"{st.pad_material} (e {st.restitution:.3f}{'' if st.measured else ', estimate'})"
+                    for st in a.stages) + " (finite elements); "
+        f"effective e {a.restitution:.4f}; the rigid chain of them gives the striker {a.striker_speed:.4g} m/s",
         f"  launcher: bore {g.bore / IN:.3g} in, barrel {g.length / FT:.3g} ft, {g.reservoir_volume:.3g} m^3 at "
         f"{g.reservoir_pressure / PSI:,.0f} psi ({g.gas}, {L.gas_mass:.4g} kg); barrel and tank {L.design.weight:,.0f} kg",
         f"  machine: {t['overall_length']:.3g} m long, {t['overall_width']:.3g} m wide, {t['machine_mass']:,.0f} kg; "
@@ -72,16 +74,32 @@ def markdown(m: Machine) -> str:
                      [[ld.component, ld.load, f"{ld.stress / 1e6:.1f}", f"{ld.allowable / 1e6:.1f}", f"{ld.ratio:.2f}",
                        ld.basis] for ld in m.loads])]
     parts += ["", "## Amplifier stages (pads)", "",
-              _table(["stage", "closing speed [m/s]", "gap before the pad [m]", "pad stiffness [MN/m]", "travel [mm]",
-                      "thickness [mm]", "energy [kJ]", "contact [ms]", "1D interface stress [MPa]"],
-                     [[st.pair, f"{st.closing_speed:.1f}", f"{gap:.3f}", f"{st.pad_stiffness / 1e6:.4g}",
-                       f"{st.pad_travel * 1e3:.0f}", f"{st.pad_thickness * 1e3:.0f}", f"{st.pad_energy / 1e3:,.0f}",
-                       f"{st.contact_duration * 1e3:.2f}", f"{st.interface_stress_1d / 1e6:.0f}"]
+              _table(["stage", "closing speed [m/s]", "gap before the pad [m]", "pad", "diameter [mm]",
+                      "thickness [mm]", "mass [kg]", "travel [mm]", "energy [kJ]", "restitution (FE) [-]",
+                      "FE interface stress [MPa]", "FE run [s]", "broken limits"],
+                     [[st.pair, f"{st.closing_speed:.1f}", f"{gap:.3f}", st.pad_material,
+                       f"{st.pad_diameter * 1e3:.0f}",
+                       f"{st.pad_thickness * 1e3:.0f}", f"{st.pad_mass:,.1f}", f"{st.pad_travel * 1e3:.0f}",
+                       f"{st.pad_energy / 1e3:,.0f}",
+                       f"{st.restitution:.3f}" + ("" if st.measured else " (estimate: not run)"),
+                       f"{st.interface_stress / 1e6:.0f}" if st.measured else "-",
+                       f"{st.run_wall_time_s:.3g}" if st.measured else "-",
+                       "; ".join(f"{lim.quantity} {lim.ratio:.3g}x" for lim in st.limits if not lim.holds) or "none"]
                       for st, gap in zip(a.stages, a.gaps)])]
-    parts += ["", "Effective restitution, iterated (1D):", "",
-              _table(["assumed e", "1D gain", "effective e", "striker speed 1D [m/s]", "first mass [kg]"],
-                     [[f"{it['assumed']:.4f}", f"{it['gain_1d']:.4f}", f"{it['effective']:.4f}",
-                       f"{it['striker_speed_1d']:.2f}", f"{it['first_mass']:,.1f}"] for it in a.iterations])]
+    parts += ["", "Pad limits (each stage):", "",
+              _table(["part", "quantity", "value", "limit", "unit", "ratio", "basis", "source"],
+                     [[lim.component, lim.quantity, f"{lim.value:.4g}", f"{lim.limit:.4g}", lim.unit,
+                       f"{lim.ratio:.3g}",
+                       lim.basis, lim.source] for lim in a.limits])]
+    parts += ["", "The other pad materials at each stage (worst limit ratio; sized, not run):", "",
+              _table(["stage"] + [alt["material"] for alt in (a.stages[0].alternatives if a.stages else [])],
+                     [[st.pair] + [f"{alt['worst']:.3g}" for alt in st.alternatives] for st in a.stages])]
+    parts += ["", "Effective restitution, iterated (pads measured in finite elements):", "",
+              _table(["assumed e", "measured e per interface", "gain", "effective e", "striker speed [m/s]",
+                      "first mass [kg]"],
+                     [[f"{it['assumed']:.4f}", ", ".join(f"{x:.3f}" for x in it["measured"]), f"{it['gain']:.4f}",
+                       f"{it['effective']:.4f}", f"{it['striker_speed']:.2f}", f"{it['first_mass']:,.1f}"]
+                      for it in a.iterations])]
     parts += ["", "## Stops (absorbers)", "",
               _table(["body", "mass [kg]", "speed [m/s]", "absorber", "peak deceleration [g]", "stroke [m]",
                       "peak force [MN]", "energy [kJ]", "own length [m]", "own mass [kg]", "used a shot [kg]",

@@ -18,6 +18,7 @@ from .modal_cases import circular_plate, modal_rod, nafems_fv12
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .machine_cases import direct_striker, machine_energy, machine_geometry
+from .pad_cases import pad_bars, pad_johnson, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
@@ -95,6 +96,9 @@ CASES = {
     "machine_geometry": machine_geometry,
     "machine_energy": machine_energy,
     "direct_striker": direct_striker,
+    "pad_bars": pad_bars,
+    "pad_rigid": pad_rigid,
+    "pad_johnson": pad_johnson,
     "lsdyna_decks": lsdyna_decks,
     **HARD,
 }

@@ -1,0 +1,472 @@
+"""The pad on one struck face of the amplifier: sized within its material's limits, and its restitution
+measured by a finite-element run of that interface.
+
+An interface is the two bodies of one collision (their masses, diameters and lengths as the chain has
+them) closing at dv; its reduced mass M* = m_a m_b / (m_a + m_b) brings the energy W = M* dv^2 / 2 to
+the pad at its largest compression (rigid bodies; the bodies' own waves take a little of it).
+
+Sizing (``size_pad``), each pad as large across as the smaller face allows (an elastomer no thinner than
+MIN_HEIGHT of its diameter):
+
+* elastomer disc: compressed, faces free to slide (uniaxial), Neo-Hookean (G = E / 3) to the largest
+  strain at which both the working stress and the working strain hold; its volume stores W there,
+  V = W / w(strain), as wide as the face unless that makes it thinner than a quarter of its diameter;
+* yielding-metal disc: crushed to its working strain, spreading to the face's diameter there; its
+  volume absorbs W as plastic work, V = W / w_p(strain);
+* crowned steel face: the crown whose contact radius at the Hertz yield onset is half the face's radius
+  (the largest that keeps the yielding inside the face), and the closing speed against that onset;
+* no pad: the flat faces' 1D impedance stress against the allowable.
+
+Each check is a ``Limit`` (stress, strain, stored energy per volume, temperature rise a shot, slenderness,
+the face stress on the steel, and the pad's mass over its struck body's, the range in which the chain's
+masses are the steel bodies' alone); a pad that cannot keep them is sized at its working point and carries
+the broken ones.
+
+Restitution (``measure_restitution``): the two bodies and the pad as an axisymmetric finite-element
+scene, the steel bodies J2 (the chain's steel) with the chain's structural damping (a band of 2% over
+each body's first free-free mode to 20 times it), an elastomer Neo-Hookean with its hysteresis as a
+band damping of its damping ratio over its contact's frequencies (``PadMaterial.damping_ratio``: the
+ratio at which rigid masses on it restitute sqrt(R), its rebound resilience), a metal disc J2 with its
+hardening curve.  e = (v_a' - v_b') / dv from the bodies' mean velocities once the faces have parted,
+the pad counted with the body it rests on.  Runs are cached (``RunCache``): a table of (material,
+geometry, closing speed, mesh) -> e with the run's directory, so that a design that meets the same
+interface again reads it.  Valid: closing speeds at which the steel stays a J2 solid (below its shock
+range, some 1 km/s), pads no thinner than a cell of the mesh.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+from dataclasses import asdict, dataclass, field, replace
+
+from ..amplifier.interfaces import HERTZ_YIELD_PRESSURE, flat_face_stress, hertz_yield_speed, reduced_mass
+from ..scene import resolve
+from ..scene.library import LIBRARY, initial_yield_stress, property_si
+from .limits import Limit
+from .pad_materials import (PadMaterial, neo_hookean_energy, neo_hookean_stress, pad_material, plastic_work)
+
+# the chain's structural damping (``amplifier.chain``): a band from each body's first mode up
+STRUCTURAL_DAMPING, DAMPING_BAND = 0.02, 20.0
+# the pad's mass over its struck body's up to which the chain's masses may leave the pads out (the
+# rigid chain's gain moves by about this share: a 10% heavier struck body changes a stage's factor
+# (1 + e) / (1 + r) by about 10% of r / (1 + r))
+PAD_MASS_SHARE = 0.1
+# a crown's contact radius at its yield onset over the face's radius
+CROWN_CONTACT = 0.5
+# the gap the striker closes before it meets the pad [m]
+GAP = 1e-3
+# mesh resolutions: steel cells across a body's diameter, pad cells through its thickness; ESTIMATE runs
+# nothing and keeps each material's estimate (a study's quickest size: its pads are sized and checked,
+# their restitutions not measured)
+RESOLUTIONS = {"smoke": (4, 2), "coarse": (8, 4), "default": (16, 8)}
+ESTIMATE = "estimate"
+# an elastomer pad's least height over its diameter: its shape factor d / (4 t) at most 1, where a disc
+# whose faces slide is near uniaxial (the sizing's model); thinner, the faces' friction holds its rim and
+# stiffens it by up to (1 + 2 S^2) (bonded, Gent, Engineering with Rubber, ch. 8; check), and in the runs
+# a 2 mm pad on an 87 mm face squeezed out and went unstable
+MIN_HEIGHT = 0.25
+# a steel face's cells over the pad's, at most
+FACE_CELLS = 4
+# significant figures the cache (and the run) rounds an interface's inputs to
+FIGURES = 3
+# the largest run (cells times steps, as ``run_work`` estimates them) an interface gets, about 100 s on one
+# core: the smoke run of a 36 m polyurethane pad took 730 cells, 157,653 steps and 111 s, estimated at
+# 7.2e7 (0.63 of the count; two shorter pads 0.62 and 0.63); a pad too long or too
+# soft for it is many times past its slenderness and keeps its estimated restitution (an upper bound:
+# its own waves take more, as the runs of pads 15 to 35 times their limit show)
+MAX_WORK = 6e7
+# the pad's hysteresis band over its contact's frequency: 1:10 around it (a half-sine's spectrum), as
+# narrow as holds it, since a rubber's band takes its moduli static and stiffens it by
+# (4 zeta / pi) ln(band) across the band (``materials.band_damping``)
+PAD_BAND = 10.0
+
+
+@dataclass(frozen=True)
+class Interface:
+    """The two bodies of one collision: the striker (a) and the struck body (b), closing at ``speed``."""
+    name: str
+    striker_mass: float         # [kg]
+    striker_diameter: float     # [m]
+    striker_length: float       # [m]
+    struck_mass: float
+    struck_diameter: float
+    struck_length: float
+    speed: float                # closing [m/s]
+    steel: str                  # the bodies' library material
+    allowable: float            # the steel's allowable stress [Pa]
+
+    @property
+    def m_star(self) -> float:
+        return reduced_mass(self.striker_mass, self.struck_mass)
+
+    @property
+    def energy(self) -> float:
+        """M* dv^2 / 2 [J]: what the pad holds at its largest compression."""
+        return 0.5 * self.m_star * self.speed ** 2
+
+    @property
+    def face_diameter(self) -> float:
+        return min(self.striker_diameter, self.struck_diameter)
+
+    @property
+    def face_area(self) -> float:
+        return math.pi * self.face_diameter ** 2 / 4
+
+    def rounded(self) -> "Interface":
+        """The interface with every number at FIGURES significant figures (the cache's key)."""
+        return replace(self, **{k: _round(v) for k, v in asdict(self).items() if isinstance(v, float)})
+
+
+@dataclass(frozen=True)
+class PadDesign:
+    """A pad sized for an interface (SI); for a crowned face ``crown`` is its sphere radius."""
+    interface: str
+    material: str
+    kind: str
+    diameter: float = 0.0       # free (uncompressed) [m]
+    thickness: float = 0.0      # free [m]
+    mass: float = 0.0           # [kg]
+    travel: float = 0.0         # its largest compression [m]
+    peak_force: float = 0.0     # rigid bodies, quasi-static [N]
+    energy: float = 0.0         # M* dv^2 / 2 [J]
+    crown: float = 0.0          # [m]
+    contact_time: float = 0.0   # estimated [s]
+    limits: tuple = ()          # of Limit
+
+    @property
+    def feasible(self) -> bool:
+        return all(lim.holds for lim in self.limits)
+
+    @property
+    def worst(self) -> float:
+        """The largest of its limits' ratios (1 or less: every limit holds)."""
+        return max((lim.ratio for lim in self.limits), default=0.0)
+
+    def as_dict(self) -> dict:
+        out = asdict(self)
+        out["limits"] = [lim.as_dict() for lim in self.limits]
+        return out
+
+
+def _round(x: float) -> float:
+    return float(f"{x:.{FIGURES}g}")
+
+
+def _steel(iface: Interface) -> tuple[float, float, float, float]:
+    """rho, E, nu, yield of the interface's steel."""
+    lib = LIBRARY[iface.steel]
+    return (property_si(iface.steel, "density", "density"), property_si(iface.steel, "youngs_modulus", "pressure"),
+            float(lib["poisson_ratio"]), initial_yield_stress(iface.steel))
+
+
+def _common_limits(iface: Interface, mat: PadMaterial, mass: float, force: float) -> list[Limit]:
+    part = f"pad {iface.name}"
+    return [Limit(f"face {iface.name}", "stress", force / iface.face_area, iface.allowable, "Pa",
+                  "the pad's peak force over the smaller steel face",
+                  f"{iface.steel}: yield / safety factor ({LIBRARY[iface.steel]['source']})"),
+            Limit(part, "mass over the struck body's", mass / iface.struck_mass, PAD_MASS_SHARE, "-",
+                  "the pad's mass over the struck body's",
+                  "the chain's range of validity: its masses are the steel bodies', the pads left out")]
+
+
+def _working_strain(mat: PadMaterial, G: float) -> float:
+    """The largest strain inside both working limits (the stress rises monotonically with the strain)."""
+    strain = mat.working_strain
+    if neo_hookean_stress(G, strain) <= mat.working_stress:
+        return strain
+    lo, hi = 0.0, strain
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if neo_hookean_stress(G, mid) < mat.working_stress else (lo, mid)
+    return lo
+
+
+def _elastomer(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
+    G = mat.youngs_modulus / 3
+    strain = _working_strain(mat, G)
+    w = neo_hookean_energy(G, strain)
+    # as wide as the face, or narrower where that would make it thinner than MIN_HEIGHT of its diameter
+    volume = iface.energy / w
+    d = min(iface.face_diameter, (4 * volume / (math.pi * MIN_HEIGHT)) ** (1 / 3))
+    area = math.pi * d * d / 4
+    t = volume / area
+    mass = mat.density * area * t
+    force = neo_hookean_stress(G, strain) * area
+    k = force / (strain * t)
+    duration = math.pi * math.sqrt(iface.m_star / k) + 2 * t / math.sqrt(mat.youngs_modulus / mat.density)
+    heat = (1 - e * e) * iface.energy / (mass * mat.heat_capacity)
+    part = f"pad {iface.name}"
+    stress_binds = strain < mat.working_strain
+    limits = [Limit(part, "stress", neo_hookean_stress(G, strain), mat.working_stress, "Pa",
+                    "Neo-Hookean disc in uniaxial compression, G (1/l^2 - l)", mat.source, sized=stress_binds),
+              Limit(part, "strain", strain, mat.working_strain, "-", "its largest compression over its thickness",
+                    mat.source, sized=not stress_binds),
+              Limit(part, "stored energy per volume", w, neo_hookean_energy(G, strain), "J/m^3",
+                    "M* dv^2 / 2 over its volume (sized to the energy at its working point)", mat.source, sized=True),
+              Limit(part, "temperature rise a shot", heat, mat.temperature_rise, "K",
+                    "(1 - e^2) M* dv^2 / 2 over its mass times c_p (adiabatic)", mat.source),
+              Limit(part, "slenderness", t / d, mat.slenderness, "-", "free height over diameter", mat.source),
+              *_common_limits(iface, mat, mass, force)]
+    return PadDesign(iface.name, mat.name, mat.kind, d, t, mass, strain * t, force, iface.energy, 0.0, duration,
+                     tuple(limits))
+
+
+def _metal(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
+    strain = mat.working_strain
+    # crushed to the working strain, the disc spreads to the face's diameter
+    area = iface.face_area * (1 - strain)
+    d = math.sqrt(4 * area / math.pi)
+    w = plastic_work(mat, strain)
+    t = (1 - e * e) * iface.energy / (w * area)
+    mass = mat.density * area * t
+    force = mat.flow_stress(-math.log(1 - strain)) * iface.face_area
+    # a crush at a near-constant force: the closing speed falls linearly to zero over the travel
+    duration = 2 * strain * t / iface.speed + 4 * iface.face_diameter / math.sqrt(mat.youngs_modulus / mat.density)
+    part = f"pad {iface.name}"
+    limits = [Limit(part, "strain", strain, mat.working_strain, "-", "crushed height over free height",
+                    mat.source, sized=True),
+              Limit(part, "stored energy per volume", w, plastic_work(mat, mat.working_strain), "J/m^3",
+                    "plastic work of the hardening curve to its strain (sized to it)", mat.source, sized=True),
+              Limit(part, "temperature rise a shot", w / (mat.density * mat.heat_capacity), mat.temperature_rise,
+                    "K", "its plastic work over rho c_p (adiabatic)", mat.source),
+              Limit(part, "slenderness", t / d, mat.slenderness, "-", "free height over diameter", mat.source),
+              *_common_limits(iface, mat, mass, force)]
+    return PadDesign(iface.name, mat.name, mat.kind, d, t, mass, strain * t, force, iface.energy, 0.0, duration,
+                     tuple(limits))
+
+
+def _steel_faces(iface: Interface, mat: PadMaterial) -> PadDesign:
+    rho, E, nu, Y = _steel(iface)
+    c0 = math.sqrt(E / rho)
+    transit = 2 * min(iface.striker_length, iface.struck_length) / c0
+    if mat.kind == "crowned steel":
+        e_star = E / (2 * (1 - nu * nu))
+        a = CROWN_CONTACT * iface.face_diameter / 2
+        crown = 2 * e_star * a / (math.pi * HERTZ_YIELD_PRESSURE * Y)      # a = pi p0 R / (2 E*)
+        onset = hertz_yield_speed(iface.m_star, crown, e_star, Y)
+        limits = (Limit(f"face {iface.name}", "closing speed", iface.speed, onset, "m/s",
+                        f"Hertz yield onset of a {crown:.3g} m crown (contact radius {a * 1e3:.0f} mm at p0 = 1.6 Y)",
+                        mat.source + f"; {iface.steel}"),)
+        return PadDesign(iface.name, mat.name, mat.kind, crown=crown, energy=iface.energy,
+                         contact_time=3 * transit, limits=limits)
+    z = [rho * c0 * math.pi * dd * dd / 4 for dd in (iface.striker_diameter, iface.struck_diameter)]
+    stress = flat_face_stress(iface.speed, z[0], z[1], iface.face_area)
+    limits = (Limit(f"face {iface.name}", "stress", stress, iface.allowable, "Pa",
+                    "1D impedance stress dv Z_a Z_b / (Z_a + Z_b) over the smaller face",
+                    mat.source + f"; {iface.steel}: yield / safety factor"),)
+    return PadDesign(iface.name, mat.name, mat.kind, energy=iface.energy, contact_time=transit, limits=limits)
+
+
+def size_pad(iface: Interface, material: str, restitution: float = 0.0) -> PadDesign:
+    """The pad of ``material`` for ``iface`` (module docstring); ``restitution``: the interface's, which
+    sets the share of the energy a pad turns into heat (an elastomer) or must absorb (a metal, which
+    returns the rest elastically)."""
+    mat = pad_material(material)
+    if mat.kind == "elastomer":
+        return _elastomer(iface, mat, restitution)
+    if mat.kind == "yielding metal":
+        return _metal(iface, mat, restitution)
+    return _steel_faces(iface, mat)
+
+
+def estimated_restitution(material: str) -> float:
+    """The restitution to size a pad with before its run: an elastomer's on rigid masses, sqrt(R); a
+    crushed metal's or steel's 0.3 (a first guess only: the run replaces it)."""
+    mat = pad_material(material)
+    return math.sqrt(mat.resilience) if mat.kind == "elastomer" else 0.3
+
+
+# ---------------------------------------------------------------------------------------------- the runs
+
+
+def _band(ratio: float, low: float, reference: float | None = None) -> dict:
+    d = {"type": "band", "ratio": ratio, "low": low, "high": DAMPING_BAND * low}
+    if reference is not None:
+        d["reference"] = reference
+    return d
+
+
+def interface_scene(iface: Interface, pad: PadDesign, resolution: str = "coarse") -> dict:
+    """The interface as a raw axisymmetric scene: the struck body b standing on z = 0, the pad resting on
+    its face, the striker a above it by GAP moving down at the closing speed (module docstring)."""
+    rho, E, nu, Y = _steel(iface)
+    c0 = math.sqrt(E / rho)
+    across, through = RESOLUTIONS[resolution]
+    mat = pad_material(pad.material)
+    padded = mat.kind in ("elastomer", "yielding metal")
+    t = pad.thickness if padded else 0.0
+    h_pad = min(t / through, pad.diameter / across) if padded else math.inf
+
+    def steel_body(name, d, L, z, v, crown=0.0):
+        # a face's cells at most FACE_CELLS of the pad's: a thin pad's nodes on a coarse steel face make
+        # the penalty contact unstable (a 2 mm pad on 27 mm cells created energy)
+        h = min(min(d, L) / across, FACE_CELLS * h_pad)
+        b = {"name": name, "material": f"steel_{name}", "shape": "cylinder", "radius": d / 2, "length": L,
+             "element_size": h, "position": [0.0, z], "velocity": [0.0, v],
+             "damping": _band(STRUCTURAL_DAMPING, c0 / (2 * L))}
+        if crown:
+            b["bottom_crown"] = crown
+            # the contact patch at the yield onset is CROWN_CONTACT of the radius: cells a tenth of it there
+            b["element_size"] = min(b["element_size"], CROWN_CONTACT * d / 20)
+        return b
+    bodies = [steel_body("a", iface.striker_diameter, iface.striker_length, iface.struck_length + t + GAP,
+                         -iface.speed, pad.crown),
+              steel_body("b", iface.struck_diameter, iface.struck_length, 0.0, 0.0)]
+    # each body the chain's mass: a housing's wall and its oil as a solid of the wall's section and length
+    materials = {f"steel_{n}": {"library": iface.steel, "density": m / (math.pi * d * d / 4 * L)}
+                 for n, m, d, L in (("a", iface.striker_mass, iface.striker_diameter, iface.striker_length),
+                                    ("b", iface.struck_mass, iface.struck_diameter, iface.struck_length))}
+    contact = [{"name": "a_b", "a": "a.bottom", "b": "b.top", "penalty_scale": 1.0}]
+    if padded:
+        materials["pad"] = mat.scene_material()
+        p = {"name": "pad", "material": "pad", "shape": "cylinder", "radius": pad.diameter / 2, "length": t,
+             "element_size": h_pad, "position": [0.0, iface.struck_length]}
+        if mat.kind == "elastomer":
+            # its hysteresis over the band of its contact's frequencies (1 / (2 T) at its centre); a rubber's
+            # band takes its moduli static (``scene.damping.check_band_laws``)
+            centre = 1 / (2 * pad.contact_time)
+            p["damping"] = {"type": "band", "ratio": mat.damping_ratio(), "low": centre / math.sqrt(PAD_BAND),
+                            "high": centre * math.sqrt(PAD_BAND), "reference": 0.0}
+        bodies.insert(1, p)
+        contact = [{"name": "a_pad", "a": "a.bottom", "b": "pad.top", "penalty_scale": 1.0 if mat.kind != "elastomer"
+                    else 0.1},
+                   {"name": "pad_b", "a": "pad.bottom", "b": "b.top", "penalty_scale": 1.0 if mat.kind != "elastomer"
+                    else 0.1}]
+    end = GAP / iface.speed + 3 * pad.contact_time + 6 * max(iface.striker_length, iface.struck_length) / c0
+    return {"scene": {"name": f"pad_{iface.name}_{pad.material}", "kinematics": "axisymmetric", "end_time": end,
+                      "element": "quad"},
+            "materials": materials, "bodies": bodies, "contact": contact,
+            "outputs": {"field_interval": end, "history_interval": end / 400}}
+
+
+@dataclass
+class Measured:
+    """One interface's run: its restitution and what it cost."""
+    restitution: float
+    run: str                    # the run directory
+    wall_time_s: float
+    elements: int
+    steps: int
+    energy_balance_error: float
+    peak_interface_stress: float    # the largest contact force over the smaller face [Pa]
+    peak_stress_over_yield: dict    # each steel body's von Mises peak over its yield
+    pad_plastic_work: float     # [J]
+    parted: bool                # the faces had parted when the run ended
+    inputs: dict = field(default_factory=dict)
+    cached: bool = False        # read from the cache, not run now
+    note: str = ""              # why it was not run
+
+    @property
+    def ran(self) -> bool:
+        return bool(self.run)
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+def parted(history: dict, names: list[str]) -> bool:
+    """No contact force over the last tenth of the record."""
+    n = len(history["time"])
+    return all(abs(history[f"contact.{c}.normal_z"][-max(n // 10, 2):]).max() == 0.0 for c in names)
+
+
+def run_work(raw: dict) -> float:
+    """The cells times steps an interface scene will take, estimated: each body's section over its cell
+    size squared, the step the smallest cell's dilatational wave allows (halved: a band's step factor,
+    the contact's penalty)."""
+    cells, dt = 0.0, math.inf
+    for b in raw["bodies"]:
+        m = raw["materials"][b["material"]]
+        props = ({k: property_si(m["library"], k, d) for k, d in (("density", "density"),
+                                                                   ("youngs_modulus", "pressure"))}
+                 if "library" in m else m)
+        rho = m.get("density", props["density"])
+        E, nu = props["youngs_modulus"], m.get("poisson_ratio", 0.3)
+        c = math.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho)
+        h = b["element_size"]
+        cells += b["radius"] * b["length"] / (h * h)
+        dt = min(dt, 0.5 * h / c)
+    return cells * raw["scene"]["end_time"] / dt
+
+
+def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resolution: str = "coarse") -> Measured:
+    """Run the interface's scene (``interface_scene``) in ``out_dir`` and read its restitution; a run whose
+    faces have not parted at its end runs again twice as long, once."""
+    from ..output.history_file import read_history_csv
+    from ..runner import run_scene
+    def estimate(note: str) -> Measured:
+        return Measured(estimated_restitution(pad.material), "", 0.0, 0, 0, 0.0, math.nan, {}, 0.0, False,
+                        {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution}, note=note)
+    if resolution == ESTIMATE:
+        return estimate("not run (pad resolution 'estimate'): the material's estimate")
+    raw = interface_scene(iface, pad, resolution)
+    work = run_work(raw)
+    if work > MAX_WORK:
+        return estimate(f"not run: about {work:.2g} cells x steps, over the {MAX_WORK:.0e} a pad run gets; "
+                        f"the material's estimate kept")
+    for attempt in range(2):
+        res = run_scene(resolve(raw), out_dir, progress=False, write_fields=False, quiet=True)
+        s = res.summary
+        h = read_history_csv(os.path.join(out_dir, "history.csv"))
+        names = [c["name"] for c in raw["contact"]]
+        if parted(h, names) or attempt:
+            break
+        raw["scene"]["end_time"] *= 2
+        end = raw["scene"]["end_time"]
+        raw["outputs"] = {"field_interval": end, "history_interval": end / 400}
+    bodies = s["bodies"]
+    v_a = bodies["a"]["velocity_final"][-1]
+    struck = [b for b in ("b", "pad") if b in bodies]
+    m_b = sum(bodies[b]["mass"] for b in struck)
+    v_b = sum(bodies[b]["mass"] * bodies[b]["velocity_final"][-1] for b in struck) / m_b
+    force = max(float(abs(h[f"contact.{c}.normal_z"]).max()) for c in names)
+    Y = initial_yield_stress(iface.steel)
+    return Measured((v_a - v_b) / iface.speed, out_dir, s["wall_time_s"], s["elements"], s["steps"],
+                    s["energy"]["balance_error"], force / iface.face_area,
+                    {b: bodies[b]["max_von_mises"] / Y for b in ("a", "b")},
+                    bodies["pad"]["plastic_work"] if "pad" in bodies else 0.0, parted(h, names),
+                    {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution},
+                    note=f"about {work:.2g} cells x steps estimated")
+
+
+class RunCache:
+    """The interfaces run so far: (material, interface rounded, resolution) -> ``Measured``, kept in
+    ``folder/pad_runs.json`` beside the runs' directories, so that a design meeting the same interface
+    again (another iteration, another design in the same folder) reads it instead of running it."""
+
+    def __init__(self, folder: str):
+        self.folder = folder
+        self.path = os.path.join(folder, "pad_runs.json")
+        self.table: dict[str, dict] = {}
+        if os.path.exists(self.path):
+            with open(self.path) as fh:
+                self.table = json.load(fh)
+        self.hits = self.misses = 0
+
+    @staticmethod
+    def key(iface: Interface, pad: PadDesign, resolution: str) -> str:
+        d = asdict(iface)
+        d.pop("name")
+        geometry = {k: _round(getattr(pad, k)) for k in ("diameter", "thickness", "crown")}
+        return json.dumps({"material": pad.material, "resolution": resolution, **d, **geometry}, sort_keys=True)
+
+    def measure(self, iface: Interface, material: str, resolution: str = "coarse",
+                restitution: float | None = None) -> tuple[Measured, PadDesign]:
+        """The interface's restitution with a pad of ``material`` sized on it at ``restitution`` (default
+        the material's estimate), from the table or from a new run."""
+        iface = iface.rounded()
+        e0 = estimated_restitution(material) if restitution is None else restitution
+        pad = size_pad(iface, material, e0)
+        k = self.key(iface, pad, resolution)
+        if k in self.table:
+            self.hits += 1
+            return Measured(**{**self.table[k], "cached": True}), pad
+        self.misses += 1
+        where = os.path.join(self.folder, f"run_{len(self.table) + 1:03d}_{iface.name}_{material}")
+        m = measure_restitution(iface, pad, where, resolution)
+        self.table[k] = {key: v for key, v in m.as_dict().items() if key != "cached"}
+        os.makedirs(self.folder, exist_ok=True)
+        with open(self.path, "w") as fh:
+            json.dump(self.table, fh, indent=1)
+        return m, pad

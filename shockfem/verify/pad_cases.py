@@ -1,0 +1,149 @@
+"""Verification of the pads' finite-element restitution (``shockfem/machine/pads.py``) against closed forms.
+
+* ``pad_bars``: a bare flat interface (the pads module's own scene, pad ``none``) of two slender steel
+  rods of equal impedance, the striker half as long as the struck rod, at 5 m/s (elastic): the restitution
+  is the wave the longer rod keeps, L_a / L_b in St Venant's theory, and the project's 1D bars
+  (``amplifier.bars``) with the same band damping give it with the damping's loss; the axisymmetric run
+  against the 1D bars within 3%, the tolerance the axisymmetric-vs-1D case of the amplifier holds
+  (rods 20 diameters long: their lateral inertia).
+* ``pad_rigid``: a polyurethane pad (95A) between two compact steel masses at 2 m/s, compressed 5%: the
+  masses move as rigid bodies (their transit is 3% of the contact) and the pad is light (1.4% of a mass)
+  and quick (its transit 5% of the contact), so its restitution is that of rigid masses on a spring-dashpot
+  that never pulls at the pad's damping ratio (``amplifier.rigid.pad_restitution``).
+* ``pad_johnson``: an elastic-perfectly-plastic steel sphere on a rigid flat, far above its yield speed:
+  Johnson's estimate (Contact Mechanics, 1985, sec. 11.5) of a fully plastic loading at the mean pressure
+  p_m = 3 Y and a Hertzian elastic unloading (``amplifier.interfaces.plastic_restitution``: the constant
+  3.74 derived from those two steps, which Johnson prints as 3.8), falling as V^(-1/4).  The exponent is the law's firm part
+  (checked between 5 and 10 m/s); the constant rests on p_m = 3 Y, which Tabor's measured hardness puts
+  at 2.8 to 3 Y, and on an unloading that leaves pile-up out.
+"""
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import replace
+
+from ..amplifier import rigid
+from ..amplifier.bars import Bar, Interface as BarInterface, run_bars
+from ..amplifier.interfaces import plastic_restitution
+from ..machine.pad_materials import pad_material
+from ..machine.pads import (DAMPING_BAND, STRUCTURAL_DAMPING, Interface, RunCache, measure_restitution, parted,
+                            size_pad)
+from ..output.history_file import read_history_csv
+from ..runner import run_scene
+from ..scene import resolve
+from ..scene.library import property_si
+from .checks import check
+
+STEEL = "high_strength_steel"
+
+
+def _run_checks(name: str, reference: float, m, tolerance: float) -> list[dict]:
+    """A pad run's restitution against ``reference``, that its faces parted, and its energy balance (1%)."""
+    case = name.split(".")[0]
+    return [check(f"{name} [-]", reference, m.restitution, tolerance, m.wall_time_s, m.elements),
+            check(f"{case}.faces_parted [count]", 1, int(m.parted), 0.0, m.wall_time_s, m.elements, absolute=True),
+            check(f"{case}.energy_balance [-, abs]", 0.0, m.energy_balance_error, 0.01, m.wall_time_s, m.elements,
+                  absolute=True)]
+
+
+def pad_bars(size, workdir):
+    """A bare flat interface of two equal-impedance rods (L 0.1 / 0.2 m, D 20 mm, 5 m/s): FE against 1D bars."""
+    d, La, Lb, v = 0.02, 0.1, 0.2, 5.0
+    rho, E = property_si(STEEL, "density", "density"), property_si(STEEL, "youngs_modulus", "pressure")
+    A = math.pi * d * d / 4
+    iface = Interface("a_b", rho * A * La, d, La, rho * A * Lb, d, Lb, v, STEEL, 1e12)
+    resolution = {"coarse": "coarse", "default": "default", "fine": "default"}[size]
+    m, _ = RunCache(os.path.join(workdir, "pad_bars")).measure(iface, "none", resolution)
+    c0 = math.sqrt(E / rho)
+    bars = [Bar("a", La, A, rho, E, v), Bar("b", Lb, A, rho, E)]
+    r = run_bars(bars, [BarInterface("a_b")], 8 * Lb / c0, damping_ratio=[STRUCTURAL_DAMPING] * 2,
+                 damping_frequency=[0.0, 0.0],
+                 damping_band=[(c0 / (2 * L), DAMPING_BAND * c0 / (2 * L)) for L in (La, Lb)],
+                 damping_reference=[None, None])
+    v_a, v_b = r.history["a.v_z"][-1], r.history["b.v_z"][-1]
+    e_1d = (v_b - v_a) / v
+    out = _run_checks("pad_bars.restitution_vs_1d_bars", e_1d, m, 0.03)
+    out[0]["note"] = (f"St Venant (undamped) L_a / L_b = {La / Lb:g}; the 1D bars with the band damping "
+                      f"{e_1d:.4f}, the axisymmetric run {m.restitution:.4f}")
+    return out
+
+
+def pad_rigid(size, workdir):
+    """A 95A pad (D 100 mm, 10 mm) between steel masses (D 100 mm, L 100 mm) at 2 m/s: FE against rigid masses
+    on a spring-dashpot that never pulls, at the pad's damping ratio."""
+    rho = property_si(STEEL, "density", "density")
+    d, L, v = 0.1, 0.1, 2.0
+    mass = rho * math.pi * d * d / 4 * L
+    iface = Interface("a_b", mass, d, L, mass, d, L, v, STEEL, 1e12)
+    mat = pad_material("pu_95a")
+    # the pads module sizes the pad to its working point; this case wants a thin one at small strain
+    pad = size_pad(iface, "pu_95a", math.sqrt(mat.resilience))
+    t = 0.01
+    k = mat.youngs_modulus * math.pi * d * d / 4 / t
+    pad = replace(pad, thickness=t, mass=mat.density * math.pi * d * d / 4 * t,
+                  contact_time=math.pi * math.sqrt(iface.m_star / k))
+    resolution = {"coarse": "coarse", "default": "default", "fine": "default"}[size]
+    m = measure_restitution(iface, pad, os.path.join(workdir, "pad_rigid"), resolution)
+    e_rigid = rigid.pad_restitution(mat.damping_ratio())
+    # 6%: measured 4.6% above at coarse size (0.6615 against 0.6325) and 4.5% at the default (0.6610):
+    # converged, the difference the band's Maxwell terms, whose memory lets the pad go otherwise than a
+    # Kelvin-Voigt dashpot of the same ratio would, and their 2% ripple (``materials.band_damping.RIPPLE``).
+    # A lost hysteresis gives e near 1, a doubled ratio about 0.4
+    out = _run_checks("pad_rigid.restitution_vs_rigid_pad", e_rigid, m, 0.06)
+    out[0]["note"] = (f"zeta = {mat.damping_ratio():.4f} from the rebound resilience {mat.resilience:g}; "
+                      f"rigid masses {e_rigid:.4f}, finite elements {m.restitution:.4f}")
+    return out
+
+
+def _sphere_on_flat(speed, radius, material, size, workdir):
+    h = 0.001 * {"coarse": 2.0, "default": 1.0, "fine": 0.5}[size]
+    a = (4 * radius * 0.5 * material["density"] * 4 / 3 * math.pi * radius ** 3 * speed ** 2
+         / (math.pi * 3 * material["yield_stress"])) ** 0.25
+    c0 = math.sqrt(material["youngs_modulus"] / material["density"])
+    contact = 4 * a * a / (2 * radius) / speed + 4 * radius / c0
+    raw = {"scene": {"name": f"johnson_{speed:g}", "kinematics": "axisymmetric", "end_time": contact},
+           "materials": {"ball": material},
+           "bodies": [{"name": "ball", "material": "ball", "shape": "sphere", "radius": radius, "element_size": h,
+                       # the contact radius over 15 cells at every size
+                       "pole_element_size": min(a / 15, 0.1 * h), "position": [0.0, 1e-6],
+                       "velocity": [0.0, -speed]}],
+           "contact": [{"name": "flat", "a": "ball.bottom", "penalty_scale": 1.0,
+                        "wall": {"point": [0.0, 0.0], "normal": [0.0, 1.0]}}],
+           "outputs": {"field_interval": contact, "history_interval": contact / 400}}
+    where = os.path.join(workdir, f"johnson_{speed:g}")
+    res = run_scene(resolve(raw), where, progress=False, write_fields=False, quiet=True)
+    s = res.summary
+    s["parted"] = parted(read_history_csv(os.path.join(where, "history.csv")), ["flat"])
+    return s["bodies"]["ball"]["velocity_final"][-1] / speed, s
+
+
+def pad_johnson(size, workdir):
+    """A steel sphere (R 10 mm, Y 1 GPa, perfectly plastic) on a rigid flat at 5 and 10 m/s (150 and 290 times
+    its yield speed): Johnson's fully plastic restitution and its V^(-1/4)."""
+    radius = 0.01
+    material = {"density": 7850.0, "youngs_modulus": 210e9, "poisson_ratio": 0.3, "yield_stress": 1e9,
+                "tangent_modulus": 0.0}
+    runs = {v: _sphere_on_flat(v, radius, material, size, workdir) for v in (5.0, 10.0)}
+    m = material["density"] * 4 / 3 * math.pi * radius ** 3
+    e_star = material["youngs_modulus"] / (1 - material["poisson_ratio"] ** 2)      # on a rigid flat
+    out = []
+    wall = sum(s["wall_time_s"] for _, s in runs.values())
+    cells = runs[5.0][1]["elements"]
+    for v, (e, s) in runs.items():
+        # 20%: the runs are converged (0.5629 and 0.4677 at coarse size, 0.5560 and 0.4641 at the default) and
+        # 14 to 16% below the closed form, whose constant is an estimate: a mean pressure of 3 Y throughout
+        # (Tabor's hardness: 2.8 to 3 Y; e goes as p_m^(5/8)), no elastic share of the loading, a Hertzian
+        # unloading of the truncated sphere.  A yield stress off by 2 moves e by 54%, no plasticity to about 1
+        johnson = plastic_restitution(v, m, radius, e_star, material["yield_stress"])
+        out.append(check(f"pad_johnson.V={v:g}.restitution [-]", johnson, e, 0.20, s["wall_time_s"], s["elements"]))
+    slope = math.log(runs[10.0][0] / runs[5.0][0]) / math.log(2.0)
+    # 0.05 on the exponent -1/4: between 5 and 10 m/s the elastic share of the loading (V_y / V)^(1/2) is
+    # about 8%, which moves the local exponent by a few hundredths
+    out.append(check("pad_johnson.exponent [-, abs]", -0.25, slope, 0.05, wall, cells, absolute=True))
+    out.append(check("pad_johnson.faces_parted [count]", len(runs), sum(s["parted"] for _, s in runs.values()), 0.0,
+                     wall, cells, absolute=True))
+    out.append(check("pad_johnson.energy_balance [-, abs]", 0.0,
+                     max(s["energy"]["balance_error"] for _, s in runs.values()), 0.01, wall, cells, absolute=True))
+    return out
+
