@@ -4,7 +4,8 @@
 checkpoint missed), in one process and under ``mpirun -n 2``, and for a chain scene through to its
 report.  The scenes cover every stateful part of the loop: rigid bodies, friction and an interference
 preload (the split cone), a liquid cavity (the piston dashpot), a penetrated target with plasticity,
-3D with rotation (the tilted drop), discrete springs and a constraint wall."""
+3D with rotation (the tilted drop, also band-damped), a run settled in a preload stage, discrete springs and a
+constraint wall."""
 import json
 import os
 import shutil
@@ -49,6 +50,12 @@ SCENES = {   # name: (scene, overrides, the step at which a SIGTERM stops it)
     "piston_dashpot": (os.path.join(GALLERY, "piston_dashpot.toml"), ['scene.end_time="0.3 ms"'], 500),
     "penetration": (os.path.join(GALLERY, "penetration.toml"), ['scene.end_time="0.2 ms"'], 500),
     "tilted_drop_3d": (os.path.join(GALLERY, "tilted_drop.toml"), ['scene.end_time="0.1 ms"'], 300),
+    # band damping's terms in the bodies' co-rotating frames (3D), and a run that settled in a preload stage
+    "band_tilted_3d": (os.path.join(GALLERY, "tilted_drop.toml"),
+                       ['scene.end_time="0.1 ms"', 'damping={type="band", ratio=0.02, low="2 kHz", high="40 kHz"}'],
+                       300),
+    "cone_drop_preload": (os.path.join(GALLERY, "cone_drop.toml"),
+                          ['scene.end_time="0.3 ms"', 'scene.preload={duration="500 us"}'], 8500),   # the stage: 7830 steps
     "springs": (_spring_scene, [], 100),
     "constraint_wall": (_constraint_wall_scene, [], 300),
 }
