@@ -106,27 +106,6 @@ def add_band_forces(f_int, u, X, nodes, slot, rot, rot_prev, centre, centre0, ro
     return work, stored
 
 
-@njit(cache=True, fastmath=True)
-def _frame_sums(u, X, mass, nodes, slot, centre0, num_owned, sums):
-    """Per body slot, over the owned nodes: sums[b, 0] = M, sums[b, 1:1+gdim] = sum m (x - c0),
-    sums[b, 1+gdim:] = sum m (X - c0) (x - c0)^T row by row (the Kabsch covariance, ``body_frames``)."""
-    gdim = u.shape[1]
-    sums[:] = 0.0
-    for j in range(nodes.shape[0]):
-        n = nodes[j]
-        if n >= num_owned:
-            continue
-        b = slot[j]
-        m = mass[n]
-        sums[b, 0] += m
-        for i in range(gdim):
-            sums[b, 1 + i] += m * (X[n, i] + u[n, i] - centre0[b, i])
-        for i in range(gdim):
-            p = m * (X[n, i] - centre0[b, i])
-            for k in range(gdim):
-                sums[b, 1 + gdim + i * gdim + k] += p * (X[n, k] + u[n, k] - centre0[b, k])
-
-
 def best_rotation(h: np.ndarray) -> np.ndarray:
     """The rotation R that maximises tr(R H) for the covariance H = sum m (X - c0)(x - c)^T: the least-squares
     rigid rotation taking the reference onto the current positions (Kabsch 1976, Acta Cryst. A32, 922)."""
@@ -153,7 +132,7 @@ class BandGroup:
     axis leaves f_int unchanged): the terms stay in the global frame.
     """
 
-    NOT_STATE = ("comm",)
+    NOT_STATE = ("comm", "X", "mass", "_owned_frames")
 
     def __init__(self, terms: BandTerms, nodes: np.ndarray, slot: np.ndarray, model, f_int: np.ndarray,
                  u: np.ndarray):
@@ -178,7 +157,9 @@ class BandGroup:
         self.rot = np.tile(np.eye(gdim), (bodies, 1, 1))
         self.centre = np.zeros((bodies, gdim))
         if self.rotating:
+            self._owned_frames = self._frame_parts(np.zeros(bodies))
             self.centre0[:] = self._frames(np.zeros_like(u))[1]      # the reference centres of mass
+            self._owned_frames = self._frame_parts(self.centre0)
             self.rot[:], self.centre[:] = self._frames(u)
         self.rot_prev = self.rot.copy()
         self.f_prev = np.zeros((len(nodes), gdim))
@@ -187,14 +168,28 @@ class BandGroup:
         self._into_frame(f_int, u)
         self.stored = 0.0                  # what the terms' springs hold on this rank's owned nodes [J]
 
+    def _frame_parts(self, centre0: np.ndarray) -> list:
+        """Per body slot: its owned nodes, their masses and m (X - c0) (constant: the covariance's left side)."""
+        parts = []
+        for b in range(self.rot.shape[0]):
+            own = self.nodes[(self.slot == b) & (self.nodes < self.num_owned)]
+            m = self.mass[own]
+            parts.append((own, m, m[:, None] * (self.X[own] - np.atleast_1d(centre0[b]))))
+        return parts
+
     def _frames(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Each body's best-fit rotation and centre of mass at displacement ``u``.  Collective."""
-        _frame_sums(u, self.X, self.mass, self.nodes, self.slot, self.centre0, self.num_owned, self.sums)
-        sums = self.comm.allreduce(self.sums, op=MPI.SUM) if self.comm.size > 1 else self.sums
+        """Each body's best-fit rotation and centre of mass at displacement ``u``: from the owned nodes'
+        sums M, sum m (x - c0) and the covariance sum m (X - c0)(x - c0)^T (= sum m (X - c0)(x - c)^T, since
+        sum m (X - c0) = 0), reduced over the ranks.  Collective."""
         gdim = u.shape[1]
+        for b, (own, m, weighted) in enumerate(self._owned_frames):
+            x = self.X[own] + u[own] - self.centre0[b]
+            self.sums[b, 0] = m.sum()
+            self.sums[b, 1:1 + gdim] = m @ x
+            self.sums[b, 1 + gdim:] = (weighted.T @ x).ravel()
+        sums = self.comm.allreduce(self.sums, op=MPI.SUM) if self.comm.size > 1 else self.sums
         mass = np.maximum(sums[:, 0], 1e-300)
         centre = self.centre0 + sums[:, 1:1 + gdim] / mass[:, None]
-        # sum m (X - c0)(x - c)^T = sum m (X - c0)(x - c0)^T, since sum m (X - c0) = 0
         rot = np.array([best_rotation(h.reshape(gdim, gdim)) for h in sums[:, 1 + gdim:]])
         return rot, centre
 
