@@ -216,12 +216,11 @@ class _Run:
         self.model = build_model(scene, meshed)
         say("models that run:\n" + describe(self.model, scene))
         self.solver = ExplicitSolver(self.model)
-        self.preload = None
         if state is None:
             for msg in self.solver.log_messages:
                 say(msg)
             if scene.preload is not None:
-                self.preload = settle(self.solver, scene.preload, say)
+                settle(self.solver, scene.preload, say)
         else:
             self._restore(state)
         say(f"elements: {self.model.num_cells_global}, stable step {self.solver.stable_step():.4g} s "
@@ -332,8 +331,8 @@ class _Run:
             self.history.write(rd.file("history.h5"), rd.file("history.csv"))
             summary = _summary(scene, solver, status, diagnosis, wall, self.peaks.per_body())
             summary["sections"] = {sec.name: sec.summary() for sec in self.history.sections}
-            if self.preload is not None:
-                summary["preload"] = self.preload
+            if getattr(solver, "preload_report", None) is not None:
+                summary["preload"] = solver.preload_report     # solver/preload.py, checkpointed with the solver
             checkpoint_time = self.checkpoints.wall_time if self.checkpoints is not None else 0.0
             summary["checkpoints"] = {"interval": scene.checkpoint_interval, "wall_time_s": checkpoint_time,
                                       "resumed_from": self.resumed}

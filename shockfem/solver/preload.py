@@ -116,4 +116,6 @@ def settle(solver, spec, log=print) -> dict:
             f"damping {alpha:.4g} 1/s, critical at {frequency:.4g} Hz; kinetic energy {kinetic:.3g} J against "
             f"{stored:.4g} J stored); the event starts from it at t = 0")
     log(said if settled else "WARNING: " + said + f": lengthen scene.preload.duration ({spec.duration:.4g} s)")
+    # kept with the solver's state, so that a run resumed from a checkpoint of its event still reports it
+    solver.preload_report = report
     return report

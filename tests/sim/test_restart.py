@@ -103,6 +103,10 @@ def test_a_resumed_run_is_the_uninterrupted_run(tmp_path, name):
     _same_run(tmp_path / "whole", tmp_path / "cut")
     resumed = shockfem.load_run(str(tmp_path / "cut")).summary["checkpoints"]["resumed_from"]
     assert [r["step"] for r in resumed] == [stop_at]
+    # a stage's report comes back with the solver's state
+    stage = shockfem.load_run(str(tmp_path / "cut")).summary.get("preload")
+    assert stage == shockfem.load_run(str(tmp_path / "whole")).summary.get("preload")
+    assert (stage is not None and stage["settled"]) == name.endswith("preload")
 
 
 def _cli(*args, launcher=(), env=None, **kw):
