@@ -262,6 +262,13 @@ class ExplicitSolver:
         self.energy.scale = energy_scale(self.model, self.contacts, self.energy.initial)
         self.dt_first = self.dt_stable    # the reference of a collapsing step (``steps``)
 
+    def start_event(self):
+        """After a preload stage (``solver/preload.py``): the clock back to t = 0, the scene's initial
+        velocities on the settled state (a step of 0 before the first, as at the start), their kinetic energy."""
+        self.t, self.dt = 0.0, 0.0
+        self._set_initial_velocity()
+        self.energy.kinetic = self._kinetic_energy(self.v)
+
     def _set_initial_velocity(self):
         m = self.model
         for i, body in enumerate(m.bodies):

@@ -22,6 +22,7 @@ from .pad_cases import pad_bars, pad_johnson, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
+from .preload_cases import preload_stage
 from .dashpot_cases import fluid_dashpot
 from .column_cases import liquid_column, orifice_law
 from .column_fe_cases import column_fe
@@ -66,6 +67,7 @@ CASES = {
     "crushable_pad": crushable_pad,
     "rubber_pad": rubber_pad,
     "shrink_fit": shrink_fit,
+    "preload_stage": preload_stage,
     "cone_friction": cone_friction,
     "cone_push": cone_push,
     "cone_rebound": cone_rebound,
