@@ -26,18 +26,18 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
-from ..fluid.orifice import FIXED_CD, OrificeLaw, area_for_force, piston_force
+from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force
 from .column_dashpot import simulate_column
 from .dashpot_validity import Limit, dashpot_limits, lumped_holds
+from .liquids import LIQUIDS, MINERAL_OIL, DesignLiquid
 from .lumped_dashpot import LumpedDashpot, simulate
 from .requirement import requirement
 
 # the oil (a mineral hydraulic oil) and the discharge coefficient of the study's first orifice law
 OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
-# the orifice's law the dashpot is designed on (``fluid/orifice.py``): still the study's first law (fixed
-# Cd, no approach, no jet, the pin open to the whole bore), whose designs ``check_design`` reports outside
-# its range and runs on the liquid column; ``AREA_RATIO`` is the law a design inside its range uses
-ORIFICE_LAW = FIXED_CD
+# the orifice's law the dashpot is designed on (``fluid/orifice.py``): Idelchik's sharp-edged orifice with
+# the velocity of approach and the jet's reaction, its pin never opening beyond ISO 5167-2's area ratio
+ORIFICE_LAW = AREA_RATIO
 # the bore clears the article by ``clearance``; the piston's thickness; the metering pin's points; the
 # liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
 DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
@@ -96,13 +96,13 @@ def carrier_density() -> float:
 
 def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, handles=START,
                    seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO,
-                   law: OrificeLaw = ORIFICE_LAW) -> dict:
+                   law: OrificeLaw = ORIFICE_LAW, liquid: DesignLiquid = MINERAL_OIL) -> dict:
     """The fluid dashpot for ``pulse`` on an article of ``article_mass`` [kg] in a bore of
     ``bore_radius`` [m]: a piston the article stands on, the metering pin that holds the force m A_g on
     the payload (article, piston and a ``seat_mass`` riding with them) over the relative stroke against a
     striker of ``striker_ratio`` times the payload, by the orifice ``law``, its opening never wider than
-    the law's largest area ratio.  ``handles`` (``HANDLES``) scale that design; the start is the design
-    itself.  SI throughout."""
+    the law's largest area ratio, filled with ``liquid`` (``programmer.liquids``).  ``handles``
+    (``HANDLES``) scale that design; the start is the design itself.  SI throughout."""
     pin_scale, column_over_stroke, force_factor, speed_factor = handles
     area = math.pi * bore_radius ** 2
     m_piston = carrier_density() * area * DASHPOT["piston_thickness"]
@@ -113,7 +113,7 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
     reduced = reduced_mass(payload, M)
     force = force_factor * payload * pulse.peak
     stroke = reduced * V * V / (2 * force)
-    rho = OIL["density"]
+    rho = liquid.density
     strokes = np.linspace(0.0, stroke, DASHPOT["pin_points"])
     largest = law.largest_ratio * area
     code = law.code()
@@ -127,14 +127,22 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
             "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
             "least_pressure": p_least, "initial_overshoot": p_least * area / force - 1.0, "stroke_design": stroke,
             "column": column_over_stroke * stroke, "pin": [[float(x), float(a)] for x, a in zip(strokes, pin)],
-            "liquid_mass": rho * area * column_over_stroke * stroke}
+            "liquid_mass": rho * area * column_over_stroke * stroke,
+            "liquid": next(k for k, v in LIQUIDS.items() if v == liquid), "piston_thickness": DASHPOT["piston_thickness"]}
+
+
+def design_liquid(d: dict) -> DesignLiquid:
+    """The liquid a design is filled with (the study's oil for a design that names none)."""
+    return LIQUIDS[d.get("liquid", "oil")]
 
 
 def dashpot_lumped(d: dict) -> LumpedDashpot:
     """The lumped model (``programmer.lumped_dashpot``) of a dashpot design, on the design's orifice law."""
+    liquid = design_liquid(d)
     return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
-                         d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), OIL["density"],
-                         OIL["bulk_modulus"], OIL["discharge"], law=OrificeLaw(**d["orifice_law"]))
+                         d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), liquid.density,
+                         liquid.bulk_modulus, OIL["discharge"], liquid.tait_exponent,
+                         law=OrificeLaw(**d["orifice_law"]))
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
@@ -182,15 +190,15 @@ def check_design(d: dict, run, pulse: PulseSpec) -> dict:
     leaves its range, the same design on the liquid column (``column_dashpot``) with its pulse and its
     own checks: what a designer must read before trusting the lumped pulse."""
     lumped = dashpot_lumped(d)
-    limits = dashpot_limits(lumped, run)
+    limits = dashpot_limits(lumped, run, design_liquid(d))
     out = {"limits": [lim.as_dict() for lim in limits], "lumped_holds": lumped_holds(limits)}
     if not out["lumped_holds"]:
-        column = simulate_column(lumped, pulse.record_end(), LUMPED_SAMPLES)
+        column = simulate_column(lumped, pulse.record_end(), LUMPED_SAMPLES, liquid=design_liquid(d).column())
         metrics, band = pulse.band(column.t, column.acceleration)
         out["column_check"] = {"peak": float(metrics.peak), "duration": float(metrics.duration),
                                "velocity_change": float(metrics.velocity_change), "band_passed": bool(band.passed),
                                "peak_pressure": float(column.pressure.max()),
                                "peak_floor_pressure": float(column.floor_pressure.max()),
-                               "limits": [lim.as_dict() for lim in dashpot_limits(lumped, column)],
+                               "limits": [lim.as_dict() for lim in dashpot_limits(lumped, column, design_liquid(d))],
                                **column.summary}
     return out
