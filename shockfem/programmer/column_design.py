@@ -101,12 +101,13 @@ def contact_shock(V: float, a: float, A: float, liquid, law: OrificeLaw = AREA_R
     return p, p * A - jet_reaction(mdot, rho, a, A, code)
 
 
-def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, factor: float = 2.0) -> tuple:
+def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, factor: float = 2.0,
+                           allowed: float | None = None) -> tuple:
     """The closing speed [m/s] above which no wall of ``steel`` holds the front a piston makes at
     contact with its orifice at the law's largest area ratio (the least front any pin in the law's range
     makes), that front rising as a step on the wall (dynamic ``factor`` 2): (speed, the front [Pa] at it,
-    the most the wall holds [Pa])."""
-    held = HOUSING_STEELS[steel].allowed_stress() / math.sqrt(3.0) / factor
+    the most the wall holds [Pa]); ``allowed``: the wall's stress [Pa] if not the steel's design stress."""
+    held = (allowed or HOUSING_STEELS[steel].allowed_stress()) / math.sqrt(3.0) / factor
     A = 1.0e-3
     speed = brentq(lambda V: contact_shock(V, AREA_RATIO.largest_ratio * A, A, liquid)[0] - held, 1.0, 3000.0)
     return speed, held, held * factor
