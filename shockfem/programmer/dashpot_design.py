@@ -1,15 +1,18 @@
-"""The fluid dashpot designed to a pulse specification, for any payload.
+"""The fluid dashpot designed to a pulse specification, for any payload: the closed form and the lumped
+designer.
 
-This is the fixture study's chosen design (``shockfem study fixture``, section 4; ``docs/fixture.md``)
-written as a law of the payload, so that the whole machine (``shockfem.machine``) sizes its fixture
-the way the study did for any article: the striker carries a housing full of oil; the article stands
+The closed form (``dashpot_design``): the striker carries a housing full of liquid; the article stands
 on a light piston in its bore; a metering pin holds the force m A_g on piston and article over the
 relative stroke (``fluid.orifice.area_for_force`` at the relative speed a constant force leaves the two
-masses, the pin's opening never beyond the orifice law's largest area ratio).  Four
+masses, on the sharp-edged law, the pin's opening never beyond that law's largest area ratio).  Four
 handles, factors on that closed form (the pin's opening, the liquid column over the stroke, the force
 the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead on the lumped model
-(``programmer.lumped_dashpot``) to a pulse inside the specification's band narrowed by
-``DESIGN_MARGIN``, so that the finite-element run, a little off the lumped one, still lands inside.
+(``programmer.lumped_dashpot``) by ``design_dashpot`` (the whole machine's fixture, ``shockfem.machine``,
+designs with it) to a pulse inside the specification's band narrowed by ``DESIGN_MARGIN``.  Every design
+it makes carries the validity checks of ``dashpot_validity``; where the lumped model leaves its range
+(at a shock machine's speeds it does: the liquid's Mach number, mass and transit time), the same design
+is run on the liquid column and both are reported.  The designer that designs on the column, with the
+bore as a handle, is ``programmer.column_design`` (the fixture study's).
 """
 from __future__ import annotations
 

@@ -132,8 +132,9 @@ def test_fixture_study_smoke(tmp_path):
         assert r["status"] == "completed" and abs(r["energy balance [-]"]) < 0.01, r["concept"]
         # only the seat touches the nose; its pressure is read from the nose contact, not assumed
         assert (r["nose pressure [MPa]"] > 0) == (r["concept"] == "dashpot with nose seat"), r["concept"]
-    # section 4: every design on the column at its design grid and its search grid (the grid's own error:
-    # measured 0.8% in peak between 60 and 200 cells), on the lumped model with the same law, its checks
+    # section 4: every design on the column at its design grid and its search grid (the grid's own error in
+    # the peak, measured at smoke size: 2.2% (oil) and 1.0% (water) between 40 and 200 cells; 0.8% between
+    # 60 and 200), on the lumped model with the same law, its checks
     designs = _rows(results, "designs")
     assert len(designs) == 12                     # 2 concepts x 2 liquids x 3 models
     values = results["values"]
@@ -141,7 +142,7 @@ def test_fixture_study_smoke(tmp_path):
         for liquid in ("oil", "water"):
             v = values[f"design_{concept}_{liquid}"]
             col, search = v["models"]["column"], v["models"]["search_column"]
-            assert search["peak"] == pytest.approx(col["peak"], rel=0.02)
+            assert search["peak"] == pytest.approx(col["peak"], rel=0.05)
             # the verdict follows from the checks, the band and the housing, never "inside" when one fails
             limits = _rows(results, f"limits_{concept}_{liquid}")
             column_checks = [r for r in limits if "column" in r["bounds the model"]
