@@ -71,6 +71,12 @@ def run_warnings(summary: dict) -> list[str]:
             out.append(f"contact {name}: surfaces went {beyond:.3g} m into each other, {beyond / c['smallest_facet']:.0%} "
                        f"of its smallest facet ({c['smallest_facet']:.3g} m; above {CONTACT_PENETRATION:.0%}): the "
                        "penalty is soft for this impact. Raise the contact's penalty_scale or refine the surfaces")
+    for name, c in summary.get("cavities", {}).items():
+        # a liquid's model checks its range every run (fluid/cavity.py, fluid/column_source.py)
+        for check in c.get("validity", []):
+            if not check["holds"]:
+                out.append(f"cavity {name}: {check['name']} reached {check['value']:.3g}, beyond {check['limit']:.3g}: "
+                           f"outside the range of its model ({c['model'].split(';')[0]})")
     return out
 
 

@@ -38,6 +38,7 @@ from ..model import Model
 from ..scene.specs import Cavity
 from . import liquid
 from . import orifice
+from .column import _interpolate
 from .orifice import AREA_RATIO, OrificeLaw
 
 
@@ -79,16 +80,17 @@ class WallNodes:
         self.group_area = np.zeros(len(rigid_bodies))
         self.group_mass = model.body_mass[rigid_bodies] if len(rigid_bodies) else np.zeros(0)
 
-    def lumped_period(self, S: np.ndarray, stiffness_per_area2: float) -> float:
+    def lumped_period(self, S: np.ndarray, stiffness_per_area2: float, whole: float | None = None) -> float:
         """2 pi / omega of the liquid spring on the rigid bodies among the walls, omega^2 = (K_t / V) A_g A /
         M_g (``_stable_step``'s bound for a rigid wall: A_g its area, A the walls' whole area, M_g its body's
-        mass, ``group_area`` as ``_stable_step`` left it), inf without one.  That oscillation is the model
+        mass, ``group_area`` as ``_stable_step`` left it; ``whole`` if known), inf without one.  That oscillation is the model
         (a piston on a liquid), not a mesh mode: it bounds the step for accuracy too
         (``ExplicitSolver.accuracy_step``).  A deformable wall's node is a mesh mode, as an element's, and
         left out."""
         if not len(self.group_area):
             return math.inf
-        whole = float(np.sqrt((S * S).sum(axis=1)).sum())
+        if whole is None:
+            whole = float(np.sqrt((S * S).sum(axis=1)).sum())
         omega2 = stiffness_per_area2 * whole * float(np.max(self.group_area / self.group_mass))
         return 2.0 * math.pi / math.sqrt(omega2) if omega2 > 0.0 else math.inf
 
@@ -209,6 +211,11 @@ class LiquidCavity(ForceSource):
             ratio = self.density_ratio()
             self.outflow = taken / dt
             self.throttled += taken * self.pressure_of(ratio) / (self.spec.density * ratio)
+        else:
+            # at the start: the jet of a pre-charged cavity already flows at its pressure
+            sp = self.spec
+            self.outflow = liquid.orifice_mass_flow(self.density_ratio(), self.orifice_area(), self.passage, self._law,
+                                                    sp.bulk_modulus, sp.tait_exponent, sp.density)
         self.pressure = self.pressure_of(self.density_ratio())
         self.max_pressure = max(self.max_pressure, self.pressure)
         self._jet(S, v, dt)
@@ -266,17 +273,10 @@ class LiquidCavity(ForceSource):
                 "pressure": self.pressure, "max_pressure": self.max_pressure, "mass_out": self.out_mass,
                 "energy_taken": self.energy(), "energy_stored": self.stored_energy() - self.initial_stored,
                 "energy_throttled": self.throttled, "jet_reaction_work": self.jet_work,
-                "heating": self.throttled / max(self.out_mass, 1e-300) / self.spec.heat_capacity,
+                "jet_heating": self.throttled / max(self.out_mass, 1e-300) / self.spec.heat_capacity,
                 "validity": [{"name": "orifice area ratio a / A", "value": self.max_area_ratio, "limit": limit,
                               "holds": bool(self.max_area_ratio <= limit)}],
                 "outside": [] if self.max_area_ratio <= limit else ["orifice area ratio a / A"]}
-
-
-@njit(cache=True)
-def _interpolate(x, xs, ys):
-    """np.interp compiled (numba's follows numpy's): called from Python on a metering pin's table every
-    step, numpy's own took 5 us."""
-    return np.interp(x, xs, ys)
 
 
 @njit(cache=True)

@@ -9,9 +9,11 @@ step, on the walls' current facets (area vectors S_f, nodes' mean velocities v_f
     w_k  = sum_f (S_f . v_f) / sum_f (S_f . e)      a wall's axial velocity: the volume it sweeps over its
                                                     axial area, so that the column's length follows the
                                                     volume between the walls
-    the column stepped over dt with the walls at w_F, w_P (v_n+1/2), in sub-steps within its own
-    Courant limit; its mean forces over the step, F_F = -p_F A_F and F_P = p_P A_P - J (J the jet's
-    reaction on the piston, ``orifice.jet_reaction``), back to the walls as follower loads:
+    the column stepped on its own clock: once the steps since its last reach its own step (its Courant
+    step, and a quarter of the walls' dashpot bound below), over them, with the walls at their mean
+    axial velocities (v_n+1/2 averaged), in sub-steps if one step is longer; its mean forces over that
+    step, F_F = -p_F A_F and F_P = p_P A_P - J (J the jet's reaction on the piston,
+    ``orifice.jet_reaction``), back to the walls as follower loads, held until its next step:
     f_node = -(F_k / sum_f S_f . (-+e)) S_f / (nodes per facet)   summing to F_k e on each wall
 
 so that the walls' work on the liquid, -(F_F w_F + F_P w_P) dt, is what the column counts (its floor's and
@@ -26,7 +28,8 @@ the column's dissipation (its shock fronts and Rusanov's flux: the liquid's heat
 coupling's own residual (the solver's trapezoidal work against the column's step), is in the summary.
 
 Stable step: a wall node of mass m_i and area a_i against the liquid's impedance rho c (the wall face's
-acoustic Riemann solution, a dashpot rho c a_i) is stable in the central difference below 2 m_i / (rho c a_i);
+acoustic Riemann solution, a dashpot rho c a_i) is stable in the central difference below 2 m_i / (rho c a_i),
+and with the dashpot's force held over the column's step (a delay tau) below tau = (pi / 2) m_i / (rho c a_i);
 the liquid as a spring K A^2 / V on the walls' nodes (``cavity._stable_step``) bounds it too, and its
 period on the rigid walls' bodies bounds the step for accuracy (``WallNodes.lumped_period``).  A rigid
 wall's nodes move with their body (its mass, its wall's area).
@@ -52,12 +55,15 @@ from ..model import Model
 from ..scene.specs import Cavity
 from . import orifice
 from .cavity import WallNodes, node_areas, orifice_law, wall_forces
-from .column import MACH_LIMIT, ColumnLiquid, LiquidColumn
+from .column import MACH_LIMIT, ColumnLiquid, LiquidColumn, _interpolate, column_walls
 
 # the piston face must face the floor: the cosine between its net normal and -e above this (8 degrees)
 PARALLEL = 0.99
 # a column given a volume: it must be its walls' within this share (the walls and the section set it)
 VOLUME_AGREEMENT = 0.02
+# the column's step against the dashpot's bound 2 m / (rho c a) on the walls' nodes: its forces are held over
+# it, a delay, stable below (pi / 2) m / (rho c a); a quarter of the bound keeps it below a third of that
+DELAY = 0.25
 # a column parted by less than this share of its volume has not cavitated (the void's round-off)
 PARTED = 1e-6
 
@@ -103,7 +109,13 @@ class ColumnSource(ForceSource):
         self.forces = (-spec.initial_pressure * self.column.area(0.0),
                        spec.initial_pressure * self.column.area(self.initial_length))
         self.velocities = (v_floor, v_floor)
-        self.substeps = 0
+        self.substeps = 0                # the column's steps (its Courant sub-steps)
+        self.column_steps = 0            # the times it was stepped (its forces updated)
+        self._held = 0.0                 # the time since its last step [s]
+        self._swept = [0.0, 0.0]         # the walls' axial displacement since then [m]
+        self._interval = 0.0             # its own step [s] (``_limit``)
+        self._step_limit = math.inf
+        self._stepped = False
         self.max = {"floor_pressure": spec.initial_pressure, "piston_pressure": spec.initial_pressure,
                     "area_ratio": 0.0, "piston_mach": 0.0, "column_mach": 0.0, "void": 0.0}
 
@@ -150,31 +162,40 @@ class ColumnSource(ForceSource):
     def orifice_area(self) -> float:
         if len(self._area) == 1:
             return float(self._area[0])
-        return float(np.interp(self.initial_length - self.column.length(), self._stroke, self._area))
+        return _interpolate(self.initial_length - self.column.length(), self._stroke, self._area)
 
     def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
-        """Step the column over ``dt`` with the walls' axial velocities at v_n+1/2, then its mean forces of
-        the step on the walls' facets at t_n+1.  Returns the step limit (module docstring).  Collective."""
+        """The walls' axial velocities at v_n+1/2 (their volume swept over the step); the column stepped once
+        the steps since its last one reach its own step (``_interval``), on the walls' mean velocities over
+        them; its mean forces of that step on the walls' facets at t_n+1, held until its next.  Returns the
+        step limit (module docstring).  Collective."""
         x = self.exchange.gather(x, out=self._x)
         v = self.exchange.gather(v, out=self._v)
         S = area_vectors(self.model, x, self.facets, out=self._S)
-        nf = self.n_floor
-        _, a_floor, flux_floor = _wall_state(x, v, self.facets[:nf], S[:nf], self.axis)
-        _, a_piston, flux_piston = _wall_state(x, v, self.facets[nf:], S[nf:], self.axis)
+        a_floor, flux_floor, a_piston, flux_piston = _walls_state(x, v, self.facets, S, self.n_floor, self.axis)
         w_f, w_p = flux_floor / a_floor, flux_piston / a_piston
         if dt > 0.0:
-            self._advance(w_f, w_p, dt)
+            self._held += dt
+            self._swept[0] += dt * w_f
+            self._swept[1] += dt * w_p
+            # step the column now if the next step (as long as this one) would take it past its own
+            if self._held + dt > self._interval:
+                held = self._held
+                self._advance(self._swept[0] / held, self._swept[1] / held, held)
+                self._held = self._swept[0] = self._swept[1] = 0.0
+                self._step_limit = self._limit(S)
         else:
             # at the start: the walls' Riemann pressures on the liquid as it stands (a step of no length)
             self.forces = self.column.step(w_f, w_p, self.orifice_area(), 0.0)
             self.velocities = (w_f, w_p)
+            self._step_limit = self._limit(S)
         F_f, F_p = self.forces
         # q on each facet: -q S_f sums to F e on a wall whose axial area is sum S_f . e = a (q = -F / a)
-        self._p_facet[:nf] = -F_f / a_floor
-        self._p_facet[nf:] = -F_p / a_piston
+        self._p_facet[:self.n_floor] = -F_f / a_floor
+        self._p_facet[self.n_floor:] = -F_p / a_piston
         self.work += wall_forces(self.f, self._f_old, self.facets, S, self._p_facet, v, dt)
         self.exchange.add_to(self.f, f)
-        return self._limit(S)
+        return self._step_limit
 
     def _advance(self, w_f: float, w_p: float, dt: float):
         """The column over ``dt`` in sub-steps within its Courant limit, the walls held at (w_f, w_p); its
@@ -191,8 +212,10 @@ class ColumnSource(ForceSource):
             self.jet_work += h * col.jet_force * w_p
             self._peaks(a, w_f, w_p)
         self.substeps += n
+        self.column_steps += 1
         self.forces, self.velocities = (F_f, F_p), (w_f, w_p)
         self.column_work -= dt * (F_f * w_f + F_p * w_p)
+        self._stepped = True
 
     def _peaks(self, a: float, w_f: float, w_p: float):
         col, peak = self.column, self.max
@@ -204,9 +227,11 @@ class ColumnSource(ForceSource):
         peak["piston_mach"] = max(peak["piston_mach"], abs(w_p - w_f) / c)
 
     def account(self, dt: float, t: float, body_velocities) -> None:
-        """After the step: the liquid's Mach number in the column and its cavity (loops over the cells)."""
-        if dt <= 0.0:
+        """After a step that stepped the column: the liquid's Mach number in it and its cavity (loops over the
+        cells)."""
+        if not self._stepped:
             return
+        self._stepped = False
         peak, col = self.max, self.column
         w_f, w_p = self.velocities
         peak["column_mach"] = max(peak["column_mach"], col.mach(w_f, w_p))
@@ -214,16 +239,19 @@ class ColumnSource(ForceSource):
 
     def _limit(self, S: np.ndarray) -> float:
         """The step limit of the liquid on the walls' nodes: the impedance rho c and the spring K_t A^2 / V,
-        combined as frequencies (Gershgorin); the accuracy period on the rigid walls' bodies into ``period``."""
+        combined as frequencies (Gershgorin); the accuracy period on the rigid walls' bodies into ``period``;
+        the column's own step into ``_interval``: its Courant step, and a quarter of the impedance's bound,
+        m_i / (2 rho c a_i), since its forces are held over it (a delay tau on the wall's dashpot rho c a_i is
+        stable below (pi / 2) m_i / (rho c a_i))."""
         w, col, lq = self.walls, self.column, self.liquid
-        V = max(col.volume(), 1e-300)
+        volume, z_floor, z_end = column_walls(col.m, col.x, col.area_x, col.area_a, col._liquid)
+        V = max(volume, 1e-300)
         K_t = lq.bulk_modulus * max(col.mass() / (lq.density * V), 1.0) ** lq.tait_exponent
         share, whole = node_areas(S, self.facets, w.rigid_group, w.group_area, len(w.mass))
-        # the spring as cavity._stable_step's, omega^2 = max (K_t / V) a_i A / m_i; the dashpot 2 m_i / (rho c a_i)
-        omega2 = float(np.max(K_t / V * share * whole / w.mass))
-        self.period = w.lumped_period(S, K_t / V)
-        impedance = float(np.min(2.0 * w.mass / (max(col.wall_impedances()) * share)))
-        return 1.0 / math.sqrt(omega2 / 4.0 + 1.0 / impedance ** 2)
+        self.period = w.lumped_period(S, K_t / V, whole)
+        limit, damper = _liquid_step_limit(share, w.mass, whole, K_t / V, max(z_floor, z_end))
+        self._interval = min(col.stable_step(*self.velocities), DELAY * damper)
+        return limit
 
     # ---------------------------------------------------------------- what the run reads
     def rows(self) -> np.ndarray:
@@ -287,7 +315,29 @@ class ColumnSource(ForceSource):
                 "energy_out_with_jet": acc["energy out [J]"], "jet_reaction_work": self.jet_work,
                 "energy_dissipated": acc["column dissipation [J]"],
                 "coupling_residual": taken - self.column_work, "column_substeps": self.substeps,
+                "column_updates": self.column_steps,
                 "validity": validity, "outside": [c["name"] for c in validity if not c["holds"]]}
+
+
+@njit(cache=True)
+def _liquid_step_limit(share, mass, whole, stiffness_per_area2, z):
+    """The step limit of the liquid on the walls' nodes [s], its spring (``cavity._stable_step``'s omega^2 =
+    max (K_t / V) a_i A / m_i) and its dashpot (2 m_i / (rho c a_i)) combined as frequencies (Gershgorin),
+    and the dashpot's alone."""
+    omega2 = 0.0
+    damper = np.inf
+    for a in range(len(mass)):
+        omega2 = max(omega2, stiffness_per_area2 * share[a] * whole / mass[a])
+        damper = min(damper, 2.0 * mass[a] / (z * share[a]))
+    return 1.0 / math.sqrt(omega2 / 4.0 + 1.0 / damper ** 2), damper
+
+
+@njit(cache=True)
+def _walls_state(x, v, facets, S, n_floor, axis):
+    """``_wall_state``'s axial areas and fluxes of the floor (the first ``n_floor`` facets) and the piston."""
+    _, a_floor, flux_floor = _wall_state(x, v, facets[:n_floor], S[:n_floor], axis)
+    _, a_piston, flux_piston = _wall_state(x, v, facets[n_floor:], S[n_floor:], axis)
+    return a_floor, flux_floor, a_piston, flux_piston
 
 
 @njit(cache=True)

@@ -16,10 +16,13 @@ radius 20 mm, area A), ``[[cavity]] model = "column"``.
   masses.  They share the column (``fluid/column.py``), so this checks the coupling: the walls' axial
   velocities taken from the facets, the forces given back on them (p A less the jet's reaction), the
   sub-steps and the rigid bodies' integration; not the column itself (``verify liquid_column`` has that).
+  At a step of the bodies of 2 us (the column sub-stepped within it) and of 0.1 us (the column on its own
+  clock, its forces held over ~10 steps of the bodies).
 * ``column_fe_control_volume``: the control volume recovered by a short slow column: the fixed orifice of
   ``verify fluid_dashpot`` (an elastic steel piston, 0.197 kg, at 5 m/s on 20 mm of oil, a = A / 5, the
   fixed-Cd law at 0.7, pre-charged to the quasi-steady pressure) with a rigid floor under it, the column
   against the exact a0 / (1 + a0 t / V0)^2 and against the control-volume cavity on the same scene.
+* One process against two (``mpirun -n 2``) on an elastic piston and 0.3 m of oil: the same histories.
 """
 from __future__ import annotations
 
@@ -27,7 +30,7 @@ import math
 
 import numpy as np
 
-from .checks import SIZES, check, element_count
+from .checks import SIZES, check, element_count, parallel_agreement
 from .scenes import STEEL, solve
 
 OIL = {"density": 870.0, "bulk_modulus": 1.5e9}
@@ -118,7 +121,9 @@ def joukowsky(size, workdir, kinematics="axisymmetric"):
 
 
 def versus_lumped(size, workdir):
-    """The finite-element column against the lumped column dashpot on the same rigid bodies."""
+    """The finite-element column against the lumped column dashpot on the same rigid bodies, at a step of
+    2 us (the column sub-stepped within it) and of 0.1 us (the column on its own clock, stepped once every
+    ~10 steps of the bodies, its forces held between)."""
     from ..fluid.orifice import AREA_RATIO
     from ..programmer.column_dashpot import simulate_column
     from ..programmer.lumped_dashpot import LumpedDashpot
@@ -128,27 +133,38 @@ def versus_lumped(size, workdir):
     end = 3e-3
     d = LumpedDashpot(M, m, V, A, L, ((0.0, a), (1.0, a)), OIL["density"], OIL["bulk_modulus"], 0.0,
                       law=AREA_RATIO)
-    oil = OIL["density"] * A * L
-    raw = column_scene("column_vs_lumped", "axisymmetric", L, M - oil, m, V, 0.0, {"area": a}, end,
-                       0.005 * SIZES[size], max_step=2e-6)
-    rows = []
-    solver, wall = solve(raw, probe=_probe(rows), cache_dir=workdir)
-    t, v, acc, p, _ = np.array(rows).T
     lumped = simulate_column(d, end, 3000)
-    # from the first sample after contact: the lumped run's sample at t = 0 is its pre-charge's force (none),
-    # the finite-element run's the Riemann pressure of the walls' first velocities
-    after = lumped.t > 0.0
-    fe = np.interp(lumped.t[after], t, acc)
-    peak = float(np.max(np.abs(lumped.acceleration)))
-    rms = float(np.sqrt(np.mean((fe - lumped.acceleration[after]) ** 2))) / peak
-    n = element_count(solver)
-    s = solver.cavities[0].summary()
-    return [check("column_fe.vs_lumped.acceleration_rms_over_peak [-, abs]", 0.0, rms, 0.01, wall, n, absolute=True),
-            check("column_fe.vs_lumped.peak_acceleration [m/s^2]", peak, float(np.max(np.abs(acc))), 0.01, wall, n),
-            check("column_fe.vs_lumped.piston_speed_at_end [m/s]", lumped.payload_speed[-1], v[-1], 0.005, wall, n),
-            check("column_fe.vs_lumped.mass_out [kg]", lumped.summary["mass out [kg]"], s["mass_out"], 0.01, wall, n),
-            check("column_fe.vs_lumped.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
-                  absolute=True)]
+    oil = OIL["density"] * A * L
+    out = []
+    for tag, step in (("vs_lumped", 2e-6), ("vs_lumped_own_clock", 1e-7)):
+        raw = column_scene(f"column_{tag}", "axisymmetric", L, M - oil, m, V, 0.0, {"area": a}, end,
+                           0.005 * SIZES[size], max_step=step)
+        rows = []
+        solver, wall = solve(raw, probe=_probe(rows), cache_dir=workdir)
+        t, v, acc, p, _ = np.array(rows).T
+        # from the first sample after contact: the lumped run's sample at t = 0 is its pre-charge's force (none),
+        # the finite-element run's the Riemann pressure of the walls' first velocities
+        after = lumped.t > 0.0
+        fe = np.interp(lumped.t[after], t, acc)
+        peak = float(np.max(np.abs(lumped.acceleration)))
+        rms = float(np.sqrt(np.mean((fe - lumped.acceleration[after]) ** 2))) / peak
+        n = element_count(solver)
+        s = solver.cavities[0].summary()
+        name = f"column_fe.{tag}"
+        # measured at 2 us: 0.17% RMS (the bodies' leapfrog against the lumped model's symplectic Euler on the
+        # column's steps, and the forces' half-step lag), the peak 0.008%, the speed 0.011%, the mass out
+        # 0.012%; at 0.1 us (its own clock): 0.054% RMS; 0.5% for each (the jet's reaction alone,
+        # 2 Cc n / (1 + Cc n), is 11% of p A at this area ratio)
+        out += [check(f"{name}.acceleration_rms_over_peak [-, abs]", 0.0, rms, 0.005, wall, n, absolute=True),
+                check(f"{name}.peak_acceleration [m/s^2]", peak, float(np.max(np.abs(acc))), 0.005, wall, n),
+                check(f"{name}.piston_speed_at_end [m/s]", lumped.payload_speed[-1], v[-1], 0.005, wall, n),
+                check(f"{name}.mass_out [kg]", lumped.summary["mass out [kg]"], s["mass_out"], 0.005, wall, n),
+                # the coupling's residual: first order in the column's step (measured 5e-4 at both steps)
+                check(f"{name}.coupling_residual [-, abs]", 0.0, abs(s["coupling_residual"]) / s["energy_taken"],
+                      2.5e-3, wall, n, absolute=True),
+                check(f"{name}.energy_balance [-, abs]", 0.0, solver.energy.balance_error, 0.01, wall, n,
+                      absolute=True)]
+    return out
 
 
 def control_volume_recovered(size, workdir):
@@ -179,6 +195,8 @@ def control_volume_recovered(size, workdir):
     t_cv, acc_cv = np.array(cv_rows).T
     exact = a0 / (1 + a0 * t / V0) ** 2
     n = element_count(solver)
+    # 1%: the cavity's own acceptance bound on the same pulse (verify fluid_dashpot: 0.54% there); measured
+    # 0.81% (the column's oil, 0.2% of the piston's mass, and its ringing), 0.40% of a0 from the cavity's run
     return [check("column_fe.control_volume.deceleration_vs_exact [-, abs]", 0.0,
                   float(np.abs(acc / exact - 1).max()), 0.01, wall, n, absolute=True),
             check("column_fe.control_volume.deceleration_vs_cavity [-, abs]", 0.0,
@@ -186,8 +204,22 @@ def control_volume_recovered(size, workdir):
             check("column_fe.control_volume.speed_at_3tau [m/s]", V0 / 4, -v[-1], 0.01, wall, n)]
 
 
+def parallel(size, workdir):
+    """The elastic piston of ``control_volume_recovered`` on 0.3 m of oil through a sharp-edged orifice (the
+    gallery's column dashpot) with one and two MPI processes: every rank steps the same column on the walls'
+    nodes gathered from all, so the histories agree to round-off (measured: bit for bit)."""
+    from .dashpot_cases import PISTON
+    piston = {"name": "piston", "material": "steel", "shape": "cylinder", "radius": RADIUS,
+              "length": PISTON["length"], "position": [0.0, 0.3], "element_size": 0.002 * SIZES[size],
+              "velocity": [0.0, -5.0]}
+    raw = column_scene("column_parallel", "axisymmetric", 0.3, 2000.0, 0.2, 0.0, -5.0, {"area": _area() / 5},
+                       3e-4, 0.002 * SIZES[size], piston=piston)
+    columns = [f"cavity.oil.{c}" for c in ("floor_pressure", "piston_pressure", "outflow", "mass_out")]
+    return [parallel_agreement(raw, "column_fe.parallel_histories", workdir, columns + ["piston.v_z"])]
+
+
 def column_fe(size, workdir):
     """The liquid column as a finite-element force source: Joukowsky (axisymmetric and 3D), against the
-    lumped column dashpot, the control volume recovered."""
+    lumped column dashpot, the control volume recovered, one process against two."""
     return (joukowsky(size, workdir) + joukowsky(size, workdir, "3d") + versus_lumped(size, workdir)
-            + control_volume_recovered(size, workdir))
+            + control_volume_recovered(size, workdir) + parallel(size, workdir))

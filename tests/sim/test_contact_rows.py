@@ -1,7 +1,7 @@
 """The solver clears only the rows of ``f_con`` that contact-like forces write
 (``ExplicitSolver._rows_with_contact_forces``: each pair, cavity and target adds through its own
 ``NodeExchange``, a spring to its end nodes).  Were any of them to write another row, that row would keep
-its force step after step; so at every step of a pair, a spring, a liquid cavity and a penetrated target,
+its force step after step; so at every step of a pair, a spring, a liquid cavity, a liquid column and a penetrated target,
 every other row must still be exactly zero, and the forces must act (a test that cannot fail otherwise).
 
 On the same scenes every source answers the rest of its protocol (``forces/source.py``): its history gives as
@@ -11,7 +11,7 @@ source whose forces or work were counted twice, or not at all, would break the s
 import numpy as np
 import pytest
 
-from shockfem.verify import dashpot_cases, penetration_cases, spring_cases
+from shockfem.verify import column_fe_cases, dashpot_cases, penetration_cases, spring_cases
 from shockfem.verify.contact_cases import two_rods_scene
 from shockfem.verify.scenes import solve
 
@@ -23,10 +23,14 @@ def _scenes():
     spring["scene"]["end_time"] = 2e-4
     cavity = dashpot_cases._scene("dashpot", "coarse", 2e-4, 5.0, {"area": 1e-5})
     target = penetration_cases._shot_scene(0.01, 2e-5)
-    return {"pair": rods, "spring": spring, "cavity": cavity, "target": target}
+    # the liquid column under the same elastic piston, on a rigid floor
+    piston = {**cavity["bodies"][0], "position": [0.0, dashpot_cases.COLUMN]}
+    column = column_fe_cases.column_scene("column", "axisymmetric", dashpot_cases.COLUMN, 1e3, 0.2, 0.0, -5.0,
+                                          {"area": 1e-5}, 2e-4, 0.004, cells=20, piston=piston)
+    return {"pair": rods, "spring": spring, "cavity": cavity, "target": target, "column": column}
 
 
-@pytest.mark.parametrize("name", ["pair", "spring", "cavity", "target"])
+@pytest.mark.parametrize("name", ["pair", "spring", "cavity", "target", "column"])
 def test_contact_forces_stay_on_their_rows(name, tmp_path):
     raw = _scenes()[name]
     seen = {"steps": 0, "loaded": 0}
@@ -43,7 +47,7 @@ def test_contact_forces_stay_on_their_rows(name, tmp_path):
         assert len(solver._contact_rows) < len(solver.f_con) / 4
 
 
-@pytest.mark.parametrize("name", ["pair", "spring", "cavity", "target"])
+@pytest.mark.parametrize("name", ["pair", "spring", "cavity", "target", "column"])
 def test_each_source_accounts_for_its_energy(name, tmp_path):
     raw = _scenes()[name]
     solver, _ = solve(raw, cache_dir=str(tmp_path))

@@ -3,7 +3,7 @@
 (the state is restored whole and the arithmetic is the same; any difference is a piece of state the
 checkpoint missed), in one process and under ``mpirun -n 2``, and for a chain scene through to its
 report.  The scenes cover every stateful part of the loop: rigid bodies, friction and an interference
-preload (the split cone), a liquid cavity (the piston dashpot), a penetrated target with plasticity,
+preload (the split cone), a liquid cavity (the piston dashpot), a liquid column, a penetrated target with plasticity,
 3D with rotation (the tilted drop), discrete springs and a constraint wall."""
 import json
 import os
@@ -47,6 +47,8 @@ def _constraint_wall_scene():
 SCENES = {   # name: (scene, overrides, the step at which a SIGTERM stops it)
     "cone_drop": (os.path.join(GALLERY, "cone_drop.toml"), ['scene.end_time="0.3 ms"'], 900),
     "piston_dashpot": (os.path.join(GALLERY, "piston_dashpot.toml"), ['scene.end_time="0.3 ms"'], 500),
+    # the column steps every few steps of the bodies: a stop between two holds its half-gathered interval
+    "column_dashpot": (os.path.join(GALLERY, "column_dashpot.toml"), ['scene.end_time="0.3 ms"'], 501),
     "penetration": (os.path.join(GALLERY, "penetration.toml"), ['scene.end_time="0.2 ms"'], 500),
     "tilted_drop_3d": (os.path.join(GALLERY, "tilted_drop.toml"), ['scene.end_time="0.1 ms"'], 300),
     "springs": (_spring_scene, [], 100),

@@ -30,3 +30,12 @@ def test_each_warning_names_its_number_and_its_fix():
     assert "contact impact" in w and "30% of its smallest facet" in w and "penalty_scale" in w
     # an interference fit starts overlapped: only what goes beyond that counts
     assert run_warnings(_summary(penetration=3e-4, overlap=2e-4)) == []
+
+
+def test_a_liquid_outside_its_models_range_is_warned_of():
+    """A column whose orifice opened to the whole bore (a / A = 1 against the law's 0.56)."""
+    checks = [{"name": "orifice area ratio a / A", "value": 1.0, "limit": 0.5625, "holds": False},
+              {"name": "piston Mach number |w_P - w_F| / c", "value": 0.41, "limit": 0.5, "holds": True}]
+    summary = {**_summary(), "cavities": {"oil": {"model": "1D compressible liquid column; ...", "validity": checks}}}
+    (w,) = run_warnings(summary)
+    assert "cavity oil: orifice area ratio a / A reached 1" in w and "0.562" in w and "liquid column" in w
