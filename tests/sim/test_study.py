@@ -162,11 +162,12 @@ def test_fixture_study_smoke(tmp_path):
     confirm = {r["model"]: r for r in _rows(results, f"{values['confirmation']['design'].split('_')[0]}_confirmation")}
     fe = confirm["finite elements, column"]
     assert fe["status"] == "completed" and abs(fe["energy balance [-]"]) < 0.01
-    # section 5: the chosen design at two axisymmetric meshes (its pulse is the lumped liquid's, the same to
-    # 1e-3) and in 3D (at smoke size only the pulse's first 0.25 ms: run, not compared)
+    # section 5: the chosen (or closest) design at two axisymmetric meshes, the liquid a column of its own
+    # cells: the pulse the same to 3e-3 (measured 8.1e-4 between 6 and 5 mm at smoke size), and in 3D (at
+    # smoke size only the pulse's first 0.25 ms: run, not compared)
     meshes = _rows(results, "speed_against_error")
     assert len(meshes) == 3 and all(r["status"] == "completed" for r in meshes)
-    assert meshes[0]["peak [g]"] == pytest.approx(meshes[1]["peak [g]"], rel=1e-3)
+    assert meshes[0]["peak [g]"] == pytest.approx(meshes[1]["peak [g]"], rel=3e-3)
     # section 6: the yawed strikes; straight on, the article's lateral acceleration is the mesh's asymmetry
     yawed = {r["yaw [deg]"]: r for r in _rows(results, "tail_slap")}
     assert set(yawed) == {0.0, 5.0}
