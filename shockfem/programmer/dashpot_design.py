@@ -149,19 +149,19 @@ def dashpot_lumped(d: dict) -> LumpedDashpot:
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
-                   striker_ratio: float = STRIKER_RATIO, echo=None, near: dict | None = None
-                   ) -> tuple[dict, object, int]:
+                   striker_ratio: float = STRIKER_RATIO, echo=None, near: dict | None = None,
+                   law: OrificeLaw = ORIFICE_LAW) -> tuple[dict, object, int]:
     """The dashpot's handles iterated on the lumped model (Nelder-Mead from the closed form) to a pulse
     inside the band narrowed by ``DESIGN_MARGIN``: the objective is the narrowed band's worst excess and
     the velocity change beyond its tolerance, with the velocity-change error and the largest deviation
     from the ideal as a small tie-breaker toward the band's middle.  Returns (design, lumped run,
     evaluations).  ``near``: the handles of a design for nearly the same inputs (the same payload with a
     slightly heavier striker); the search then starts there in a simplex RESTART_SPREAD wide, not from
-    the closed form's."""
+    the closed form's.  ``law``: the orifice law the pin is cut on (``ORIFICE_LAW`` unless given)."""
     end = pulse.record_end()
 
     def design(h):
-        return dashpot_design(pulse, article_mass, bore_radius, h, seat_mass, striker_ratio)
+        return dashpot_design(pulse, article_mass, bore_radius, h, seat_mass, striker_ratio, law)
 
     def objective(h):
         if h[0] <= 0.05 or h[1] <= 1.02 or h[2] <= 0.3 or h[3] <= 0.5:
