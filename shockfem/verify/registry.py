@@ -23,8 +23,8 @@ from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
 from .preload_cases import preload_stage
-from .dashpot_cases import fluid_dashpot
-from .column_cases import liquid_column, orifice_law
+from .dashpot_cases import dashpot_designer, fluid_dashpot
+from .column_cases import liquid_column, orifice_law, orifice_reynolds
 from .column_fe_cases import column_fe
 from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
@@ -72,7 +72,9 @@ CASES = {
     "cone_push": cone_push,
     "cone_rebound": cone_rebound,
     "fluid_dashpot": fluid_dashpot,
+    "dashpot_designer": dashpot_designer,
     "orifice_law": orifice_law,
+    "orifice_reynolds": orifice_reynolds,
     "liquid_column": liquid_column,
     "column_fe": column_fe,
     "forrestal": forrestal,
