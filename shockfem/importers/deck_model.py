@@ -236,10 +236,12 @@ def _boundary_spc(kw, m):
 
 
 def _prescribed_motion(kw, m):
-    """*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID: (N)SID|PID DOF VAD LCID SF VID DEATH BIRTH."""
+    """*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID: (N)SID|PID DOF VAD LCID SF VID DEATH BIRTH (VAD blank: 0,
+    a velocity, LS-DYNA's default)."""
     target = "set" if kw.name.endswith("_SET") else "rigid"
     for c in range(len(kw.cards)):
-        row = kw.fields(c, W10, "iiiififf", required=4)
+        row = kw.fields(c, W10, "iiiififf", required=2)
+        row[2] = row[2] or 0
         m.conditions.append(Entry("motion", {"target": target, **dict(zip("ID DOF VAD LCID SF VID DEATH BIRTH"
                                                                           .split(), row))}, kw, c))
 
@@ -321,7 +323,7 @@ REFUSED_FAMILIES = {
     "CONSTRAINED_": "constraints (joints, welds, merged rigid bodies) are not mapped",
     "LOAD_": "loads are not mapped; give them in the scene ([[boundary]] force, scene.gravity)",
     "BOUNDARY_": "this boundary condition is not mapped (shockfem maps *BOUNDARY_SPC_SET / _NODE and "
-                 "*BOUNDARY_PRESCRIBED_MOTION_SET)",
+                 "*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID)",
     "INITIAL_": "this initial condition is not mapped (shockfem maps *INITIAL_VELOCITY and "
                 "*INITIAL_VELOCITY_GENERATION)",
     "EOS_": "equations of state are not mapped; shockfem's solids take their pressure from the material",

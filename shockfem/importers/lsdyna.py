@@ -28,6 +28,7 @@ def deck_to_scene(path: str, units: UnitSet) -> SceneOut:
     if mapper.meshes:
         conditions_out.velocities(mapper)
         conditions_out.constraints(mapper, regions)
+        conditions_out.rigid_constraints(mapper)
         conditions_out.motions(mapper, regions, end)
         conditions_out.contacts(mapper, regions)
         conditions_out.walls(mapper, regions)

@@ -26,6 +26,29 @@ PUNCH = {"radius": 0.0025, "length": 0.1, "punch_length": 0.01, "speed": 1.0}
 FREE = {"radius": 0.01, "length": 0.04, "spin": 50.0, "across": 2.0, "g": 9.81, "speed": 3.0, "end_time": 0.01}
 
 
+# the imported deck's case (``lsdyna_cases``, studies/lsdyna/rigid_punch.k): a rigid steel punch R 10 mm,
+# 10 mm long, 0.05 mm above a steel rod R 10 mm, 60 mm long, driven down by a ramp to 5 m/s over 10 us
+PUNCH_DECK = {"radius": 0.01, "length": 0.06, "punch_length": 0.01, "gap": 5e-5, "speed": 5.0, "ramp": 1e-5,
+              "end_time": 4e-5}
+
+
+def punch_deck_scene(h: float) -> dict:
+    """The rigid punch of ``PUNCH_DECK`` in 3D at element size ``h`` [m], as a raw scene (the TOML form of
+    ``studies/lsdyna/rigid_punch.k``)."""
+    p = PUNCH_DECK
+    T = p["end_time"]
+    cylinder = {"material": "steel", "shape": "cylinder", "radius": p["radius"], "element_size": h}
+    return {"scene": {"name": "rigid_punch", "kinematics": "3d", "end_time": T},
+            "materials": {"steel": dict(STEEL)},
+            "bodies": [{"name": "rod", **cylinder, "length": p["length"], "position": [0.0, 0.0, 0.0]},
+                       {"name": "punch", **cylinder, "length": p["punch_length"], "rigid": True,
+                        "position": [0.0, 0.0, p["length"] + p["gap"]]}],
+            "boundary": [{"region": "punch", "type": "velocity", "direction": "z",
+                          "history": [[0.0, 0.0], [p["ramp"], -p["speed"]], [T, -p["speed"]]]}],
+            "contact": [{"name": "face", "a": "punch.bottom", "b": "rod.top"}],
+            "outputs": {"field_interval": T, "history_interval": T / 100}}
+
+
 def _punch_scene(size) -> dict:
     p = PUNCH
     h = 0.00025 * SIZES[size]

@@ -238,14 +238,53 @@ def test_motion_wall_single_surface_and_node_constraints(tmp_path):
     assert [(c["a"], c["b"]) for c in single] == [("block", "plate")]
 
 
-def test_rigid_motion_and_partial_velocity_are_refused(tmp_path):
+def test_rigid_motion_drives_the_rigid_body(tmp_path):
+    """*BOUNDARY_PRESCRIBED_MOTION_RIGID on a *MAT_RIGID part: the body driven whole along DOF's axis with the
+    curve times SF (VAD blank is LS-DYNA's default, a velocity); on a deformable part, with a DOF, a VAD or a
+    curve not mapped, refused on its card."""
+    rigid = ["*MAT_RIGID", f"{2:10}{7.85e-6:10}{210.0:10}{0.3:10}",
+             "*DEFINE_CURVE", f"{9:10}", f"{0.0:20}{0.0:20}", f"{0.01:20}{1.0:20}", f"{1.0:20}{1.0:20}",
+             "*BOUNDARY_PRESCRIBED_MOTION_RIGID", f"{2:10}{3:10}{'':10}{9:10}{-4.0:10}"]
+    s = deck_to_scene(_material_deck(tmp_path, rigid), MM_MS).scene
+    drive = s["boundary"][-1]
+    assert (drive["region"], drive["type"], drive["direction"]) == ("plate", "velocity", "z")
+    assert [[to_si(t, "time"), to_si(v, "velocity")] for t, v in drive["history"]] == [
+        [0.0, 0.0], [pytest.approx(1e-5, rel=EXACT), pytest.approx(-4.0, rel=EXACT)],
+        [pytest.approx(1e-3, rel=EXACT), pytest.approx(-4.0, rel=EXACT)]]
+    scene = load_scene(import_model(_material_deck(tmp_path, rigid), str(tmp_path / "s.toml"),
+                                    "mm-ms-kg-kN").scene)
+    assert [(b.region, b.components) for b in scene.boundaries][-1] == ("plate", (2,))
+    bad = rigid[:-1] + [f"{1:10}{3:10}{0:10}{9:10}", f"{2:10}{5:10}{0:10}{9:10}", f"{2:10}{4:10}{0:10}{9:10}",
+                        f"{2:10}{1:10}{2:10}{9:10}", f"{2:10}{1:10}{0:10}{8:10}", f"{2:10}{1:10}"]
+    problems = "\n".join(_problems(_material_deck(tmp_path, bad)))
+    for card, words in ((1, "part 1 is not rigid (its material is no *MAT_RIGID)"),
+                        (2, "DOF 5 (a rotation): only x, y, z translations"),
+                        (3, "DOF 4 (a translation along the vector VID)"),
+                        (4, "VAD 2: only a prescribed velocity (VAD 0) is mapped"),
+                        (5, "LCID 8 is not defined by any *DEFINE_CURVE"),
+                        (6, "LCID is blank")):
+        assert f"*BOUNDARY_PRESCRIBED_MOTION_RIGID card {card}: {words}" in problems, (card, problems)
+
+
+def test_rigid_material_constraints_hold_the_body(tmp_path):
+    """*MAT_RIGID CMO 1: CON1 holds the body's centre along its axes, CON1 7 CON2 7 fixes it; a rotation held
+    alone and a local system (CMO -1) are refused on the material's second card."""
+    rigid = lambda card2: ["*MAT_RIGID", f"{2:10}{7.85e-6:10}{210.0:10}{0.3:10}", card2]
+    s = deck_to_scene(_material_deck(tmp_path, rigid(f"{1.0:10}{5:10}{0:10}")), MM_MS).scene
+    assert [(b["region"], b["type"], b.get("direction")) for b in s["boundary"] if b["region"] == "plate"] == [
+        ("plate", "fixed", None), ("plate", "velocity", "y"), ("plate", "velocity", "z")]    # the SPC set, CON1 5
+    s = deck_to_scene(_material_deck(tmp_path, rigid(f"{1.0:10}{7:10}{7:10}")), MM_MS).scene
+    assert [b["type"] for b in s["boundary"] if b["region"] == "plate"] == ["fixed", "fixed"]
+    for card2, words in ((f"{1.0:10}{0:10}{4:10}", "CON2 4: a rigid body's rotations are held only with"),
+                         (f"{-1.0:10}{0:10}{4:10}", "CMO -1: constraints of a rigid material in a local system")):
+        assert f"*MAT_RIGID card 2: {words}" in "\n".join(_problems(_material_deck(tmp_path, rigid(card2))))
+
+
+def test_partial_initial_velocity_is_refused(tmp_path):
     lines = _lines()
     k = lines.index("*BOUNDARY_SPC_SET")
-    lines[k:k + 2] = ["*DEFINE_CURVE", f"{9:10}", f"{0.0:20}{1.0:20}",
-                      "*BOUNDARY_PRESCRIBED_MOTION_RIGID", f"{2:10}{3:10}{0:10}{9:10}",
-                      "*INITIAL_VELOCITY", f"{5:10}", f"{0.0:10}{0.0:10}{1.0:10}"]
+    lines[k:k + 2] = ["*INITIAL_VELOCITY", f"{5:10}", f"{0.0:10}{0.0:10}{1.0:10}"]
     problems = "\n".join(_problems(_write(tmp_path, lines)))
-    assert "*BOUNDARY_PRESCRIBED_MOTION_RIGID card 1: part 2: a rigid body driven along a curve" in problems
     assert "*INITIAL_VELOCITY card 1: node set 5 covers 4 of body plate's 8 nodes" in problems
 
 
