@@ -137,12 +137,14 @@ def velocities(mapper):
         else:
             continue
         for body in bodies:
-            if body in given and given[body] != vel:
-                mapper.problems.append(error(f"body {body} already has the initial velocity {given[body]}"))
-            given[body] = vel
-    for b in mapper.scene["bodies"]:
+            if body in given and given[body][0] != vel:
+                mapper.problems.append(error(f"body {body} already has the initial velocity {given[body][0]}"))
+            given[body] = (vel, error)
+    for i, b in enumerate(mapper.scene["bodies"]):
         if b["name"] in given:
-            b["velocity"] = [mapper.u.quantity(x, "velocity") for x in given[b["name"]]]
+            vel, error = given[b["name"]]
+            b["velocity"] = [mapper.u.quantity(x, "velocity") for x in vel]
+            mapper.origins[f"bodies[{i}].velocity"] = error
 
 
 def constraints(mapper, regions: Regions):
@@ -167,14 +169,14 @@ def constraints(mapper, regions: Regions):
             continue
         nodes = node_set(mapper, v["ID"], error)
         if nodes:
-            _held(mapper, regions.from_nodes(nodes, f"nodes{v['ID']}", error), v["DOF"])
+            _held(mapper, regions.from_nodes(nodes, f"nodes{v['ID']}", error), v["DOF"], error)
     for key, nodes in single.items():
         error = lambda msg, where=key[3]: f"{where}: *BOUNDARY_SPC_NODE / *NODE TC: {msg}"
         name = f"held_{''.join(a for a, d in zip(AXES, key[:3]) if d)}"
-        _held(mapper, regions.from_nodes(nodes, name, error), key[:3])
+        _held(mapper, regions.from_nodes(nodes, name, error), key[:3], error)
 
 
-def _held(mapper, region_names, dofs):
+def _held(mapper, region_names, dofs, error):
     """Each region held along ``dofs`` (x, y, z flags); on a rigid body the body itself is held (its nodes
     move with it, ``scene/boundaries.py``): fixed when all three are (its turn held too), else its centre
     along each one, free to turn."""
@@ -191,12 +193,12 @@ def _held(mapper, region_names, dofs):
                                    "free to turn"))
             region = body
         if all(dofs):
-            mapper.scene.setdefault("boundary", []).append({"region": region, "type": "fixed"})
+            mapper.add("boundary", {"region": region, "type": "fixed"}, error)
         else:
             for axis, held in zip(AXES, dofs):
                 if held:
-                    mapper.scene.setdefault("boundary", []).append(
-                        {"region": region, "type": "velocity", "direction": axis, "value": mapper.u.quantity(0.0, "velocity")})
+                    mapper.add("boundary", {"region": region, "type": "velocity", "direction": axis,
+                                            "value": mapper.u.quantity(0.0, "velocity")}, error)
 
 
 # *MAT_RIGID CON1 (CMO 1): the global translations it holds
@@ -224,11 +226,10 @@ def rigid_constraints(mapper):
                   if p.mid == mid and p.pid in mapper.body_of_part]
         for body in bodies:
             if con2:
-                mapper.scene.setdefault("boundary", []).append({"region": body, "type": "fixed"})
+                mapper.add("boundary", {"region": body, "type": "fixed"}, error)
             for axis in ("" if con2 else RIGID_HELD[con1]):
-                mapper.scene.setdefault("boundary", []).append(
-                    {"region": body, "type": "velocity", "direction": axis,
-                     "value": mapper.u.quantity(0.0, "velocity")})
+                mapper.add("boundary", {"region": body, "type": "velocity", "direction": axis,
+                                        "value": mapper.u.quantity(0.0, "velocity")}, error)
 
 
 def motions(mapper, regions: Regions, end_time: float | None):
@@ -249,8 +250,8 @@ def motions(mapper, regions: Regions, end_time: float | None):
             nodes = node_set(mapper, v["ID"], error)
             targets = regions.from_nodes(nodes or [], f"nodes{v['ID']}", error) if nodes else []
         for region in targets:
-            mapper.scene.setdefault("boundary", []).append(
-                {"region": region, "type": "velocity", "direction": AXES[v["DOF"] - 1], "history": history})
+            mapper.add("boundary", {"region": region, "type": "velocity", "direction": AXES[v["DOF"] - 1],
+                                    "history": history}, error)
 
 
 def _motion_history(mapper, v: dict, error, end_time: float | None) -> list | None:
@@ -318,7 +319,11 @@ def _surfaces(mapper, regions: Regions, sid: int, styp: int, error, name: str) -
 def contacts(mapper, regions: Regions):
     """*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, _NODES_TO_SURFACE and _SINGLE_SURFACE as penalty contacts
     between bodies (shockfem's segment penalty is LS-DYNA's SOFT = 0 stiffness, k = SLSFAC SFS K A^2 / V)."""
-    slsfac = (mapper.m.controls.get("CONTROL_CONTACT", ({}, None))[0].get("SLSFAC") or 0.1)
+    values, kw = mapper.m.controls.get("CONTROL_CONTACT", ({}, None))
+    slsfac = values.get("SLSFAC") or 0.1
+    if slsfac < 0:
+        mapper.problems.append(kw.error(0, f"SLSFAC {slsfac:g}: the penalty scale must be positive"))
+        slsfac = 0.1
     for n, e in enumerate(mapper.m.contacts, start=1):
         error = lambda msg, e=e: e.keyword.error(e.card, msg)
         v = e.values
@@ -342,7 +347,7 @@ def contacts(mapper, regions: Regions):
                 entry["friction_dynamic"] = v["FD"] if v["FD"] is not None else v["FS"]
                 if v["DC"]:
                     entry["friction_decay"] = mapper.u.quantity(v["DC"], "slowness")
-            mapper.scene.setdefault("contact", []).append(entry)
+            mapper.add("contact", entry, error)
 
 
 def walls(mapper, regions: Regions):
@@ -365,7 +370,7 @@ def walls(mapper, regions: Regions):
             mapper.problems.append(error("the head XH YH ZH is the tail XT YT ZT: the wall has no normal"))
             continue
         for k, surface in enumerate(surfaces):
-            mapper.scene.setdefault("contact", []).append({
+            mapper.add("contact", {
                 "name": f"wall{n}" + (f"_{k + 1}" if len(surfaces) > 1 else ""), "a": surface, "method": "constraint",
                 "wall": {"point": [mapper.u.quantity(x, "length") for x in v["tail"]],
-                         "normal": [float(x) for x in normal]}})
+                         "normal": [float(x) for x in normal]}}, error)

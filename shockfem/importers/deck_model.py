@@ -75,6 +75,7 @@ class DeckModel:
     walls: list = field(default_factory=list)                # Entry
     controls: dict = field(default_factory=dict)             # name -> (values, keyword)
     outputs: dict = field(default_factory=dict)              # *DATABASE_ name -> interval (deck time)
+    output_keywords: dict = field(default_factory=dict)      # *DATABASE_ name -> its Keyword
     unmapped: Counter = field(default_factory=Counter)
     problems: list = field(default_factory=list)
 
@@ -288,6 +289,7 @@ def _control(kw, m):
 def _database(kw, m):
     dt, = kw.fields(0, W10, "f", required=1)
     m.outputs[kw.name] = dt
+    m.output_keywords[kw.name] = kw
 
 
 READERS = {
