@@ -22,7 +22,9 @@ def controls(mapper) -> float | None:
     s, u, c = mapper.scene["scene"], mapper.u, mapper.m.controls
     term, term_kw = c.get("CONTROL_TERMINATION", ({}, None))
     end = term.get("ENDTIM")
-    if term_kw is None:
+    if "CONTROL_TERMINATION" in mapper.m.unread:
+        pass                                   # its refused card is said
+    elif term_kw is None:
         mapper.problems.append(f"{mapper.source}: no *CONTROL_TERMINATION: the run needs an end time (ENDTIM)")
     elif not end:
         mapper.problems.append(term_kw.error(0, "ENDTIM is blank or 0: the run needs an end time"))

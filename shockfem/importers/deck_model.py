@@ -78,6 +78,7 @@ class DeckModel:
     output_keywords: dict = field(default_factory=dict)      # *DATABASE_ name -> its Keyword
     unmapped: Counter = field(default_factory=Counter)
     problems: list = field(default_factory=list)
+    unread: set = field(default_factory=set)                 # keywords a card of which was refused
 
 
 def _strip_title(kw: Keyword) -> Keyword:
@@ -376,6 +377,7 @@ def read_model(title: str, keywords: list[Keyword]) -> DeckModel:
             reader(kw, m)
         except DeckError as e:
             m.problems += e.problems
+            m.unread.add(kw.name)
     m.tables.pop("_open", None)
     return m
 

@@ -27,8 +27,8 @@ WIDTHS = {"NODE": ([8, 16, 16, 16, 8, 8], [8, 16, 16, 16, 8, 8]), "ELEMENT_SOLID
           "DEFINE_CURVE": ([10], [20])}
 # a problem names where it is: "file:line: *KEYWORD ..." (or "file: *KEYWORD" for a keyword without cards), or
 # is one of the whole-deck problems (no solids; the units)
-NAMED = re.compile(r"^[^\s:]+(:\d+)?: (\*[A-Z0-9_]+|no \*ELEMENT_SOLID|\*INCLUDE|a data line before)")
-SAMPLE = 60
+NAMED = re.compile(r"^[^\s:]+(:\d+)?: (\*[A-Z0-9_]+|no \*[A-Z_]+|a data line before)")
+SAMPLE = 40
 
 
 def _cards(path: pathlib.Path):

@@ -120,6 +120,53 @@ def test_truncated_card_names_keyword_card_and_line(tmp_path):
     assert any(p.startswith(f"bad.k:{k + 1}: *MAT_PLASTIC_KINEMATIC card 1: field 3 is blank") for p in problems)
 
 
+def test_non_finite_numbers_and_huge_ids_are_refused_by_card(tmp_path):
+    """NaN, infinity and a number beyond a double in a real field, and in an integer field (where int() of
+    them raised ValueError / OverflowError: the import fuzz found it), and an id beyond 32 bits."""
+    lines = _lines()
+    hourglass = lines.index("*CONTROL_HOURGLASS") + 1
+    lines[hourglass] = f"{'nan':>10}{'inf':>10}"
+    timestep = lines.index("*CONTROL_TIMESTEP") + 1
+    lines[timestep] = f"{0.0:10}{'1e400':>10}"
+    part = lines.index("block") + 1
+    lines[part] = f"{'9999999999':>10}{1:10}{1:10}"
+    problems = "\n".join(_problems(_write(tmp_path, lines)))
+    assert f"bad.k:{hourglass + 1}: *CONTROL_HOURGLASS card 1: field 1: 'nan' is not a finite number" in problems
+    assert f"bad.k:{timestep + 1}: *CONTROL_TIMESTEP card 1: field 2: '1e400' is not a finite number" in problems
+    assert f"bad.k:{part + 1}: *PART card 2: field 1: '9999999999' is beyond the largest id" in problems
+
+
+def test_end_time_problems_name_the_keyword_or_the_deck(tmp_path):
+    lines = _lines()
+    k = lines.index("*CONTROL_TERMINATION")
+    lines[k + 1] = f"{0.0:10}"
+    assert f"bad.k:{k + 2}: *CONTROL_TERMINATION card 1: ENDTIM is blank or 0" in "\n".join(
+        _problems(_write(tmp_path, lines)))
+    del lines[k:k + 2]
+    assert "bad.k: no *CONTROL_TERMINATION: the run needs an end time" in "\n".join(
+        _problems(_write(tmp_path, lines)))
+
+
+def test_values_the_scene_refuses_are_said_at_their_deck_card(tmp_path):
+    """A value the cards allow but the scene does not (a negative density, a negative end time, a safety
+    factor above 1) is refused at import, at the card it came from, and no scene is left behind."""
+    lines = _lines()
+    mat = lines.index("*MAT_PLASTIC_KINEMATIC") + 1
+    lines[mat] = lines[mat].replace("  7.85e-06", " -7.85e-06")
+    end = lines.index("*CONTROL_TERMINATION") + 1
+    lines[end] = f"{-0.05:10}"
+    step = lines.index("*CONTROL_TIMESTEP") + 1
+    lines[step] = f"{0.0:10}{1.5:10}"
+    deck = _write(tmp_path, lines)
+    with pytest.raises(SceneError) as e:
+        import_model(deck, str(tmp_path / "bad.toml"), "mm-ms-kg-kN")
+    problems = "\n".join(e.value.problems)
+    assert f"bad.k:{mat + 1}: *MAT_PLASTIC_KINEMATIC card 1: materials.mat1.density: must be > 0" in problems
+    assert f"bad.k:{end + 1}: *CONTROL_TERMINATION card 1: scene.end_time: must be > 0" in problems
+    assert f"bad.k:{step + 1}: *CONTROL_TIMESTEP card 1: scene.safety_factor:" in problems
+    assert not (tmp_path / "bad.toml").exists()
+
+
 def test_no_unit_set_is_refused_by_the_command(tmp_path, capsys):
     assert main(["import", str(PLAIN), "--out", str(tmp_path / "x.toml")]) == 2
     err = capsys.readouterr().err
