@@ -60,7 +60,7 @@ class DeckModel:
     title: str = ""
     node_ids: list = field(default_factory=list)
     coords: list = field(default_factory=list)
-    node_lines: dict = field(default_factory=dict)           # nid -> (keyword, card) of a repeated id
+    node_cards: list = field(default_factory=list)           # (keyword, card) of each of node_ids
     elements: list = field(default_factory=list)             # (eid, pid, node ids, keyword, card, node card)
     parts: dict = field(default_factory=dict)
     sections: dict = field(default_factory=dict)             # secid -> (elform, keyword)
@@ -93,6 +93,7 @@ def _node(kw, m):
         nid, x, y, z, tc, rc = kw.fields(c, [8, 16, 16, 16, 8, 8], "iffffi", required=1)
         m.node_ids.append(nid)
         m.coords.append((x or 0.0, y or 0.0, z or 0.0))
+        m.node_cards.append((kw, c))
         if tc or rc:
             m.conditions.append(Entry("node_constraint", {"nid": nid, "tc": tc or 0, "rc": rc or 0}, kw, c))
 

@@ -95,7 +95,11 @@ class DeckMapper:
         ids = np.array(m.node_ids, dtype=np.int64)
         unique, counts = np.unique(ids, return_counts=True)
         for nid in unique[counts > 1][:5]:
-            self.problems.append(f"*NODE: node {nid} is defined {counts[unique == nid][0]} times")
+            where = np.flatnonzero(ids == nid)
+            kw, card = m.node_cards[where[1]]
+            first_kw, first_card = m.node_cards[where[0]]
+            self.problems.append(kw.error(card, f"node {nid} is defined {len(where)} times (first at "
+                                                f"{first_kw.cards[first_card].where()})"))
         index = {int(n): k for k, n in enumerate(ids)}
         X = np.array(m.coords, dtype=float).reshape(-1, 3) * self.u.si(1.0, "length")
         by_part: dict[int, list] = {}

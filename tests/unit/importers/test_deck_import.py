@@ -136,6 +136,16 @@ def test_non_finite_numbers_and_huge_ids_are_refused_by_card(tmp_path):
     assert f"bad.k:{part + 1}: *PART card 2: field 1: '9999999999' is beyond the largest id" in problems
 
 
+def test_a_node_defined_twice_names_both_lines(tmp_path):
+    """A keyword line deleted makes the next keyword's cards nodes (the import fuzz found the message
+    without a line): each repeated id is said at its second card, with where the first is."""
+    lines = _lines()
+    k = lines.index(next(l for l in lines if l.startswith("       5 ")))       # node 5
+    lines.insert(k + 3, lines[k])
+    assert f"bad.k:{k + 4}: *NODE card 8: node 5 is defined 2 times (first at bad.k:{k + 1})" in _problems(
+        _write(tmp_path, lines))
+
+
 def test_end_time_problems_name_the_keyword_or_the_deck(tmp_path):
     lines = _lines()
     k = lines.index("*CONTROL_TERMINATION")
