@@ -22,13 +22,11 @@ def controls(mapper) -> float | None:
     s, u, c = mapper.scene["scene"], mapper.u, mapper.m.controls
     term, term_kw = c.get("CONTROL_TERMINATION", ({}, None))
     end = term.get("ENDTIM")
-    if "CONTROL_TERMINATION" in mapper.m.unread:
-        pass                                   # its refused card is said
-    elif term_kw is None:
+    if term_kw is None and "CONTROL_TERMINATION" not in mapper.m.unread:     # (a refused card is said already)
         mapper.problems.append(f"{mapper.source}: no *CONTROL_TERMINATION: the run needs an end time (ENDTIM)")
-    elif not end:
+    elif term_kw is not None and not end:
         mapper.problems.append(term_kw.error(0, "ENDTIM is blank or 0: the run needs an end time"))
-    else:
+    elif end:
         s["end_time"] = u.quantity(end, "time")
         mapper.origin("scene.end_time", term_kw)
     ts, kw = c.get("CONTROL_TIMESTEP", ({}, None))
