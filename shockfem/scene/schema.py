@@ -48,7 +48,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     kin, end_time = settings["kinematics"], settings["end_time"]
     materials = read_materials(ck, raw)
     bodies, body_regions = read_bodies(ck, raw, kin, materials, base_dir)
-    boundaries = read_boundaries(ck, raw, body_regions, kin)
+    boundaries = read_boundaries(ck, raw, body_regions, kin, frozenset(b.name for b in bodies if b.rigid))
     contacts = read_contacts(ck, raw, body_regions, kin)
     springs = read_springs(ck, raw, body_regions, 3 if kin == "3d" else 2)
     cavities = read_cavities(ck, raw, body_regions)

@@ -32,6 +32,7 @@ from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, 
 from .section_cases import section_stress
 from .mass_scaling_cases import mass_scaling
 from .lsdyna_cases import lsdyna_decks
+from .rigid_drive_cases import rigid_drive_free, rigid_punch
 from .hard_cases import HARD
 
 
@@ -49,6 +50,8 @@ CASES = {
     "rod_on_rod": rod_on_rod,
     "rod_on_wall": rod_on_wall,
     "rod_on_constraint_wall": rod_on_constraint_wall,
+    "rigid_punch": rigid_punch,
+    "rigid_drive_free": rigid_drive_free,
     "unequal_rods": unequal_rods,
     "thick_rods": thick_rods,
     "hertz_spheres": hertz_spheres,
