@@ -10,9 +10,10 @@ from shockfem.scene.outputs import read_outputs
 from shockfem.scene.settings import read_settings
 from shockfem.scene.specs import Boundary, Scene
 
-# the fields ``resolve`` passes besides [scene]'s settings: one per table reader
+# the fields ``resolve`` passes besides [scene]'s settings: one per table reader ([scene.preload] has its
+# own reader, ``scene/preload.py``: it needs the boundaries and contacts read first)
 TABLE_FIELDS = {"materials", "bodies", "boundaries", "contacts", "damping", "outputs", "springs", "shock",
-                "cavities", "penetration"}
+                "cavities", "penetration", "preload"}
 # what ``resolve`` fills itself: where the scene was read from
 RESOLVED_FIELDS = {"folder"}
 
