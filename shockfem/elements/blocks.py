@@ -9,7 +9,7 @@ A lane pass takes ``LANES`` cells at a time through one scratch array ``S`` (row
 2. kinematics lanes (``rates``): the strain rate and spin on the mid-step configuration;
 3. the material update: every cell's elastic trial in lanes (``elastic``), then in a block of one J2 row of
    linear hardening (``materials.update.linear_hardening``) the returns in lanes (``j2``), otherwise each
-   cell the trial does not hold for by its law (``update_cells``);
+   cell the trial does not hold for by its law (``materials.update.update_from_trial``), one by one;
 4. response lanes (``response``): the viscous stresses, the nodal forces, the energies, the stable step and
    the squared von Mises stress of the stress at t_n+1;
 5. scatter, in cell order: forces into the nodes, stresses (and resultants) into their arrays, the totals
@@ -34,7 +34,7 @@ import numpy as np
 from numba import njit
 
 from ..materials.layout import P_MU
-from ..materials.update import linear_hardening
+from ..materials.update import elastic_trial_holds, linear_hardening, update_from_trial
 from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_nodes, gather_plastic_strain,
                         scatter_forces, scatter_plastic_strain)
 
@@ -91,13 +91,18 @@ class LaneElement:
       ``q_row`` the new resultants, ``totals_row`` the 7 of ``one_point.add_cell_totals`` and after them the
       squared von Mises stress at t_n+1, ``eps_row`` the plastic strain of ``j2`` (its rate in the next).
 
-    The phases, compiled (``numba.njit``), with their arguments:
+    The kinematics lanes write ``d_row`` the strain rate and ``spin_row`` the spin, and the material update
+    ``wp_row`` the plastic work density.  The phases, compiled (``numba.njit``), with their arguments:
 
     * ``rates(S, count, dt, kinematics, weight)``: ``weight`` is the rule's ``wq[0]``;
     * ``elastic(S, count, dt)``;
     * ``j2(S, count, dt, mu, y0, eps0, slope)``;
-    * ``update_cells(S, cells, start, count, cell_material, params, curves, state, dt, kinematics)``;
-    * ``response(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient)``.
+    * ``response(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient)``;
+
+    and, for the cell-by-cell update, the element's tensors in and out of lane k (``inline="always"``):
+    ``tensor6(S, row, B, k)`` a stress or strain rate as the six components, ``store_stress(S, row, B, k, s)``,
+    ``spin3(S, row, B, k)`` the spin (W23, W13, W12), ``radius(S, B, k, kinematics)`` the radius of an
+    axisymmetric cell's point (0 otherwise).
     """
     name: str
     source: str
@@ -117,11 +122,17 @@ class LaneElement:
     q_row: int
     totals_row: int
     eps_row: int
+    d_row: int
+    spin_row: int
+    wp_row: int
     rates: object
     elastic: object
     j2: object
-    update_cells: object
     response: object
+    tensor6: object
+    store_stress: object
+    spin3: object
+    radius: object
 
 
 def _element_pass(cells, dofmap, cell_material, cell_sign, x_np1, v_half, t_np1, dt, N, dN, wq, kinematics,
@@ -162,8 +173,19 @@ def _element_pass(cells, dofmap, cell_material, cell_sign, x_np1, v_half, t_np1,
             j2(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
             scatter_plastic_strain(S, EPS, B, cells, start, count, state)
         elif not ELASTIC_ONLY:
-            # the others cell by cell, from their trial (a J2 return, or objective rotation, slots and law)
-            update_cells(S, cells, start, count, cell_material, params, curves, state, dt, kinematics)
+            # the others cell by cell, from their trial (a J2 return, or objective rotation, slots and law); the
+            # update may change the hoop rate (a slotted ring's metal takes what its slots leave)
+            for k in range(count):
+                c = cells[start + k]
+                trial = tensor6(S, SN_ROW, B, k)
+                if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
+                    continue
+                s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0,
+                                                 tensor6(S, S_ROW, B, k), trial, tensor6(S, D_ROW, B, k),
+                                                 spin3(S, SPIN_ROW, B, k), dt, radius(S, B, k, kinematics))
+                store_stress(S, SN_ROW, B, k, s_np1)
+                S[(D_ROW + 2) * B + k] = d[2]
+                S[WP_ROW * B + k] = wp
         response(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient)
         # scatter, in cell order: the same sums as a cell-by-cell loop
         for k in range(count):
@@ -194,8 +216,9 @@ def lane_pass(element: LaneElement, elastic_only: bool):
     scope.update(B=e.lanes, ROWS=e.rows, NODES=e.nodes, GDIM=e.gdim, X_ROW=e.x_row, V_ROW=e.v_row, S_ROW=e.s_row,
                  COMPONENTS=tuple(e.stress_components), O_ROW=e.o_row, MODES=e.hourglass_modes,
                  CONSTANTS=e.constants_row, SN_ROW=e.sn_row, F_ROW=e.f_row, Q_ROW=e.q_row, TOTALS=e.totals_row,
-                 EPS=e.eps_row, ELASTIC_ONLY=bool(elastic_only), rates=e.rates, elastic=e.elastic, j2=e.j2,
-                 update_cells=e.update_cells, response=e.response)
+                 EPS=e.eps_row, D_ROW=e.d_row, SPIN_ROW=e.spin_row, WP_ROW=e.wp_row, ELASTIC_ONLY=bool(elastic_only),
+                 rates=e.rates, elastic=e.elastic, j2=e.j2, response=e.response, tensor6=e.tensor6,
+                 store_stress=e.store_stress, spin3=e.spin3, radius=e.radius)
     code = _element_pass.__code__.replace(co_name=name, co_filename=element.source)
     fn = types.FunctionType(code, scope, name)
     fn.__qualname__ = name

@@ -42,7 +42,6 @@ from numba import njit
 
 from ..materials.layout import (P_BETA, P_LAMBDA, P_MU, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED, S_EPS,
                                 S_RATE)
-from ..materials.update import elastic_trial_holds, update_from_trial
 
 HOURGLASS_FORMS = {"stiffness": 0, "viscous": 1}
 
@@ -213,22 +212,15 @@ def scatter_forces(S, B, k, c, nodes, gdim, f_row, dofmap, f):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def update_by_law(S, B, s_row, sn_row, d_row, spin_row, wp_row, cells, start, count, cell_material, params, curves,
-                  state, dt):
-    """Each 3D cell of the block that its elastic trial (rows ``sn_row``..+5) does not hold for, by its law
-    (``materials.update.update_from_trial``, from the stress at t_n, the strain rate and the spin in their
-    rows): its stress at t_n+1 and plastic work density (row ``wp_row``) into its lane."""
-    for k in range(count):
-        c = cells[start + k]
-        trial = row6(S, sn_row, B, k)
-        if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
-            continue
-        s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, row6(S, s_row, B, k), trial,
-                                         row6(S, d_row, B, k),
-                                         (S[spin_row * B + k], S[(spin_row + 1) * B + k], S[(spin_row + 2) * B + k]),
-                                         dt, 0.0)
-        store6(S, sn_row, B, k, s_np1)
-        S[wp_row * B + k] = wp
+def spin3(S, row, B, k):
+    """The spin (W23, W13, W12) in rows ``row``..``row`` + 2 of lane k."""
+    return S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def no_radius(S, B, k, kinematics):
+    """A 3D cell's point has no radius (``blocks.LaneElement``'s ``radius``)."""
+    return 0.0
 
 
 # (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell)

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from ..materials.algebra import inverse_3x3
@@ -21,7 +20,7 @@ from ..materials.objective import cayley_matrix
 from ..materials.update import elastic_update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .blocks import LaneElement, lane_passes, von_mises2
-from .one_point import row6, step_length, unwalsh4, update_by_law, walsh8
+from .one_point import no_radius, row6, spin3, step_length, store6, unwalsh4, walsh8
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -279,12 +278,6 @@ def _rates_phase(S, count, dt, kinematics, weight):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _update_cells(S, cells, start, count, cell_material, params, curves, state, dt, kinematics):
-    """Each cell its elastic trial does not hold for, by its law (``one_point.update_by_law``)."""
-    update_by_law(S, LANES, _S, _SN, _D, _SPIN, _WP, cells, start, count, cell_material, params, curves, state, dt)
-
-
-@njit(cache=True, fastmath=True, inline="always")
 def _response_phase(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient):
     """The response lanes."""
     _response(S, count, dt, hourglass_form, hourglass_coefficient)
@@ -296,6 +289,7 @@ def _response_phase(S, count, dt, kinematics, thickness, weight, hourglass_form,
 HEXES = LaneElement(name="hex", source=__file__, lanes=LANES, nodes=8, gdim=3, rows=ROWS,
                     x_row=_X, v_row=_U, s_row=_S, stress_components=(0, 1, 2, 3, 4, 5), o_row=_O,
                     hourglass_modes=12, constants_row=_LAM, sn_row=_SN, f_row=_F, q_row=_Q,
-                    totals_row=_VOL, eps_row=_EPS, rates=_rates_phase, elastic=_elastic, j2=_j2_lanes,
-                    update_cells=_update_cells, response=_response_phase)
+                    totals_row=_VOL, eps_row=_EPS, d_row=_D, spin_row=_SPIN, wp_row=_WP, rates=_rates_phase,
+                    elastic=_elastic, j2=_j2_lanes, response=_response_phase, tensor6=row6, store_stress=store6,
+                    spin3=spin3, radius=no_radius)
 HEX_KERNELS = lane_passes(HEXES)

@@ -39,12 +39,11 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from ..materials.j2 import linear_hardening_return
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, update_from_trial
+from ..materials.update import elastic_update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
 from .blocks import LaneElement, lane_passes, von_mises2
 from .cells import AXISYMMETRIC
@@ -248,24 +247,27 @@ def _rates_phase(S, count, dt, kinematics, weight):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _update_cells(S, cells, start, count, cell_material, params, curves, state, dt, kinematics):
-    """Each cell its elastic trial does not hold for, by its law (``materials.update.update_from_trial``):
-    its stress, the hoop rate its slots leave its metal and its plastic work density into their rows."""
-    B = LANES
-    for k in range(count):
-        c = cells[start + k]
-        trial = (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0, S[(_SN + 3) * B + k])
-        if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
-            continue
-        s_np1, d, wp = update_from_trial(
-            params, curves, cell_material[c], state, c, 0,
-            (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]), trial,
-            (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k]),
-            (0.0, 0.0, S[_SPIN * B + k]), dt, S[_R * B + k] if kinematics == AXISYMMETRIC else 0.0)
-        S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k] = s_np1[0], s_np1[1], s_np1[2]
-        S[(_SN + 3) * B + k] = s_np1[5]
-        S[(_D + 2) * B + k] = d[2]
-        S[_WP * B + k] = wp
+def _tensor6(S, row, B, k):
+    """A stress or strain rate (11, 22, 33, 12 in rows ``row``..+3 of lane k) as the six components."""
+    return S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], 0.0, 0.0, S[(row + 3) * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _store_stress(S, row, B, k, s):
+    """The in-plane components and the hoop (out-of-plane) one of ``s`` into rows ``row``..+3 of lane k."""
+    S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], S[(row + 3) * B + k] = s[0], s[1], s[2], s[5]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _spin3(S, row, B, k):
+    """The in-plane spin W12 (row ``row`` of lane k) as (W23, W13, W12)."""
+    return 0.0, 0.0, S[row * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _radius(S, B, k, kinematics):
+    """The radius of the cell's centre in axisymmetry (0 in plane strain)."""
+    return S[_R * B + k] if kinematics == AXISYMMETRIC else 0.0
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -285,6 +287,7 @@ def _response_phase(S, count, dt, kinematics, thickness, weight, hourglass_form,
 QUADS = LaneElement(name="quad", source=__file__, lanes=LANES, nodes=4, gdim=2, rows=ROWS,
                     x_row=_X, v_row=_U, s_row=_S, stress_components=(0, 1, 2, 5), o_row=_O,
                     hourglass_modes=2, constants_row=_LAM, sn_row=_SN, f_row=_FX, q_row=_Q,
-                    totals_row=_DET, eps_row=_EPS, rates=_rates_phase, elastic=_elastic, j2=_j2_lanes,
-                    update_cells=_update_cells, response=_response_phase)
+                    totals_row=_DET, eps_row=_EPS, d_row=_D, spin_row=_SPIN, wp_row=_WP, rates=_rates_phase,
+                    elastic=_elastic, j2=_j2_lanes, response=_response_phase, tensor6=_tensor6,
+                    store_stress=_store_stress, spin3=_spin3, radius=_radius)
 QUAD_KERNELS = lane_passes(QUADS)
