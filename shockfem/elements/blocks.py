@@ -16,13 +16,14 @@ A lane pass takes ``LANES`` cells at a time through one scratch array ``S`` (row
    and each row's energies (``one_point.add_cell_totals``) and each row's peak von Mises stress with where
    and when (``track_peak``).
 
-An element is a ``LaneElement``: its lane count, nodes and scratch rows, and the phases of 2-4, each a compiled
-function with the arguments below, the same for every element (an element ignores what it does not need);
-the gather and scatter are the driver's, from the element's rows.  The
-driver, ``lane_pass``, is compiled once per element and per copy: the elastic copy (``elastic_only``, every
-row elastic without slots: ``materials.update.is_elastic_only``) holds no call to a law.  Every pass, the
-lane passes and ``full_integration.stress_divergence`` alike, takes ``PASS_ARGUMENTS`` and returns
-``NO_TOTALS``' seven figures, so that the solver makes one call whatever its cells.
+An element is a ``LaneElement``: its lane count, nodes and scratch rows, and the lanes of 2-4, each a compiled
+function with the arguments ``LaneElement`` lists, the same for every element (an element ignores what it
+does not need); the gather, the cell-by-cell update and the scatter are the driver's, from the element's
+rows.  The driver, ``lane_pass``, is compiled once per element and per copy: the elastic copy
+(``elastic_only``, every row elastic without slots: ``materials.update.is_elastic_only``) holds no call to
+a law.  Every pass, the lane passes and ``full_integration.stress_divergence`` alike, takes
+``PASS_ARGUMENTS`` and returns ``NO_TOTALS``' seven figures, so that the solver makes one call whatever its
+cells.
 """
 from __future__ import annotations
 
