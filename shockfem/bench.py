@@ -92,7 +92,7 @@ def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
     if not quick:
         results += speed_against_error(echo)
         results += compile_bench(echo)
-    results += taylor_bar_bench((0.0004,) if quick else (0.0004, 0.0002), echo)
+    results += taylor_bar_bench((TAYLOR_QUICK_SIZE,) if quick else (TAYLOR_QUICK_SIZE, 0.0002), echo)
     results += contact_bench(quick, echo)
     return results
 
@@ -289,7 +289,7 @@ def _compile_case_runs() -> dict:
         return lambda: solve(raw)
 
     runs = {case: speed_case(case) for case in SPEED_CASES}
-    runs["taylor_bar"] = lambda: solve(taylor_scene(QUICK_SIZES["axisymmetric-quad"][0], end_time=few_steps))
+    runs["taylor_bar"] = lambda: solve(taylor_scene(TAYLOR_QUICK_SIZE, end_time=few_steps))
     runs["two_rods_contact axisymmetric"] = contact("axisymmetric")
     runs["two_rods_contact 3d"] = contact("3d")
     return runs
