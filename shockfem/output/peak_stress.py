@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..elements.blocks import PEAK_CELL, PEAK_TIME, PEAK_VM2
+from ..elements.blocks import PEAK_CELL, PEAK_TIME, PEAK_VM2, no_peak
 
 
 class PeakStress:
@@ -29,8 +29,9 @@ class PeakStress:
         # the body of each row of params that this rank's deformable cells use (-1: none)
         self.row_body = np.full(len(solver.peak), -1, dtype=np.int64)
         self.row_body[m.cell_material[kernel]] = m.cell_body[kernel]
-        if state is not None:
-            solver.peak[:] = state["rows"]
+        # the run's peaks from here: a checkpoint's, or none (what the solver's set-up or a preload stage's
+        # settling passed through before the event is not the event's)
+        solver.peak[:] = state["rows"] if state is not None else no_peak(len(solver.peak))
 
     def _mine(self, b: int) -> tuple[float, float, list | None]:
         """(peak [Pa], time [s], reference centre of the cell [m] or None) of body ``b`` on this rank."""
