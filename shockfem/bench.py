@@ -49,6 +49,7 @@ SPEED_CASES = {
     # linear tetrahedra (one point, constant strain: ``elements.linear_tets``)
     "3d-tet": ("3d", "tet", "full", 0.02, 0.3, (0.005, 0.0035)),
 }
+TAYLOR_QUICK_SIZE = 0.0004          # the Taylor bar's coarsest element size [m]: 8 across its 3.2 mm radius
 QUICK_SIZES = {"axisymmetric-quad": (0.01,), "axisymmetric-quad-full": (0.01,), "3d-hex": (0.006,),
                "3d-hex-full": (0.006,), "3d-tet": (0.006,)}
 
