@@ -16,14 +16,15 @@ RUN mkdir -p shockfem && touch shockfem/__init__.py && INSTALL_PARAVIEW=0 bash s
 COPY . /app
 RUN INSTALL_PARAVIEW=0 bash scripts/install.sh \
  && mkdir -p /app/home /app/results
-# numba's kernels compiled into the image (`shockfem warm`, a few steps of the studies' scenes), so that a
-# `docker run --rm` computes at once instead of compiling for a minute or more. Kept for the CPU model that
-# builds the image: on another one, numba compiles them again at the first run.
-RUN SHOCKFEM_PICTURES=0 /app/.venv/bin/shockfem warm \
- && chmod -R a+rwX /app/shockfem /app/meshes /app/home /app/results
 # Any user id (docker run --user) writes numba's caches beside the package's sources, the meshes' in
 # meshes/, and FFCx's and matplotlib's under HOME (a user id the image does not know gets HOME=/, which it
 # cannot write); the venv stays root's and read-only (a chmod of it would copy its 3 GB into a new layer).
+# HOME is set before the warm step, so that the FFCx forms it compiles land where a run looks for them.
 ENV HOME=/app/home
+# numba's kernels and FFCx's forms compiled into the image (`shockfem warm`, a few steps of the studies'
+# scenes), so that a `docker run --rm` computes at once instead of compiling for a minute or more. Kept for
+# the CPU model that builds the image: on another one, numba compiles them again at the first run.
+RUN SHOCKFEM_PICTURES=0 /app/.venv/bin/shockfem warm \
+ && chmod -R a+rwX /app/shockfem /app/meshes /app/home /app/results
 ENTRYPOINT ["/app/.venv/bin/shockfem"]
 CMD ["--help"]

@@ -177,8 +177,9 @@ consts = (p[P_LAMBDA], p[P_MU], p[P_BETA], p[P_RHO], p[P_WAVE_SPEED], p[P_Q_QUAD
 dofmap, sign = np.ascontiguousarray(m.dofmap), m.cell_sign.astype(float)
 product = HEX_KERNELS[True]
 sig, hg, f, be = s.sigma.copy(), s.hourglass.copy(), np.zeros_like(s.f_int), np.zeros_like(s.body_energy)
-A = (m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, s.x, s.v, dt, m.hourglass_form,
-     m.hourglass_coefficient, m.params, m.curves, s.plastic_state, sig, hg, f, be)
+A = (m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, s.x, s.v, s.t, dt, m.N, m.dN, m.wq, m.kinematics,
+     m.thickness, m.cell_kind, True, m.hourglass_form, m.hourglass_coefficient, m.params, m.curves,
+     s.plastic_state, sig, hg, f, be, s.peak.copy())
 tot = product(*A)
 sig2, hg2, f2 = s.sigma.copy(), s.hourglass.copy(), np.zeros_like(s.f_int)
 t0 = time.perf_counter()

@@ -8,6 +8,11 @@ of steps of the whole time loop (single process).  Element-cycles per second
 strain rate + material update + force assembly in one compiled pass; nodal update;
 energy bookkeeping) come from the solver's phase timers.
 
+Compile time: in a process of its own with an empty numba cache (``NUMBA_CACHE_DIR``), each case at its
+smallest mesh for a few steps, in turn: the CPU time numba spends compiling the kernels the case calls
+(``numba:compile`` events; a kernel another case compiled first counts there, so the rows add up to the
+whole).
+
 Speed against error: the bar-wave verification case (front speed and plateau stress
 against 1D theory) at three mesh sizes, both integrations, with its wall time; and the
 elastic-plastic copper Taylor bar (final length and radius against the converged benchmark)
@@ -18,14 +23,20 @@ switched to elastic).
 from __future__ import annotations
 
 import itertools
+import json
+import os
+import subprocess
+import sys
+import tempfile
 import time
 
 from mpi4py import MPI
+from numba.core import event
 
 from .geometry import build_mesh
 from .model import build_model
 from .scene import resolve
-from .elements.kernels import cell_pass, one_point_kernel
+from .elements.kernels import element_pass
 from .solver.explicit import ExplicitSolver, PhaseTimes
 from .verify.scenes import rod_scene, steel_c0, STEEL
 
@@ -38,6 +49,7 @@ SPEED_CASES = {
     # linear tetrahedra (one point, constant strain: ``elements.linear_tets``)
     "3d-tet": ("3d", "tet", "full", 0.02, 0.3, (0.005, 0.0035)),
 }
+TAYLOR_QUICK_SIZE = 0.0004          # the Taylor bar's coarsest element size [m]: 8 across its 3.2 mm radius
 QUICK_SIZES = {"axisymmetric-quad": (0.01,), "axisymmetric-quad-full": (0.01,), "3d-hex": (0.006,),
                "3d-hex-full": (0.006,), "3d-tet": (0.006,)}
 
@@ -80,7 +92,8 @@ def run_bench(quick: bool = False, steps: int = 200, echo=print) -> list[dict]:
                  f"{r['share_update']:6.0%} {r['share_energy']:6.0%}")
     if not quick:
         results += speed_against_error(echo)
-    results += taylor_bar_bench((0.0004,) if quick else (0.0004, 0.0002), echo)
+        results += compile_bench(echo)
+    results += taylor_bar_bench((TAYLOR_QUICK_SIZE,) if quick else (TAYLOR_QUICK_SIZE, 0.0002), echo)
     results += contact_bench(quick, echo)
     return results
 
@@ -118,23 +131,21 @@ class ReturnShare:
     def _sample(self, solver):
         from .materials import layout
         m = solver.model
-        arrays = [a for a in (solver.sigma, solver.plastic_state, solver.hourglass, solver.f_int,
-                              solver.body_energy) if a is not None]
+        arrays = [solver.sigma, solver.plastic_state, solver.hourglass, solver.f_int, solver.body_energy,
+                  solver.peak]
         saved = [a.copy() for a in arrays]
         scalars = (solver.dt_stable, solver.critical_cell)
         params = m.params.copy()
         elastic = params.copy()
         elastic[:, layout.P_LAW] = layout.ELASTIC
         # the elastic reference is what an elastic model runs: the kernels' copy without law calls
-        kernels = {"plastic": (solver._one_point, solver._full),
-                   "elastic": (None if solver._one_point is None else one_point_kernel(m.gdim, True),
-                               None if solver._full is None else cell_pass(m.cell_kind, True))}
+        kernels = {"plastic": solver._element_pass, "elastic": element_pass(m.cell_kind, m.one_point, True)}
         eps_before = solver.plastic_state[:, :, layout.S_EPS].max(axis=1)
         best = {"plastic": float("inf"), "elastic": float("inf")}
         for _ in range(self.repeats):
             for mode, rows in (("plastic", params), ("elastic", elastic)):
                 m.params[:] = rows
-                solver._one_point, solver._full = kernels[mode]
+                solver._element_pass = kernels[mode]
                 for a, s in zip(arrays, saved):
                     a[:] = s
                 t0 = time.perf_counter()
@@ -144,7 +155,7 @@ class ReturnShare:
                     grew = solver.plastic_state[:, :, layout.S_EPS].max(axis=1) > eps_before
         self.yielding.append(float(grew.mean()))
         m.params[:] = params
-        solver._one_point, solver._full = kernels["plastic"]
+        solver._element_pass = kernels["plastic"]
         for a, s in zip(arrays, saved):
             a[:] = s
         solver.dt_stable, solver.critical_cell = scalars
@@ -235,3 +246,83 @@ def contact_bench(quick: bool = False, echo=print) -> list[dict]:
                  f"{row['share_contact']:7.0%} {row['share_update']:6.0%} {row['share_energy']:6.0%} "
                  f"{speed:8.4f} {row['speed_error']:+7.2%}")
     return out
+
+
+class CompileClock(event.Listener):
+    """The process CPU time numba spends compiling, from its ``numba:compile`` events: the outermost compile
+    of each kernel called from Python, which holds the compiles of the kernels it calls (``count``, every
+    compile, nested ones too)."""
+
+    def __init__(self):
+        self.depth = 0
+        self.start = 0.0
+        self.seconds = 0.0
+        self.count = 0
+
+    def on_start(self, event):
+        self.count += 1
+        if self.depth == 0:
+            self.start = time.process_time()
+        self.depth += 1
+
+    def on_end(self, event):
+        self.depth -= 1
+        if self.depth == 0:
+            self.seconds += time.process_time() - self.start
+
+
+def _compile_case_runs() -> dict:
+    """What each compile row runs: a few steps of the case at its smallest size."""
+    from .verify.contact_cases import two_rods_scene
+    from .verify.plasticity_cases import taylor_scene
+    from .verify.scenes import solve
+    few_steps = 2e-6
+
+    def speed_case(case):
+        kin, element, integration, R, L, sizes = SPEED_CASES[case]
+        raw = rod_scene(f"bench_{case}", kin, element, radius=R, length=L, h=QUICK_SIZES[case][0], end_time=1.0,
+                        integration=integration)
+        return lambda: time_steps(raw, 2)
+
+    def contact(kinematics):
+        raw = two_rods_scene(QUICK_CONTACT_SIZES[kinematics][0], kinematics)
+        raw["scene"]["end_time"] = few_steps
+        return lambda: solve(raw)
+
+    runs = {case: speed_case(case) for case in SPEED_CASES}
+    runs["taylor_bar"] = lambda: solve(taylor_scene(TAYLOR_QUICK_SIZE, end_time=few_steps))
+    runs["two_rods_contact axisymmetric"] = contact("axisymmetric")
+    runs["two_rods_contact 3d"] = contact("3d")
+    return runs
+
+
+def compile_cases():
+    """Run every compile row's case in turn in this process and print its figures as one JSON line (what
+    ``compile_bench`` runs with an empty cache)."""
+    clock = CompileClock()
+    rows = []
+    with event.install_listener("numba:compile", clock):
+        for case, run in _compile_case_runs().items():
+            seconds, count, cpu = clock.seconds, clock.count, time.process_time()
+            run()
+            rows.append({"case": "compile", "compiled_case": case, "kernels_compiled": clock.count - count,
+                         "compile_cpu_s": clock.seconds - seconds, "case_cpu_s": time.process_time() - cpu})
+    print(json.dumps(rows))
+
+
+def compile_bench(echo=print) -> list[dict]:
+    """The compile time of the kernels each case uses, from nothing (module docstring)."""
+    echo("compile time from an empty cache: each case's first steps in turn, in one process (CPU seconds)")
+    echo(f"{'case':32s} {'kernels':>7s} {'compile[s]':>10s} {'case[s]':>8s}")
+    with tempfile.TemporaryDirectory() as cache:
+        p = subprocess.run([sys.executable, "-c", "from shockfem.bench import compile_cases; compile_cases()"],
+                           env=dict(os.environ, NUMBA_CACHE_DIR=cache), capture_output=True, text=True)
+    if p.returncode != 0:
+        echo(f"compile time not measured: its process failed ({p.stderr.strip().splitlines()[-1:]})")
+        return []
+    rows = json.loads(p.stdout.strip().splitlines()[-1])
+    for r in rows:
+        echo(f"{r['compiled_case']:32s} {r['kernels_compiled']:7d} {r['compile_cpu_s']:10.1f} {r['case_cpu_s']:8.1f}")
+    echo(f"{'all':32s} {sum(r['kernels_compiled'] for r in rows):7d} {sum(r['compile_cpu_s'] for r in rows):10.1f} "
+         f"{sum(r['case_cpu_s'] for r in rows):8.1f}")
+    return rows

@@ -13,6 +13,12 @@ evaluation stack (its code object's ``co_stacksize``, raised): the interpreter g
 its own, twice its size, and the frames of everything it calls fill the rest of that block, so that no
 boundary is crossed below a depth of thousands of frames.  It changes no result, only where the frames'
 memory comes from; the block (2 MB) lives as long as the call.
+
+``compile_on_deep_data_stack`` puts every numba compile there, whoever calls the kernel (the console, the
+Python API, a test, a script): numba's dispatcher compiles a kernel called from Python with new types in
+``Dispatcher._compile_for_args``, which then runs through ``call_on_deep_data_stack``.  A compile entered
+on the deep stack already (the console's ``main`` is) takes a block of its own as well, once per kernel
+called from Python.
 """
 from __future__ import annotations
 
@@ -34,3 +40,18 @@ def call_on_deep_data_stack(fn, *args, **kwargs):
     """``fn(*args, **kwargs)``, its frames in one large block of the interpreter's data stack (module
     docstring)."""
     return _deep_call(fn, args, kwargs)
+
+
+def compile_on_deep_data_stack() -> bool:
+    """Make numba's dispatcher compile on a deep data stack (module docstring); whether it did not already."""
+    from numba.core.dispatcher import Dispatcher
+    plain = Dispatcher._compile_for_args
+    if getattr(plain, "on_deep_data_stack", False):
+        return False
+
+    def _compile_for_args(self, *args, **kws):
+        return call_on_deep_data_stack(plain, self, *args, **kws)
+
+    _compile_for_args.on_deep_data_stack = True
+    Dispatcher._compile_for_args = _compile_for_args
+    return True

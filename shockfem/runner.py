@@ -273,8 +273,7 @@ class _Run:
         self.checkpoints = Checkpoints(self._save_checkpoint, loop.checkpoint, scene.end_time)
         if progress and self.comm.rank == 0 and not self.quiet:
             self.bar = ProgressBar(scene.end_time, self.solver.t)
-        consumers = [lambda s: self.peaks.update(s.t),
-                     HistoryRows(self.history, loop.history, scene.end_time),
+        consumers = [HistoryRows(self.history, loop.history, scene.end_time),
                      FieldFrames(self.fields, loop.fields),
                      StopRules(loop, scene.energy_error_limit),
                      self._log_messages,

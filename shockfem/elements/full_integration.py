@@ -21,16 +21,18 @@ from numba import njit
 from ..materials.layout import P_BETA, P_Q_LINEAR, P_Q_QUADRATIC, P_RHO, P_WAVE_SPEED
 from ..materials.update import update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress
+from .blocks import track_peak, von_mises2
 from .cells import AXISYMMETRIC, characteristic_length, gradients
 
 
 def _kernel(elastic_only: bool):
     """``stress_divergence`` compiled for ``elastic_only`` (a constant of the closure, as the one-point
-    kernels are: ``one_point.KERNELS``)."""
+    lane passes are: ``blocks.lane_passes``)."""
 
     @njit(cache=True, fastmath=True)
-    def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics,
-                          thickness, cell_kind, mean_dilatation, params, curves, state, sigma, f, body_energy):
+    def stress_divergence(cells, dofmap, cell_material, cell_sign, x_np1, v_half, t_np1, dt, N, dN, wq, kinematics,
+                          thickness, cell_kind, mean_dilatation, hourglass_form, hourglass_coefficient, params, curves,
+                          state, sigma, hourglass, f, body_energy, peak):
         """Update the stress of ``cells`` over one step and add their internal force to ``f``.
 
         Parameters
@@ -41,6 +43,7 @@ def _kernel(elastic_only: bool):
         cell_sign : (num_cells,) float64, ``cell_orientation`` of the reference mesh.
         x_np1 : (num_nodes, gdim) positions at t_{n+1} [m].
         v_half : (num_nodes, gdim) velocities at t_{n+1/2} [m/s].
+        t_np1 : the time t_{n+1} [s], at which a new peak stress is stamped.
         dt : step t_n -> t_{n+1} [s].
         N, dN : shape functions (nq, nn) and reference gradients (nq, nn, tdim) at the points.
         wq : (nq,) quadrature weights on the reference cell.
@@ -49,14 +52,19 @@ def _kernel(elastic_only: bool):
         cell_kind : 0 tri, 1 quad, 2 tet, 3 hex (for the characteristic length).
         mean_dilatation : replace each point's volumetric strain rate by the cell average
             (Nagtegaal, Parks & Rice 1974), which removes volumetric locking.
+        hourglass_form, hourglass_coefficient : the one-point elements' hourglass control (0 stiffness, 1
+            viscous; the coefficient eps); unread here, as ``hourglass`` is.
         params, curves : material rows and hardening curves (``shockfem.materials.layout``).
         state : (num_cells, nq, STATE_SIZE) point state of the laws, updated in place (a (1, 1, STATE_SIZE)
             stub when no law needs one).
         sigma : (num_cells, nq, 6) Cauchy stress, updated in place from t_n to t_{n+1}.
+        hourglass : the one-point elements' hourglass resultants (cells, modes x components), updated in place.
         f : (num_nodes, gdim) internal force, accumulated (caller zeroes it).
         body_energy : (rows of params, 3) accumulates per row (one per body) the work of the stresses
             dt w (sigma_n + sigma_n+1)/2 : d and the plastic work over the step [J] (columns 0 and 2;
             column 1, the hourglass work, stays: no hourglass modes at full integration).
+        peak : (rows of params, 3) per row the largest squared von Mises stress of sigma at any point so
+            far [Pa^2], the time [s] and the cell (``blocks.PEAK_VM2``...), raised in place.
 
         Returns
         -------
@@ -65,6 +73,7 @@ def _kernel(elastic_only: bool):
         damping_power : int sigma_visc : d dV, power of the stiffness-proportional damping [W].
         viscosity_power : int -q tr(d) dV, power of the bulk viscosity [W].
         plastic_work : int sigma : d eps_p dV over the step [J].
+        hourglass_power : the hourglass forces' power (0: none at full integration) [W].
         bad_cell : a cell whose Jacobian changed sign (inverted) at t_{n+1}, or -1.
         """
         nq = wq.shape[0]
@@ -150,6 +159,7 @@ def _kernel(elastic_only: bool):
                     + 2.0 * ((s_n[3] + s_np1[3]) * d[3] + (s_n[4] + s_np1[4]) * d[4] + (s_n[5] + s_np1[5]) * d[5]))
                 for k in range(6):
                     sigma[cu, q, k] = s_np1[k]
+                track_peak(peak, m, c, von_mises2(s_np1), t_np1)
                 s, pd, pv = viscous_stress(params, m, s_np1, d, pq)
                 damping_power += wmid[q] * pd
                 viscosity_power += wmid[q] * pv
@@ -184,7 +194,7 @@ def _kernel(elastic_only: bool):
             if dtc < dt_stable:
                 dt_stable = dtc
                 critical_cell = c
-        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, bad_cell
+        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, 0.0, bad_cell
     return stress_divergence
 
 

@@ -31,16 +31,14 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from ..materials.algebra import inverse_3x3
 from ..materials.j2 import linear_hardening_return
-from ..materials.layout import P_MU
-from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
+from ..materials.update import elastic_update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, row6,
-                        scatter_plastic_strain, store6)
+from .blocks import LaneElement, lane_passes, von_mises2
+from .one_point import no_radius, row6, spin3, store6
 
 # Cells a block: the scratch rows of 32 tets (23 kB) stay in the first-level cache.
 LANES = 32
@@ -56,11 +54,12 @@ _LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(30, 38)
 _J, _D, _SPIN, _VMID, _SN, _WP = 38, 47, 53, 56, 57, 63
 # Response: nodal forces (x of the four nodes, then y, then z), then ``one_point.add_cell_totals``' seven
 # rows: the end-of-step volume (<= 0: inverted), the stresses' work, the hourglass power (none: 0), the
-# damping and bulk viscosity powers, the stable step, the plastic work.
-_F, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = 64, 76, 77, 78, 79, 80, 81, 82
+# damping and bulk viscosity powers, the stable step, the plastic work; then the squared von Mises stress at
+# t_n+1 (``blocks``).
+_F, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC, _VM2 = 64, 76, 77, 78, 79, 80, 81, 82, 83
 # A J2 row of linear hardening returns in lanes: the plastic strain at t_n in, at t_n+1 out, its rate next
-_EPS, _RATE = 83, 84
-ROWS = 85
+_EPS, _RATE = 84, 85
+ROWS = 86
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -176,6 +175,7 @@ def _response(S, nb, dt, wq):
         w_mid = S[_VMID * B + k]
         a = row6(S, _S, B, k)
         s_np1 = row6(S, _SN, B, k)
+        S[_VM2 * B + k] = von_mises2(s_np1)
         d = row6(S, _D, B, k)
         lam, mu, rho, wave_speed = S[_LAM * B + k], S[_MU * B + k], S[_RHO * B + k], S[_C * B + k]
         q_quadratic, q_linear, beta = S[_Q1 * B + k], S[_Q2 * B + k], S[_BETA * B + k]
@@ -202,81 +202,27 @@ def _response(S, nb, dt, wq):
         S[_DT * B + k] = viscous_step(length, wave_speed, length, trd, q_quadratic, q_linear, beta)
 
 
-def _tet_kernel(elastic_only: bool):
-    """``tet_pass`` compiled for ``elastic_only`` (a constant of the closure: the elastic copy updates the
-    stress in lanes and holds no call to a law)."""
-
-    @njit(cache=True, fastmath=True)
-    def tet_pass(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, N, dN, wq, kinematics, thickness,
-                 cell_kind, mean_dilatation, params, curves, state, sigma, f, body_energy):
-        """Linear tetrahedra: stress update and internal force, with ``full_integration.stress_divergence``'s
-        arguments and returns, so that a solver calls either.  Of the rule it takes the weight ``wq[0]``
-        (1/6, the reference tet's volume); ``N``, ``dN``, ``kinematics`` (3D), ``thickness``, ``cell_kind``
-        and ``mean_dilatation`` (one point: nothing to average) say nothing a tet does not fix."""
-        B = LANES
-        S = np.zeros(ROWS * B)
-        totals = NO_TOTALS
-        weight = wq[0]
-        n = cells.shape[0]
-        for start in range(0, n, B):
-            count = min(B, n - start)
-            block_material = np.uint32(cell_material[cells[start]])
-            one_row = True
-            for k in range(count):
-                c = np.uint32(cells[start + k])
-                m = np.uint32(cell_material[c])
-                one_row = one_row and m == block_material
-                for a in range(4):
-                    node = np.uint32(dofmap[c, a])
-                    S[(_X + a) * B + k] = x_np1[node, 0]
-                    S[(_Y + a) * B + k] = x_np1[node, 1]
-                    S[(_Z + a) * B + k] = x_np1[node, 2]
-                    S[(_U + a) * B + k] = v_half[node, 0]
-                    S[(_V + a) * B + k] = v_half[node, 1]
-                    S[(_W + a) * B + k] = v_half[node, 2]
-                for i in range(6):
-                    S[(_S + i) * B + k] = sigma[c, 0, i]
-                S[_SIGN * B + k] = cell_sign[c]
-            block_constants(S, _LAM, B, cells, start, count, cell_material, params, one_row, block_material)
-            _rates(S, count, dt, weight)
-            _elastic(S, count, dt)
-            linear, y0, eps0, slope = (False, 0.0, 0.0, 0.0) if elastic_only else linear_hardening(
-                params, curves, block_material)
-            if one_row and linear:
-                gather_plastic_strain(S, _EPS, B, cells, start, count, state)
-                _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
-                scatter_plastic_strain(S, _EPS, B, cells, start, count, state)
-            elif not elastic_only:
-                # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
-                for k in range(count):
-                    c = cells[start + k]
-                    trial = row6(S, _SN, B, k)
-                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
-                        continue
-                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, row6(S, _S, B, k),
-                                                     trial, row6(S, _D, B, k),
-                                                     (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),
-                                                     dt, 0.0)
-                    for i in range(6):
-                        S[(_SN + i) * B + k] = s_np1[i]
-                    S[_WP * B + k] = wp
-            _response(S, count, dt, weight)
-            # scatter, in cell order: the same sums as a cell-by-cell loop
-            for k in range(count):
-                c = np.uint32(cells[start + k])
-                m = np.uint32(cell_material[c])
-                for a in range(4):
-                    node = np.uint32(dofmap[c, a])
-                    f[node, 0] += S[(_F + a) * B + k]
-                    f[node, 1] += S[(_F + 4 + a) * B + k]
-                    f[node, 2] += S[(_F + 8 + a) * B + k]
-                for i in range(6):
-                    sigma[c, 0, i] = S[(_SN + i) * B + k]
-                totals = add_cell_totals(totals, S, _VOL, B, k, c, m, dt, body_energy)
-        dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, _, bad_cell = totals
-        return dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, bad_cell
-
-    return tet_pass
+@njit(cache=True, fastmath=True, inline="always")
+def _rates_phase(S, count, dt, kinematics, weight):
+    """The kinematics lanes, with the rule's weight (1/6, the reference tet's volume)."""
+    _rates(S, count, dt, weight)
 
 
-TET_KERNELS = {flag: _tet_kernel(flag) for flag in (True, False)}
+@njit(cache=True, fastmath=True, inline="always")
+def _response_phase(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient):
+    """The response lanes, with the rule's weight."""
+    _response(S, count, dt, weight)
+
+
+# Linear tetrahedra for ``blocks.lane_pass``, with ``full_integration.stress_divergence``'s arguments and
+# returns (its hourglass power 0), so that a solver calls either.  Of the rule it takes the weight ``wq[0]``
+# (1/6, the reference tet's volume); ``N``, ``dN``, ``kinematics`` (3D), ``thickness``, ``cell_kind``,
+# ``mean_dilatation`` (one point: nothing to average), ``hourglass_form``, ``hourglass_coefficient`` and
+# ``hourglass`` say nothing a tet does not fix.
+TETS = LaneElement(name="tet", source=__file__, lanes=LANES, nodes=4, gdim=3, rows=ROWS,
+                   x_row=_X, v_row=_U, s_row=_S, stress_components=(0, 1, 2, 3, 4, 5), o_row=0,
+                   hourglass_modes=0, constants_row=_LAM, sn_row=_SN, f_row=_F, q_row=0,
+                   totals_row=_VOL, eps_row=_EPS, d_row=_D, spin_row=_SPIN, wp_row=_WP, rates=_rates_phase,
+                   elastic=_elastic, j2=_j2_lanes, response=_response_phase, tensor6=row6, store_stress=store6,
+                   spin3=spin3, radius=no_radius)
+TET_KERNELS = lane_passes(TETS)

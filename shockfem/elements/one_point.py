@@ -190,6 +190,39 @@ def block_constants(S, row, B, cells, start, count, cell_material, params, one_r
             S[(row + 6) * B + k] = params[m, P_Q_LINEAR]
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def gather_nodes(S, B, k, c, nodes, gdim, x_row, v_row, dofmap, x_np1, v_half):
+    """Cell c's node positions and velocities into lane k: component i of node a at rows
+    ``x_row + i * nodes + a`` and ``v_row + i * nodes + a``."""
+    for a in range(nodes):
+        node = np.uint32(dofmap[c, a])
+        for i in range(gdim):
+            S[(x_row + i * nodes + a) * B + k] = x_np1[node, i]
+            S[(v_row + i * nodes + a) * B + k] = v_half[node, i]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def scatter_forces(S, B, k, c, nodes, gdim, f_row, dofmap, f):
+    """Cell c's nodal forces (component i of node a at row ``f_row + i * nodes + a`` of lane k) added into
+    ``f``."""
+    for a in range(nodes):
+        node = np.uint32(dofmap[c, a])
+        for i in range(gdim):
+            f[node, i] += S[(f_row + i * nodes + a) * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def spin3(S, row, B, k):
+    """The spin (W23, W13, W12) in rows ``row``..``row`` + 2 of lane k."""
+    return S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def no_radius(S, B, k, kinematics):
+    """A 3D cell's point has no radius (``blocks.LaneElement``'s ``radius``)."""
+    return 0.0
+
+
 # (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell)
 # before the first cell: what a pass returns
 NO_TOTALS = (1e300, -1, 0.0, 0.0, 0.0, 0.0, -1)

@@ -12,17 +12,15 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from ..materials.algebra import inverse_3x3
 from ..materials.j2 import linear_hardening_return
-from ..materials.layout import P_MU
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
+from ..materials.update import elastic_update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, row6,
-                        scatter_plastic_strain, step_length, unwalsh4, walsh8)
+from .blocks import LaneElement, lane_passes, von_mises2
+from .one_point import no_radius, row6, spin3, step_length, store6, unwalsh4, walsh8
 
 # Cells a block: the scratch rows of 16 hexes (22 kB) stay in the first-level cache.
 LANES = 16
@@ -38,12 +36,13 @@ _LAM, _MU, _BETA, _RHO, _C, _Q1, _Q2, _SIGN = range(66, 74)   # ``one_point.bloc
 _J, _JV, _HX, _HV, _D, _SPIN, _SN, _WP = 74, 83, 92, 104, 116, 122, 125, 131
 # Response: nodal forces (x of the eight nodes, then y, then z), hourglass resultants, the volume (<= 0:
 # inverted), the stresses' work, the hourglass, damping and bulk viscosity powers, the stable step,
-# the plastic work (``one_point.add_cell_totals``'s order from the volume).
-_F, _Q, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = 132, 156, 168, 169, 170, 171, 172, 173, 174
+# the plastic work (``one_point.add_cell_totals``'s order from the volume), the squared von Mises stress at
+# t_n+1 (``blocks``: the totals' rows, then it).
+_F, _Q, _VOL, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC, _VM2 = 132, 156, 168, 169, 170, 171, 172, 173, 174, 175
 # A J2 row of linear hardening (``materials.update.linear_hardening``) returns in lanes: the plastic strain
 # at t_n in, at t_n+1 out, and its rate in the next row (``one_point.scatter_plastic_strain``)
-_EPS, _RATE = 175, 176
-ROWS = 177
+_EPS, _RATE = 176, 177
+ROWS = 178
 
 
 # The lane loops hold no inner loops: LLVM vectorises innermost loops only, and a loop over a tuple's
@@ -203,6 +202,7 @@ def _response(S, nb, dt, hourglass_form, hourglass_coefficient):
         v20, v21, v22 = S[(_JV + 6) * B + k], S[(_JV + 7) * B + k], S[(_JV + 8) * B + k]
         a = row6(S, _S, B, k)
         s_np1 = row6(S, _SN, B, k)
+        S[_VM2 * B + k] = von_mises2(s_np1)
         d = row6(S, _D, B, k)
         lam, mu, rho, wave_speed = S[_LAM * B + k], S[_MU * B + k], S[_RHO * B + k], S[_C * B + k]
         q_quadratic, q_linear, beta = S[_Q1 * B + k], S[_Q2 * B + k], S[_BETA * B + k]
@@ -271,90 +271,25 @@ def _response(S, nb, dt, hourglass_form, hourglass_coefficient):
         S[_DT * B + k] = viscous_step(ls, wave_speed, math.sqrt(3.0) * ls, trd, q_quadratic, q_linear, beta)
 
 
-def _hex_kernel(elastic_only: bool):
-    """``hex_one_point`` compiled for ``elastic_only`` (a constant of the closure: the elastic copy
-    updates the stress in lanes and holds no call to a law)."""
-
-    @njit(cache=True, fastmath=True)
-    def hex_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, hourglass_form,
-                      hourglass_coefficient, params, curves, state, sigma, hourglass, f, body_energy):
-        """One-point hexahedra: stress update and internal force (``one_point_quads.quad_one_point``'s
-        arguments and returns but for its ``axisymmetric`` and ``thickness``).
-
-        hourglass : (cells, 12) stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi,
-        xi eta zeta), 3 components each.
-        """
-        B = LANES
-        S = np.zeros(ROWS * B)
-        totals = NO_TOTALS
-        n = cells.shape[0]
-        for start in range(0, n, B):
-            count = min(B, n - start)
-            # cell, row and node numbers as unsigned: numba wraps a signed index around (a compare and an add
-            # on every load and store of the gather and scatter; docs/performance.md)
-            block_material = np.uint32(cell_material[cells[start]])
-            one_row = True
-            for k in range(count):
-                c = np.uint32(cells[start + k])
-                m = np.uint32(cell_material[c])
-                one_row = one_row and m == block_material
-                for a in range(8):
-                    node = np.uint32(dofmap[c, a])
-                    S[(_X + a) * B + k] = x_np1[node, 0]
-                    S[(_Y + a) * B + k] = x_np1[node, 1]
-                    S[(_Z + a) * B + k] = x_np1[node, 2]
-                    S[(_U + a) * B + k] = v_half[node, 0]
-                    S[(_V + a) * B + k] = v_half[node, 1]
-                    S[(_W + a) * B + k] = v_half[node, 2]
-                for i in range(6):
-                    S[(_S + i) * B + k] = sigma[c, 0, i]
-                for i in range(12):
-                    S[(_O + i) * B + k] = hourglass[c, i]
-                S[_SIGN * B + k] = cell_sign[c]
-            block_constants(S, _LAM, B, cells, start, count, cell_material, params, one_row, block_material)
-            _rates(S, count, dt)
-            # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
-            # inside their yield surface
-            _elastic(S, count, dt)
-            linear, y0, eps0, slope = (False, 0.0, 0.0, 0.0) if elastic_only else linear_hardening(
-                params, curves, block_material)
-            if one_row and linear:
-                # a block of one J2 row of linear hardening: the returns in lanes too
-                gather_plastic_strain(S, _EPS, B, cells, start, count, state)
-                _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
-                scatter_plastic_strain(S, _EPS, B, cells, start, count, state)
-            elif not elastic_only:
-                # the others cell by cell, from their trial (a J2 return, or objective rotation and law)
-                for k in range(count):
-                    c = cells[start + k]
-                    trial = row6(S, _SN, B, k)
-                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
-                        continue
-                    s_np1, d, wp = update_from_trial(params, curves, cell_material[c], state, c, 0, row6(S, _S, B, k),
-                                                     trial, row6(S, _D, B, k),
-                                                     (S[_SPIN * B + k], S[(_SPIN + 1) * B + k], S[(_SPIN + 2) * B + k]),
-                                                     dt, 0.0)
-                    for i in range(6):
-                        S[(_SN + i) * B + k] = s_np1[i]
-                    S[_WP * B + k] = wp
-            _response(S, count, dt, hourglass_form, hourglass_coefficient)
-            # scatter, in cell order: the same sums as a cell-by-cell loop
-            for k in range(count):
-                c = np.uint32(cells[start + k])
-                m = np.uint32(cell_material[c])
-                for a in range(8):
-                    node = np.uint32(dofmap[c, a])
-                    f[node, 0] += S[(_F + a) * B + k]
-                    f[node, 1] += S[(_F + 8 + a) * B + k]
-                    f[node, 2] += S[(_F + 16 + a) * B + k]
-                for i in range(6):
-                    sigma[c, 0, i] = S[(_SN + i) * B + k]
-                for i in range(12):
-                    hourglass[c, i] = S[(_Q + i) * B + k]
-                totals = add_cell_totals(totals, S, _VOL, B, k, c, m, dt, body_energy)
-        return totals
-
-    return hex_one_point
+@njit(cache=True, fastmath=True, inline="always")
+def _rates_phase(S, count, dt, kinematics, weight):
+    """The kinematics lanes (3D, one point: nothing to choose)."""
+    _rates(S, count, dt)
 
 
-HEX_KERNELS = {flag: _hex_kernel(flag) for flag in (True, False)}
+@njit(cache=True, fastmath=True, inline="always")
+def _response_phase(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient):
+    """The response lanes."""
+    _response(S, count, dt, hourglass_form, hourglass_coefficient)
+
+
+# One-point hexahedra for ``blocks.lane_pass`` (the quads' arguments, ``one_point_quads.QUADS``):
+# ``hourglass`` (cells, 12) the stiffness-form resultants, mode-major (xi eta, eta zeta, zeta xi, xi eta zeta),
+# 3 components each; ``kinematics`` and ``thickness`` say nothing a hexahedron does not fix.
+HEXES = LaneElement(name="hex", source=__file__, lanes=LANES, nodes=8, gdim=3, rows=ROWS,
+                    x_row=_X, v_row=_U, s_row=_S, stress_components=(0, 1, 2, 3, 4, 5), o_row=_O,
+                    hourglass_modes=12, constants_row=_LAM, sn_row=_SN, f_row=_F, q_row=_Q,
+                    totals_row=_VOL, eps_row=_EPS, d_row=_D, spin_row=_SPIN, wp_row=_WP, rates=_rates_phase,
+                    elastic=_elastic, j2=_j2_lanes, response=_response_phase, tensor6=row6, store_stress=store6,
+                    spin3=spin3, radius=no_radius)
+HEX_KERNELS = lane_passes(HEXES)

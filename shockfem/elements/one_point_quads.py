@@ -18,9 +18,12 @@ compiler sees the same arithmetic over consecutive array entries, so the pass ru
    in lanes as well (``_j2_lanes``); the others cell by cell from that trial (``update_from_trial``,
    scalar: the laws hold state and branches);
 4. response lanes (vectorised, ``_response_lanes``): the viscous stresses, the hourglass resultant,
-   the nodal forces, the energies and the stable step, into further rows;
+   the nodal forces, the energies, the stable step and the squared von Mises stress, into further rows;
 5. scatter (scalar): forces into the nodes, stresses and resultants into their arrays, the energy
-   sums and the smallest step in cell order.
+   sums, the smallest step and each body's peak stress in cell order.
+
+The loop over the blocks is ``blocks.py``'s, shared with the hexes and tets: this module gives it the
+quads' rows and phases (``QUADS``).
 
 Numba's LLVM vectorises a lane loop only when (found with its vectorizer's remarks,
 ``llvmlite.binding.set_option('', '-pass-remarks-missed=loop-vectorize')``): numba's Python error model is off (``error_model="numpy"``: otherwise every
@@ -36,16 +39,15 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from ..materials.j2 import linear_hardening_return
-from ..materials.layout import P_MU
 from ..materials.objective import cayley_matrix
-from ..materials.update import elastic_trial_holds, elastic_update_stress, linear_hardening, update_from_trial
+from ..materials.update import elastic_update_stress
 from ..materials.viscosity import bulk_viscosity, viscous_step, viscous_stress_of
-from .one_point import (NO_TOTALS, add_cell_totals, block_constants, gather_plastic_strain, inverse_2x2,
-                        scatter_plastic_strain, step_length, unwalsh4, walsh4)
+from .blocks import LaneElement, lane_passes, von_mises2
+from .cells import AXISYMMETRIC
+from .one_point import inverse_2x2, step_length, unwalsh4, walsh4
 
 # Cells a block: 32-64 ran fastest on the bench's 50k quads (``shockfem bench``); at 256 the scratch
 # arrays leave the first-level cache and the pass runs at half the scalar code's speed.
@@ -64,10 +66,11 @@ _J, _JV, _HX, _HV, _R, _D, _SPIN, _SN, _WP = (W_ROWS + r for r in (0, 4, 8, 10, 
 K_ROWS = 23
 # Response rows: nodal forces (x of the four nodes, then y), the hourglass resultant, the signed volume
 # factor (<= 0: inverted), the stresses' work over the step, the hourglass, damping and bulk viscosity
-# powers, the cell's stable step and its plastic work (``one_point.add_cell_totals``'s order from _DET).
-_FX, _FY, _Q, _DET, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC = (W_ROWS + K_ROWS + r
-                                                                for r in (0, 4, 8, 10, 11, 12, 13, 14, 15, 16))
-V_ROWS = 17
+# powers, the cell's stable step and its plastic work (``one_point.add_cell_totals``'s order from _DET),
+# the squared von Mises stress at t_n+1 (``blocks``: the totals' rows, then it).
+_FX, _FY, _Q, _DET, _WORK, _HG, _DAMP, _VISC, _DT, _PLASTIC, _VM2 = (W_ROWS + K_ROWS + r for r in
+                                                                      (0, 4, 8, 10, 11, 12, 13, 14, 15, 16, 17))
+V_ROWS = 18
 # A J2 row of linear hardening (``materials.update.linear_hardening``) returns in lanes: the plastic strain
 # at t_n in, at t_n+1 out, and its rate in the next row (``one_point.scatter_plastic_strain``)
 _EPS, _RATE = W_ROWS + K_ROWS + V_ROWS, W_ROWS + K_ROWS + V_ROWS + 1
@@ -174,6 +177,7 @@ def _response_lanes(axisymmetric: bool):
             d = (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k])
             a0, a1, a2, a5 = S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], S[(_S + 3) * B + k]
             s_np1 = (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0, S[(_SN + 3) * B + k])
+            S[_VM2 * B + k] = von_mises2(s_np1)
             o0, o1 = S[_O * B + k], S[(_O + 1) * B + k]
             lam, mu, rho, wave_speed = S[_LAM * B + k], S[_MU * B + k], S[_RHO * B + k], S[_C * B + k]
             q_quadratic, q_linear, beta = S[_Q1 * B + k], S[_Q2 * B + k], S[_BETA * B + k]
@@ -233,107 +237,57 @@ _RATES_AXISYMMETRIC, _RATES_PLANE = _rates_lanes(True), _rates_lanes(False)
 _RESPONSE_AXISYMMETRIC, _RESPONSE_PLANE = _response_lanes(True), _response_lanes(False)
 
 
-def _quad_kernel(elastic_only: bool):
-    """``quad_one_point`` compiled for ``elastic_only`` (a constant of the closure: the elastic copy
-    updates the stress in lanes and holds no call to a law)."""
-
-    @njit(cache=True, fastmath=True)
-    def quad_one_point(cells, dofmap, cell_material, cell_sign, x_np1, v_half, dt, axisymmetric, thickness,
-                       hourglass_form, hourglass_coefficient, params, curves, state, sigma, hourglass, f,
-                       body_energy):
-        """One-point quads (plane strain or axisymmetric): stress update and internal force.
-
-        Arguments as ``full_integration.stress_divergence`` (``sigma`` is (cells, 1, 6)), plus
-        hourglass_form : 0 stiffness, 1 viscous; hourglass_coefficient : eps;
-        hourglass : (cells, 2) hourglass resultants of the last step, updated in place (the
-        stiffness form accumulates them; both forms need them for the trapezoidal work);
-        body_energy : (rows of params, 3) accumulates, per row (one per body), the work of the stresses
-        dt V (sigma_n + sigma_n+1)/2 : d, the hourglass work and the plastic work over the step [J].
-
-        Returns (dt_stable, critical_cell, damping_power, viscosity_power, plastic_work, hourglass_power, bad_cell).
-        """
-        B = LANES
-        S = np.zeros(ROWS * B)
-        totals = NO_TOTALS
-        n = cells.shape[0]
-        for start in range(0, n, B):
-            count = min(B, n - start)
-            # cell, row and node numbers as unsigned: numba wraps a signed index around (a compare and an add
-            # on every load and store of the gather and scatter; docs/performance.md)
-            block_material = np.uint32(cell_material[cells[start]])
-            one_row = True
-            for k in range(count):
-                c = np.uint32(cells[start + k])
-                m = np.uint32(cell_material[c])
-                one_row = one_row and m == block_material
-                for a in range(4):
-                    node = np.uint32(dofmap[c, a])
-                    S[(_X + a) * B + k] = x_np1[node, 0]
-                    S[(_Y + a) * B + k] = x_np1[node, 1]
-                    S[(_U + a) * B + k] = v_half[node, 0]
-                    S[(_W + a) * B + k] = v_half[node, 1]
-                S[_S * B + k] = sigma[c, 0, 0]
-                S[(_S + 1) * B + k] = sigma[c, 0, 1]
-                S[(_S + 2) * B + k] = sigma[c, 0, 2]
-                S[(_S + 3) * B + k] = sigma[c, 0, 5]
-                S[_O * B + k] = hourglass[c, 0]
-                S[(_O + 1) * B + k] = hourglass[c, 1]
-                S[_SIGN * B + k] = cell_sign[c]
-            block_constants(S, _LAM, B, cells, start, count, cell_material, params, one_row, block_material)
-            if axisymmetric:
-                _RATES_AXISYMMETRIC(S, count, dt)
-            else:
-                _RATES_PLANE(S, count, dt)
-            # every cell's elastic trial in lanes: the update of elastic rows, and of J2 points that stay
-            # inside their yield surface (most of a plastic body at any time)
-            _elastic(S, count, dt)
-            linear, y0, eps0, slope = (False, 0.0, 0.0, 0.0) if elastic_only else linear_hardening(
-                params, curves, block_material)
-            if one_row and linear:
-                # a block of one J2 row of linear hardening: the returns in lanes too
-                gather_plastic_strain(S, _EPS, B, cells, start, count, state)
-                _j2_lanes(S, count, dt, params[block_material, P_MU], y0, eps0, slope)
-                scatter_plastic_strain(S, _EPS, B, cells, start, count, state)
-            elif not elastic_only:
-                # the others cell by cell, from their trial (a J2 return, or objective rotation, slotted ring
-                # and law)
-                for k in range(count):
-                    c = cells[start + k]
-                    trial = (S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k], 0.0, 0.0,
-                             S[(_SN + 3) * B + k])
-                    if elastic_trial_holds(params, curves, cell_material[c], state, c, 0, trial):
-                        continue
-                    s_np1, d, wp = update_from_trial(
-                        params, curves, cell_material[c], state, c, 0,
-                        (S[_S * B + k], S[(_S + 1) * B + k], S[(_S + 2) * B + k], 0.0, 0.0, S[(_S + 3) * B + k]), trial,
-                        (S[_D * B + k], S[(_D + 1) * B + k], S[(_D + 2) * B + k], 0.0, 0.0, S[(_D + 3) * B + k]),
-                        (0.0, 0.0, S[_SPIN * B + k]), dt, S[_R * B + k] if axisymmetric else 0.0)
-                    S[_SN * B + k], S[(_SN + 1) * B + k], S[(_SN + 2) * B + k] = s_np1[0], s_np1[1], s_np1[2]
-                    S[(_SN + 3) * B + k] = s_np1[5]
-                    S[(_D + 2) * B + k] = d[2]
-                    S[_WP * B + k] = wp
-            if axisymmetric:
-                _RESPONSE_AXISYMMETRIC(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
-            else:
-                _RESPONSE_PLANE(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
-            # scatter, in cell order: the same sums as a cell-by-cell loop
-            for k in range(count):
-                c = np.uint32(cells[start + k])
-                m = np.uint32(cell_material[c])
-                for a in range(4):
-                    node = np.uint32(dofmap[c, a])
-                    f[node, 0] += S[(_FX + a) * B + k]
-                    f[node, 1] += S[(_FY + a) * B + k]
-                sigma[c, 0, 0] = S[_SN * B + k]
-                sigma[c, 0, 1] = S[(_SN + 1) * B + k]
-                sigma[c, 0, 2] = S[(_SN + 2) * B + k]
-                sigma[c, 0, 5] = S[(_SN + 3) * B + k]
-                hourglass[c, 0] = S[_Q * B + k]
-                hourglass[c, 1] = S[(_Q + 1) * B + k]
-                totals = add_cell_totals(totals, S, _DET, B, k, c, m, dt, body_energy)
-        return totals
-
-    return quad_one_point
+@njit(cache=True, fastmath=True, inline="always")
+def _rates_phase(S, count, dt, kinematics, weight):
+    """The kinematics lanes of the block's kinematics."""
+    if kinematics == AXISYMMETRIC:
+        _RATES_AXISYMMETRIC(S, count, dt)
+    else:
+        _RATES_PLANE(S, count, dt)
 
 
-QUAD_KERNELS = {flag: _quad_kernel(flag) for flag in (True, False)}
+@njit(cache=True, fastmath=True, inline="always")
+def _tensor6(S, row, B, k):
+    """A stress or strain rate (11, 22, 33, 12 in rows ``row``..+3 of lane k) as the six components."""
+    return S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], 0.0, 0.0, S[(row + 3) * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _store_stress(S, row, B, k, s):
+    """The in-plane components and the hoop (out-of-plane) one of ``s`` into rows ``row``..+3 of lane k."""
+    S[row * B + k], S[(row + 1) * B + k], S[(row + 2) * B + k], S[(row + 3) * B + k] = s[0], s[1], s[2], s[5]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _spin3(S, row, B, k):
+    """The in-plane spin W12 (row ``row`` of lane k) as (W23, W13, W12)."""
+    return 0.0, 0.0, S[row * B + k]
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _radius(S, B, k, kinematics):
+    """The radius of the cell's centre in axisymmetry (0 in plane strain)."""
+    return S[_R * B + k] if kinematics == AXISYMMETRIC else 0.0
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _response_phase(S, count, dt, kinematics, thickness, weight, hourglass_form, hourglass_coefficient):
+    """The response lanes of the block's kinematics."""
+    if kinematics == AXISYMMETRIC:
+        _RESPONSE_AXISYMMETRIC(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
+    else:
+        _RESPONSE_PLANE(S, count, dt, thickness, hourglass_form, hourglass_coefficient)
+
+
+# One-point quads (plane strain or axisymmetric) for ``blocks.lane_pass``: ``sigma`` is (cells, 1, 6),
+# ``hourglass`` (cells, 2) the resultants of the last step, updated in place (the stiffness form accumulates
+# them; both forms need them for the trapezoidal work); ``hourglass_form`` 0 stiffness, 1 viscous, with the
+# coefficient eps; the rule (``N``, ``dN``, ``wq``), ``cell_kind`` and ``mean_dilatation`` say nothing a
+# one-point quad does not fix.
+QUADS = LaneElement(name="quad", source=__file__, lanes=LANES, nodes=4, gdim=2, rows=ROWS,
+                    x_row=_X, v_row=_U, s_row=_S, stress_components=(0, 1, 2, 5), o_row=_O,
+                    hourglass_modes=2, constants_row=_LAM, sn_row=_SN, f_row=_FX, q_row=_Q,
+                    totals_row=_DET, eps_row=_EPS, d_row=_D, spin_row=_SPIN, wp_row=_WP, rates=_rates_phase,
+                    elastic=_elastic, j2=_j2_lanes, response=_response_phase, tensor6=_tensor6,
+                    store_stress=_store_stress, spin3=_spin3, radius=_radius)
+QUAD_KERNELS = lane_passes(QUADS)

@@ -208,24 +208,25 @@ def linear_hardening_return(s, eps, mu, y0, eps0, slope, dt):
 
 
 @njit(cache=True, fastmath=True)
-def j2_update(row, curve, point, s, d, dt):
-    """The J2 law over one step in the rotated frame: elastic trial, then the return.
-
-    ``row``: the material's parameter row; ``curve``: its hardening curve; ``point``: the point's
-    state, updated in place.  A called function, compiled once: the return mapping inlined into
-    every element kernel made numba's compile of the first plastic run several times longer.
-    """
-    trial, _ = elastic_update(row, s, d, dt)
+def j2_return(row, curve, point, trial, d, dt):
+    """The return from an elastic trial already made (``radial_return``).  The one-point elements compute every
+    cell's trial in lanes (``update.elastic_update_stress``, the same rotation and Hooke's law as
+    ``update_stress`` and ``j2_update`` make) and hand a yielding point's trial here (``update.update_from_trial``),
+    rather than rotate and step it a second time.  A called function, compiled once: the return mapping
+    inlined into every element kernel made numba's compile of the first plastic run several times longer."""
     return radial_return(row, curve, point, trial, d, dt)
 
 
 @njit(cache=True, fastmath=True)
-def j2_return(row, curve, point, trial, d, dt):
-    """``j2_update`` from an elastic trial already made: the return alone.  The one-point elements compute
-    every cell's trial in lanes (``update.elastic_update_stress``, the same rotation and Hooke's law as
-    ``update_stress`` and ``j2_update`` make) and hand a yielding point's trial here (``update.update_from_trial``),
-    rather than rotate and step it a second time.  A called function, like ``j2_update``."""
-    return radial_return(row, curve, point, trial, d, dt)
+def j2_update(row, curve, point, s, d, dt):
+    """The J2 law over one step in the rotated frame: elastic trial, then the return (``j2_return``, called,
+    so that the return is compiled once for both).
+
+    ``row``: the material's parameter row; ``curve``: its hardening curve; ``point``: the point's
+    state, updated in place.
+    """
+    trial, _ = elastic_update(row, s, d, dt)
+    return j2_return(row, curve, point, trial, d, dt)
 
 
 def pack_j2(row, curve, plasticity) -> None:

@@ -6,9 +6,10 @@ The run loop is
         for consume in consumers:
             consume(step)
 
-and every consumer is a callable of the read-only ``Step``: the bodies' peak von Mises stress (every
-step, ``peak_stress.py``), the history's rows, the field frames, the stop rules (``solver/guards.py``), the
-log of the solver's messages, the checkpoints, the API's ``on_step``, the signal check and the progress bar.
+and every consumer is a callable of the read-only ``Step``: the history's rows, the field frames, the stop
+rules (``solver/guards.py``), the log of the solver's messages, the checkpoints, the API's ``on_step``, the
+signal check and the progress bar.  (The bodies' peak von Mises stress needs none: the element pass keeps it
+every step, ``peak_stress.py``.)
 What the loop must carry across a checkpoint (when each cadence is next due, the running peaks) is one
 ``LoopState``, pickled whole with the checkpoint.
 """

@@ -33,6 +33,7 @@ from ..errors import UnstableRun
 from ..model import Model
 from ..forces import registry
 from ..elements import kernels
+from ..elements.blocks import no_peak
 from ..materials.layout import STATE_SIZE
 from ..materials.objective import rotation_of_angular_velocity
 from ..materials.update import is_elastic_only
@@ -175,10 +176,11 @@ class ExplicitSolver:
                                       if m.point_state else (1, 1, STATE_SIZE))
         # the element kernels' copies without law calls when every material is elastic (elements/)
         elastic_only = is_elastic_only(m.params)
-        self._one_point = kernels.one_point_kernel(gdim, elastic_only) if m.one_point else None
-        self._full = None if m.one_point else kernels.cell_pass(m.cell_kind, elastic_only)
-        # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex)
-        self.hourglass = np.zeros((len(m.dofmap), 2 if gdim == 2 else 12)) if m.one_point else None
+        self._element_pass = kernels.element_pass(m.cell_kind, m.one_point, elastic_only)
+        # stiffness-form hourglass resultants of one-point cells (2 per quad, 4 x 3 per hex; none at Gauss points)
+        self.hourglass = np.zeros((len(m.dofmap), (2 if gdim == 2 else 12) if m.one_point else 0))
+        # per row of params, the peak von Mises stress the pass has seen, with when and where (``blocks``)
+        self.peak = no_peak(len(m.params))
         # per body (a row of params each), this rank's share: the stresses' work (stored and plastic
         # energy), the hourglass work and the plastic work [J], for per-body energies and warnings
         self.body_energy = np.zeros((len(m.params), 3))
@@ -302,24 +304,11 @@ class ExplicitSolver:
         reduced here."""
         m = self.model
         self.f_int[:] = 0.0
-        hourglass_power = 0.0
         try:
-            if m.one_point and m.gdim == 2:
-                dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
-                    m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt,
-                    m.axisymmetric, m.thickness, m.hourglass_form,
-                    m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                    self.f_int, self.body_energy)
-            elif m.one_point:
-                dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._one_point(
-                    m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.hourglass_form,
-                    m.hourglass_coefficient, m.params, m.curves, self.plastic_state, self.sigma, self.hourglass,
-                    self.f_int, self.body_energy)
-            else:
-                dt_stable, critical, damping_power, viscosity_power, plastic_work, bad = self._full(
-                    m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, dt, m.N, m.dN, m.wq,
-                    m.kinematics, m.thickness, m.cell_kind, True, m.params, m.curves, self.plastic_state,
-                    self.sigma, self.f_int, self.body_energy)
+            dt_stable, critical, damping_power, viscosity_power, plastic_work, hourglass_power, bad = self._element_pass(
+                m.kernel_cells, m.dofmap, m.cell_material, m.cell_sign, self.x, self.v, self.t, dt, m.N, m.dN, m.wq,
+                m.kinematics, m.thickness, m.cell_kind, True, m.hourglass_form, m.hourglass_coefficient, m.params,
+                m.curves, self.plastic_state, self.sigma, self.hourglass, self.f_int, self.body_energy, self.peak)
         except ZeroDivisionError:
             # a kernel divided by a zero that a non-finite state made (numba's Python error model): the
             # state, not the element, is at fault; name the first non-finite node

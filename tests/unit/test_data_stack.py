@@ -33,3 +33,37 @@ def test_no_block_mapped_per_call_at_a_boundary():
     plain = _faults(_sweep_depths)
     deep = _faults(lambda: call_on_deep_data_stack(_sweep_depths))
     assert deep < max(100, plain / 10), (deep, plain)
+
+
+def test_a_kernel_called_from_python_compiles_on_the_deep_data_stack():
+    """Once ``shockfem.materials`` is imported (as every run's kernels import it), a kernel's compile runs
+    under ``call_on_deep_data_stack``: the typing of a call inside the kernel sees its frame below."""
+    import sys
+
+    from numba import njit
+    from numba.extending import overload
+
+    import shockfem.materials  # noqa: F401  (applies the patch)
+    from shockfem import data_stack
+    assert not data_stack.compile_on_deep_data_stack()       # applied once, already
+
+    seen = []
+
+    def probe():
+        pass
+
+    @overload(probe)
+    def _typing():
+        frame, codes = sys._getframe(), set()
+        while frame is not None:
+            codes.add(frame.f_code)
+            frame = frame.f_back
+        seen.append(data_stack._deep_call.__code__ in codes)
+        return lambda: None
+
+    @njit
+    def kernel():
+        probe()
+
+    kernel()
+    assert seen and all(seen)

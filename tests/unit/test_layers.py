@@ -109,3 +109,31 @@ def later():
     found = upward_imports(source, "shockfem.elements.fake")
     assert [f.split(" imports ")[1] for f in found] == ["shockfem.model (model)", "shockfem.solver.explicit (solver)",
                                                         "shockfem.runner (runner)"]
+
+
+# Inside ``elements``: the cells' geometry and the passes' shared helpers, the block driver of the lane passes,
+# the passes, and the choice among them.  A pass builds on the driver; the driver knows no element.
+ELEMENT_LAYERS = [
+    {"cells", "one_point"},
+    {"blocks"},
+    {"full_integration", "linear_tets", "one_point_hexes", "one_point_quads"},
+    {"kernels", "__init__"},
+]
+ELEMENT_RANK = {name: k for k, layer in enumerate(ELEMENT_LAYERS) for name in layer}
+
+
+def test_every_element_module_has_a_layer():
+    names = {path.stem for path in (PACKAGE / "elements").glob("*.py")}
+    assert names - set(ELEMENT_RANK) == set(), "give these modules of elements/ a layer in ELEMENT_LAYERS"
+
+
+def test_the_element_passes_build_on_the_block_driver():
+    upward = []
+    for path in sorted((PACKAGE / "elements").glob("*.py")):
+        own = path.stem
+        for line, target in _imports(path.read_text(), _module_name(path)):
+            parts = target.split(".")
+            if parts[:2] == ["shockfem", "elements"] and len(parts) > 2 and \
+                    ELEMENT_RANK.get(parts[2], -1) > ELEMENT_RANK[own]:
+                upward.append(f"elements.{own}:{line} imports {target}")
+    assert upward == [], "imports inside elements/ that point up:\n" + "\n".join(upward)

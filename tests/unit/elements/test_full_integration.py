@@ -9,7 +9,7 @@ from shockfem.model import kinematics as kin
 from shockfem.elements import cells as ec, full_integration
 from shockfem.materials import layout
 
-from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
+from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, run_pass, steel_params as _params
 
 CASES = [("axisymmetric", mesh.CellType.quadrilateral), ("axisymmetric", mesh.CellType.triangle),
          ("plane-strain", mesh.CellType.quadrilateral), ("3d", mesh.CellType.hexahedron),
@@ -41,9 +41,9 @@ def test_internal_force_matches_ufl_form(kinematics, cell):
     cells = np.arange(ncell, dtype=np.int32)
     # dt = 0 and v = 0: the stress stays as given and the kernel only assembles the force
     sign = ec.cell_orientation(dofmap, X, dN)
-    full_integration.stress_divergence(cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X), 0.0, N, dN, wq,
-                              kin.CODES[kinematics], 0.7, kind, True, _params(), NO_CURVES, NO_STATE, sigma.copy(), f,
-                              np.zeros((1, 3)))
+    run_pass(full_integration.stress_divergence, cells, dofmap, np.zeros(ncell, np.int32), sign, X, np.zeros_like(X),
+             0.0, _params(), NO_CURVES, NO_STATE, sigma.copy(), f, np.zeros((1, 3)), rule=(N, dN, wq),
+             kinematics=kin.CODES[kinematics], thickness=0.7, cell_kind=kind)
     degree = kin.quadrature_degree(m.topology.cell_name(), kinematics)
     Qe = ufl.VectorElement("Quadrature", m.ufl_cell(), degree=degree, dim=6, quad_scheme="default")
     s6 = fem.Function(fem.FunctionSpace(m, Qe))
@@ -70,11 +70,10 @@ def test_rigid_rotation_rotates_stress_exactly(elastic_only):
     ncell, nq = len(dofmap), len(wq)
     s0 = np.array([100e6, -20e6, 5e6, 7e6, -3e6, 11e6])
     sigma = np.tile(s0, (ncell, nq, 1))
-    full_integration.stress_divergence_kernel(elastic_only)(
-                              np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
-                              ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
-                              N, dN, wq, ec.THREE_D, 1.0, kind, True, _params(), NO_CURVES, NO_STATE, sigma,
-                              np.zeros_like(X), np.zeros((1, 3)))
+    run_pass(full_integration.stress_divergence_kernel(elastic_only), np.arange(ncell, dtype=np.int32), dofmap,
+             np.zeros(ncell, np.int32), ec.cell_orientation(dofmap, X, dN), x_np1, v, dt, _params(), NO_CURVES,
+             NO_STATE, sigma, np.zeros_like(X), np.zeros((1, 3)), rule=(N, dN, wq), kinematics=ec.THREE_D,
+             cell_kind=kind)
     S0 = np.array([[s0[0], s0[5], s0[4]], [s0[5], s0[1], s0[3]], [s0[4], s0[3], s0[2]]])
     S1 = R @ S0 @ R.T
     expected = np.array([S1[0, 0], S1[1, 1], S1[2, 2], S1[1, 2], S1[0, 2], S1[0, 1]])
@@ -93,11 +92,10 @@ def test_uniform_stretch_gives_hooke_stress(elastic_only):
     ncell, nq = len(dofmap), len(wq)
     sigma = np.zeros((ncell, nq, 6))
     p = _params()
-    full_integration.stress_divergence_kernel(elastic_only)(
-                              np.arange(ncell, dtype=np.int32), dofmap, np.zeros(ncell, np.int32),
-                              ec.cell_orientation(dofmap, X, dN), x_np1, v, dt,
-                              N, dN, wq, ec.PLANE_STRAIN, 1.0, kind, True, p, NO_CURVES, NO_STATE, sigma,
-                              np.zeros_like(X), np.zeros((len(p), 3)))
+    run_pass(full_integration.stress_divergence_kernel(elastic_only), np.arange(ncell, dtype=np.int32), dofmap,
+             np.zeros(ncell, np.int32), ec.cell_orientation(dofmap, X, dN), x_np1, v, dt, p, NO_CURVES, NO_STATE,
+             sigma, np.zeros_like(X), np.zeros((len(p), 3)), rule=(N, dN, wq), kinematics=ec.PLANE_STRAIN,
+             cell_kind=kind)
     lam, mu = p[0, layout.P_LAMBDA], p[0, layout.P_MU]
     # the mid-step configuration differs from X by dt/2 * v: strain rate exact to O(dt)
     tr = 0.5

@@ -14,10 +14,11 @@ The forces themselves are checked against the one-point UFL form in ``test_one_p
 import numpy as np
 import pytest
 
-from shockfem.elements import kernels, one_point, one_point_hexes, one_point_quads
+from shockfem.elements import blocks, cells as cells_module, kernels, one_point, one_point_hexes, one_point_quads
 from shockfem.materials import layout
+from shockfem.output.cell_fields import von_mises
 
-from element_helpers import NO_CURVES, NO_STATE, steel_params
+from element_helpers import NO_CURVES, NO_STATE, run_pass, steel_params
 
 STIFFNESS, VISCOUS = one_point.HOURGLASS_FORMS["stiffness"], one_point.HOURGLASS_FORMS["viscous"]
 
@@ -68,12 +69,15 @@ def _run(elastic_only, x, dofmap, cells, v, form, axisymmetric=True, sign=None, 
         params, materials = rows
     body_energy = np.zeros((len(params), 3))
     sign = np.ones(n) if sign is None else sign
-    kernel = kernels.one_point_kernel(gdim, elastic_only)
-    geometry = (axisymmetric, 0.7) if gdim == 2 else ()
+    kernel = kernels.element_pass(cells_module.QUADRILATERAL if gdim == 2 else cells_module.HEXAHEDRON, True,
+                                  elastic_only)
+    kinematics = (cells_module.AXISYMMETRIC if axisymmetric else cells_module.PLANE_STRAIN) if gdim == 2 else \
+        cells_module.THREE_D
     if material is not None:
         (params, curves), state = material, np.zeros((n, 1, layout.STATE_SIZE))
-    out = kernel(cells, dofmap, materials, sign, x, v, 2e-7, *geometry, form, 0.1, params, curves, state,
-                 sigma, hourglass, f, body_energy)
+    out = run_pass(kernel, cells, dofmap, materials, sign, x, v, 2e-7, params, curves, state, sigma, f, body_energy,
+                   kinematics=kinematics, thickness=0.7, hourglass=hourglass, hourglass_form=form,
+                   hourglass_coefficient=0.1)
     return out, {"f": f, "sigma": sigma, "hourglass": hourglass, "body_energy": body_energy, "state": state}
 
 
@@ -205,3 +209,59 @@ def test_a_j2_row_of_linear_hardening_returns_in_lanes(shape, axisymmetric, tang
         scale = np.abs(ref[name]).max()
         assert np.abs(got[name] - ref[name]).max() <= 1e-12 * scale, name
     assert out[4] == pytest.approx(ref_out[4], rel=1e-12) and out[4] > 0.0
+
+
+def _von_mises2(sigma):
+    """The squared von Mises stress of each point of ``sigma`` (cells, points, 6), in numpy
+    (``output.cell_fields.von_mises``, squared)."""
+    return von_mises(sigma) ** 2
+
+
+@pytest.mark.parametrize("shape, axisymmetric", CASES)
+@pytest.mark.parametrize("elastic_only", [True, False])
+def test_each_row_keeps_its_peak_stress_with_when_and_where(shape, axisymmetric, elastic_only):
+    """Shuffled cells on two rows (every third cell on row 1): after a pass each row's peak is the largest
+    squared von Mises stress of its cells' new stresses (to 1e-12: the lanes' formula, in another order), at
+    the pass's time, in the first cell of ``cells`` that holds it (exactly); a second pass whose stresses
+    stay below it (no motion: the stresses do not change, ``elastic_update_stress`` adds zero) keeps the
+    peak, when and where; a higher one (the stresses doubled) moves them."""
+    x, dofmap = _grid(shape)
+    n, gdim = len(dofmap), x.shape[1]
+    cells = np.random.default_rng(7).permutation(n).astype(np.int32)
+    rows = (np.arange(n) % 3 == 0).astype(np.int32)
+    params = _params()
+    kernel = kernels.element_pass(cells_module.QUADRILATERAL if gdim == 2 else cells_module.HEXAHEDRON, True,
+                                  elastic_only)
+    kinematics = (cells_module.AXISYMMETRIC if axisymmetric else cells_module.PLANE_STRAIN) if gdim == 2 else \
+        cells_module.THREE_D
+    sigma = np.random.default_rng(5).normal(size=(n, 1, 6)) * 1e7
+    if gdim == 2:
+        sigma[..., 3:5] = 0.0
+    hourglass = np.zeros((n, 2 if gdim == 2 else 12))
+    peak = blocks.no_peak(len(params))
+
+    def step(v, t):
+        run_pass(kernel, cells, dofmap, rows, np.ones(n), x, v, 2e-7, params, NO_CURVES, NO_STATE, sigma,
+                 np.zeros_like(x), np.zeros((len(params), 3)), kinematics=kinematics, thickness=0.7,
+                 hourglass=hourglass, t_np1=t, peak=peak)
+
+    def expected(t):
+        vm2 = _von_mises2(sigma)[:, 0]
+        out = []
+        for r in range(len(params)):
+            mine = cells[rows[cells] == r]
+            out.append((vm2[mine].max(), t, mine[np.argmax(vm2[mine])]))
+        return np.array(out)
+
+    v = np.random.default_rng(11).normal(size=x.shape) * 20.0
+    step(v, 1e-6)
+    first = expected(1e-6)
+    np.testing.assert_allclose(peak[:, blocks.PEAK_VM2], first[:, 0], rtol=1e-12)
+    np.testing.assert_array_equal(peak[:, 1:], first[:, 1:])
+    kept = peak.copy()
+    step(np.zeros_like(x), 2e-6)
+    np.testing.assert_array_equal(peak, kept)
+    sigma *= 2.0
+    step(np.zeros_like(x), 3e-6)
+    np.testing.assert_allclose(peak[:, blocks.PEAK_VM2], 4.0 * first[:, 0], rtol=1e-12)
+    np.testing.assert_array_equal(peak[:, 1:], expected(3e-6)[:, 1:])

@@ -10,7 +10,7 @@ from shockfem.model import kinematics as kin
 from shockfem.elements import cells as ec, kernels, one_point
 from shockfem.materials import layout
 
-from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, steel_params as _params
+from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, run_pass, steel_params as _params
 
 STIFFNESS, VISCOUS = one_point.HOURGLASS_FORMS["stiffness"], one_point.HOURGLASS_FORMS["viscous"]
 
@@ -34,15 +34,10 @@ def _run(kinematics, dofmap, sign, x, v, dt, sigma, hourglass, form=STIFFNESS, c
     cells = np.arange(len(dofmap), dtype=np.int32)
     mats = np.zeros(len(dofmap), np.int32)
     p = _params() if params is None else params
-    if kinematics == "3d":
-        out = kernels.one_point_kernel(3, elastic_only)(cells, dofmap, mats, sign, x, v, dt, form, coefficient, p,
-                                                          NO_CURVES, NO_STATE, sigma, hourglass, f,
-                                                          np.zeros((len(p), 3)))
-    else:
-        out = kernels.one_point_kernel(2, elastic_only)(cells, dofmap, mats, sign, x, v, dt,
-                                                          kinematics == "axisymmetric", 0.7, form, coefficient, p,
-                                                          NO_CURVES, NO_STATE, sigma, hourglass, f,
-                                                          np.zeros((len(p), 3)))
+    out = run_pass(kernels.element_pass(ec.HEXAHEDRON if kinematics == "3d" else ec.QUADRILATERAL, True, elastic_only),
+                   cells, dofmap, mats, sign, x, v, dt, p, NO_CURVES, NO_STATE, sigma, f, np.zeros((len(p), 3)),
+                   kinematics=kin.CODES[kinematics], thickness=0.7, hourglass=hourglass, hourglass_form=form,
+                   hourglass_coefficient=coefficient)
     dt_stable, _, damping_power, _, _, hourglass_power, bad = out
     return f, dt_stable, damping_power, hourglass_power, bad
 

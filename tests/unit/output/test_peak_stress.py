@@ -1,47 +1,54 @@
-"""The per-step peak von Mises pass against ``cell_fields.von_mises``, the numpy form it compiles."""
+"""Each body's peak von Mises stress, read from the element pass's rows (``elements.blocks.track_peak``; the
+pass's own peak is tested in ``tests/unit/elements``)."""
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
-from shockfem.output.cell_fields import von_mises
-from shockfem.output.peak_stress import PeakStress, largest_von_mises2, where_largest
+from shockfem.elements import blocks
+from shockfem.output.peak_stress import PeakStress
 
 
-def _solver(sigma, cell_body, kernel_cells):
+def _solver(peak, cell_body, cell_material, kernel_cells):
     X0 = np.arange(len(cell_body) + 1, dtype=float)[:, None] * np.array([[1.0, 0.5]])
     dofmap = np.stack([np.arange(len(cell_body)), np.arange(len(cell_body)) + 1], axis=1)
-    model = SimpleNamespace(bodies=[0, 1, 2], kernel_cells=kernel_cells, cell_body=cell_body, X0=X0, dofmap=dofmap,
-                            comm=SimpleNamespace(size=1))
-    return SimpleNamespace(model=model, sigma=sigma)
+    model = SimpleNamespace(bodies=[0, 1, 2], kernel_cells=kernel_cells, cell_body=cell_body,
+                            cell_material=cell_material, X0=X0, dofmap=dofmap, comm=SimpleNamespace(size=1))
+    return SimpleNamespace(model=model, peak=peak)
 
 
-def test_the_compiled_pass_finds_the_numpy_peak_and_its_cell():
-    rng = np.random.default_rng(3)
-    sigma = rng.standard_normal((50, 4, 6)) * 1e8
-    cells = np.arange(50, dtype=np.int64)[::3]
-    vm = von_mises(sigma[cells])
-    # the same formula in another order: round-off of 1e16 Pa^2
-    assert largest_von_mises2(sigma, cells) == pytest.approx(vm.max() ** 2, rel=1e-12)
-    assert where_largest(sigma, cells, largest_von_mises2(sigma, cells)) == cells[np.argmax(vm.max(axis=1))]
-
-
-def test_each_body_keeps_its_peak_with_when_and_where():
-    """Three bodies (the third rigid: no kernel cells); the stresses of three steps, the peak of body 0 in its
-    second, of body 1 in its first."""
+def test_each_body_takes_the_highest_of_its_rows_with_when_and_where():
+    """Three bodies (the third rigid: no kernel cells); body 0's cells 0-2 on row 0 and, mass-scaled, cell 2 on
+    row 3; body 1's on row 1.  Body 0's peak is its scaled row's (higher), body 1's its own row's; the rigid
+    body has none; a checkpoint's state gives the same."""
     cell_body = np.array([0, 0, 0, 1, 1, 2], dtype=np.int32)
-    sigma = np.zeros((6, 1, 6))
-    peaks = PeakStress(_solver(sigma, cell_body, np.arange(5)))
-    steps = [{4: 300.0, 1: 100.0}, {2: 200.0, 3: 50.0}, {0: 150.0}]
-    for k, uniaxial in enumerate(steps):
-        sigma[:] = 0.0
-        for c, s in uniaxial.items():
-            sigma[c, 0, 0] = s                      # uniaxial: von Mises = |s|
-        peaks.update(1e-6 * (k + 1))
+    cell_material = np.array([0, 0, 3, 1, 1, 2], dtype=np.int32)
+    peak = blocks.no_peak(4)
+    peak[0] = 150.0 ** 2, 3e-6, 0
+    peak[3] = 200.0 ** 2, 2e-6, 2
+    peak[1] = 300.0 ** 2, 1e-6, 4
+    peaks = PeakStress(_solver(peak, cell_body, cell_material, np.arange(5)), {"rows": peak.copy()})
     out = peaks.per_body()
-    assert out[0]["max_von_mises"] == pytest.approx(200.0, rel=1e-14) and out[0]["time"] == 2e-6
+    assert out[0]["max_von_mises"] == pytest.approx(200.0, rel=1e-15) and out[0]["time"] == 2e-6
     assert out[0]["at"] == pytest.approx([2.5, 1.25])          # cell 2's reference centre
-    assert out[1]["max_von_mises"] == pytest.approx(300.0, rel=1e-14) and out[1]["time"] == 1e-6
+    assert out[1]["max_von_mises"] == pytest.approx(300.0, rel=1e-15) and out[1]["time"] == 1e-6
+    assert out[1]["at"] == pytest.approx([4.5, 2.25])
     assert out[2] == {"max_von_mises": 0.0, "time": None, "at": None}
-    again = PeakStress(_solver(sigma, cell_body, np.arange(5)), peaks.state())      # from a checkpoint
-    assert again.per_body() == out
+    fresh = blocks.no_peak(4)
+    again = PeakStress(_solver(fresh, cell_body, cell_material, np.arange(5)), peaks.state())     # from a checkpoint
+    assert again.per_body() == out and np.array_equal(fresh, peak)
+
+
+def test_a_body_without_stress_has_no_peak():
+    cell_body = np.array([0, 1], dtype=np.int32)
+    peaks = PeakStress(_solver(blocks.no_peak(3), cell_body, cell_body, np.arange(2)))
+    assert [p["at"] for p in peaks.per_body()] == [None, None, None]
+
+
+def test_a_run_counts_its_peaks_from_its_start():
+    """What the pass saw before the run's loop (the solver's set-up, a preload stage's settling) is dropped."""
+    cell_body = np.array([0, 1], dtype=np.int32)
+    peak = blocks.no_peak(3)
+    peak[0] = 1e4, -1e-3, 1
+    PeakStress(_solver(peak, cell_body, cell_body, np.arange(2)))
+    assert np.array_equal(peak, blocks.no_peak(3))
