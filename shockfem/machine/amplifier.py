@@ -76,11 +76,6 @@ class Stage:
     limits: list = field(default_factory=list)          # of Limit
     alternatives: list = field(default_factory=list)    # every material sized here: material, worst ratio
 
-    @property
-    def interface_stress_1d(self) -> float:
-        """The machine's loads table reads the interface's peak stress by this name (the FE run's now)."""
-        return self.interface_stress
-
 
 @dataclass
 class Amplifier:
@@ -108,24 +103,12 @@ class Amplifier:
     def restitutions(self) -> list[float]:
         return [st.restitution for st in self.stages]
 
-    @property
-    def gain_1d(self) -> float:
-        """The name the machine's report and the system study read the chain's gain by."""
-        return self.gain
-
-    @property
-    def striker_speed_1d(self) -> float:
-        """The name the machine's report and the system study read the striker's speed by."""
-        return self.striker_speed
-
     def as_dict(self) -> dict:
         out = asdict(self)
         out["limits"] = [lim.as_dict() for lim in self.limits]
         for st, raw in zip(self.stages, out["stages"]):
             raw["limits"] = [lim.as_dict() for lim in st.limits]
         out["restitutions"] = self.restitutions
-        # the names the system study and its tests read the chain's gain and the striker's speed by
-        out["gain_1d"], out["striker_speed_1d"] = self.gain, self.striker_speed
         return out
 
 
@@ -178,17 +161,16 @@ def choose_pad(iface: Interface, materials=tuple(PAD_MATERIALS)) -> tuple[PadDes
     return min(elastomers, key=lambda pe: pe[0].worst)[0], table
 
 
+def chain_run(spec: MachineSpec, masses, bodies, e: list[float]) -> rigid.ChainResult:
+    """The rigid chain of ``masses`` with restitution e[k] at interface k, every collision followed
+    (``rigid.designed_chain``: a stack falls on an anvil of the chain's mean restitution)."""
+    return rigid.designed_chain(masses, spec.launch_speed, e, [b["length"] for b in bodies], MIN_GAP,
+                                spec.architecture)
+
+
 def _chain_gain(spec: MachineSpec, masses, bodies, e: list[float]) -> float:
-    """The gain of the rigid chain of ``masses`` with restitution e[k] at interface k, every collision
-    followed (a stack falls on an anvil of the chain's mean restitution)."""
-    n = len(masses)
-    lengths = [b["length"] for b in bodies]
-    if spec.architecture == "launched-chain":
-        r = rigid.run_chain(masses, [spec.launch_speed] + [0.0] * (n - 1), lengths, [MIN_GAP] * (n - 1), e)
-    else:
-        r = rigid.run_chain(masses, [-spec.launch_speed] * n, lengths, [MIN_GAP] * (n - 1), e,
-                            anvil=sum(e) / len(e), anvil_gap=MIN_GAP)
-    return abs(r.final[-1]) / spec.launch_speed
+    """The gain of ``chain_run``: the striker's final speed over the launch speed."""
+    return abs(chain_run(spec, masses, bodies, e).final[-1]) / spec.launch_speed
 
 
 def _gaps(spec: MachineSpec, masses, e: float, stages: list[Stage]) -> list[float]:
