@@ -98,6 +98,9 @@ class Amplifier:
     runs: list[str] = field(default_factory=list)   # the pad runs' directories
     limits: list = field(default_factory=list)      # every stage's Limit
     cache: dict = field(default_factory=dict)       # the run cache's folder, hits and misses
+    # why the masses themselves failed (no chain of them makes the gain), apart from the checks ``reason``
+    # adds on the chain designed (its speed, its pads' limits)
+    design_reason: str = ""
 
     @property
     def restitutions(self) -> list[float]:
@@ -254,16 +257,18 @@ def _amplifier(spec, last, e, iterations, V, Y, cache: RunCache, t0, reason: str
         a, b = st.pair.split("_", 1)
         for name, lim in zip((a, b), [lim for lim in st.limits if lim.quantity == "stress (FE, von Mises)"]):
             peaks[name] = max(peaks.get(name, 0.0), lim.value / Y)
-    on_target = abs(speed / V - 1) < 0.02
-    if not reason and not on_target:
-        reason = f"the chain brings the striker to {speed:.4g} m/s, not {V:.4g}"
-    if not reason and broken(limits):
-        reason = "pads outside their limits: " + "; ".join(lim.describe() for lim in broken(limits)[:3])
+    # every reason the chain fails: ``reason`` (the masses' own, kept as ``design_reason``) and this chain's checks
+    words = [reason] if reason else []
+    if abs(speed / V - 1) >= 0.02:
+        words.append(f"the chain brings the striker to {speed:.4g} m/s, not {V:.4g}")
+    if broken(limits):
+        words.append("pads outside their limits: " + "; ".join(lim.describe() for lim in broken(limits)[:3]))
+    design_reason, reason = reason, "; ".join(words)
     return Amplifier(spec.architecture, list(masses), bodies, spec.launch_speed, V, e, iterations, gain, speed,
                      _gaps(spec, masses, e, stages), stages, peaks, Y, sum(st.run_wall_time_s for st in stages),
                      not reason, reason, [st.run for st in stages], limits,
                      {"folder": cache.folder, "hits": cache.hits, "misses": cache.misses,
-                      "wall_time_s": time.perf_counter() - t0})
+                      "wall_time_s": time.perf_counter() - t0}, design_reason)
 
 
 def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier:
@@ -271,7 +276,7 @@ def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier
     if last is None:
         return Amplifier(spec.architecture, [], [], spec.launch_speed, V, e, iterations, math.nan, math.nan, [], [],
                          {}, Y, 0.0, False, reason, [], [], {"folder": cache.folder, "hits": cache.hits,
-                                                             "misses": cache.misses})
+                                                             "misses": cache.misses}, reason)
     return _amplifier(spec, last, e, iterations, V, Y, cache, t0, reason)
 
 
@@ -288,7 +293,7 @@ def check_with_first_mass(spec: MachineSpec, fixture: Fixture, amp: Amplifier, b
     stages = _measure(spec, amp.masses, bodies, amp.restitution, cache, resolution, None)
     gain = _chain_gain(spec, amp.masses, bodies, [st.restitution for st in stages])
     out = _amplifier(spec, (amp.masses, bodies, stages, gain), amp.restitution, amp.iterations, amp.target_speed,
-                     amp.yield_stress, cache, t0, "" if amp.feasible else amp.reason)
+                     amp.yield_stress, cache, t0, amp.design_reason)
     return out
 
 

@@ -53,7 +53,9 @@ def test_machine_closes(machine):
     assert a["striker_speed"] == pytest.approx(f["striker_speed"], rel=0.02)
     assert a["restitutions"] == [st["restitution"] for st in a["stages"]]
     assert all(not st["measured"] and "estimate" in st["note"] for st in a["stages"])
-    assert 0.0 < a["restitution"] < 1.0 and min(a["restitutions"]) <= a["restitution"] <= max(a["restitutions"]) + 1e-9
+    # (the effective e lies among the interfaces' restitutions: 1e-9 is brentq's 1e-10 and round-off)
+    assert 0.0 < a["restitution"] < 1.0
+    assert min(a["restitutions"]) - 1e-9 <= a["restitution"] <= max(a["restitutions"]) + 1e-9
     # the launcher fires the first mass; at the launch speed when it is feasible (its optimiser's constraint,
     # 1e-4), else the verdict says the launcher falls short
     assert L["projectile_mass"] == pytest.approx(a["masses"][0], rel=1e-12)
