@@ -593,8 +593,11 @@ def _modes(args) -> int:
     print(f"{body}: {data['boundary']} ({'; '.join(modes.conditions) or 'no conditions'}), {scene.kinematics}, "
           f"degree-{args.degree} elements, {args.mass} mass, {modes.dofs} dofs, {modes.rigid} rigid-body modes, "
           f"{modes.wall_time_s:.2f} s")
+    print(f"damping in a run: {data['damping']}")
     for m in data["modes"]:
-        print(f"  mode {m['mode']:3d} {m['frequency_hz']:14.6g} Hz  {m['label']}")
+        damped = (f"  rings at {m['damped_frequency_hz']:.6g} Hz, {m['damping_ratio']:.3%} of critical"
+                  + ("" if m.get("in_band", True) else " (outside the band)") if modes.damping is not None else "")
+        print(f"  mode {m['mode']:3d} {m['frequency_hz']:14.6g} Hz  {m['label']}{damped}")
     print(f"wrote {os.path.join(out, 'modes.json')} and modes.xdmf")
     return EXIT_OK
 

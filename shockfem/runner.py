@@ -31,6 +31,7 @@ from .scene.advice import scene_warnings
 from .scene.damping import mass_damping_warnings
 from .materials.layout import S_EPS
 from .solver.explicit import ExplicitSolver
+from .solver.preload import settle
 
 
 @dataclass
@@ -224,6 +225,8 @@ class _Run:
         if state is None:
             for msg in self.solver.log_messages:
                 say(msg)
+            if scene.preload is not None:
+                settle(self.solver, scene.preload, say)
         else:
             self._restore(state)
         say(f"elements: {self.model.num_cells_global}, stable step {self.solver.stable_step():.4g} s "
@@ -334,6 +337,8 @@ class _Run:
             self.history.write(rd.file("history.h5"), rd.file("history.csv"))
             summary = _summary(scene, solver, status, diagnosis, wall, self.peaks.per_body())
             summary["sections"] = {sec.name: sec.summary() for sec in self.history.sections}
+            if getattr(solver, "preload_report", None) is not None:
+                summary["preload"] = solver.preload_report     # solver/preload.py, checkpointed with the solver
             checkpoint_time = self.checkpoints.wall_time if self.checkpoints is not None else 0.0
             summary["checkpoints"] = {"interval": scene.checkpoint_interval, "wall_time_s": checkpoint_time,
                                       "resumed_from": self.resumed}

@@ -9,7 +9,8 @@ factor.  Per element: strain (x_{i+1} - x_i) / h - 1, stress by a bilinear J2 re
 beta E d(eps)/dt (damping ratio zeta at a reference frequency: beta = 2 zeta / omega), or a band
 damping that holds zeta over a band of frequencies (``materials/band_damping.py``: Maxwell terms
 driven by each element's stress increments, as the finite-element solver drives them by its
-nodal forces, ``solver/band.py``; a band-damped bar's Young's modulus is its dynamic modulus at the
+nodal forces, ``solver/band.py``, and let go in a yielding element, where they would carry the stress past
+the yield surface; a band-damped bar's Young's modulus is its dynamic modulus at the
 band's reference frequency, the elastic law running with E / Re(K(w_ref) / K)).  No bulk
 viscosity: in 1D it smears the unloading front and lengthens the measured contact (9% at 100
 elements per bar), where refinement costs almost nothing.
@@ -185,6 +186,13 @@ def _march(x, v, m, elem, h0, area, E, sy, H, beta, iface, k_if, c_if, kinematic
                                                                 band_decay[e, k], band_gain[e, k], band_weight[e, k])
                     s_band += band_r[e, k]
                     kept += band_q[e, k] * band_r[e, k]
+                if over > 0.0:
+                    # yielding: the terms act on the elastic response only and let go (solver/band.py's
+                    # BandGroup); what their springs held is dissipated (the stored-energy drop below)
+                    for k in range(terms):
+                        band_r[e, k] = 0.0
+                        band_q[e, k] = 0.0
+                    s_band, kept = 0.0, 0.0
                 damped += 0.5 * (before + s_band) * d_eps * area[e] * h0[e]
                 stored_now += 0.5 * kept * area[e] * h0[e]
             sigma_prev[e], eps_prev[e] = trial, eps

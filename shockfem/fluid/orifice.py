@@ -25,9 +25,14 @@ which is the law above with
 three area ratios.  Its range of validity (``VALID_AREA_RATIO``): the thin sharp-edged orifice
 of ISO 5167-2 (beta = d / D <= 0.75, n <= 0.56), where it agrees with the standard within 3%; above
 that the jet hardly contracts, the pressure a given flow needs falls to zero at n = 1, and the law is
-Idelchik's extrapolation, not a measured coefficient.  Reynolds number: both sources hold for a
-turbulent orifice (Re_D > 1e4 to 1e5); at the end of a stroke the flow slows below that and the
-coefficient rises toward a laminar orifice's.
+Idelchik's extrapolation, not a measured coefficient.  Reynolds number (``least_reynolds``): the law has
+none in it, the coefficient of a turbulent orifice; ISO 5167-2:2003 (5.3.1, corner tappings) holds its
+Reader-Harris/Gallagher equation down to Re_D = rho u1 D / mu = 5000 for beta <= 0.56 and
+16000 beta^2 above, and between there and Re_D -> inf that equation's coefficient rises by a few
+percent (``shockfem verify orifice_reynolds`` prints by how much); below it the flow turns laminar and
+the coefficient is another law's.  At the end of a stroke every dashpot's flow slows through that
+bound; what a design may leave there is a small share of its velocity change
+(``programmer.dashpot_validity``).
 
 The jet's momentum: a control volume moving with the piston from the passage (pressure p, speed u1)
 to the jet's contracted section (0 gauge, u_j) gives the force of the liquid on the piston
@@ -176,6 +181,30 @@ def area_for_force(force: float, speed: float, rho: float, A: float, largest: fl
         if high - low <= 1e-12 * largest:
             break
     return 0.5 * (low + high)
+
+
+# ISO 5167-2:2003, 5.3.1 (corner and D-D/2 tappings): the least Re_D of the orifice coefficient, and
+# the area ratio above which it grows as 16000 beta^2
+ISO_LEAST_REYNOLDS, ISO_REYNOLDS_SLOPE = 5000.0, 16000.0
+
+
+def least_reynolds(n: float) -> float:
+    """The least pipe Reynolds number Re_D = rho u1 D / mu at which the orifice law holds at the area
+    ratio ``n`` = beta^2 (ISO 5167-2:2003, 5.3.1)."""
+    return max(ISO_LEAST_REYNOLDS, ISO_REYNOLDS_SLOPE * n)
+
+
+def reader_harris_gallagher(beta: float, reynolds: float, diameter: float = math.inf) -> float:
+    """ISO 5167-2:2003's discharge coefficient C (eq. 4) of a thin orifice plate with corner tappings
+    (L1 = L2' = 0, so its tapping terms vanish) at the diameter ratio ``beta`` and Re_D ``reynolds``
+    (inf: the turbulent limit) in a pipe of ``diameter`` [m] (its small-pipe term below 71.12 mm)."""
+    c = 0.5961 + 0.0261 * beta ** 2 - 0.216 * beta ** 8
+    if math.isfinite(reynolds):
+        A = (19000.0 * beta / reynolds) ** 0.8
+        c += 0.000521 * (1e6 * beta / reynolds) ** 0.7 + (0.0188 + 0.0063 * A) * beta ** 3.5 * (1e6 / reynolds) ** 0.3
+    if diameter < 0.07112:
+        c += 0.011 * (0.75 - beta) * (2.8 - diameter / 0.0254)
+    return c
 
 
 # a law without the velocity of approach holds while the term it drops, (Cc n)^2, stays below 5%

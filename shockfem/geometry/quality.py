@@ -6,16 +6,23 @@
   folded cell (unusable), below ``POOR_JACOBIAN`` a badly distorted one.
 * Aspect ratio: longest over shortest edge of the cell.
 * Smallest element: the characteristic length the solver's stable step uses
-  (``elements.cells.characteristic_length``), and the step it gives, l / c times the safety factor.
+  (``elements.cells.characteristic_length``), and the step it gives, l / c times the safety factor,
+  as the solver takes it: a band-damped body's wave speed c is its relaxed moduli's (the material's
+  moduli are its dynamic ones at the band's reference frequency) and the band terms shorten the whole
+  mesh's step by the smallest ``BandTerms.step_factor`` of the scene (``solver/band.py``), so a body
+  with no band of its own is shortened too when another body has one.
 
 Vertex order is dolfinx's: quads 0-1-3-2 around, hexes the tensor grid i + 2 j + 4 k.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from mpi4py import MPI
+
+from ..scene.damping import band_terms
 
 POOR_JACOBIAN = 0.2
 POOR_ASPECT = 20.0
@@ -78,7 +85,7 @@ class BodyQuality:
     max_aspect_at: list[float]
     smallest_length: float
     smallest_at: list[float]
-    stable_step: float            # smallest length / wave speed x safety factor [s]
+    stable_step: float            # smallest length / wave speed x safety factor (x the band's factor) [s]
 
     def problems(self) -> tuple[list[str], list[str]]:
         """(unusable, poor) messages naming the place."""
@@ -119,6 +126,9 @@ def mesh_quality(scene, meshed) -> list[BodyQuality]:
     tags = np.zeros(n_local, dtype=np.int32)
     owned = meshed.cell_tags.indices < n_local
     tags[meshed.cell_tags.indices[owned]] = meshed.cell_tags.values[owned]
+    dampings = [body.damping or scene.damping for body in scene.bodies]
+    bands = [None if body.rigid else band_terms(d) for body, d in zip(scene.bodies, dampings)]
+    band_factor = min([t.step_factor for t in bands if t is not None], default=1.0)
     out = []
     for i, body in enumerate(scene.bodies):
         sel = tags == i + 1
@@ -131,8 +141,11 @@ def mesh_quality(scene, meshed) -> list[BodyQuality]:
         amax, aat = _worst(ar, centres, comm, MPI.MAX)
         lmin, lat = _worst(le, centres, comm, MPI.MIN)
         c = scene.material_of(body).c_dilatational
+        if bands[i] is not None:
+            # the elastic law runs with E x relaxed_scale: the wave speed x its square root
+            c *= math.sqrt(bands[i].relaxed_scale(dampings[i].reference_frequency))
         out.append(BodyQuality(body.name, comm.allreduce(int(sel.sum()), op=MPI.SUM), jmin, jat, amax, aat,
-                               lmin, lat, lmin / c * scene.safety_factor))
+                               lmin, lat, lmin / c * scene.safety_factor * band_factor))
     return out
 
 

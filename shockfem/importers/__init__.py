@@ -39,7 +39,23 @@ def import_model(source: str, out: str | None = None, units: str | None = None):
         raise SceneError([f"--units: {e}"]) from None
     except DeckError as e:
         raise SceneError(e.problems) from None
-    return write_import(model, out, source, units_set.name)
+    done = write_import(model, out, source, units_set.name)
+    if not source.lower().endswith(ABAQUS_FILES):     # an Abaqus mesh's scene waits for its materials
+        _check_written(done, model)
+    return done
+
+
+def _check_written(done, model):
+    """The written scene through the scene check: a value the deck's cards allow but the scene refuses (a
+    negative density, an end time below zero) is refused here, said at the deck card it came from, and the
+    scene and report are removed (a later ``shockfem run`` finds no scene to run)."""
+    from ..scene import SceneError, read_toml, resolve
+    try:
+        resolve(read_toml(done.scene), base_dir=os.path.dirname(os.path.abspath(done.scene)))
+    except SceneError as e:
+        for path in (done.scene, done.report):
+            os.remove(path)
+        raise SceneError([model.locate(p) for p in e.problems]) from None
 
 
 def _written_by_import(path: str) -> bool:

@@ -16,12 +16,16 @@ client's dependencies).
 """
 from __future__ import annotations
 
+import math
 import os
 import re
 from dataclasses import dataclass, field
 
 # how wide a field is in long format, whatever its standard width (LS-DYNA's LONG=Y)
 LONG_WIDTH = 20
+# the largest integer field: LS-DYNA's ids are 32-bit signed integers (its double-precision builds' 64-bit ids
+# go beyond, but no deck here needs them; numpy's int64 arrays of ids would overflow past 2^63)
+MAX_ID = 2 ** 31 - 1
 
 
 class DeckError(Exception):
@@ -106,9 +110,16 @@ class Keyword:
             value = parse_number(body)
             if value is None:
                 raise DeckError([self.error(card, f"field {k + 1}: {text!r} is not a number")])
+        if not math.isfinite(value):
+            # NaN, infinity or beyond a double (1e400): no field of a deck means it, and it would reach the
+            # scene (or an integer conversion) unseen
+            raise DeckError([self.error(card, f"field {k + 1}: {text!r} is not a finite number")])
         if kind == "i":
             if value != int(value):
                 raise DeckError([self.error(card, f"field {k + 1}: {text!r} must be a whole number")])
+            if abs(value) > MAX_ID:
+                raise DeckError([self.error(card, f"field {k + 1}: {text!r} is beyond the largest id or count "
+                                                  f"a deck holds ({MAX_ID})")])
             return int(value)
         return float(value)
 
@@ -240,8 +251,12 @@ class _Reader:
                     self.parameters[name] = value
                     continue
                 number = parse_number(value)
-                if number is None:
-                    self.problems.append(kw.error(c, f"parameter {name!r}: {value!r} is not a number"))
+                if number is None or not math.isfinite(number):
+                    self.problems.append(kw.error(c, f"parameter {name!r}: {value!r} is not a finite number"))
+                    continue
+                if kind == "I" and (number != int(number) or abs(number) > MAX_ID):
+                    self.problems.append(kw.error(c, f"parameter {name!r}: {value!r} is not a whole number "
+                                                     f"(type I) up to {MAX_ID}"))
                     continue
                 self.parameters[name] = int(number) if kind == "I" else number
 

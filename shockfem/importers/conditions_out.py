@@ -137,12 +137,14 @@ def velocities(mapper):
         else:
             continue
         for body in bodies:
-            if body in given and given[body] != vel:
-                mapper.problems.append(error(f"body {body} already has the initial velocity {given[body]}"))
-            given[body] = vel
-    for b in mapper.scene["bodies"]:
+            if body in given and given[body][0] != vel:
+                mapper.problems.append(error(f"body {body} already has the initial velocity {given[body][0]}"))
+            given[body] = (vel, error)
+    for i, b in enumerate(mapper.scene["bodies"]):
         if b["name"] in given:
-            b["velocity"] = [mapper.u.quantity(x, "velocity") for x in given[b["name"]]]
+            vel, error = given[b["name"]]
+            b["velocity"] = [mapper.u.quantity(x, "velocity") for x in vel]
+            mapper.origins[f"bodies[{i}].velocity"] = error
 
 
 def constraints(mapper, regions: Regions):
@@ -167,59 +169,128 @@ def constraints(mapper, regions: Regions):
             continue
         nodes = node_set(mapper, v["ID"], error)
         if nodes:
-            _held(mapper, regions.from_nodes(nodes, f"nodes{v['ID']}", error), v["DOF"])
+            _held(mapper, regions.from_nodes(nodes, f"nodes{v['ID']}", error), v["DOF"], error)
     for key, nodes in single.items():
         error = lambda msg, where=key[3]: f"{where}: *BOUNDARY_SPC_NODE / *NODE TC: {msg}"
         name = f"held_{''.join(a for a, d in zip(AXES, key[:3]) if d)}"
-        _held(mapper, regions.from_nodes(nodes, name, error), key[:3])
+        _held(mapper, regions.from_nodes(nodes, name, error), key[:3], error)
 
 
-def _held(mapper, region_names, dofs):
+def _held(mapper, region_names, dofs, error):
+    """Each region held along ``dofs`` (x, y, z flags); on a rigid body the body itself is held (its nodes
+    move with it, ``scene/boundaries.py``): fixed when all three are (its turn held too), else its centre
+    along each one, free to turn."""
+    rigid = {b["name"] for b in mapper.scene["bodies"] if b.get("rigid")}
+    done = set()
     for region in region_names:
+        body = region.split(".")[0]
+        if body in rigid:
+            if body in done:
+                continue
+            done.add(body)
+            mapper.notes.append(f"{region}: nodes of the rigid body {body} held: the body held "
+                                + ("(fixed)" if all(dofs) else f"along {', '.join(a for a, d in zip(AXES, dofs) if d)}, "
+                                   "free to turn"))
+            region = body
         if all(dofs):
-            mapper.scene.setdefault("boundary", []).append({"region": region, "type": "fixed"})
+            mapper.add("boundary", {"region": region, "type": "fixed"}, error)
         else:
             for axis, held in zip(AXES, dofs):
                 if held:
-                    mapper.scene.setdefault("boundary", []).append(
-                        {"region": region, "type": "velocity", "direction": axis, "value": mapper.u.quantity(0.0, "velocity")})
+                    mapper.add("boundary", {"region": region, "type": "velocity", "direction": axis,
+                                            "value": mapper.u.quantity(0.0, "velocity")}, error)
+
+
+# *MAT_RIGID CON1 (CMO 1): the global translations it holds
+RIGID_HELD = {0: "", 1: "x", 2: "y", 3: "z", 4: "xy", 5: "yz", 6: "zx", 7: "xyz"}
+
+
+def rigid_constraints(mapper):
+    """*MAT_RIGID CMO 1: its parts' bodies held along CON1's global axes (a zero velocity of the centre),
+    or fixed when CON1 and CON2 hold every translation and rotation; a rotation held alone is refused
+    (a shockfem rigid body's turn is held only with its translations)."""
+    for mid, mat in mapper.m.materials.items():
+        v = mat.values
+        if mat.kind != "rigid" or v.get("CMO") != 1:
+            continue
+        error = lambda msg, mat=mat: mat.keyword.error(1, msg)
+        con1, con2 = v.get("CON1") or 0, v.get("CON2") or 0
+        if con1 not in RIGID_HELD or con2 not in RIGID_HELD:
+            mapper.problems.append(error(f"CON1 {con1} / CON2 {con2}: each is a code 0 to 7 (CMO 1)"))
+            continue
+        if con2 and (con1, con2) != (7, 7):
+            mapper.problems.append(error(f"CON2 {con2}: a rigid body's rotations are held only with all of its "
+                                         "translations and rotations (CON1 7, CON2 7); else give CON2 0"))
+            continue
+        bodies = [mapper.body_of_part[p.pid] for p in mapper.m.parts.values()
+                  if p.mid == mid and p.pid in mapper.body_of_part]
+        for body in bodies:
+            if con2:
+                mapper.add("boundary", {"region": body, "type": "fixed"}, error)
+            for axis in ("" if con2 else RIGID_HELD[con1]):
+                mapper.add("boundary", {"region": body, "type": "velocity", "direction": axis,
+                                        "value": mapper.u.quantity(0.0, "velocity")}, error)
 
 
 def motions(mapper, regions: Regions, end_time: float | None):
-    """*BOUNDARY_PRESCRIBED_MOTION_SET with VAD = 0 (a velocity), DOF 1-3, its curve times SF; _RIGID refused."""
+    """*BOUNDARY_PRESCRIBED_MOTION_SET (on the regions of a node set) and _RIGID (the rigid body of a
+    *MAT_RIGID part, driven whole: ``scene/boundaries.py``) with VAD = 0 (a velocity), DOF 1-3, the curve
+    LCID times SF as the velocity's history."""
     for e in mapper.m.conditions:
         if e.kind != "motion":
             continue
         error = lambda msg, e=e: e.keyword.error(e.card, msg)
         v = e.values
-        if v["VAD"] != 0:
-            mapper.problems.append(error(f"VAD {v['VAD']}: only a prescribed velocity (VAD 0) is mapped"))
+        history = _motion_history(mapper, v, error, end_time)
+        if history is None:
             continue
-        if v["DOF"] not in (1, 2, 3):
-            mapper.problems.append(error(f"DOF {v['DOF']}: only x, y, z translations (1, 2, 3) are mapped"))
-            continue
-        curve = mapper.m.curves.get(v["LCID"])
-        if curve is None:
-            mapper.problems.append(error(f"LCID {v['LCID']} is not defined by any *DEFINE_CURVE"))
-            continue
-        if (v["BIRTH"] or 0.0) > 0 or (v["DEATH"] and end_time and v["DEATH"] < end_time):
-            mapper.problems.append(error("BIRTH / DEATH inside the run: a motion that starts or stops is not "
-                                         "mapped; put it in the curve"))
         if v["target"] == "rigid":
-            # a shockfem rigid body moves by the forces on it alone: held nodes would leave it
-            mapper.problems.append(error(f"part {v['ID']}: a rigid body driven along a curve is not modelled; "
-                                         "make the part deformable and drive its face with "
-                                         "*BOUNDARY_PRESCRIBED_MOTION_SET"))
-            continue
-        nodes = node_set(mapper, v["ID"], error)
-        targets = regions.from_nodes(nodes or [], f"nodes{v['ID']}", error) if nodes else []
-        sf = v["SF"] if v["SF"] is not None else 1.0
-        history = [[mapper.u.quantity(t, "time"), mapper.u.quantity(sf * y, "velocity")]
-                   for t, y in zip(curve.x, curve.y)]
+            targets = _driven_body(mapper, v["ID"], error)
+        else:
+            nodes = node_set(mapper, v["ID"], error)
+            targets = regions.from_nodes(nodes or [], f"nodes{v['ID']}", error) if nodes else []
         for region in targets:
-            if region:
-                mapper.scene.setdefault("boundary", []).append(
-                    {"region": region, "type": "velocity", "direction": AXES[v["DOF"] - 1], "history": history})
+            mapper.add("boundary", {"region": region, "type": "velocity", "direction": AXES[v["DOF"] - 1],
+                                    "history": history}, error)
+
+
+def _motion_history(mapper, v: dict, error, end_time: float | None) -> list | None:
+    """A prescribed motion's velocity history, the curve LCID times SF, in the scene's units; None (and a
+    problem) for what is not mapped: VAD other than 0, DOF other than 1-3, a missing curve, a BIRTH or a
+    DEATH inside the run."""
+    if v["VAD"] != 0:
+        mapper.problems.append(error(f"VAD {v['VAD']}: only a prescribed velocity (VAD 0) is mapped; give the "
+                                     "velocity's curve (a displacement's slope, an acceleration's integral)"))
+        return None
+    if v["DOF"] not in (1, 2, 3):
+        what = ("a translation along the vector VID" if v["DOF"] in (4, -4) else
+                "a rotation" if v["DOF"] in (5, 6, 7, 9, 10, 11, -9, -10, -11) else "not a DOF code")
+        mapper.problems.append(error(f"DOF {v['DOF']} ({what}): only x, y, z translations (1, 2, 3) are mapped; "
+                                     "give one card per axis"))
+        return None
+    curve = mapper.m.curves.get(v["LCID"])
+    if curve is None:
+        mapper.problems.append(error("LCID is blank: a prescribed motion needs the curve of its velocity" if
+                                     v["LCID"] is None else f"LCID {v['LCID']} is not defined by any *DEFINE_CURVE"))
+        return None
+    if (v["BIRTH"] or 0.0) > 0 or (v["DEATH"] and end_time and v["DEATH"] < end_time):
+        mapper.problems.append(error("BIRTH / DEATH inside the run: a motion that starts or stops is not "
+                                     "mapped; put it in the curve"))
+        return None
+    sf = v["SF"] if v["SF"] is not None else 1.0
+    return [[mapper.u.quantity(t, "time"), mapper.u.quantity(sf * y, "velocity")] for t, y in zip(curve.x, curve.y)]
+
+
+def _driven_body(mapper, pid: int, error) -> list[str]:
+    """The body of the rigid part ``pid`` a *BOUNDARY_PRESCRIBED_MOTION_RIGID drives, or none (and a problem:
+    not a part, or a deformable one)."""
+    bodies = part_bodies(mapper, [pid], error)
+    body = next((b for b in mapper.scene["bodies"] if bodies and b["name"] == bodies[0]), None)
+    if body is not None and not body.get("rigid"):
+        mapper.problems.append(error(f"part {pid} is not rigid (its material is no *MAT_RIGID): drive the nodes "
+                                     "of a deformable part with *BOUNDARY_PRESCRIBED_MOTION_SET"))
+        return []
+    return bodies
 
 
 def _surfaces(mapper, regions: Regions, sid: int, styp: int, error, name: str) -> list[str]:
@@ -248,7 +319,11 @@ def _surfaces(mapper, regions: Regions, sid: int, styp: int, error, name: str) -
 def contacts(mapper, regions: Regions):
     """*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, _NODES_TO_SURFACE and _SINGLE_SURFACE as penalty contacts
     between bodies (shockfem's segment penalty is LS-DYNA's SOFT = 0 stiffness, k = SLSFAC SFS K A^2 / V)."""
-    slsfac = (mapper.m.controls.get("CONTROL_CONTACT", ({}, None))[0].get("SLSFAC") or 0.1)
+    values, kw = mapper.m.controls.get("CONTROL_CONTACT", ({}, None))
+    slsfac = values.get("SLSFAC") or 0.1
+    if slsfac < 0:
+        mapper.problems.append(kw.error(0, f"SLSFAC {slsfac:g}: the penalty scale must be positive"))
+        slsfac = 0.1
     for n, e in enumerate(mapper.m.contacts, start=1):
         error = lambda msg, e=e: e.keyword.error(e.card, msg)
         v = e.values
@@ -272,7 +347,7 @@ def contacts(mapper, regions: Regions):
                 entry["friction_dynamic"] = v["FD"] if v["FD"] is not None else v["FS"]
                 if v["DC"]:
                     entry["friction_decay"] = mapper.u.quantity(v["DC"], "slowness")
-            mapper.scene.setdefault("contact", []).append(entry)
+            mapper.add("contact", entry, error)
 
 
 def walls(mapper, regions: Regions):
@@ -295,7 +370,7 @@ def walls(mapper, regions: Regions):
             mapper.problems.append(error("the head XH YH ZH is the tail XT YT ZT: the wall has no normal"))
             continue
         for k, surface in enumerate(surfaces):
-            mapper.scene.setdefault("contact", []).append({
+            mapper.add("contact", {
                 "name": f"wall{n}" + (f"_{k + 1}" if len(surfaces) > 1 else ""), "a": surface, "method": "constraint",
                 "wall": {"point": [mapper.u.quantity(x, "length") for x in v["tail"]],
-                         "normal": [float(x) for x in normal]}})
+                         "normal": [float(x) for x in normal]}}, error)

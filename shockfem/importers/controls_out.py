@@ -20,12 +20,18 @@ HISTORY_DATABASES = ("DATABASE_GLSTAT", "DATABASE_MATSUM", "DATABASE_RCFORC", "D
 def controls(mapper) -> float | None:
     """Fill [scene] and [outputs]; returns the end time in deck units (None when the deck has none)."""
     s, u, c = mapper.scene["scene"], mapper.u, mapper.m.controls
-    end = c.get("CONTROL_TERMINATION", ({}, None))[0].get("ENDTIM")
-    if not end:
-        mapper.problems.append("*CONTROL_TERMINATION: missing or ENDTIM 0: the run needs an end time")
-    else:
+    term, term_kw = c.get("CONTROL_TERMINATION", ({}, None))
+    end = term.get("ENDTIM")
+    if term_kw is None and "CONTROL_TERMINATION" not in mapper.m.unread:     # (a refused card is said already)
+        mapper.problems.append(f"{mapper.source}: no *CONTROL_TERMINATION: the run needs an end time (ENDTIM)")
+    elif term_kw is not None and not end:
+        mapper.problems.append(term_kw.error(0, "ENDTIM is blank or 0: the run needs an end time"))
+    elif end:
         s["end_time"] = u.quantity(end, "time")
+        mapper.origin("scene.end_time", term_kw)
     ts, kw = c.get("CONTROL_TIMESTEP", ({}, None))
+    for name in ("safety_factor", "mass_scaling_step"):
+        mapper.origin(f"scene.{name}", kw)
     tssfac = ts.get("TSSFAC") or LSDYNA_TSSFAC
     s["safety_factor"] = tssfac
     dt2ms = ts.get("DT2MS") or 0.0
@@ -38,7 +44,9 @@ def controls(mapper) -> float | None:
                                            "negative (only the elements below the step are scaled)"))
     if ts.get("TSLIMT"):
         mapper.notes.append("TSLIMT ignored: shockfem's mass scaling is DT2MS's")
-    hg, _ = c.get("CONTROL_HOURGLASS", ({}, None))
+    hg, hg_kw = c.get("CONTROL_HOURGLASS", ({}, None))
+    for name in ("hourglass", "hourglass_coefficient"):
+        mapper.origin(f"scene.{name}", hg_kw)
     ihq, qh = hg.get("IHQ") or LSDYNA_HOURGLASS[0], hg.get("QH") or LSDYNA_HOURGLASS[1]
     if not hg:
         mapper.notes.append("no *CONTROL_HOURGLASS: LS-DYNA's default, viscous (IHQ 1) with QH 0.1")
@@ -46,7 +54,9 @@ def controls(mapper) -> float | None:
     if ihq not in (1, 2, 3, 4, 5):
         mapper.notes.append(f"IHQ {ihq} taken as Flanagan-Belytschko stiffness hourglass control (IHQ 4)")
     s["hourglass_coefficient"] = qh
-    bv, _ = c.get("CONTROL_BULK_VISCOSITY", ({}, None))
+    bv, bv_kw = c.get("CONTROL_BULK_VISCOSITY", ({}, None))
+    for name in ("bulk_viscosity_quadratic", "bulk_viscosity_linear"):
+        mapper.origin(f"scene.{name}", bv_kw)
     if bv.get("Q1") is not None:
         s["bulk_viscosity_quadratic"] = bv["Q1"]
     if bv.get("Q2") is not None:
@@ -60,9 +70,12 @@ def outputs(mapper):
     db = mapper.m.outputs
     if db.get("DATABASE_BINARY_D3PLOT"):
         o["field_interval"] = mapper.u.quantity(db["DATABASE_BINARY_D3PLOT"], "time")
+        mapper.origin("outputs.field_interval", mapper.m.output_keywords["DATABASE_BINARY_D3PLOT"])
     histories = [db[k] for k in HISTORY_DATABASES if db.get(k)]
     if histories:
         o["history_interval"] = mapper.u.quantity(min(histories), "time")
+        smallest = min((k for k in HISTORY_DATABASES if db.get(k)), key=lambda k: db[k])
+        mapper.origin("outputs.history_interval", mapper.m.output_keywords[smallest])
         mapper.notes.append(f"{', '.join(k.removeprefix('DATABASE_') for k in HISTORY_DATABASES if db.get(k))}: "
                             "shockfem writes every history (energies, body motions, contact forces) at one "
                             "interval, the smallest asked for")

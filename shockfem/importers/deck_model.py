@@ -60,7 +60,7 @@ class DeckModel:
     title: str = ""
     node_ids: list = field(default_factory=list)
     coords: list = field(default_factory=list)
-    node_lines: dict = field(default_factory=dict)           # nid -> (keyword, card) of a repeated id
+    node_cards: list = field(default_factory=list)           # (keyword, card) of each of node_ids
     elements: list = field(default_factory=list)             # (eid, pid, node ids, keyword, card, node card)
     parts: dict = field(default_factory=dict)
     sections: dict = field(default_factory=dict)             # secid -> (elform, keyword)
@@ -75,8 +75,10 @@ class DeckModel:
     walls: list = field(default_factory=list)                # Entry
     controls: dict = field(default_factory=dict)             # name -> (values, keyword)
     outputs: dict = field(default_factory=dict)              # *DATABASE_ name -> interval (deck time)
+    output_keywords: dict = field(default_factory=dict)      # *DATABASE_ name -> its Keyword
     unmapped: Counter = field(default_factory=Counter)
     problems: list = field(default_factory=list)
+    unread: set = field(default_factory=set)                 # keywords a card of which was refused
 
 
 def _strip_title(kw: Keyword) -> Keyword:
@@ -91,6 +93,7 @@ def _node(kw, m):
         nid, x, y, z, tc, rc = kw.fields(c, [8, 16, 16, 16, 8, 8], "iffffi", required=1)
         m.node_ids.append(nid)
         m.coords.append((x or 0.0, y or 0.0, z or 0.0))
+        m.node_cards.append((kw, c))
         if tc or rc:
             m.conditions.append(Entry("node_constraint", {"nid": nid, "tc": tc or 0, "rc": rc or 0}, kw, c))
 
@@ -236,10 +239,12 @@ def _boundary_spc(kw, m):
 
 
 def _prescribed_motion(kw, m):
-    """*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID: (N)SID|PID DOF VAD LCID SF VID DEATH BIRTH."""
+    """*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID: (N)SID|PID DOF VAD LCID SF VID DEATH BIRTH (VAD blank: 0,
+    a velocity, LS-DYNA's default)."""
     target = "set" if kw.name.endswith("_SET") else "rigid"
     for c in range(len(kw.cards)):
-        row = kw.fields(c, W10, "iiiififf", required=4)
+        row = kw.fields(c, W10, "iiiififf", required=2)
+        row[2] = row[2] or 0
         m.conditions.append(Entry("motion", {"target": target, **dict(zip("ID DOF VAD LCID SF VID DEATH BIRTH"
                                                                           .split(), row))}, kw, c))
 
@@ -286,6 +291,7 @@ def _control(kw, m):
 def _database(kw, m):
     dt, = kw.fields(0, W10, "f", required=1)
     m.outputs[kw.name] = dt
+    m.output_keywords[kw.name] = kw
 
 
 READERS = {
@@ -321,7 +327,7 @@ REFUSED_FAMILIES = {
     "CONSTRAINED_": "constraints (joints, welds, merged rigid bodies) are not mapped",
     "LOAD_": "loads are not mapped; give them in the scene ([[boundary]] force, scene.gravity)",
     "BOUNDARY_": "this boundary condition is not mapped (shockfem maps *BOUNDARY_SPC_SET / _NODE and "
-                 "*BOUNDARY_PRESCRIBED_MOTION_SET)",
+                 "*BOUNDARY_PRESCRIBED_MOTION_SET / _RIGID)",
     "INITIAL_": "this initial condition is not mapped (shockfem maps *INITIAL_VELOCITY and "
                 "*INITIAL_VELOCITY_GENERATION)",
     "EOS_": "equations of state are not mapped; shockfem's solids take their pressure from the material",
@@ -372,6 +378,7 @@ def read_model(title: str, keywords: list[Keyword]) -> DeckModel:
             reader(kw, m)
         except DeckError as e:
             m.problems += e.problems
+            m.unread.add(kw.name)
     m.tables.pop("_open", None)
     return m
 

@@ -22,12 +22,14 @@ def deck_to_scene(path: str, units: UnitSet) -> SceneOut:
     model = read_model(title, keywords)
     name = os.path.splitext(os.path.basename(path))[0]
     mapper = DeckMapper(model, units, name)
+    mapper.source = os.path.basename(path)
     mapper.geometry()
     end = controls_out.controls(mapper)
     regions = conditions_out.Regions(mapper)
     if mapper.meshes:
         conditions_out.velocities(mapper)
         conditions_out.constraints(mapper, regions)
+        conditions_out.rigid_constraints(mapper)
         conditions_out.motions(mapper, regions, end)
         conditions_out.contacts(mapper, regions)
         conditions_out.walls(mapper, regions)
@@ -38,4 +40,4 @@ def deck_to_scene(path: str, units: UnitSet) -> SceneOut:
     unmapped = {k: (n, WOULD_HAVE.get(k, "not read by shockfem")) for k, n in sorted(model.unmapped.items())}
     if title:
         mapper.notes.insert(0, f"title: {title}")
-    return SceneOut(mapper.scene, mapper.meshes, mapper.notes, unmapped)
+    return SceneOut(mapper.scene, mapper.meshes, mapper.notes, unmapped, mapper.origins, mapper.source)

@@ -34,10 +34,10 @@ def material_table(mat, curves: dict, tables: dict, u: UnitSet) -> tuple[dict, l
         notes += _crushable_foam(mat, curves, table, u)
     elif mat.kind == "rigid":
         notes.append("*MAT_RIGID: its parts move as rigid bodies (E and PR only set their contact stiffness)")
-        if v.get("CMO"):
-            raise DeckError([kw.error(1, f"CMO {v['CMO']}: constraints of a rigid material are not mapped; "
-                                         "hold the body with *BOUNDARY_PRESCRIBED_MOTION_RIGID or a fixed "
-                                         "boundary")])
+        if v.get("CMO") and v["CMO"] != 1:
+            raise DeckError([kw.error(1, f"CMO {v['CMO']}: constraints of a rigid material in a local system "
+                                         "are not mapped; give them in global axes (CMO 1) or hold the body with "
+                                         "*BOUNDARY_PRESCRIBED_MOTION_RIGID")])
     if mat.kind == "elastic" and (v.get("DA") or v.get("DB")):
         notes.append("*MAT_ELASTIC DA/DB (axial and bending damping of beams) ignored: no beams here")
     return table, notes

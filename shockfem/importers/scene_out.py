@@ -39,6 +39,18 @@ class SceneOut:
     meshes: dict                       # body name -> BodyMesh
     notes: list = field(default_factory=list)
     unmapped: Counter = field(default_factory=Counter)
+    origins: dict = field(default_factory=dict)     # scene path -> the error of the deck card it came from
+    source: str = ""                                # the deck's file name
+
+    def locate(self, problem: str) -> str:
+        """A scene check's problem ("path: message") said where in the deck the field came from, "file:line:
+        *KEYWORD card N: path: message", by the longest path its ``origins`` hold (a table's, or an entry's);
+        as it was, after the deck's name, where none does."""
+        path = problem.split(": ", 1)[0]
+        keys = [k for k in self.origins if path == k or path.startswith((k + ".", k + "["))]
+        if keys:
+            return self.origins[max(keys, key=len)](problem)
+        return f"{self.source}: the scene it maps to: {problem}"
 
 
 def body_name(part) -> str:
@@ -59,6 +71,23 @@ class DeckMapper:
         self.body_of_part: dict[int, str] = {}
         self.node_body: dict[int, set] = {}
         self.split_parts: set[int] = set()          # parts whose hexahedra were cut into tetrahedra
+        # scene path ("scene.end_time", "materials.mat1", "boundary[2]") -> the error function of the deck
+        # card it came from, so that the scene check's problems are said where the deck has them
+        self.origins: dict = {}
+        self.source = ""                            # the deck's file name
+
+    def origin(self, path: str, keyword, card: int | None = 0):
+        """Record that the scene's ``path`` came from ``keyword``'s card ``card`` (0-based)."""
+        if keyword is not None:
+            self.origins[path] = lambda message, kw=keyword, c=card: kw.error(c, message)
+
+    def add(self, table: str, entry: dict, error) -> dict:
+        """Append ``entry`` to the scene's list ``table`` ([[boundary]], [[contact]]), made from the deck card
+        whose problems ``error(message)`` names."""
+        rows = self.scene.setdefault(table, [])
+        rows.append(entry)
+        self.origins[f"{table}[{len(rows) - 1}]"] = error
+        return entry
 
     # --- geometry -------------------------------------------------------------------------------------
     def geometry(self):
@@ -66,7 +95,11 @@ class DeckMapper:
         ids = np.array(m.node_ids, dtype=np.int64)
         unique, counts = np.unique(ids, return_counts=True)
         for nid in unique[counts > 1][:5]:
-            self.problems.append(f"*NODE: node {nid} is defined {counts[unique == nid][0]} times")
+            where = np.flatnonzero(ids == nid)
+            kw, card = m.node_cards[where[1]]
+            first_kw, first_card = m.node_cards[where[0]]
+            self.problems.append(kw.error(card, f"node {nid} is defined {len(where)} times (first at "
+                                                f"{first_kw.cards[first_card].where()})"))
         index = {int(n): k for k, n in enumerate(ids)}
         X = np.array(m.coords, dtype=float).reshape(-1, 3) * self.u.si(1.0, "length")
         by_part: dict[int, list] = {}
@@ -166,6 +199,7 @@ class DeckMapper:
         self.body_of_part[pid] = name
         for n in ids[used]:
             self.node_body.setdefault(int(n), set()).add(name)
+        self.origin(f"bodies[{len(self.scene['bodies'])}]", part.keyword, part.card)
         body = {"name": name, "material": self._material(part), "shape": "mesh", "file": "", "regions": {}}
         mat = self.m.materials.get(part.mid)
         if mat is not None and mat.kind == "rigid":
@@ -193,6 +227,7 @@ class DeckMapper:
                 self.problems += e.problems
                 return name
             self.scene["materials"][name] = table
+            self.origin(f"materials.{name}", mat.keyword, 0)
             self.notes += [f"material {part.mid}: {n}" for n in notes]
         return name
 

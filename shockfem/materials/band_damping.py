@@ -116,6 +116,12 @@ class BandTerms:
         the band each term is a spring g_k K in parallel with the stiffness (module docstring)."""
         return 1.0 / math.sqrt(1.0 + self.stiffening)
 
+    def step_scale(self, reference: float) -> float:
+        """The band-damped body's stable step over what its material's moduli give: the elastic law runs
+        with E x ``relaxed_scale(reference)`` (the wave speed x its square root, the step / it) and the terms
+        leave ``step_factor`` of that step; 0.957 for 2% over 1:20 at the band's centre, 0.916 at 0 Hz."""
+        return self.step_factor / math.sqrt(self.relaxed_scale(reference))
+
 
 def _band_omegas(low: float, high: float, count: int) -> np.ndarray:
     return 2.0 * math.pi * np.geomspace(low, high, max(count, 2))

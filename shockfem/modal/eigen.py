@@ -47,6 +47,7 @@ class BodyModes:
     dofs: int
     wall_time_s: float
     conditions: list[str]           # the conditions that held the body
+    damping: object = None          # the scene Damping acting on the body in a run (its own or the scene's)
 
 
 def _blocked_dofs(V, cells) -> np.ndarray:
@@ -139,7 +140,8 @@ def body_modes(scene: Scene, meshed, body: str, count: int = 10, degree: int = 1
     freqs = np.sqrt(np.maximum(np.array([lams[i] for i in elastic]), 0.0)) / (2 * math.pi)
     dofs = V.dofmap.index_map.size_global * V.dofmap.index_map_bs
     return BodyModes(body, scene.kinematics, degree, constrained, mass, freqs,
-                     sum(1 for v in lams if v <= rigid_limit), shapes, V, dofs, time.perf_counter() - t0, conditions)
+                     sum(1 for v in lams if v <= rigid_limit), shapes, V, dofs, time.perf_counter() - t0, conditions,
+                     scene.bodies[index].damping or scene.damping)
 
 
 def _extent(mesh, cells) -> float:

@@ -1,5 +1,6 @@
 """Mode shapes to XDMF (one step per mode, in ParaView step through them and *Warp By Vector*)
-and frequencies, labels and energy shares to JSON."""
+and frequencies, labels, energy shares and what the body's damping makes of each mode
+(``modal/damping.py``) to JSON."""
 from __future__ import annotations
 
 import json
@@ -8,6 +9,8 @@ import os
 from dolfinx import fem, io
 
 from .. import compat
+from ..scene.damping import describe_damping
+from .damping import mode_damping
 from .labels import firsts
 
 
@@ -30,8 +33,11 @@ def write_modes(out_dir: str, modes, labels: list[dict]) -> dict:
         "mass": modes.mass, "boundary": "constrained" if modes.conditions else "free-free",
         "conditions": modes.conditions, "dofs": modes.dofs, "rigid_modes": modes.rigid,
         "wall_time_s": modes.wall_time_s,
-        "modes": [{"mode": k, "frequency_hz": float(f), **lab}
-                  for k, (f, lab) in enumerate(zip(modes.frequencies, labels), start=1)],
+        "damping": describe_damping(modes.damping) if modes.damping is not None else "none",
+        "modes": [{"mode": k, "frequency_hz": float(f), **damped, **lab}
+                  for k, (f, damped, lab) in enumerate(zip(modes.frequencies, mode_damping(modes.frequencies,
+                                                                                        modes.damping), labels),
+                                                       start=1)],
         "first": firsts(labels, modes.frequencies),
         "xdmf": "modes.xdmf: one step per mode (step k = mode k), field mode_shape scaled to max |u| = 1",
     }

@@ -30,8 +30,29 @@ from .materials import parameter_table
 
 
 @dataclass
+class RigidDrive:
+    """The prescribed velocity [m/s] of a rigid body's centre of mass along one axis, a piecewise-linear
+    history of (times [s], values); the body's other directions stay free (LS-DYNA's
+    ``*BOUNDARY_PRESCRIBED_MOTION_RIGID``)."""
+    component: int
+    times: np.ndarray
+    values: np.ndarray
+
+    def value(self, t: float) -> float:
+        return float(self.values[0]) if len(self.values) == 1 else float(np.interp(t, self.times, self.values))
+
+    def rate(self, t: float, h: float) -> float:
+        """The drive's acceleration at t [m/s^2], its central difference over t +- h (exact on the
+        piecewise-linear history away from its corners; one-sided at t = 0)."""
+        before, after = max(t - h, 0.0), t + h
+        return (self.value(after) - self.value(before)) / (after - before)
+
+
+@dataclass
 class RigidBody:
-    """A body that moves rigidly: translation, and rotation in 3D. No stiffness cost."""
+    """A body that moves rigidly: translation, and rotation in 3D. No stiffness cost.  ``drives``: the
+    directions along which its velocity is prescribed (a ``[[boundary]]`` naming the body); ``held_turn``:
+    a fixed body's rotation (3D) is held too."""
     index: int
     nodes: np.ndarray            # local node indices, this rank's owned ones first, then its ghosts
     num_owned: int               # how many of ``nodes`` this rank owns
@@ -39,6 +60,9 @@ class RigidBody:
     center0: np.ndarray          # initial centre of mass [m]
     inertia0: np.ndarray         # (3, 3) inertia about the centre of mass, 3D only [kg m^2]
     rel0: np.ndarray             # X - center0 for ``nodes``
+    drives: list[RigidDrive] = field(default_factory=list)
+    held_turn: bool = False
+    name: str = ""
 
 
 @dataclass
@@ -317,7 +341,21 @@ def _rigid_body(model: Model, index: int) -> RigidBody:
                  - m[owned, None, None] * rel[owned][:, :, None] * rel[owned][:, None, :]).sum(axis=0)
         inertia = comm.allreduce(local, op=MPI.SUM)
     # a rank numbers its owned nodes first, so the owned ones lead ``nodes`` (sorted)
-    return RigidBody(index, nodes, int(np.count_nonzero(owned)), M, c, inertia, rel)
+    return RigidBody(index, nodes, int(np.count_nonzero(owned)), M, c, inertia, rel, name=model.bodies[index].name)
+
+
+def _drive_rigid(model: Model, bc) -> None:
+    """A ``[[boundary]]`` naming a rigid body: its centre's velocity prescribed along the condition's
+    direction (``velocity``), or along every one with its turn held (``fixed``)."""
+    rb = next(r for r in model.rigid if r.name == bc.region)
+    times = np.array([p[0] for p in bc.history])
+    values = np.array([p[1] for p in bc.history])
+    for comp in bc.components:
+        if model.axisymmetric and comp == 0:
+            continue                       # a body of revolution moves along z only (``_rigid_loads``)
+        rb.drives = [d for d in rb.drives if d.component != comp]      # a later condition replaces an earlier
+        rb.drives.append(RigidDrive(comp, times, values if bc.kind == "velocity" else np.array([0.0])))
+    rb.held_turn = rb.held_turn or bc.kind == "fixed"
 
 
 def _add_boundaries(model: Model, scene: Scene):
@@ -327,6 +365,9 @@ def _add_boundaries(model: Model, scene: Scene):
         axis = np.flatnonzero(np.abs(model.X0[:, 0]) < 1e-12 * max(1.0, np.abs(model.X0).max()))
         model.constraints.append(Constraint(axis * gdim, np.array([0.0]), np.array([0.0]), "axis"))
     for bc in scene.boundaries:
+        if "." not in bc.region:           # a rigid body, driven whole (``scene/boundaries.py``)
+            _drive_rigid(model, bc)
+            continue
         nodes = region_nodes(V, model.meshed, bc.region)
         times = np.array([p[0] for p in bc.history])
         values = np.array([p[1] for p in bc.history])
@@ -375,6 +416,20 @@ def _obliquity(sc: Scene, pn) -> str:
             "the free surface's asymmetric relief not modelled: outside what the load is verified for)")
 
 
+def _drive_said(model: Model, sc: Scene, index: int) -> str:
+    """", its velocity prescribed along z (...)" of a driven rigid body, or ""."""
+    rb = next((r for r in model.rigid if r.index == index), None)
+    if rb is None or not rb.drives:
+        return ""
+    axes = "rz" if sc.kinematics == "axisymmetric" else "xyz"
+    free = [a for k, a in enumerate(axes[:model.gdim]) if k not in {d.component for d in rb.drives}]
+    notes = [f"free along {', '.join(free)}"] if free and sc.kinematics != "axisymmetric" else []
+    if model.gdim == 3:
+        notes.append("its turn held" if rb.held_turn else "free to turn")
+    return (f", its centre's velocity prescribed along {', '.join(axes[d.component] for d in rb.drives)}"
+            + (f" ({'; '.join(notes)})" if notes else ""))
+
+
 def describe(model: Model, sc: Scene) -> str:
     """One line per body of the scene ``sc`` saying which model runs for it ("model only what a
     scene needs")."""
@@ -388,7 +443,8 @@ def describe(model: Model, sc: Scene) -> str:
             ", mean dilatation" if cell in ("quadrilateral", "hexahedron") else "")
     for i, b in enumerate(sc.bodies):
         material = sc.material_of(b)
-        kind = "rigid body (no stiffness)" if b.rigid else f"{material.model}, updated Lagrangian, {element}"
+        kind = "rigid body (no stiffness)" + _drive_said(model, sc, i) if b.rigid else (
+            f"{material.model}, updated Lagrangian, {element}")
         lines.append(f"  {b.name}: {kind}, {sc.kinematics}, mass {model.body_mass[i]:.6g} kg")
         if b.shape in PARTS:
             lines += [f"    approximation: {note}" for note in PARTS[b.shape].approximations(b.dims, model.gdim)]

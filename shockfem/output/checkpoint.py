@@ -45,7 +45,8 @@ from .rundir import CHECKPOINT_DIRECTORY as DIRECTORY, write_json_atomic
 # 3: a contact pair's rank keeps only its own nodes and slaves, and its halo (``contact/halo.py``)
 # 4: the solver keeps its contact pairs, springs, cavities and target in one list of force sources
 # 5: the solver's buffer of a step's sums over the ranks holds band damping's loss too (15 entries)
-FORMAT = 5
+# 6: band damping's terms held in each body's co-rotating frame (``solver/band.py``)
+FORMAT = 6
 
 # objects whose state is not the run's: built again from the scene on resume
 _REBUILT_MODULES = ("shockfem.model", "shockfem.scene", "shockfem.geometry")

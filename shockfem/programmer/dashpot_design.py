@@ -1,15 +1,18 @@
-"""The fluid dashpot designed to a pulse specification, for any payload.
+"""The fluid dashpot designed to a pulse specification, for any payload: the closed form and the lumped
+designer.
 
-This is the fixture study's chosen design (``shockfem study fixture``, section 4; ``docs/fixture.md``)
-written as a law of the payload, so that the whole machine (``shockfem.machine``) sizes its fixture
-the way the study did for any article: the striker carries a housing full of oil; the article stands
+The closed form (``dashpot_design``): the striker carries a housing full of liquid; the article stands
 on a light piston in its bore; a metering pin holds the force m A_g on piston and article over the
 relative stroke (``fluid.orifice.area_for_force`` at the relative speed a constant force leaves the two
-masses, the pin's opening never beyond the orifice law's largest area ratio).  Four
+masses, on the sharp-edged law, the pin's opening never beyond that law's largest area ratio).  Four
 handles, factors on that closed form (the pin's opening, the liquid column over the stroke, the force
 the pin is cut for over m A_g, the striker's speed), are iterated by Nelder-Mead on the lumped model
-(``programmer.lumped_dashpot``) to a pulse inside the specification's band narrowed by
-``DESIGN_MARGIN``, so that the finite-element run, a little off the lumped one, still lands inside.
+(``programmer.lumped_dashpot``) by ``design_dashpot`` (the whole machine's fixture, ``shockfem.machine``,
+designs with it) to a pulse inside the specification's band narrowed by ``DESIGN_MARGIN``.  Every design
+it makes carries the validity checks of ``dashpot_validity``; where the lumped model leaves its range
+(at a shock machine's speeds it does: the liquid's Mach number, mass and transit time), the same design
+is run on the liquid column and both are reported.  The designer that designs on the column, with the
+bore as a handle, is ``programmer.column_design`` (the fixture study's).
 """
 from __future__ import annotations
 
@@ -26,18 +29,18 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
-from ..fluid.orifice import FIXED_CD, OrificeLaw, area_for_force, piston_force
+from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force
 from .column_dashpot import simulate_column
 from .dashpot_validity import Limit, dashpot_limits, lumped_holds
+from .liquids import LIQUIDS, MINERAL_OIL, DesignLiquid
 from .lumped_dashpot import LumpedDashpot, simulate
 from .requirement import requirement
 
 # the oil (a mineral hydraulic oil) and the discharge coefficient of the study's first orifice law
 OIL = {"density": 870.0, "bulk_modulus": 1.5e9, "discharge": 0.7}
-# the orifice's law the dashpot is designed on (``fluid/orifice.py``): still the study's first law (fixed
-# Cd, no approach, no jet, the pin open to the whole bore), whose designs ``check_design`` reports outside
-# its range and runs on the liquid column; ``AREA_RATIO`` is the law a design inside its range uses
-ORIFICE_LAW = FIXED_CD
+# the orifice's law the dashpot is designed on (``fluid/orifice.py``): Idelchik's sharp-edged orifice with
+# the velocity of approach and the jet's reaction, its pin never opening beyond ISO 5167-2's area ratio
+ORIFICE_LAW = AREA_RATIO
 # the bore clears the article by ``clearance``; the piston's thickness; the metering pin's points; the
 # liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
 DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
@@ -96,13 +99,13 @@ def carrier_density() -> float:
 
 def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, handles=START,
                    seat_mass: float = 0.0, striker_ratio: float = STRIKER_RATIO,
-                   law: OrificeLaw = ORIFICE_LAW) -> dict:
+                   law: OrificeLaw = ORIFICE_LAW, liquid: DesignLiquid = MINERAL_OIL) -> dict:
     """The fluid dashpot for ``pulse`` on an article of ``article_mass`` [kg] in a bore of
     ``bore_radius`` [m]: a piston the article stands on, the metering pin that holds the force m A_g on
     the payload (article, piston and a ``seat_mass`` riding with them) over the relative stroke against a
     striker of ``striker_ratio`` times the payload, by the orifice ``law``, its opening never wider than
-    the law's largest area ratio.  ``handles`` (``HANDLES``) scale that design; the start is the design
-    itself.  SI throughout."""
+    the law's largest area ratio, filled with ``liquid`` (``programmer.liquids``).  ``handles``
+    (``HANDLES``) scale that design; the start is the design itself.  SI throughout."""
     pin_scale, column_over_stroke, force_factor, speed_factor = handles
     area = math.pi * bore_radius ** 2
     m_piston = carrier_density() * area * DASHPOT["piston_thickness"]
@@ -113,7 +116,7 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
     reduced = reduced_mass(payload, M)
     force = force_factor * payload * pulse.peak
     stroke = reduced * V * V / (2 * force)
-    rho = OIL["density"]
+    rho = liquid.density
     strokes = np.linspace(0.0, stroke, DASHPOT["pin_points"])
     largest = law.largest_ratio * area
     code = law.code()
@@ -127,30 +130,38 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
             "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
             "least_pressure": p_least, "initial_overshoot": p_least * area / force - 1.0, "stroke_design": stroke,
             "column": column_over_stroke * stroke, "pin": [[float(x), float(a)] for x, a in zip(strokes, pin)],
-            "liquid_mass": rho * area * column_over_stroke * stroke}
+            "liquid_mass": rho * area * column_over_stroke * stroke,
+            "liquid": next(k for k, v in LIQUIDS.items() if v == liquid), "piston_thickness": DASHPOT["piston_thickness"]}
+
+
+def design_liquid(d: dict) -> DesignLiquid:
+    """The liquid a design is filled with (the study's oil for a design that names none)."""
+    return LIQUIDS[d.get("liquid", "oil")]
 
 
 def dashpot_lumped(d: dict) -> LumpedDashpot:
     """The lumped model (``programmer.lumped_dashpot``) of a dashpot design, on the design's orifice law."""
+    liquid = design_liquid(d)
     return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
-                         d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), OIL["density"],
-                         OIL["bulk_modulus"], OIL["discharge"], law=OrificeLaw(**d["orifice_law"]))
+                         d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), liquid.density,
+                         liquid.bulk_modulus, OIL["discharge"], liquid.tait_exponent,
+                         law=OrificeLaw(**d["orifice_law"]))
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
-                   striker_ratio: float = STRIKER_RATIO, echo=None, near: dict | None = None
-                   ) -> tuple[dict, object, int]:
+                   striker_ratio: float = STRIKER_RATIO, echo=None, near: dict | None = None,
+                   law: OrificeLaw = ORIFICE_LAW) -> tuple[dict, object, int]:
     """The dashpot's handles iterated on the lumped model (Nelder-Mead from the closed form) to a pulse
     inside the band narrowed by ``DESIGN_MARGIN``: the objective is the narrowed band's worst excess and
     the velocity change beyond its tolerance, with the velocity-change error and the largest deviation
     from the ideal as a small tie-breaker toward the band's middle.  Returns (design, lumped run,
     evaluations).  ``near``: the handles of a design for nearly the same inputs (the same payload with a
     slightly heavier striker); the search then starts there in a simplex RESTART_SPREAD wide, not from
-    the closed form's."""
+    the closed form's.  ``law``: the orifice law the pin is cut on (``ORIFICE_LAW`` unless given)."""
     end = pulse.record_end()
 
     def design(h):
-        return dashpot_design(pulse, article_mass, bore_radius, h, seat_mass, striker_ratio)
+        return dashpot_design(pulse, article_mass, bore_radius, h, seat_mass, striker_ratio, law)
 
     def objective(h):
         if h[0] <= 0.05 or h[1] <= 1.02 or h[2] <= 0.3 or h[3] <= 0.5:
@@ -182,15 +193,15 @@ def check_design(d: dict, run, pulse: PulseSpec) -> dict:
     leaves its range, the same design on the liquid column (``column_dashpot``) with its pulse and its
     own checks: what a designer must read before trusting the lumped pulse."""
     lumped = dashpot_lumped(d)
-    limits = dashpot_limits(lumped, run)
+    limits = dashpot_limits(lumped, run, design_liquid(d))
     out = {"limits": [lim.as_dict() for lim in limits], "lumped_holds": lumped_holds(limits)}
     if not out["lumped_holds"]:
-        column = simulate_column(lumped, pulse.record_end(), LUMPED_SAMPLES)
+        column = simulate_column(lumped, pulse.record_end(), LUMPED_SAMPLES, liquid=design_liquid(d).column())
         metrics, band = pulse.band(column.t, column.acceleration)
         out["column_check"] = {"peak": float(metrics.peak), "duration": float(metrics.duration),
                                "velocity_change": float(metrics.velocity_change), "band_passed": bool(band.passed),
                                "peak_pressure": float(column.pressure.max()),
                                "peak_floor_pressure": float(column.floor_pressure.max()),
-                               "limits": [lim.as_dict() for lim in dashpot_limits(lumped, column)],
+                               "limits": [lim.as_dict() for lim in dashpot_limits(lumped, column, design_liquid(d))],
                                **column.summary}
     return out

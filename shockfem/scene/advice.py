@@ -20,6 +20,8 @@ def interference_on_free_segments(scene: Scene) -> list[str]:
     cone's segments: the ring's pressure is balanced by no hoop stress, so it drives the segments inward
     until they close on what they grip, and the event starts from that motion."""
     out = []
+    if scene.preload is not None:
+        return out          # the preload stage settles the fit before the event (solver/preload.py)
     for c in scene.contacts:
         if c.interference_time <= 0.0 or c.b is None:
             continue
@@ -31,7 +33,8 @@ def interference_on_free_segments(scene: Scene) -> list[str]:
                            f"presses on body {body.name}, a split cone of {n} segments: they carry no hoop stress, "
                            "so the preload is balanced by nothing until they bear on what they grip, and it drives "
                            "them inward as a blow before the event (the clamp opens and the rebound changes). "
-                           "Seat the gripped part in the bore at t = 0 so that the segments bear on it as the fit "
+                           "Add a [scene.preload] stage (the fit settles before the event), or seat the gripped "
+                           "part in the bore at t = 0 so that the segments bear on it as the fit "
                            "comes on, or leave the contact's interference out (the ring then starts in contact "
                            "without a preload)")
     return out

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from ..materials.band_damping import fit_band
+from ..materials.band_damping import BandTerms, fit_band
 from .checker import Checker
 from .specs import DAMPING_TYPES, Damping
 
@@ -76,6 +76,11 @@ def check_band_laws(ck: Checker, bodies, materials: dict, scene_damping: Damping
                 f"damping.type = \"stiffness\"")
 
 
+def band_terms(d: Damping | None) -> BandTerms | None:
+    """The Maxwell terms of a band damping (None for no damping or a Rayleigh one)."""
+    return fit_band(d.ratio, d.low, d.high) if d is not None and d.kind == "band" else None
+
+
 def describe_damping(d: Damping) -> str:
     """One line of the run's summary for a damping table."""
     if d.kind == "band":
@@ -90,7 +95,7 @@ def describe_damping(d: Damping) -> str:
                 f"terms, within {terms.ripple():.1%} over the band); {held}; by causality waves still disperse: "
                 f"{foot:+.1%} at {d.low:.4g} Hz, {top:+.1%} at {d.high:.4g} Hz against the moduli's speed, so a "
                 f"pulse timed by a wave's transit shifts by up to that much as its spectrum sits low or high in "
-                f"the band; the stable step x {terms.step_factor / math.sqrt(terms.relaxed_scale(ref)):.3f} of the "
+                f"the band; the stable step x {terms.step_scale(ref):.3f} of the "
                 f"moduli's (the body {terms.stiffening:.1%} stiffer than relaxed far above the band)")
     a, b = d.coefficients()
     return f"{d.kind}, {d.ratio:.3g} of critical at {d.frequency:.6g} Hz (alpha = {a:.4g} 1/s, beta = {b:.4g} s)"

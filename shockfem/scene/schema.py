@@ -22,6 +22,7 @@ from .damping import check_band_laws, read_scene_damping
 from .materials import read_materials
 from .outputs import read_outputs
 from .penetration import read_penetration
+from .preload import read_preload
 from .settings import read_settings
 from .shock import read_shock
 from .specs import Scene
@@ -47,13 +48,14 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
     kin, end_time = settings["kinematics"], settings["end_time"]
     materials = read_materials(ck, raw)
     bodies, body_regions = read_bodies(ck, raw, kin, materials, base_dir)
-    boundaries = read_boundaries(ck, raw, body_regions, kin)
+    boundaries = read_boundaries(ck, raw, body_regions, kin, frozenset(b.name for b in bodies if b.rigid))
     contacts = read_contacts(ck, raw, body_regions, kin)
     springs = read_springs(ck, raw, body_regions, 3 if kin == "3d" else 2)
     cavities = read_cavities(ck, raw, body_regions)
     penetration, tunnel = read_penetration(ck, raw, body_regions, bodies, kin)
     if tunnel is not None:
         contacts.append(tunnel)     # the target's tunnel is a contact with the projectile's sides
+    preload = read_preload(ck, raw, boundaries, contacts)
     damping = read_scene_damping(ck, raw)
     check_band_laws(ck, bodies, materials, damping)
     outputs = read_outputs(ck, raw, bodies, end_time)
@@ -62,7 +64,7 @@ def resolve(raw: dict, base_dir: str = ".") -> Scene:
         raise SceneError(ck.problems)
     return Scene(**settings, materials=materials, bodies=tuple(bodies), boundaries=tuple(boundaries),
                  contacts=tuple(contacts), damping=damping, outputs=outputs, springs=tuple(springs), shock=shock,
-                 cavities=tuple(cavities), penetration=penetration, folder=_folder(base_dir))
+                 cavities=tuple(cavities), penetration=penetration, folder=_folder(base_dir), preload=preload)
 
 
 def _folder(base_dir: str) -> str:

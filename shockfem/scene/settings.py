@@ -9,7 +9,7 @@ from .specs import ELEMENTS, HOURGLASS_FORMS, INTEGRATIONS, KINEMATICS
 SCENE_FIELDS = ("name", "kinematics", "element", "end_time", "safety_factor", "thickness", "energy_error_limit",
                 "integration", "hourglass", "hourglass_coefficient", "gravity", "bulk_viscosity_quadratic",
                 "bulk_viscosity_linear", "curve_elements", "checkpoint_interval", "mass_scaling_step",
-                "mass_scaling_limit", "max_time_step")
+                "mass_scaling_limit", "max_time_step", "preload")
 
 
 def read_settings(ck: Checker, raw: dict) -> dict:

@@ -332,6 +332,17 @@ class Shock:
 
 
 @dataclass(frozen=True)
+class Preload:
+    """``[scene.preload]``: a stage before the event in which the assembly settles under its interference
+    fits (``solver/preload.py``): the event's bodies held at rest, the motion taken out by mass damping,
+    until the kinetic energy stays below ``kinetic_energy_ratio`` of the stored energy after every
+    interference has come on, or ``duration`` [s] has passed."""
+    duration: float
+    kinetic_energy_ratio: float = 1e-5
+    frequency: float = 0.0           # [Hz] damped critically during the stage; 0: estimated (solver/preload.py)
+
+
+@dataclass(frozen=True)
 class Scene:
     name: str
     kinematics: str
@@ -361,6 +372,7 @@ class Scene:
     mass_scaling_limit: float = 0.05             # the largest share of a body's mass the scaling may add
     folder: str = ""                             # the scene file's folder (absolute); "": built in code
     max_time_step: float = 0.0                   # [s] the step's upper bound for accuracy; 0: none
+    preload: Preload | None = None               # a settling stage before the event (``[scene.preload]``)
 
     @property
     def gdim(self) -> int:

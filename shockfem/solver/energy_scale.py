@@ -8,8 +8,8 @@ take up, known at t = 0, it reads as what it is.  Each term below is an order of
 times of the energy the run takes up), never a bound:
 
 * the initial kinetic energy (the account's own ``initial``);
-* a prescribed velocity: the kinetic energy of the body it drives at the history's largest speed,
-  0.5 M v_max^2 (a body pushed from rest at v takes up at least that much before it is brought to speed);
+* a prescribed velocity (of a region, or of a rigid body's centre): the kinetic energy of the body it
+  drives at the history's largest speed, 0.5 M v_max^2 (a body pushed from rest at v takes up at least that much before it is brought to speed);
 * a contact's interference (pushed out as a preload): the elastic energy of the fit,
   0.5 sum_i A_i d_i^2 / (L_a / K_a + L_b / K_b), each node's overlap d_i over its area A_i squeezed into
   the two bodies in series, each a spring of bulk modulus K over its size L (the smallest side of its box).
@@ -40,6 +40,9 @@ def drive_energy(model: Model) -> float:
         v_max[bodies[bodies >= 0]] = np.maximum(v_max[bodies[bodies >= 0]], speed)
     if model.comm.size > 1:
         model.comm.Allreduce(MPI.IN_PLACE, v_max, op=MPI.MAX)
+    for rb in model.rigid:          # a driven rigid body (the same on every rank)
+        for drive in rb.drives:
+            v_max[rb.index] = max(v_max[rb.index], float(np.abs(drive.values).max(initial=0.0)))
     return float(0.5 * np.sum(model.body_mass * v_max ** 2))
 
 

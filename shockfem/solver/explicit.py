@@ -262,6 +262,13 @@ class ExplicitSolver:
         self.energy.scale = energy_scale(self.model, self.contacts, self.energy.initial)
         self.dt_first = self.dt_stable    # the reference of a collapsing step (``steps``)
 
+    def start_event(self):
+        """After a preload stage (``solver/preload.py``): the clock back to t = 0, the scene's initial
+        velocities on the settled state (a step of 0 before the first, as at the start), their kinetic energy."""
+        self.t, self.dt = 0.0, 0.0
+        self._set_initial_velocity()
+        self.energy.kinetic = self._kinetic_energy(self.v)
+
     def _set_initial_velocity(self):
         m = self.model
         for i, body in enumerate(m.bodies):
@@ -461,9 +468,11 @@ class ExplicitSolver:
         # velocity v_{n+1/2}; mass-proportional damping taken implicitly (its work on this rank)
         damping_work = nodal.update_velocity(self.v, self.a, dt_avg, m.alpha, self._mass_dofs, m.num_owned)
 
-        # rigid bodies: velocities that carry their nodes to the rigid-body positions at t_{n+1}
+        # rigid bodies: velocities that carry their nodes to the rigid-body positions at t_{n+1}; the work of
+        # their drives (the same on every rank: the bodies' states are)
+        drive_work = 0.0
         for rb, rs in zip(m.rigid, self.rigid_states):
-            self._advance_rigid(rb, rs, dt, dt_avg)
+            drive_work += self._advance_rigid(rb, rs, dt, dt_avg)
 
         # prescribed velocities (and fixed / symmetry / axis constraints); the reactions' work is
         # m (v - v_free) . v_n over the constrained dofs
@@ -523,7 +532,7 @@ class ExplicitSolver:
         e.plastic += plastic_work
         e.internal += (w_int + w_int2 - dt * (damping_power + hourglass_power + viscosity_power) - plastic_work
                        - band_loss)
-        e.external += w_ext + w_ext2 + reaction_work
+        e.external += w_ext + w_ext2 + reaction_work + drive_work
         e.contact -= w_con + w_con2 + wall_work
         for source in self.sources:
             source.account(dt, self.t, lambda: self.body_means()[0])
@@ -537,14 +546,28 @@ class ExplicitSolver:
         self.times.energy += t3 - t_contact
         self.times.total += t3 - t0
 
-    def _advance_rigid(self, rb, rs: RigidState, dt: float, dt_avg: float):
-        """Move a rigid body by its resultant force and torque at t_n (``_rigid_loads``)."""
+    def _advance_rigid(self, rb, rs: RigidState, dt: float, dt_avg: float) -> float:
+        """Move a rigid body by its resultant force and torque at t_n (``_rigid_loads``), its driven directions
+        at their prescribed velocity at t_{n+1/2}; returns the drives' work over the step [J]: the impulse
+        M (v - v_free) times the mean velocity (v_{n-1/2} + v_{n+1/2}) / 2, as a held dof's
+        (``nodal.hold_dofs``), and a held turn's likewise."""
         m = self.model
+        before = rs.velocity
         rs.velocity = rs.velocity + dt_avg * rs.force / rb.mass
+        work = 0.0
+        for drive in rb.drives:
+            free, new = rs.velocity[drive.component], drive.value(self.t + 0.5 * dt)
+            rs.velocity[drive.component] = new
+            work += rb.mass * (new - free) * 0.5 * (before[drive.component] + new)
         center_new = rs.center + dt * rs.velocity
         if m.gdim == 3:
-            rs.momentum_angular = rs.momentum_angular + dt_avg * rs.torque
             inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
+            if rb.held_turn:        # the torque impulse that stops it, times its mean angular velocity
+                turning = np.linalg.solve(inertia, rs.momentum_angular) if rb.mass > 0 else np.zeros(3)
+                work -= float((rs.momentum_angular + dt_avg * rs.torque) @ turning) * 0.5
+                rs.momentum_angular = np.zeros(3)
+            else:
+                rs.momentum_angular = rs.momentum_angular + dt_avg * rs.torque
             omega = np.linalg.solve(inertia, rs.momentum_angular) if rb.mass > 0 else np.zeros(3)
             rs.rotation = rotation_of_angular_velocity(omega, dt) @ rs.rotation
             x_new = center_new + rb.rel0 @ rs.rotation.T
@@ -552,6 +575,16 @@ class ExplicitSolver:
         else:
             nodal.translate_rigid(self.x, self.v, rb.nodes, rs.velocity, dt)
         rs.center = center_new
+        return work
+
+    def _rigid_center_velocity(self, rb, rs: RigidState, dt: float) -> np.ndarray:
+        """A rigid body's centre velocity at t_{n+1} as the kinetic energy counts it: v_{n+1/2} + dt/2 F / M,
+        a driven direction at its v_{n+1/2} (as ``nodal.finish_step`` counts a held dof: the drive's work
+        is counted to the half step)."""
+        v_c = rs.velocity + 0.5 * dt * rs.force / rb.mass
+        for drive in rb.drives:
+            v_c[drive.component] = rs.velocity[drive.component]
+        return v_c
 
     def _rigid_loads(self, dt: float) -> float:
         """The resultant force (and torque, 3D) on every rigid body at t_{n+1}, kept for its next
@@ -568,9 +601,9 @@ class ExplicitSolver:
             rs.force = self._sum(force)
             if m.axisymmetric:
                 rs.force[0] = 0.0   # a ring's radial forces cancel: an axisymmetric rigid body moves along z
-            v_c = rs.velocity + 0.5 * dt * rs.force / rb.mass
+            v_c = self._rigid_center_velocity(rb, rs, dt)
             kinetic += 0.5 * rb.mass * float(v_c @ v_c)
-            if m.gdim == 3:
+            if m.gdim == 3 and not rb.held_turn:
                 rs.torque = self._sum(torque)
                 momentum = rs.momentum_angular + 0.5 * dt * rs.torque
                 inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
@@ -633,9 +666,9 @@ class ExplicitSolver:
         _, _, kinetic, work = self._body_sums()
         kinetic = kinetic.copy()
         for rb, rs in zip(m.rigid, self.rigid_states):     # at t_n, as ``_rigid_loads`` takes it
-            v_c = rs.velocity + 0.5 * self.dt * rs.force / rb.mass
+            v_c = self._rigid_center_velocity(rb, rs, self.dt)
             kinetic[rb.index] += 0.5 * rb.mass * float(v_c @ v_c)
-            if m.gdim == 3:
+            if m.gdim == 3 and not rb.held_turn:
                 momentum = rs.momentum_angular + 0.5 * self.dt * rs.torque
                 inertia = rs.rotation @ rb.inertia0 @ rs.rotation.T
                 kinetic[rb.index] += 0.5 * float(np.linalg.solve(inertia, momentum) @ momentum)
@@ -664,7 +697,8 @@ class ExplicitSolver:
     def reaction_regions(self) -> list[tuple[str, list[int]]]:
         """The supports whose reactions ``reactions`` gives: every region with a fixed, symmetry or
         prescribed-velocity condition (the axis of an axisymmetric mesh left out), with the components
-        it holds.  The same on every rank."""
+        it holds, then every driven rigid body, named by the body, with its driven components.  The same on
+        every rank."""
         held: dict[str, set] = {}
         for con in self.model.constraints:
             if con.region != "axis":
@@ -675,7 +709,8 @@ class ExplicitSolver:
                 for region, comps in part.items():
                     merged.setdefault(region, set()).update(comps)
             held = merged
-        return [(region, sorted(held[region])) for region in sorted(held)]
+        driven = [(rb.name, sorted(d.component for d in rb.drives)) for rb in self.model.rigid if rb.drives]
+        return [(region, sorted(held[region])) for region in sorted(held)] + driven
 
     def reactions(self) -> list[np.ndarray]:
         """The force each support (``reaction_regions``) applies to the body at t [N], (gdim,) each: over
@@ -687,12 +722,14 @@ class ExplicitSolver:
             owned = m.num_owned * m.gdim
             self._reaction_dofs = []
             for region, _ in self.reaction_regions():
+                if "." not in region:       # a driven rigid body (``_drive_reactions``)
+                    continue
                 dofs = np.unique(np.concatenate([c.dofs for c in m.constraints if c.region == region]))
                 dofs = dofs[dofs < owned]
                 # with where each sits among the constrained dofs (``_prescribed_motion``'s order)
                 self._reaction_dofs.append((dofs, np.searchsorted(self._constrained_dofs, dofs)))
         if not self._reaction_dofs:
-            return []
+            return self._drive_reactions()
         prescribed_v, prescribed_a = self._prescribed_motion()
         forces = (self.f_ext.reshape(-1), self.f_con.reshape(-1), self.f_int.reshape(-1))
         out = np.zeros((len(self._reaction_dofs), m.gdim))
@@ -703,7 +740,20 @@ class ExplicitSolver:
             np.add.at(out[k], dofs % m.gdim, push)
         if self.parallel:
             self.comm.Allreduce(MPI.IN_PLACE, out, op=MPI.SUM)
-        return list(out)
+        return list(out) + self._drive_reactions()
+
+    def _drive_reactions(self) -> list[np.ndarray]:
+        """The force each driven rigid body's drive applies to it at t [N], (gdim,) each (zero along its free
+        directions): M a_prescribed - F along each driven one, F the resultant of every other force on it."""
+        out = []
+        h = 0.5 * self.dt if self.dt > 0 else 1e-9
+        for rb, rs in zip(self.model.rigid, self.rigid_states):
+            if rb.drives:
+                force = np.zeros(self.model.gdim)
+                for drive in rb.drives:
+                    force[drive.component] = rb.mass * drive.rate(self.t, h) - rs.force[drive.component]
+                out.append(force)
+        return out
 
     def _prescribed_motion(self) -> tuple[np.ndarray, np.ndarray]:
         """The prescribed velocity at t and its rate (central difference over the last step: exact on the
@@ -754,6 +804,11 @@ class ExplicitSolver:
         m = self.model
         mv, ma, _, _ = self._body_sums()
         v_mean, a_mean = mv / m.body_mass[:, None], ma / m.body_mass[:, None]
+        h = 0.5 * self.dt if self.dt > 0 else 1e-9
+        for rb in m.rigid:          # a driven direction moves as prescribed at t
+            for drive in rb.drives:
+                v_mean[rb.index, drive.component] = drive.value(self.t)
+                a_mean[rb.index, drive.component] = drive.rate(self.t, h)
         if m.axisymmetric:
             # the centre of mass of a body of revolution stays on its axis: the mean of the nodes' radial
             # motion is the body breathing, not moving

@@ -1,6 +1,6 @@
-"""LS-DYNA decks against their TOML scenes: the Taylor bar and the two-rod impact of ``studies/lsdyna/``,
-imported, run the same as the scenes they were written from (the same mesh, the same numbers in another
-unit set), to round-off.
+"""LS-DYNA decks against their TOML scenes: the Taylor bar, the two-rod impact and the driven rigid punch of
+``studies/lsdyna/``, imported, run the same as the scenes they were written from (the same mesh, the same
+numbers in another unit set), to round-off.
 
 The decks' keywords are written by hand; their meshes (``*NODE``, ``*ELEMENT_SOLID`` and the sets of the
 loaded faces) are the TOML scene's own gmsh mesh written as an ``*INCLUDE`` (``write_mesh_include``), at
@@ -19,6 +19,7 @@ from ..scene import read_toml, resolve
 from .checks import SIZES, check, element_count
 from .contact_cases import TWO_RODS, two_rods_scene
 from .plasticity_cases import taylor_measures, taylor_scene
+from .rigid_drive_cases import punch_deck_scene
 from .scenes import solve
 
 STUDIES = os.path.join(os.path.dirname(__file__), "..", "..", "studies", "lsdyna")
@@ -30,6 +31,9 @@ DECKS = {
     "two_rods": {"units": "m-ms-kg-MN", "length": 1.0,
                  "sets": {"striker.bottom": ("segment", 1), "target.top": ("segment", 2)},
                  "scene": lambda h: two_rods_scene(h, kinematics="3d"), "h": 0.00625},
+    "rigid_punch": {"units": "m-ms-kg-MN", "length": 1.0,
+                    "sets": {"punch.bottom": ("segment", 1), "rod.top": ("segment", 2)},
+                    "scene": punch_deck_scene, "h": 0.0025},
 }
 
 
@@ -143,11 +147,12 @@ ROUND_OFF = 1e-9
 
 
 def lsdyna_decks(size, workdir):
-    """The Taylor bar (3D one-point hexahedra, mm-ms-kg-kN) and the two-rod impact (3D, m-ms-kg-MN)
-    written as LS-DYNA decks give what their TOML scenes give: final length and radius, plastic strain and
-    energies; the rods' mean velocities and contact energy, to round-off."""
+    """The Taylor bar (3D one-point hexahedra, mm-ms-kg-kN), the two-rod impact (3D, m-ms-kg-MN) and the rigid
+    punch (3D, m-ms-kg-MN, *BOUNDARY_PRESCRIBED_MOTION_RIGID along a *DEFINE_CURVE) written as LS-DYNA decks
+    give what their TOML scenes give: final length and radius, plastic strain and energies; the rods' mean
+    velocities and contact energy; the drive's force and work, to round-off."""
     out = []
-    for name, measure in (("taylor_bar", _taylor), ("two_rods", _rods)):
+    for name, measure in (("taylor_bar", _taylor), ("two_rods", _rods), ("rigid_punch", _punch)):
         h = DECKS[name]["h"] * SIZES[size]
         case_dir = os.path.join(workdir, "lsdyna", name)
         raw, raw_deck = deck_and_scene(name, h, case_dir)          # the scene's mesh cached there
@@ -160,6 +165,16 @@ def lsdyna_decks(size, workdir):
 
 def _taylor(solver) -> dict:
     return {**taylor_measures(solver), **_energies(solver)}
+
+
+def _punch(solver) -> dict:
+    """The rigid punch: the drive's reaction and work, the punch's centre, the rod's mean velocity and the
+    contact's energy."""
+    v, _ = solver.body_means()
+    e = solver.energy
+    return {"drive_force": float(solver.reactions()[-1][2]), "drive_work": e.external,
+            "punch_z": float(solver.rigid_states[0].center[2]), "rod_velocity": float(v[0, 2]),
+            "contact_energy": e.contact, **_energies(solver)}
 
 
 def _rods(solver) -> dict:

@@ -22,8 +22,9 @@ from .pad_cases import pad_bars, pad_johnson, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
-from .dashpot_cases import fluid_dashpot
-from .column_cases import liquid_column, orifice_law
+from .preload_cases import preload_stage
+from .dashpot_cases import dashpot_designer, fluid_dashpot
+from .column_cases import liquid_column, orifice_law, orifice_reynolds
 from .column_fe_cases import column_fe
 from .orientation_cases import oriented_body
 from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, penetration_wave,
@@ -31,6 +32,7 @@ from .penetration_cases import (forrestal, penetration_rigid, penetration_spin, 
 from .section_cases import section_stress
 from .mass_scaling_cases import mass_scaling
 from .lsdyna_cases import lsdyna_decks
+from .rigid_drive_cases import rigid_drive_free, rigid_punch
 from .hard_cases import HARD
 
 
@@ -48,6 +50,8 @@ CASES = {
     "rod_on_rod": rod_on_rod,
     "rod_on_wall": rod_on_wall,
     "rod_on_constraint_wall": rod_on_constraint_wall,
+    "rigid_punch": rigid_punch,
+    "rigid_drive_free": rigid_drive_free,
     "unequal_rods": unequal_rods,
     "thick_rods": thick_rods,
     "hertz_spheres": hertz_spheres,
@@ -66,11 +70,14 @@ CASES = {
     "crushable_pad": crushable_pad,
     "rubber_pad": rubber_pad,
     "shrink_fit": shrink_fit,
+    "preload_stage": preload_stage,
     "cone_friction": cone_friction,
     "cone_push": cone_push,
     "cone_rebound": cone_rebound,
     "fluid_dashpot": fluid_dashpot,
+    "dashpot_designer": dashpot_designer,
     "orifice_law": orifice_law,
+    "orifice_reynolds": orifice_reynolds,
     "liquid_column": liquid_column,
     "column_fe": column_fe,
     "forrestal": forrestal,

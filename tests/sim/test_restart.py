@@ -4,7 +4,8 @@
 checkpoint missed), in one process and under ``mpirun -n 2``, and for a chain scene through to its
 report.  The scenes cover every stateful part of the loop: rigid bodies, friction and an interference
 preload (the split cone), a liquid cavity (the piston dashpot), a liquid column, a penetrated target with plasticity,
-3D with rotation (the tilted drop), discrete springs and a constraint wall."""
+3D with rotation (the tilted drop, also band-damped), a run settled in a preload stage, discrete springs and a
+constraint wall."""
 import json
 import os
 import shutil
@@ -51,6 +52,12 @@ SCENES = {   # name: (scene, overrides, the step at which a SIGTERM stops it)
     "column_dashpot": (os.path.join(GALLERY, "column_dashpot.toml"), ['scene.end_time="0.3 ms"'], 501),
     "penetration": (os.path.join(GALLERY, "penetration.toml"), ['scene.end_time="0.2 ms"'], 500),
     "tilted_drop_3d": (os.path.join(GALLERY, "tilted_drop.toml"), ['scene.end_time="0.1 ms"'], 300),
+    # band damping's terms in the bodies' co-rotating frames (3D), and a run that settled in a preload stage
+    "band_tilted_3d": (os.path.join(GALLERY, "tilted_drop.toml"),
+                       ['scene.end_time="0.1 ms"', 'damping={type="band", ratio=0.02, low="2 kHz", high="40 kHz"}'],
+                       300),
+    "cone_drop_preload": (os.path.join(GALLERY, "cone_drop.toml"),
+                          ['scene.end_time="0.3 ms"', 'scene.preload={duration="500 us"}'], 8500),   # the stage: 7830 steps
     "springs": (_spring_scene, [], 100),
     "constraint_wall": (_constraint_wall_scene, [], 300),
 }
@@ -98,6 +105,10 @@ def test_a_resumed_run_is_the_uninterrupted_run(tmp_path, name):
     _same_run(tmp_path / "whole", tmp_path / "cut")
     resumed = shockfem.load_run(str(tmp_path / "cut")).summary["checkpoints"]["resumed_from"]
     assert [r["step"] for r in resumed] == [stop_at]
+    # a stage's report comes back with the solver's state
+    stage = shockfem.load_run(str(tmp_path / "cut")).summary.get("preload")
+    assert stage == shockfem.load_run(str(tmp_path / "whole")).summary.get("preload")
+    assert (stage is not None and stage["settled"]) == name.endswith("preload")
 
 
 def _cli(*args, launcher=(), env=None, **kw):

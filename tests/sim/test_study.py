@@ -100,8 +100,9 @@ def test_fixture_study_smoke(tmp_path):
     that gives a payload the rectangle's velocity change through a programmer that keeps them
     together, V = dV (1 + m / M), every concept run (two crushable pads, the dashpot, the split cone)
     completed with its energy balance within 1% and the nose pressure only where the nose is touched, the
-    lumped dashpot against its finite-element run, the iterated dashpot inside the band in finite
-    elements and the same pulse at two meshes, the lightest design in the band chosen, and the
+    dashpot designs on the column with their checks and verdicts (never "inside" where a check fails),
+    the choice or an honest NOT MET, the moving boundary, the confirmation in finite elements with the
+    liquid column, the chosen design's pulse the same at two meshes, and the
     3D runs of the yawed strike: completed, balanced, and a lateral acceleration at 0 degrees that is
     round-off beside the one at 5."""
     results, report = _study("fixture", tmp_path / "fixture")
@@ -131,27 +132,42 @@ def test_fixture_study_smoke(tmp_path):
         assert r["status"] == "completed" and abs(r["energy balance [-]"]) < 0.01, r["concept"]
         # only the seat touches the nose; its pressure is read from the nose contact, not assumed
         assert (r["nose pressure [MPa]"] > 0) == (r["concept"] == "dashpot with nose seat"), r["concept"]
-    # section 4: the lumped dashpot agrees with the finite-element run of the same design (its liquid is the
-    # cavity's, lumped; the bodies' elasticity is what differs): peak and velocity change within 1%
-    lumped, fe = _rows(results, "dashpot_lumped_vs_fe")
-    for key in ("peak [g]", "velocity change [m/s]", "duration [ms]"):
-        assert fe[key] == pytest.approx(lumped[key], rel=0.01), key
-    # the design iterated on the lumped model, confirmed by finite elements: inside the band
-    (design,) = _rows(results, "dashpot_design", model="finite elements, the iterated design")
-    assert design["status"] == "completed" and design["band"] == "pass" and design["energy balance [-]"] < 0.01
-    (seated,) = _rows(results, "seated_design", model="finite elements, the iterated design")
-    assert seated["status"] == "completed" and seated["energy balance [-]"] < 0.01
-    # the choice: the lightest fixture inside the band
-    choice = _rows(results, "choice")
-    passing = [r for r in choice if r["band"] == "pass"]
-    lightest = min(passing, key=lambda r: r["fixture mass [kg]"])
-    chosen = {"the dashpot": "dashpot", "the dashpot with the nose seat": "seated"}[lightest["design"]]
-    assert results["values"]["chosen_design"] == chosen
-    # section 5: the chosen design at two axisymmetric meshes (its pulse is the lumped liquid's, the same to
-    # 1e-3) and in 3D (at smoke size only the pulse's first 0.25 ms: run, not compared)
+    # section 4: every design on the column at its design grid and its search grid (the grid's own error in
+    # the peak, measured at smoke size: 2.2% (oil) and 1.0% (water) between 40 and 200 cells; 0.8% between
+    # 60 and 200), on the lumped model with the same law, its checks
+    designs = _rows(results, "designs")
+    assert len(designs) == 12                     # 2 concepts x 2 liquids x 3 models
+    values = results["values"]
+    for concept in ("dashpot", "seated"):
+        for liquid in ("oil", "water"):
+            v = values[f"design_{concept}_{liquid}"]
+            col, search = v["models"]["column"], v["models"]["search_column"]
+            assert search["peak"] == pytest.approx(col["peak"], rel=0.05)
+            # the verdict follows from the checks, the band and the housing, never "inside" when one fails
+            limits = _rows(results, f"limits_{concept}_{liquid}")
+            column_checks = [r for r in limits if "column" in r["bounds the model"]
+                             or "lumped" not in r["bounds the model"]]
+            inside = all(r["verdict"] == "holds" for r in column_checks) and col["band_passed"]
+            assert (v["verdict"] == "inside") <= inside
+            assert v["lumped_agrees"] <= v["models"]["lumped"]["holds"]
+    # the choice is "inside" or none: an honest NOT MET says so
+    if values["chosen_design"] is None:
+        assert "**NOT MET.**" in report
+    else:
+        assert values[f"design_{values['chosen_design']}"]["verdict"] == "inside"
+    # the plain dashpot does not confine the nose: no moving boundary
+    boundary = {r["concept (section 3's run)"]: r for r in _rows(results, "moving_boundary")}
+    assert boundary["the dashpot"]["moving boundary"] == "does not"
+    # the confirmation in finite elements, with the column and with the control volume
+    confirm = {r["model"]: r for r in _rows(results, f"{values['confirmation']['design'].split('_')[0]}_confirmation")}
+    fe = confirm["finite elements, column"]
+    assert fe["status"] == "completed" and abs(fe["energy balance [-]"]) < 0.01
+    # section 5: the chosen (or closest) design at two axisymmetric meshes, the liquid a column of its own
+    # cells: the pulse the same to 3e-3 (measured 8.1e-4 between 6 and 5 mm at smoke size), and in 3D (at
+    # smoke size only the pulse's first 0.25 ms: run, not compared)
     meshes = _rows(results, "speed_against_error")
     assert len(meshes) == 3 and all(r["status"] == "completed" for r in meshes)
-    assert meshes[0]["peak [g]"] == pytest.approx(meshes[1]["peak [g]"], rel=1e-3)
+    assert meshes[0]["peak [g]"] == pytest.approx(meshes[1]["peak [g]"], rel=3e-3)
     # section 6: the yawed strikes; straight on, the article's lateral acceleration is the mesh's asymmetry
     yawed = {r["yaw [deg]"]: r for r in _rows(results, "tail_slap")}
     assert set(yawed) == {0.0, 5.0}

@@ -90,6 +90,88 @@ def test_the_range_checks_flag_the_studys_first_design():
     assert np.isfinite(limits[("column transit time / pulse rise", "lumped")].value)
 
 
+def test_the_walls_dynamic_factor_is_biggs_for_a_step_and_a_ramp():
+    """``housing.dynamic_factor`` against Biggs' closed forms (ch. 2): 2 for a step, 1 + |sin x| / x,
+    x = pi t_r / T, for a ramp; the stepping is exact for piecewise-linear loads (measured 4e-15)."""
+    from shockfem.programmer.housing import dynamic_factor
+    T = 1e-4
+    t = np.linspace(0.0, 20 * T, 4001)
+    assert dynamic_factor(t, np.ones_like(t), T) == pytest.approx(2.0, rel=1e-12)
+    for ratio in (0.25, 0.5, 1.5):
+        x = math.pi * ratio
+        assert dynamic_factor(t, np.clip(t / (ratio * T), 0, 1), T) == pytest.approx(1 + abs(math.sin(x)) / x,
+                                                                                    rel=1e-12)
+
+
+def test_the_fixture_is_weighed_whole_and_no_wall_holds_beyond_s_over_root_3():
+    """``housing.fixture_mass`` on a slow ramp (factor 1): the wall's outer radius is Lame's at the peak
+    and the steel's ASME design stress (the lesser of 1790 / 1.5 and 1830 / 2.4 MPa = 762.5 MPa for
+    maraging 300), the parts sum to the fixture; above s / sqrt(3) the housing is infinite."""
+    from shockfem.programmer.housing import HOUSING_STEELS, bore_outer_radius, fixture_mass
+    steel = HOUSING_STEELS["maraging_300"]
+    assert steel.allowed_stress() == pytest.approx(1830e6 / 2.4, rel=1e-12)
+    d = {"bore_radius": 0.03, "column": 1.0, "piston_mass": 0.2, "liquid_mass": 2.5,
+         "pin": [[0.0, 1e-3], [1.0, 0.0]]}
+    t = np.linspace(0.0, 0.1, 20001)
+    p = 300e6 * np.clip(t / 0.05, 0, 1)            # a rise 50 ms long: hundreds of breathing periods
+    w = fixture_mass(d, t, p, p)
+    assert w["dynamic_factor"] == pytest.approx(1.0, abs=1e-3)
+    assert w["outer_radius"] == pytest.approx(bore_outer_radius(300e6 * w["dynamic_factor"], 0.03,
+                                                                steel.allowed_stress()), rel=1e-12)
+    assert w["fixture"] == pytest.approx(w["piston"] + w["pin"] + w["housing"] + w["liquid"], rel=1e-12)
+    # the pin fills the largest opening less the opening: 1e-3 m^2 x 1 m / 2 of steel
+    assert w["pin"] == pytest.approx(steel.density * 0.5e-3, rel=1e-9)
+    assert math.isinf(fixture_mass(d, t, 2 * p, 2 * p)["fixture"])
+
+
+def test_roelands_viscosity_and_the_ice_vi_melting_pressure():
+    """Roelands at no pressure is the reference; at 300 MPa (Z = 2e-8 / (5.1e-9 (ln 0.028 + 9.67)) =
+    0.644): log10 mu[cP] = (log10 28 + 1.2) (1 + 300 / 196.1)^0.644 - 1.2, worked by hand to 4.07 Pa s;
+    water's ice VI at 20 degC from IAPWS R14-08 eq. 3: 891 MPa less the atmosphere."""
+    from shockfem.programmer.liquids import MINERAL_OIL, WATER
+    assert MINERAL_OIL.viscosity_at(0.0) == MINERAL_OIL.viscosity
+    z = 2e-8 / (5.1e-9 * (math.log(0.028) + 9.67))
+    by_hand = 10 ** ((math.log10(28.0) + 1.2) * (1 + 300 / 196.1) ** z - 1.2) * 1e-3
+    assert MINERAL_OIL.viscosity_at(300e6) == pytest.approx(by_hand, rel=1e-12)
+    assert by_hand == pytest.approx(4.07, rel=0.01)
+    assert WATER.viscosity_at(500e6) == WATER.viscosity
+    theta = 293.15 / 273.31
+    assert WATER.solid_pressure() == pytest.approx(632.4e6 * (1 - 1.07476 * (1 - theta ** 4.6)) - 1e5, rel=1e-12)
+    assert math.isinf(MINERAL_OIL.solid_pressure())
+
+
+def test_the_reynolds_check_counts_the_share_of_the_velocity_change_below_the_range():
+    """``dashpot_validity.reynolds_share`` on a made-up run: a bore of 50 mm, water at 1 mPa s, the
+    relative speed falling linearly from 10 m/s to 0 under a constant deceleration: Re_D = 998 u 0.05 /
+    1e-3 falls below 5000 (n = 0.25) at u = 0.1002 m/s, i.e. over the last 1.002% of the time and of
+    the velocity change."""
+    from types import SimpleNamespace
+    from shockfem.programmer.dashpot_validity import reynolds_share
+    from shockfem.programmer.liquids import WATER
+    from shockfem.programmer.lumped_dashpot import LumpedDashpot
+    A = math.pi * 0.025 ** 2
+    d = LumpedDashpot(10.0, 1.0, 10.0, A, 1.0, ((0.0, 0.25 * A), (10.0, 0.25 * A)), 998.0, 2.2e9, 0.7)
+    t = np.linspace(0.0, 1.0, 100001)
+    u = 10.0 * (1 - t)
+    run = SimpleNamespace(t=t, striker_speed=u, payload_speed=0 * t, pressure=0 * t, stroke=0 * t,
+                          acceleration=np.full_like(t, 10.0))
+    assert reynolds_share(d, run, WATER) == pytest.approx(5000 * 1e-3 / (998 * 0.05) / 10.0, rel=2e-3)
+
+
+def test_the_contact_front_is_the_hugoniot_shock_with_the_orifice_passing_its_flow():
+    """``column_design.contact_shock`` closed orifice: no flow, so the liquid moves with the piston and
+    the pressure is the Hugoniot's rho0 s V, s = V / 2 + sqrt(V^2 / 4 + c^2) for Tait's n = 1; with an
+    opening the front is lower and the force on the piston lower still (the jet's reaction)."""
+    from shockfem.programmer.column_design import contact_shock
+    from shockfem.programmer.liquids import MINERAL_OIL as oil
+    V, A = 100.0, 1e-3
+    c = oil.sound_speed()
+    p_closed, f_closed = contact_shock(V, 1e-12 * A, A, oil)
+    assert p_closed == pytest.approx(oil.density * (V / 2 + math.sqrt(V * V / 4 + c * c)) * V, rel=1e-6)
+    p_open, f_open = contact_shock(V, 0.5 * A, A, oil)
+    assert p_open < p_closed and f_open < p_open * A
+
+
 def test_the_compiled_interpolation_is_numpys():
     """``column._interpolate`` (the section and the pin's table at every face) against np.interp, the ends
     held, to round-off."""

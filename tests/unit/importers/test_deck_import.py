@@ -120,6 +120,63 @@ def test_truncated_card_names_keyword_card_and_line(tmp_path):
     assert any(p.startswith(f"bad.k:{k + 1}: *MAT_PLASTIC_KINEMATIC card 1: field 3 is blank") for p in problems)
 
 
+def test_non_finite_numbers_and_huge_ids_are_refused_by_card(tmp_path):
+    """NaN, infinity and a number beyond a double in a real field, and in an integer field (where int() of
+    them raised ValueError / OverflowError: the import fuzz found it), and an id beyond 32 bits."""
+    lines = _lines()
+    hourglass = lines.index("*CONTROL_HOURGLASS") + 1
+    lines[hourglass] = f"{'nan':>10}{'inf':>10}"
+    timestep = lines.index("*CONTROL_TIMESTEP") + 1
+    lines[timestep] = f"{0.0:10}{'1e400':>10}"
+    part = lines.index("block") + 1
+    lines[part] = f"{'9999999999':>10}{1:10}{1:10}"
+    problems = "\n".join(_problems(_write(tmp_path, lines)))
+    assert f"bad.k:{hourglass + 1}: *CONTROL_HOURGLASS card 1: field 1: 'nan' is not a finite number" in problems
+    assert f"bad.k:{timestep + 1}: *CONTROL_TIMESTEP card 1: field 2: '1e400' is not a finite number" in problems
+    assert f"bad.k:{part + 1}: *PART card 2: field 1: '9999999999' is beyond the largest id" in problems
+
+
+def test_a_node_defined_twice_names_both_lines(tmp_path):
+    """A keyword line deleted makes the next keyword's cards nodes (the import fuzz found the message
+    without a line): each repeated id is said at its second card, with where the first is."""
+    lines = _lines()
+    k = lines.index(next(l for l in lines if l.startswith("       5 ")))       # node 5
+    lines.insert(k + 3, lines[k])
+    assert f"bad.k:{k + 4}: *NODE card 8: node 5 is defined 2 times (first at bad.k:{k + 1})" in _problems(
+        _write(tmp_path, lines))
+
+
+def test_end_time_problems_name_the_keyword_or_the_deck(tmp_path):
+    lines = _lines()
+    k = lines.index("*CONTROL_TERMINATION")
+    lines[k + 1] = f"{0.0:10}"
+    assert f"bad.k:{k + 2}: *CONTROL_TERMINATION card 1: ENDTIM is blank or 0" in "\n".join(
+        _problems(_write(tmp_path, lines)))
+    del lines[k:k + 2]
+    assert "bad.k: no *CONTROL_TERMINATION: the run needs an end time" in "\n".join(
+        _problems(_write(tmp_path, lines)))
+
+
+def test_values_the_scene_refuses_are_said_at_their_deck_card(tmp_path):
+    """A value the cards allow but the scene does not (a negative density, a negative end time, a safety
+    factor above 1) is refused at import, at the card it came from, and no scene is left behind."""
+    lines = _lines()
+    mat = lines.index("*MAT_PLASTIC_KINEMATIC") + 1
+    lines[mat] = lines[mat].replace("  7.85e-06", " -7.85e-06")
+    end = lines.index("*CONTROL_TERMINATION") + 1
+    lines[end] = f"{-0.05:10}"
+    step = lines.index("*CONTROL_TIMESTEP") + 1
+    lines[step] = f"{0.0:10}{1.5:10}"
+    deck = _write(tmp_path, lines)
+    with pytest.raises(SceneError) as e:
+        import_model(deck, str(tmp_path / "bad.toml"), "mm-ms-kg-kN")
+    problems = "\n".join(e.value.problems)
+    assert f"bad.k:{mat + 1}: *MAT_PLASTIC_KINEMATIC card 1: materials.mat1.density: must be > 0" in problems
+    assert f"bad.k:{end + 1}: *CONTROL_TERMINATION card 1: scene.end_time: must be > 0" in problems
+    assert f"bad.k:{step + 1}: *CONTROL_TIMESTEP card 1: scene.safety_factor:" in problems
+    assert not (tmp_path / "bad.toml").exists()
+
+
 def test_no_unit_set_is_refused_by_the_command(tmp_path, capsys):
     assert main(["import", str(PLAIN), "--out", str(tmp_path / "x.toml")]) == 2
     err = capsys.readouterr().err
@@ -238,14 +295,53 @@ def test_motion_wall_single_surface_and_node_constraints(tmp_path):
     assert [(c["a"], c["b"]) for c in single] == [("block", "plate")]
 
 
-def test_rigid_motion_and_partial_velocity_are_refused(tmp_path):
+def test_rigid_motion_drives_the_rigid_body(tmp_path):
+    """*BOUNDARY_PRESCRIBED_MOTION_RIGID on a *MAT_RIGID part: the body driven whole along DOF's axis with the
+    curve times SF (VAD blank is LS-DYNA's default, a velocity); on a deformable part, with a DOF, a VAD or a
+    curve not mapped, refused on its card."""
+    rigid = ["*MAT_RIGID", f"{2:10}{7.85e-6:10}{210.0:10}{0.3:10}",
+             "*DEFINE_CURVE", f"{9:10}", f"{0.0:20}{0.0:20}", f"{0.01:20}{1.0:20}", f"{1.0:20}{1.0:20}",
+             "*BOUNDARY_PRESCRIBED_MOTION_RIGID", f"{2:10}{3:10}{'':10}{9:10}{-4.0:10}"]
+    s = deck_to_scene(_material_deck(tmp_path, rigid), MM_MS).scene
+    drive = s["boundary"][-1]
+    assert (drive["region"], drive["type"], drive["direction"]) == ("plate", "velocity", "z")
+    assert [[to_si(t, "time"), to_si(v, "velocity")] for t, v in drive["history"]] == [
+        [0.0, 0.0], [pytest.approx(1e-5, rel=EXACT), pytest.approx(-4.0, rel=EXACT)],
+        [pytest.approx(1e-3, rel=EXACT), pytest.approx(-4.0, rel=EXACT)]]
+    scene = load_scene(import_model(_material_deck(tmp_path, rigid), str(tmp_path / "s.toml"),
+                                    "mm-ms-kg-kN").scene)
+    assert [(b.region, b.components) for b in scene.boundaries][-1] == ("plate", (2,))
+    bad = rigid[:-1] + [f"{1:10}{3:10}{0:10}{9:10}", f"{2:10}{5:10}{0:10}{9:10}", f"{2:10}{4:10}{0:10}{9:10}",
+                        f"{2:10}{1:10}{2:10}{9:10}", f"{2:10}{1:10}{0:10}{8:10}", f"{2:10}{1:10}"]
+    problems = "\n".join(_problems(_material_deck(tmp_path, bad)))
+    for card, words in ((1, "part 1 is not rigid (its material is no *MAT_RIGID)"),
+                        (2, "DOF 5 (a rotation): only x, y, z translations"),
+                        (3, "DOF 4 (a translation along the vector VID)"),
+                        (4, "VAD 2: only a prescribed velocity (VAD 0) is mapped"),
+                        (5, "LCID 8 is not defined by any *DEFINE_CURVE"),
+                        (6, "LCID is blank")):
+        assert f"*BOUNDARY_PRESCRIBED_MOTION_RIGID card {card}: {words}" in problems, (card, problems)
+
+
+def test_rigid_material_constraints_hold_the_body(tmp_path):
+    """*MAT_RIGID CMO 1: CON1 holds the body's centre along its axes, CON1 7 CON2 7 fixes it; a rotation held
+    alone and a local system (CMO -1) are refused on the material's second card."""
+    rigid = lambda card2: ["*MAT_RIGID", f"{2:10}{7.85e-6:10}{210.0:10}{0.3:10}", card2]
+    s = deck_to_scene(_material_deck(tmp_path, rigid(f"{1.0:10}{5:10}{0:10}")), MM_MS).scene
+    assert [(b["region"], b["type"], b.get("direction")) for b in s["boundary"] if b["region"] == "plate"] == [
+        ("plate", "fixed", None), ("plate", "velocity", "y"), ("plate", "velocity", "z")]    # the SPC set, CON1 5
+    s = deck_to_scene(_material_deck(tmp_path, rigid(f"{1.0:10}{7:10}{7:10}")), MM_MS).scene
+    assert [b["type"] for b in s["boundary"] if b["region"] == "plate"] == ["fixed", "fixed"]
+    for card2, words in ((f"{1.0:10}{0:10}{4:10}", "CON2 4: a rigid body's rotations are held only with"),
+                         (f"{-1.0:10}{0:10}{4:10}", "CMO -1: constraints of a rigid material in a local system")):
+        assert f"*MAT_RIGID card 2: {words}" in "\n".join(_problems(_material_deck(tmp_path, rigid(card2))))
+
+
+def test_partial_initial_velocity_is_refused(tmp_path):
     lines = _lines()
     k = lines.index("*BOUNDARY_SPC_SET")
-    lines[k:k + 2] = ["*DEFINE_CURVE", f"{9:10}", f"{0.0:20}{1.0:20}",
-                      "*BOUNDARY_PRESCRIBED_MOTION_RIGID", f"{2:10}{3:10}{0:10}{9:10}",
-                      "*INITIAL_VELOCITY", f"{5:10}", f"{0.0:10}{0.0:10}{1.0:10}"]
+    lines[k:k + 2] = ["*INITIAL_VELOCITY", f"{5:10}", f"{0.0:10}{0.0:10}{1.0:10}"]
     problems = "\n".join(_problems(_write(tmp_path, lines)))
-    assert "*BOUNDARY_PRESCRIBED_MOTION_RIGID card 1: part 2: a rigid body driven along a curve" in problems
     assert "*INITIAL_VELOCITY card 1: node set 5 covers 4 of body plate's 8 nodes" in problems
 
 

@@ -35,3 +35,13 @@ def test_a_shrink_fit_on_a_solid_shaft_and_a_cone_without_a_fit_are_not():
     heard = []
     check_raw(raw, warn=heard.append)
     assert not any("split cone" in w for w in heard)
+
+
+def test_a_preload_stage_takes_the_warning_away_and_the_warning_names_it():
+    """With ``[scene.preload]`` the fit settles before the event (``solver/preload.py``): nothing to warn of;
+    without, the warning gives the stage as the first fix."""
+    raw = _raw("cone_drop.toml")
+    (warning,) = scene_warnings(resolve(raw))
+    assert "Add a [scene.preload] stage" in warning
+    raw["scene"]["preload"] = {"duration": "500 us"}
+    assert scene_warnings(resolve(raw)) == []

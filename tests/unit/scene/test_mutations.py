@@ -4,7 +4,9 @@ deleted, is either accepted or refused with every problem as ``field: message`` 
 never a traceback or a hang. ``shockfem check`` reads it (``cli.check_raw``): the plain checker, the chain's
 and the launcher's, and the launcher's design. Measured on the checkers without these guards with the same
 mutations, every leaf of nine scenes: 80 tracebacks in 2410 (unhashable names, a chain body without a name, a negative radius under
-a square root, 1e308 m overflowing the gun's formulas); with them, none."""
+a square root, 1e308 m overflowing the gun's formulas); with them, none.  The driven rigid punch
+(``studies/lsdyna/rigid_punch.toml``: a boundary naming a rigid body), every leaf with these values and
+its bodies' and regions' names: 736 mutations, none."""
 import copy
 import os
 
@@ -18,7 +20,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.a
 SCENES = ["studies/gallery/cylinder.toml", "studies/gallery/projectile_payload.toml", "studies/gallery/penetration.toml",
           "studies/gallery/dashpot.toml", "studies/gallery/column_dashpot.toml", "studies/gallery/piston_dashpot.toml",
           "studies/gallery/split_cone.toml", "studies/amplifier/three_rods.toml",
-          "studies/launcher/white_paper_gun.toml", "studies/launcher/gun_and_chain.toml"]
+          "studies/launcher/white_paper_gun.toml", "studies/launcher/gun_and_chain.toml",
+          "studies/lsdyna/rigid_punch.toml"]
 RAW = {name: read_toml(os.path.join(REPO, name)) for name in SCENES}
 DELETE = object()
 BAD = st.one_of(st.just(DELETE), st.just([1, 2]), st.just({"x": 1}), st.just(""), st.booleans(),

@@ -67,6 +67,34 @@ def test_boundary_region_checked():
         resolve(raw)
 
 
+def test_a_rigid_body_is_driven_whole():
+    """A velocity or fixed condition names a rigid body itself (its centre driven); on a region of it, it
+    would hold some of its nodes apart from it, and is refused with the fix; a deformable body is never
+    driven whole, an axisymmetric rigid body only along z, and never by a symmetry condition."""
+    raw = base()
+    raw["bodies"][0]["rigid"] = True
+    raw["boundary"] = [{"region": "bar", "type": "velocity", "direction": "z",
+                        "history": [["0 s", 0.0], ["5 s", "-2 m/s"]]},
+                       {"region": "bar", "type": "fixed"}]
+    driven, held = resolve(raw).boundaries
+    assert (driven.region, driven.kind, driven.components, driven.history) == (
+        "bar", "velocity", (1,), ((0.0, 0.0), (5.0, -2.0)))
+    assert (held.region, held.kind) == ("bar", "fixed")
+    raw["boundary"] = [{"region": "bar.bottom", "type": "velocity", "value": "1 m/s"},
+                       {"region": "bar", "type": "symmetry"},
+                       {"region": "bar", "type": "velocity", "direction": "r", "value": "1 m/s"},
+                       {"region": "bar", "type": "force", "value": "1 N"}]
+    text = "\n".join(_problems(raw))
+    assert ("boundary[0].region: 'bar' is a rigid body: its nodes move with it, so a velocity condition cannot "
+            "hold a region of it; give region = 'bar'") in text
+    assert "boundary[1].type: a rigid body ('bar') is driven with type = \"velocity\"" in text
+    assert "boundary[2].direction: an axisymmetric rigid body moves along z only" in text
+    assert "boundary[3].region: a force acts on a region of the rigid body 'bar'" in text
+    raw["bodies"][0]["rigid"] = False
+    raw["boundary"] = [{"region": "bar", "type": "velocity", "value": "1 m/s"}]
+    assert "boundary[0].region: 'bar' is a deformable body: give one of its regions" in "\n".join(_problems(raw))
+
+
 def test_damping_coefficients_give_the_ratio_at_the_frequency():
     import math
     raw = base()
