@@ -129,7 +129,10 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
     rep.table("machines", MACHINE_HEADER, rows, MACHINE_FORMATS)
     rep.text("Stress / allowable: the largest over every component (`<N>lb/machine.md` lists them all, with "
              "their bases). Striker: the dashpot's housing with its oil, the amplifier's last mass. Effective e: "
-             "the restitution the 1D padded chain gives (iterated; the pads' own rigid-body value is 0.940).")
+             "the one restitution with which the rigid chain of these masses gains what the rigid chain of the "
+             "pads' own restitutions gains, each measured by its interface's finite-element run (or its "
+             f"material's estimate where not run; the pads' meshes: '{base.pad_resolution}'); the chain's "
+             "striker speed is that chain's, with the first mass as the launcher's slug.")
     for lb, m in machines.items():
         rep.text(f"**{lb} lb**: " + "; ".join(m.binding) + ("." if m.feasible else
                                                              ". NOT FEASIBLE: " + "; ".join(m.problems) + "."))
