@@ -218,7 +218,11 @@ def flying_target_arrangement(spec: MachineSpec, fixture, echo=None) -> tuple[Ar
     """(c): the white paper's flying target (its mass ratio to the article), the fixture designed for it,
     fired by the white paper's gun with as long a barrel as it needs."""
     ratio = WHITE_PAPER_TARGET * spec.article_mass / fixture.payload_mass
-    target = design_fixture(dataclasses.replace(spec, striker_ratio=ratio), echo)
+    try:
+        target = design_fixture(dataclasses.replace(spec, striker_ratio=ratio), echo)
+    except ValueError as err:
+        # the dashpot's own models refuse the target (its liquid outweighs it): no flying target to fire
+        return _no_target(spec, fixture, ratio, str(err)), types.SimpleNamespace(striker_ratio=ratio)
     L, ok = white_paper_launcher(spec, target.striker_mass, target.striker_speed)
     layout = _layout(spec, L, target) if ok else None
     notes = [f"asked {ratio:.3g} times the payload ({WHITE_PAPER_TARGET * spec.article_mass / LB:.3g} lb); the "
@@ -227,6 +231,16 @@ def flying_target_arrangement(spec: MachineSpec, fixture, echo=None) -> tuple[Ar
     if not ok:
         notes.append("the white paper's gun never reaches the speed, however long its barrel")
     return _arrangement("(c) flying target, the white paper's gun", L, target, layout, ok, notes), target
+
+
+def _no_target(spec: MachineSpec, fixture, ratio: float, why: str) -> Arrangement:
+    """(c) when the fixture designer finds no dashpot for the white paper's target."""
+    nan = math.nan
+    M = ratio * fixture.payload_mass
+    return Arrangement("(c) flying target, the white paper's gun", M, nan, nan, M, nan, nan, nan, nan, nan, nan,
+                       nan, nan, nan, False, [f"asked {ratio:.3g} times the payload "
+                                              f"({WHITE_PAPER_TARGET * spec.article_mass / LB:.3g} lb); the fixture "
+                                              f"designer finds no dashpot for it: {why}"])
 
 
 def _times(x: float, y: float) -> str:
@@ -272,6 +286,9 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
                      f"(a)'s {a.machine_mass / 1e3:.3g} t and {a.machine_length:.3g} m: "
                      + ("the direct gun is the better machine, amplification does not pay" if better else
                         "amplification pays" if worse else "neither is better on both mass and length"))
+    if not math.isfinite(c.striker_speed):
+        words.append(f"the white paper's flying target (c) has no fixture: {c.notes[-1]}")
+        return "; ".join(words) + "."
     words.append(f"the white paper's own gun (c) needs a {c.barrel / FT:.3g} ft barrel for the target the fixture "
                  f"designer gives it ({c.striker_mass:.3g} kg at {c.striker_speed:.0f} m/s)" if c.gun_feasible else
                  f"the white paper's own gun (c) never reaches its target's speed ({c.striker_mass:.3g} kg at "
