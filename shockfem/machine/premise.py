@@ -265,8 +265,9 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
                 f"{a.launch_energy / 1e6:.3g} MJ)")
     words = [f"to give the striker {0.5 * a.striker_mass * a.striker_speed ** 2 / 1e6:.3g} MJ the amplifier (a) "
              f"{launches} from {a.stored / 1e6:.3g} MJ of stored gas; "
-             f"the direct gun (b) launches {b.launch_energy / 1e6:.3g} MJ (striker and sabot) from "
-             f"{b.stored / 1e6:.3g} MJ, so (a) needs {_times(a.required_energy, b.launch_energy)} (b)'s energy; "
+             f"the direct gun (b) {'launches' if b.gun_feasible else 'must launch'} {b.required_energy / 1e6:.3g} MJ "
+             f"(striker and sabot) from {b.stored / 1e6:.3g} MJ, so (a) needs "
+             f"{_times(a.required_energy, b.required_energy)} (b)'s energy; "
              f"(b0), the striker alone, {b0_words(a, bound)}"]
     if not a_ok:
         words.append(f"the amplifier (a) is not a feasible machine ({a.launched_mass / 1e3:,.4g} t first mass; "
