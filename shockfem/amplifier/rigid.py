@@ -141,6 +141,18 @@ def stack_on_anvil(masses, speed: float, e: float, lengths=None, gap: float = 1e
                      [e] * (n - 1), anvil=e, anvil_gap=gap)
 
 
+def designed_chain(masses, speed: float, restitutions, lengths, gap: float,
+                   architecture: str = "launched-chain") -> ChainResult:
+    """The chain as the machine's amplifier runs it: interface k at ``restitutions[k]``, every gap ``gap``;
+    launched (body 1 at ``speed`` into the others at rest) or a stack falling at ``speed`` onto an anvil
+    of the interfaces' mean restitution."""
+    n = len(masses)
+    e = list(restitutions)
+    if architecture == "launched-chain":
+        return run_chain(masses, [speed] + [0.0] * (n - 1), lengths, [gap] * (n - 1), e)
+    return run_chain(masses, [-speed] * n, lengths, [gap] * (n - 1), e, anvil=sum(e) / len(e), anvil_gap=gap)
+
+
 def first_closing_speeds(masses, speed: float, e: float, architecture: str = "launched-chain") -> list[float]:
     """Closing speed of each neighbour pair at its first collision in a rigid launched chain (or a stack
     falling on an anvil of the same restitution)."""

@@ -76,11 +76,6 @@ class Stage:
     limits: list = field(default_factory=list)          # of Limit
     alternatives: list = field(default_factory=list)    # every material sized here: material, worst ratio
 
-    @property
-    def interface_stress_1d(self) -> float:
-        """The machine's loads table reads the interface's peak stress by this name (the FE run's now)."""
-        return self.interface_stress
-
 
 @dataclass
 class Amplifier:
@@ -103,20 +98,13 @@ class Amplifier:
     runs: list[str] = field(default_factory=list)   # the pad runs' directories
     limits: list = field(default_factory=list)      # every stage's Limit
     cache: dict = field(default_factory=dict)       # the run cache's folder, hits and misses
+    # why the masses themselves failed (no chain of them makes the gain), apart from the checks ``reason``
+    # adds on the chain designed (its speed, its pads' limits)
+    design_reason: str = ""
 
     @property
     def restitutions(self) -> list[float]:
         return [st.restitution for st in self.stages]
-
-    @property
-    def gain_1d(self) -> float:
-        """The name the machine's report and the system study read the chain's gain by."""
-        return self.gain
-
-    @property
-    def striker_speed_1d(self) -> float:
-        """The name the machine's report and the system study read the striker's speed by."""
-        return self.striker_speed
 
     def as_dict(self) -> dict:
         out = asdict(self)
@@ -124,8 +112,6 @@ class Amplifier:
         for st, raw in zip(self.stages, out["stages"]):
             raw["limits"] = [lim.as_dict() for lim in st.limits]
         out["restitutions"] = self.restitutions
-        # the names the system study and its tests read the chain's gain and the striker's speed by
-        out["gain_1d"], out["striker_speed_1d"] = self.gain, self.striker_speed
         return out
 
 
@@ -178,17 +164,16 @@ def choose_pad(iface: Interface, materials=tuple(PAD_MATERIALS)) -> tuple[PadDes
     return min(elastomers, key=lambda pe: pe[0].worst)[0], table
 
 
+def chain_run(spec: MachineSpec, masses, bodies, e: list[float]) -> rigid.ChainResult:
+    """The rigid chain of ``masses`` with restitution e[k] at interface k, every collision followed
+    (``rigid.designed_chain``: a stack falls on an anvil of the chain's mean restitution)."""
+    return rigid.designed_chain(masses, spec.launch_speed, e, [b["length"] for b in bodies], MIN_GAP,
+                                spec.architecture)
+
+
 def _chain_gain(spec: MachineSpec, masses, bodies, e: list[float]) -> float:
-    """The gain of the rigid chain of ``masses`` with restitution e[k] at interface k, every collision
-    followed (a stack falls on an anvil of the chain's mean restitution)."""
-    n = len(masses)
-    lengths = [b["length"] for b in bodies]
-    if spec.architecture == "launched-chain":
-        r = rigid.run_chain(masses, [spec.launch_speed] + [0.0] * (n - 1), lengths, [MIN_GAP] * (n - 1), e)
-    else:
-        r = rigid.run_chain(masses, [-spec.launch_speed] * n, lengths, [MIN_GAP] * (n - 1), e,
-                            anvil=sum(e) / len(e), anvil_gap=MIN_GAP)
-    return abs(r.final[-1]) / spec.launch_speed
+    """The gain of ``chain_run``: the striker's final speed over the launch speed."""
+    return abs(chain_run(spec, masses, bodies, e).final[-1]) / spec.launch_speed
 
 
 def _gaps(spec: MachineSpec, masses, e: float, stages: list[Stage]) -> list[float]:
@@ -272,16 +257,18 @@ def _amplifier(spec, last, e, iterations, V, Y, cache: RunCache, t0, reason: str
         a, b = st.pair.split("_", 1)
         for name, lim in zip((a, b), [lim for lim in st.limits if lim.quantity == "stress (FE, von Mises)"]):
             peaks[name] = max(peaks.get(name, 0.0), lim.value / Y)
-    on_target = abs(speed / V - 1) < 0.02
-    if not reason and not on_target:
-        reason = f"the chain brings the striker to {speed:.4g} m/s, not {V:.4g}"
-    if not reason and broken(limits):
-        reason = "pads outside their limits: " + "; ".join(lim.describe() for lim in broken(limits)[:3])
+    # every reason the chain fails: ``reason`` (the masses' own, kept as ``design_reason``) and this chain's checks
+    words = [reason] if reason else []
+    if abs(speed / V - 1) >= 0.02:
+        words.append(f"the chain brings the striker to {speed:.4g} m/s, not {V:.4g}")
+    if broken(limits):
+        words.append("pads outside their limits: " + "; ".join(lim.describe() for lim in broken(limits)[:3]))
+    design_reason, reason = reason, "; ".join(words)
     return Amplifier(spec.architecture, list(masses), bodies, spec.launch_speed, V, e, iterations, gain, speed,
                      _gaps(spec, masses, e, stages), stages, peaks, Y, sum(st.run_wall_time_s for st in stages),
                      not reason, reason, [st.run for st in stages], limits,
                      {"folder": cache.folder, "hits": cache.hits, "misses": cache.misses,
-                      "wall_time_s": time.perf_counter() - t0})
+                      "wall_time_s": time.perf_counter() - t0}, design_reason)
 
 
 def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier:
@@ -289,7 +276,7 @@ def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier
     if last is None:
         return Amplifier(spec.architecture, [], [], spec.launch_speed, V, e, iterations, math.nan, math.nan, [], [],
                          {}, Y, 0.0, False, reason, [], [], {"folder": cache.folder, "hits": cache.hits,
-                                                             "misses": cache.misses})
+                                                             "misses": cache.misses}, reason)
     return _amplifier(spec, last, e, iterations, V, Y, cache, t0, reason)
 
 
@@ -306,7 +293,7 @@ def check_with_first_mass(spec: MachineSpec, fixture: Fixture, amp: Amplifier, b
     stages = _measure(spec, amp.masses, bodies, amp.restitution, cache, resolution, None)
     gain = _chain_gain(spec, amp.masses, bodies, [st.restitution for st in stages])
     out = _amplifier(spec, (amp.masses, bodies, stages, gain), amp.restitution, amp.iterations, amp.target_speed,
-                     amp.yield_stress, cache, t0, "" if amp.feasible else amp.reason)
+                     amp.yield_stress, cache, t0, amp.design_reason)
     return out
 
 

@@ -8,9 +8,10 @@ carry, and the amplifier's own (its pads', when it has them).  FEASIBLE only whe
 part's model found a design; otherwise each broken limit is listed with its ratio.
 
 The order is the data flow: the pulse and the article fix the fixture (the dashpot and the striker's
-mass and speed), the striker fixes the amplifier (its masses at the restitution its 1D model gives),
-the first mass fixes the launcher, and the launcher's bore reshapes the first mass, with which the
-chain is run once more in 1D to check the striker's speed.  Each step names its model in ``models``.
+mass and speed), the striker fixes the amplifier (its masses at the effective restitution of its pads, each pad of a
+real material and its restitution measured by the interface's finite-element run, the rigid chain
+followed through every collision: ``machine.amplifier``), the first mass fixes the launcher, and the
+launcher's bore reshapes the first mass, whose interface is measured again.  Each step names its model in ``models``.
 """
 from __future__ import annotations
 
@@ -21,7 +22,7 @@ from dataclasses import asdict, dataclass, field
 
 from ..scene.library import LIBRARY, initial_yield_stress, property_si
 from ..units import G0, format_si
-from .amplifier import Amplifier, check_with_first_mass, design_amplifier
+from .amplifier import Amplifier, chain_run, check_with_first_mass, design_amplifier
 from .energy import EnergyTable, chain_record, energy_table
 from .fixture import Fixture, design_fixture
 from .launcher import Launcher, design_launcher
@@ -82,10 +83,14 @@ class Machine:
 
 
 def record_of(spec: MachineSpec, amp: Amplifier):
-    """The chain's energies and final speeds (``energy.chain_record``): its last 1D run's, or the rigid
-    chain's at the design's restitution."""
-    return chain_record(amp.masses, [b["name"] for b in amp.bodies], spec.launch_speed, amp.restitution,
-                        spec.architecture, amp.runs[-1] if amp.runs else None)
+    """The chain's energies and final speeds (``energy.chain_record``) from the amplifier as designed: the
+    rigid chain at each interface's own restitution (measured by its pad's run, or its material's estimate
+    where the run was not made), every collision followed."""
+    result = chain_run(spec, amp.masses, amp.bodies, amp.restitutions)
+    words = ", ".join(f"{st.pair} {st.restitution:.4f} ({'measured' if st.measured else 'estimate'})"
+                      for st in amp.stages)
+    return chain_record(amp.masses, [b["name"] for b in amp.bodies], spec.launch_speed, spec.architecture, result,
+                        f"the rigid chain at the pads' restitutions: {words}")
 
 
 def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, fixture: Fixture | None = None
@@ -96,14 +101,15 @@ def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, 
     say = echo or (lambda *a: None)
     say(f"machine for {spec.article_mass:.4g} kg: the fixture (dashpot iterated on its lumped model)")
     fixture = fixture or design_fixture(spec, echo)
-    say("  the amplifier (1D chain, effective restitution)")
-    amp = design_amplifier(spec, fixture, os.path.join(out_dir, "amplifier_1d"), echo)
+    say(f"  the amplifier (pads of real materials, restitutions from their finite-element runs at "
+        f"'{spec.pad_resolution}', the rigid chain through every collision)")
+    amp = design_amplifier(spec, fixture, os.path.join(out_dir, "amplifier"), echo)
     say("  the launcher (lightest gun within the limits)")
     launcher = design_launcher(spec, amp.masses, starts)
     if amp.masses:
         say("  the chain again with the first mass as the launcher's slug")
         amp = check_with_first_mass(spec, fixture, amp, launcher.design.gun.bore,
-                                    os.path.join(out_dir, "amplifier_1d"))
+                                    os.path.join(out_dir, "amplifier"))
     rho = property_si(spec.material, "density", "density")
     Y = initial_yield_stress(spec.material)
     S = Y / spec.safety_factor
@@ -179,12 +185,13 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
         out.append(Load(f"pad {st.pair}", f"closing at {st.closing_speed:.1f} m/s", st.face_stress, S,
                         "rigid bodies on the pad: peak force dv sqrt(k M*) over the smaller load section "
                         "(set by the design)", sized=True))
-        out.append(Load(f"interface {st.pair} (1D)", "the 1D chain's peak pad force", st.interface_stress_1d, S,
-                        "1D run: the low-passed interface force over the smaller bar section"))
+        if st.measured:
+            out.append(Load(f"interface {st.pair} (FE)", "the pad run's peak contact force", st.interface_stress, S,
+                            "the interface's finite-element run: peak contact force over the smaller load section"))
     for body, over in amp.peak_stress_over_yield.items():
         if "_" not in body:
-            out.append(Load(f"{body} (1D)", "the chain's waves", over * amp.yield_stress, S,
-                            "1D run: the largest axial stress in the bar"))
+            out.append(Load(f"{body} (FE)", "its pad runs' stress waves", over * amp.yield_stress, S,
+                            "the interfaces' finite-element runs: the body's peak von Mises stress"))
     f = fixture
     out.append(Load("striker housing wall", f"oil at {f.peak_pressure / 1e6:.0f} MPa", f.wall_hoop_stress, S,
                     "Lame hoop stress at the bore" + (" (the wall set the striker's mass)" if f.housing_binds else ""),
@@ -277,14 +284,19 @@ def models(spec: MachineSpec) -> list[str]:
         "`programmer.lumped_dashpot`), its metering pin iterated to the band; the bodies' elasticity and the oil's "
         "waves are left out (the fixture study's finite-element runs agree within 1%)",
         "housing: Lame thick cylinder and a clamped plate at the peak oil pressure",
-        f"amplifier: the {spec.architecture} in 1D (`amplifier.bars`: elastic bars, pads as spring-dashpots, "
-        "2% structural damping held over each body's first modes: band damping), its gain read as an effective "
-        "restitution; lateral motion, friction on the guides "
-        "and the pads' own mass left out",
+        f"amplifier: the {spec.architecture}'s masses by the closed form (`amplifier.gain.design`) at an effective "
+        "restitution; each interface's pad of a real material sized within its limits (`machine.pads`), its "
+        "restitution measured by the interface's axisymmetric finite-element run (the two bodies at their sizes, "
+        f"steel J2, the pad's own law; meshes '{spec.pad_resolution}', `pads.RESOLUTIONS`; a run past the budget, or "
+        "the 'estimate' resolution, keeps its material's estimate, an upper bound), and the rigid chain of those "
+        "restitutions followed through every collision for the gain, iterated until the effective e settles "
+        "(`machine.amplifier`); the pads' own mass, waves running from one interface's run into the next, "
+        "lateral motion and friction on the guides are left out",
         "launcher: the lumped gas gun (`launcher.gun`: valve, Lagrange gas inertia, air ahead) and ASME VIII-1 walls",
         "stops: absorbers by closed forms (`machine.stops`: a constant-force hydraulic buffer, or an aluminium "
         "honeycomb crushed at its steady-shock stress), each at the force the stopped body's inertia allows",
         "guides and frame: closed forms (the weight on sliding shoes, ties); foundations, bolts and bending of the "
         "frame left out",
-        "energy: the gun's own accounts, the chain's stage table, the fixture's lumped run (`machine.energy`)",
+        "energy: the gun's own accounts, the designed chain's collisions at its pads' restitutions, the "
+        "fixture's lumped run (`machine.energy`)",
     ]

@@ -8,10 +8,11 @@ Each row comes from the model that owns it, so that the table closes only if the
   air ahead, friction and the first mass's kinetic energy; beside them the isentropic work
   p0 V0 (1 - (V0 / V1)^(gamma - 1)) / (gamma - 1) of the stored gas expanding into the barrel (V1 = V0 +
   the bore's volume), the most any valve and barrel of this gun could draw from it;
-* the amplifier's chain (its last 1D run's stage table, ``amplifier.chain``; or the rigid chain at the
-  design's restitution where no run is kept): each interface's loss (the pads' damping, the bodies'
-  waves and their structural damping, over every stage at that interface) and each mass's kinetic
-  energy after its last stage, which its stop takes;
+* the amplifier's chain as designed (``machine.amplifier.chain_run``: the rigid chain at each interface's
+  restitution measured by its pad's finite-element run, or its material's estimate where the run was not
+  made, every collision followed): each interface's loss (what its pad and the bodies' waves in its run
+  did not return, over every collision at that interface) and each mass's kinetic energy after its last
+  collision, which its stop takes;
 * the fixture (its lumped run, ``machine.fixture``): the work the oil takes from striker and payload
   (integrated from its pressure and jet, not the bodies' speeds), the payload's kinetic energy (which the
   catcher takes) and the striker's after the pulse (which its stop takes).
@@ -22,9 +23,7 @@ the fixture's striker speed disagree (``verify machine_energy`` holds it within 
 """
 from __future__ import annotations
 
-import json
 import math
-import os
 from dataclasses import asdict, dataclass, field
 
 from ..amplifier import rigid
@@ -54,9 +53,18 @@ class EnergyTable:
     payload: float             # the payload's kinetic energy after the pulse [J]
     chain_source: str
     notes: list[str] = field(default_factory=list)
+    # the chain's launch energy (at the design's launch speed) less the first mass's at the gun's muzzle [J]:
+    # zero when the gun reaches the launch speed; a gun that falls short leaves the table open by this much
+    shortfall: float = 0.0
+
+    @property
+    def models_closure(self) -> float:
+        """(parts - gas work - shortfall) / gas work: how far the models disagree on what they hand each
+        other, the gun's shortfall taken out [-]."""
+        return (self.parts - self.gas_work - self.shortfall) / self.gas_work
 
     def as_dict(self) -> dict:
-        return asdict(self)
+        return {**asdict(self), "models_closure": self.models_closure}
 
 
 def isentropic_work(p0: float, V0: float, V1: float, gamma: float) -> float:
@@ -75,26 +83,16 @@ class ChainRecord:
     source: str
 
 
-def chain_record(masses: list[float], names: list[str], launch: float, restitution: float, architecture: str,
-                 run_dir: str | None = None) -> ChainRecord:
-    """The chain's record: from the stage table of the 1D run in ``run_dir`` if it has one, else from the
-    rigid chain at ``restitution``."""
+def chain_record(masses: list[float], names: list[str], launch: float, architecture: str,
+                 result: rigid.ChainResult, source: str) -> ChainRecord:
+    """The chain's record from its rigid run ``result`` (``rigid.run_chain``: every collision, each at its
+    interface's restitution); ``source`` says which restitutions it ran on."""
     m = dict(zip(names, masses))
     launched = masses[:1] if architecture == "launched-chain" else masses
     start = 0.5 * sum(launched) * launch * launch
-    stages = None
-    path = os.path.join(run_dir, "summary.json") if run_dir else ""
-    if path and os.path.exists(path):
-        with open(path) as fh:
-            stages = json.load(fh)["chain"]["stages"]
-        source = f"the 1D run's stage table ({os.path.relpath(path)})"
-    else:
-        chain = (rigid.launched_chain if architecture == "launched-chain" else rigid.stack_on_anvil)
-        r = chain(masses, launch, restitution)
-        stages = [{"striker": names[c.left] if c.left >= 0 else "anvil", "struck": names[c.right],
-                   "striker_before": c.before[0], "striker_after": c.after[0],
-                   "struck_before": c.before[1], "struck_after": c.after[1]} for c in r.collisions]
-        source = f"the rigid chain at e = {restitution:.4f}"
+    stages = [{"striker": names[c.left] if c.left >= 0 else "anvil", "struck": names[c.right],
+               "striker_before": c.before[0], "striker_after": c.after[0],
+               "struck_before": c.before[1], "struck_after": c.after[1]} for c in result.collisions]
     speeds = {n: (launch if (architecture != "launched-chain" or k == 0) else 0.0) for k, n in enumerate(names)}
     losses: dict[str, float] = {}
     for st in stages:
@@ -160,7 +158,7 @@ def energy_table(launcher, amp, fixture, stops, record: ChainRecord) -> EnergyTa
              f"{math.sqrt(2 * record.launch_energy / sum(amp.masses[:1] if amp.architecture == 'launched-chain' else amp.masses)):.4f} m/s",
              f"the chain gives the striker {record.striker_speed:.3f} m/s, the fixture takes it at {V:.3f} m/s"]
     return EnergyTable(rows, stored, rows[1].energy, gas_work, parts, parts / gas_work - 1, payload, record.source,
-                       notes)
+                       notes, record.launch_energy - E["projectile"])
 
 
 def energy_figure(table: EnergyTable, path: str, title: str):

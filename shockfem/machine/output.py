@@ -40,7 +40,9 @@ def summary_lines(m: Machine) -> list[str]:
     e = m.energy
     lines.append(f"  energy a shot: {e.stored / 1e6:.4g} MJ of gas stored, {e.gas_work / 1e6:.4g} MJ of gas work, "
                  f"{L.launch_energy / 1e6:.4g} MJ launched, {t['energy_to_stops'] / 1e6:.4g} MJ to the stops, "
-                 f"{e.payload / 1e6:.3g} MJ to the payload (the parts close on the gas work to {e.closure:+.2%})")
+                 f"{e.payload / 1e6:.3g} MJ to the payload (the parts close on the gas work to {e.closure:+.2%}"
+                 + (f"; the gun falls {e.shortfall / 1e6:.4g} MJ short of the chain's launch, and with that out to "
+                    f"{e.models_closure:+.2%})" if abs(e.closure - e.models_closure) > 1e-3 else ")"))
     lines.append("  stops: " + "; ".join(f"{st.body} {st.kind} {st.stroke:.3g} m stroke, {st.length:.3g} m long, "
                                          f"{st.force / 1e6:.3g} MN" for st in m.layout.stops))
     lines += [f"  binds: {b}" for b in m.binding]
@@ -121,7 +123,8 @@ def energy_markdown(m: Machine) -> str:
     e = m.energy
     rows = [[r.name, f"{r.energy / 1e6:.4f}", f"{r.energy / e.gas_work:.2%}", "yes" if r.part else "-", r.note]
             for r in e.rows]
-    rows.append(["the parts' sum", f"{e.parts / 1e6:.4f}", f"{e.parts / e.gas_work:.2%}", "", f"closure {e.closure:+.3%}"])
+    rows.append(["the parts' sum", f"{e.parts / 1e6:.4f}", f"{e.parts / e.gas_work:.2%}", "",
+                 f"closure {e.closure:+.3%}; the gun's shortfall {e.shortfall / 1e6:.4g} MJ out: {e.models_closure:+.3%}"])
     return _table(["where the energy is", "energy [MJ]", "of the gas work", "a part", "note"], rows) + "\n\n" + \
         "\n".join(f"- {n}" for n in e.notes)
 

@@ -22,7 +22,10 @@ striker ratio and its measured restitution; the amplifier's masses from the clos
 start) or, for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The
 direct gun there carries the striker in a massless sabot (its lower bound); the sabot its bore and
 pressure would need (``sabot_mass``) is reported beside it, and a point the direct gun wins only without
-it is marked so.  (c) counts only where its barrel is within the spec's barrel limit.  A machine's
+it is marked so.  (c) counts only where its barrel is within the spec's barrel limit.  The
+restitution the map's amplifier runs at is the caller's (the system study passes the designed
+amplifier's effective e, the rigid chain at its pads' finite-element restitutions at the spec's point,
+carried over to every point: a pad sized and run at another point would restitute otherwise).  A machine's
 figure of merit there is its gun (barrel and tank) and its moving masses; the stops and frame, which the
 full design adds, are left out.  Range: the fixture is designed (and its validity checked) only
 at the spec's point; elsewhere its ratio and restitution are carried over, and the amplifier's pads and
@@ -75,6 +78,9 @@ class Arrangement:
     machine_length: float         # [m]
     gun_feasible: bool            # the gun reaches the speed (within the limits, where it has them)
     notes: list[str] = field(default_factory=list)
+    # every limit of the whole design holds (only (a), the designed machine, has them all checked)
+    feasible: bool = True
+    required_energy: float = math.nan   # the launched mass at the speed it was designed for [J]
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -120,13 +126,20 @@ def _arrangement(name: str, launcher: Launcher, fixture, layout: Layout, feasibl
                        fixture.striker_mass, fixture.striker_speed, g.bore, g.length, g.reservoir_pressure,
                        g.reservoir_volume, launcher.stored_energy, launcher.design.weight,
                        sum(i.mass for i in layout.items) + extra if layout else math.nan,
-                       layout.overall_length if layout else math.nan, feasible, notes)
+                       layout.overall_length if layout else math.nan, feasible, notes,
+                       required_energy=0.5 * launcher.projectile_mass * launcher.design.required_velocity ** 2)
 
 
 def amplifier_arrangement(m: Machine) -> Arrangement:
-    """(a): the designed machine."""
-    return _arrangement("(a) amplifier", m.launcher, m.fixture, m.layout, m.launcher.design.feasible,
-                        [f"{len(m.amplifier.masses)} masses, effective e {m.amplifier.restitution:.4f}"])
+    """(a): the designed machine (its pads' restitutions measured, ``machine.amplifier``)."""
+    a = m.amplifier
+    notes = [f"{len(a.masses)} masses, effective e {a.restitution:.4f} (the rigid chain at its pads' "
+             "restitutions: " + ", ".join(f"{e:.3f}" for e in a.restitutions) + ")"]
+    if not m.feasible:
+        notes.append(f"the machine is NOT FEASIBLE: {len(m.problems)} problems, the first: {m.problems[0]}")
+    out = _arrangement("(a) amplifier", m.launcher, m.fixture, m.layout, m.launcher.design.feasible, notes)
+    out.feasible = m.feasible
+    return out
 
 
 def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float, bore: float | None, starts: int,
@@ -205,7 +218,11 @@ def flying_target_arrangement(spec: MachineSpec, fixture, echo=None) -> tuple[Ar
     """(c): the white paper's flying target (its mass ratio to the article), the fixture designed for it,
     fired by the white paper's gun with as long a barrel as it needs."""
     ratio = WHITE_PAPER_TARGET * spec.article_mass / fixture.payload_mass
-    target = design_fixture(dataclasses.replace(spec, striker_ratio=ratio), echo)
+    try:
+        target = design_fixture(dataclasses.replace(spec, striker_ratio=ratio), echo)
+    except ValueError as err:
+        # the dashpot's own models refuse the target (its liquid outweighs it): no flying target to fire
+        return _no_target(spec, fixture, ratio, str(err)), types.SimpleNamespace(striker_ratio=ratio)
     L, ok = white_paper_launcher(spec, target.striker_mass, target.striker_speed)
     layout = _layout(spec, L, target) if ok else None
     notes = [f"asked {ratio:.3g} times the payload ({WHITE_PAPER_TARGET * spec.article_mass / LB:.3g} lb); the "
@@ -214,6 +231,16 @@ def flying_target_arrangement(spec: MachineSpec, fixture, echo=None) -> tuple[Ar
     if not ok:
         notes.append("the white paper's gun never reaches the speed, however long its barrel")
     return _arrangement("(c) flying target, the white paper's gun", L, target, layout, ok, notes), target
+
+
+def _no_target(spec: MachineSpec, fixture, ratio: float, why: str) -> Arrangement:
+    """(c) when the fixture designer finds no dashpot for the white paper's target."""
+    nan = math.nan
+    M = ratio * fixture.payload_mass
+    return Arrangement("(c) flying target, the white paper's gun", M, nan, nan, M, nan, nan, nan, nan, nan, nan,
+                       nan, nan, nan, False, [f"asked {ratio:.3g} times the payload "
+                                              f"({WHITE_PAPER_TARGET * spec.article_mass / LB:.3g} lb); the fixture "
+                                              f"designer finds no dashpot for it: {why}"])
 
 
 def _times(x: float, y: float) -> str:
@@ -226,20 +253,33 @@ def _times(x: float, y: float) -> str:
 def b0_words(a: Arrangement, bound: Arrangement | None) -> str:
     if bound is None:
         return "not designed"
-    return f"{bound.launch_energy / 1e6:.3g} MJ ((a) launches {_times(a.launch_energy, bound.launch_energy)} that)"
+    return f"{bound.launch_energy / 1e6:.3g} MJ ((a) needs {_times(a.required_energy, bound.launch_energy)} that)"
 
 
 def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement | None = None) -> str:
     """What the three arrangements say about the premise, from their numbers (``bound``: (b) with a
     massless sabot, the direct gun's lower bound)."""
+    a_ok = a.gun_feasible and a.feasible
+    launches = (f"launches {a.launch_energy / 1e6:.3g} MJ" if a.gun_feasible else
+                f"must launch {a.required_energy / 1e6:.4g} MJ (its gun, every limit reached, launches only "
+                f"{a.launch_energy / 1e6:.3g} MJ)")
     words = [f"to give the striker {0.5 * a.striker_mass * a.striker_speed ** 2 / 1e6:.3g} MJ the amplifier (a) "
-             f"launches {a.launch_energy / 1e6:.3g} MJ from {a.stored / 1e6:.3g} MJ of stored gas; "
-             f"the direct gun (b) launches {b.launch_energy / 1e6:.3g} MJ (striker and sabot) from "
-             f"{b.stored / 1e6:.3g} MJ, so (a) launches {_times(a.launch_energy, b.launch_energy)} (b)'s energy; "
+             f"{launches} from {a.stored / 1e6:.3g} MJ of stored gas; "
+             f"the direct gun (b) {'launches' if b.gun_feasible else 'must launch'} {b.required_energy / 1e6:.3g} MJ "
+             f"(striker and sabot) from {b.stored / 1e6:.3g} MJ, so (a) needs "
+             f"{_times(a.required_energy, b.required_energy)} (b)'s energy; "
              f"(b0), the striker alone, {b0_words(a, bound)}"]
+    if not a_ok:
+        words.append(f"the amplifier (a) is not a feasible machine ({a.launched_mass / 1e3:,.4g} t first mass; "
+                     f"{a.notes[-1]})")
     for x in [b] + ([bound] if bound else []):
         if not x.gun_feasible:
             words.append(f"{x.name}: no gun within the limits fires it at its speed")
+            continue
+        if not a_ok:
+            words.append(f"{x.name}'s gun is within the limits ({x.machine_mass / 1e3:.3g} t, "
+                         f"{x.machine_length:.3g} m long): the direct gun is the better machine, amplification does "
+                         "not pay")
             continue
         better = x.machine_mass <= a.machine_mass and x.machine_length <= a.machine_length
         worse = x.machine_mass >= a.machine_mass and x.machine_length >= a.machine_length
@@ -247,6 +287,9 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
                      f"(a)'s {a.machine_mass / 1e3:.3g} t and {a.machine_length:.3g} m: "
                      + ("the direct gun is the better machine, amplification does not pay" if better else
                         "amplification pays" if worse else "neither is better on both mass and length"))
+    if not math.isfinite(c.striker_speed):
+        words.append(f"the white paper's flying target (c) has no fixture: {c.notes[-1]}")
+        return "; ".join(words) + "."
     words.append(f"the white paper's own gun (c) needs a {c.barrel / FT:.3g} ft barrel for the target the fixture "
                  f"designer gives it ({c.striker_mass:.3g} kg at {c.striker_speed:.0f} m/s)" if c.gun_feasible else
                  f"the white paper's own gun (c) never reaches its target's speed ({c.striker_mass:.3g} kg at "

@@ -63,12 +63,18 @@ SIZES = {
 END_MARGIN = 1.3
 
 
-def run_study(size: str = "default", out_dir: str = "results/system", echo=print) -> str:
+def run_study(size: str = "default", out_dir: str = "results/system", echo=print,
+              pad_resolution: str | None = None) -> str:
+    """The study at ``size``; ``pad_resolution`` (``pads.RESOLUTIONS``) the pads' runs' meshes (default the
+    spec's), "estimate" for none (the tests' quickest study: ``tests/sim/test_pad_runs.py`` runs the pads)."""
     t0 = time.perf_counter()
     cfg = SIZES[size]
     rep = Report(out_dir, "System integration and scalability study (white paper task 5)")
     base = read_spec({"article": "12 lb"})
-    rep.text(f"`shockfem study system --size {size}`; every number below was computed by this run. The system "
+    if pad_resolution:
+        base = dataclasses.replace(base, pad_resolution=pad_resolution)
+    rep.text(f"`shockfem study system --size {size}`" + (f" with the pads at '{pad_resolution}'" if pad_resolution
+                                                          else "") + "; every number below was computed by this run. The system "
              "model is `shockfem design-machine` (`docs/machine.md`): each payload's machine is in "
              "`<N>lb/` (machine.json, machine.md, machine.step, drawing.svg/pdf/png).")
     echo("1/8 the system model and its choices")
@@ -123,7 +129,10 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
     rep.table("machines", MACHINE_HEADER, rows, MACHINE_FORMATS)
     rep.text("Stress / allowable: the largest over every component (`<N>lb/machine.md` lists them all, with "
              "their bases). Striker: the dashpot's housing with its oil, the amplifier's last mass. Effective e: "
-             "the restitution the 1D padded chain gives (iterated; the pads' own rigid-body value is 0.940).")
+             "the one restitution with which the rigid chain of these masses gains what the rigid chain of the "
+             "pads' own restitutions gains, each measured by its interface's finite-element run (or its "
+             f"material's estimate where not run; the pads' meshes: '{base.pad_resolution}'); the chain's "
+             "striker speed is that chain's, with the first mass as the launcher's slug.")
     for lb, m in machines.items():
         rep.text(f"**{lb} lb**: " + "; ".join(m.binding) + ("." if m.feasible else
                                                              ". NOT FEASIBLE: " + "; ".join(m.problems) + "."))
@@ -134,7 +143,7 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
 
 MACHINE_HEADER = ["payload [lb]", "bore [mm]", "payload with piston [kg]", "striker [kg]", "striker speed [m/s]",
                   "peak oil pressure [MPa]", "lumped peak [g]", "band", "first mass [kg]", "effective e",
-                  "1D striker speed [m/s]", "gun bore [in]", "gun travel [ft]", "reservoir [psi]",
+                  "chain's striker speed [m/s]", "gun bore [in]", "gun travel [ft]", "reservoir [psi]",
                   "reservoir [m^3]", "gas [kg]", "launcher [kg]", "length [m]", "width [m]", "machine [kg]",
                   "stress / allowable", "feasible", "designed in [s]"]
 MACHINE_FORMATS = ["{}", "{:.0f}", "{:.3g}", "{:.4g}", "{:.1f}", "{:.0f}", "{:,.0f}", "{}", "{:,.0f}", "{:.4f}",
@@ -147,7 +156,7 @@ def _row(lb, m) -> list:
     g = L.design.gun
     return [lb, 2e3 * f.bore_radius, f.payload_mass, f.striker_mass, f.striker_speed, f.peak_pressure / 1e6,
             f.peak / G0, "pass" if f.band_passed else "FAIL", a.masses[0] if a.masses else math.nan, a.restitution,
-            a.striker_speed_1d, g.bore / IN, g.length / FT, g.reservoir_pressure / PSI, g.reservoir_volume,
+            a.striker_speed, g.bore / IN, g.length / FT, g.reservoir_pressure / PSI, g.reservoir_volume,
             L.gas_mass, L.design.weight, t["overall_length"], t["overall_width"], t["machine_mass"],
             max(ld.ratio for ld in m.loads), "yes" if m.feasible else "NO", m.wall_time_s]
 
@@ -297,6 +306,11 @@ def coupled(rep: Report, m, cfg, out_dir: str, echo):
     payload in the fixture's finite-element run."""
     lb = round(m.spec.article_mass / LB)
     rep.heading(f"4. The coupled check: the {lb} lb machine end to end")
+    why = sections.not_runnable(m)
+    rep.value("coupled_run", not why)
+    if why:
+        rep.text(f"Not run: the {lb} lb machine is NOT FEASIBLE and cannot be run end to end: {why}.")
+        return
     f, a = m.fixture, m.amplifier
     g = m.launcher.design.gun
     raw = chain_scene(m.spec, a, f)

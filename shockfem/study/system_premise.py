@@ -11,7 +11,7 @@ from ..amplifier.chain import run_chain_scene
 from ..machine import premise as P
 from ..machine.amplifier import chain_scene
 from ..machine.limits import broken
-from ..machine.white_paper import claims
+from ..machine.white_paper import CLAIM, claims
 from ..units import FT, G0, IN, LB, PSI
 from .report import Report
 
@@ -26,22 +26,26 @@ def energy(rep: Report, machines: dict, lb: int):
                                                                                    "fixture", "payload")}
         rows.append([n, e.stored / 1e6, e.gas_work / 1e6, m.launcher.launch_energy / 1e6, by["gun"] / 1e6,
                      by["interface"] / 1e6, by["stop"] / 1e6, by["fixture"] / 1e6, by["payload"] / 1e6,
-                     e.payload / e.stored, e.closure])
+                     e.payload / e.stored, e.closure, e.models_closure])
     rep.table("energy_totals", ["payload [lb]", "gas stored [MJ]", "gas work [MJ]", "launched [MJ]",
                                 "gun's losses [MJ]", "interfaces [MJ]", "to the stops [MJ]", "fixture's oil [MJ]",
-                                "payload [MJ]", "payload / stored [-]", "closure [-]"], rows,
-              ["{}"] + ["{:.4g}"] * 8 + ["{:.2%}", "{:+.3%}"])
+                                "payload [MJ]", "payload / stored [-]", "closure [-]",
+                                "closure, the gun's shortfall out [-]"], rows,
+              ["{}"] + ["{:.4g}"] * 8 + ["{:.2%}", "{:+.3%}", "{:+.3%}"])
     for n, x in machines.items():
         if abs(x.energy.closure) > 5e-3:
             short = x.launcher.design.muzzle_velocity < x.spec.launch_speed * (1 - 1e-3)
             rep.text(f"The {n} lb table does not close ({x.energy.closure:+.1%}): "
                      + (f"its gun fires the first mass at {x.launcher.design.muzzle_velocity:.4g} m/s, the chain was "
-                        f"launched at {x.spec.launch_speed:.4g} (the gun falls short: section 6)." if short else
+                        f"launched at {x.spec.launch_speed:.4g} (the gun falls short: section 6); with that shortfall "
+                        f"({x.energy.shortfall / 1e6:.4g} MJ) taken out the parts close on the gas work to "
+                        f"{x.energy.models_closure:+.3%}." if short else
                         "the models disagree on the speeds they hand each other: " + "; ".join(x.energy.notes[1:]) + "."))
     m = machines[lb]
     e = m.energy
     rep.text(f"The {lb} lb machine's shot, row by row (`{lb}lb/machine.md` has it too). Each row comes from the "
-             "model that owns it (the gun's own accounts, the chain's stage table, the fixture's lumped run), so the "
+             "model that owns it (the gun's own accounts, the designed chain's collisions at its pads' restitutions, "
+             "the fixture's lumped run), so the "
              "parts close on the gas work only if the models agree: "
              f"{e.closure:+.3%} here (`shockfem verify machine_energy` holds it within 0.5%).")
     rep.table("energy", ["where the energy is", "energy [MJ]", "of the gas work", "a part of it"],
@@ -83,10 +87,34 @@ def limits(rep: Report, machines: dict):
             rep.text(f"**{n} lb, NOT FEASIBLE**: " + "; ".join(m.problems) + ".")
 
 
+def not_runnable(m) -> str:
+    """Why the designed chain is not run in 1D ('' when it is): its gun falls short of the launch speed, or
+    its pads break their limits (a pad many times past its slenderness, or heavier than its struck body, is
+    outside the 1D pads' model, a massless spring-dashpot; its run would also follow the bodies across gaps
+    of tens of metres)."""
+    words = []
+    L = m.launcher.design
+    if not L.feasible:
+        words.append(f"its gun fires the first mass at {L.muzzle_velocity:.4g} m/s, not the {m.spec.launch_speed:.4g} "
+                     "the chain was designed for")
+    pads = broken(m.amplifier.limits)
+    if pads:
+        words.append(f"{len(pads)} of its pads' limits are broken (the worst: {pads[0].component}, "
+                     f"{pads[0].quantity} {pads[0].ratio:.3g} times its limit)")
+    return "; ".join(words)
+
+
 def damping(rep: Report, m, out_dir: str):
     """The designed chain in 1D with no structural damping, stiffness-proportional and band damping: how
     much of the effective restitution is the damping model."""
-    rep.heading("7. The chain's restitution against the damping model")
+    rep.heading("7. The designed chain in 1D: waves and the damping model")
+    why = not_runnable(m)
+    if why:
+        rep.text(f"Not run: the {round(m.spec.article_mass / LB)} lb machine is NOT FEASIBLE and its chain is not one "
+                 f"the 1D model can run: {why}.")
+        rep.value("damping_run", False)
+        return
+    rep.value("damping_run", True)
     base = chain_scene(m.spec, m.amplifier, m.fixture)
     rows = []
     for label, kind, ratio in (("none", "band", 0.0), ("stiffness-proportional 2% at the first mode", "stiffness", 0.02),
@@ -100,10 +128,13 @@ def damping(rep: Report, m, out_dir: str):
     rep.table("damping", ["structural damping", "1D gain", "striker speed [m/s]", "effective e"], rows,
               ["{}", "{:.4f}", "{:.2f}", "{:.4f}"])
     spread = max(r[3] for r in rows) - min(r[3] for r in rows)
-    rep.text(f"The designed chain (its pads as designed) run in 1D three ways: the effective restitution moves by "
-             f"{spread:.4f} between them, so the damping model is {'not ' if spread < 0.01 else ''}what sets the "
-             "chain's losses; the pads' contact time (milliseconds against the bars' transits) keeps the waves "
-             "small. The design uses band damping, the chain scenes' default.")
+    rep.text(f"The designed chain run in 1D (`amplifier.bars`: elastic bars, each pad a spring of its secant "
+             f"stiffness and one dashpot damping ratio for all, set to the design's effective e "
+             f"{m.amplifier.restitution:.4f}) three ways: the effective restitution moves by {spread:.4f} between "
+             f"them, so the structural damping model is {'not ' if spread < 0.01 else ''}what sets the chain's "
+             "losses. This is a check with physics the design's rigid chain leaves out (the bars' waves through "
+             "the whole chain at once) and without some it has (each pad's own law and its measured restitution: "
+             "the 1D pads share one damping ratio).")
 
 
 ARRANGEMENT_HEADER = ["arrangement", "launched [kg]", "launch speed [m/s]", "launch energy [MJ]", "striker [kg]",
@@ -172,13 +203,42 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     rep.text("The map's models (closed forms and lumped models per point, no finite elements): the striker is the "
              f"designed fixture's ratio ({m.fixture.striker_ratio:.3g} times the payload) at its measured "
              f"restitution ({max(m.fixture.restitution, 0.0):.3f}) by the rigid collision law; the amplifier's masses "
-             f"by the closed form at the design's effective restitution ({m.amplifier.restitution:.4f}), "
-             f"{m.spec.masses} masses launched at {m.spec.launch_speed / FT:.0f} ft/s; each gun by the lightest-"
-             "launcher design (one start). The map leaves the models' checked range everywhere but the design's "
-             "point: the dashpot is designed and its validity checked only there, the amplifier's pads, stresses "
-             "and stops are not checked, and the direct gun's sabot is left out of its design (its estimate is "
-             "the column beside it). A point where no arrangement reaches the speed within the limits is 'none'.")
+             f"by the closed form at one restitution for every point, the design's effective e "
+             f"({m.amplifier.restitution:.4f}: the rigid chain at its pads' restitutions "
+             + ", ".join(f"{e:.3f}" for e in m.amplifier.restitutions) + f", from their '{m.spec.pad_resolution}' "
+             f"runs at the design's point), {m.spec.masses} masses launched at {m.spec.launch_speed / FT:.0f} ft/s; "
+             "each gun by the lightest-launcher design (one start). The map leaves the models' checked range "
+             "everywhere but the design's point: the dashpot is designed and its validity checked only there, the "
+             "amplifier's pads are not sized or run at the other points (their restitution is carried over), its "
+             "stresses and stops are not checked, and the direct gun's sabot is left out of its design (its "
+             "estimate is the column beside it). A point where no arrangement reaches the speed within the limits "
+             "is 'none'.")
+    _restitution_effect(rep, m, target)
     return points
+
+
+def _restitution_effect(rep: Report, m, target):
+    """The design's point of the map at the design's measured effective e and at the white paper's assumed
+    e: what the measured pads do to the amplifier's side of the premise."""
+    s, f = m.spec, m.fixture
+    rows = []
+    for label, e in ((f"the design's effective e ('{s.pad_resolution}' pads)", m.amplifier.restitution),
+                     ("the white paper's assumed e", CLAIM["e"])):
+        p = P.map_point(s, s.pulse.duration, s.pulse.peak, s.article_mass, f.striker_ratio, target.striker_ratio,
+                        max(f.restitution, 0.0), e, f.housing_outer_radius / f.bore_radius)
+        rows.append([label, e, p.amplifier["note"], p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"],
+                     "yes" if p.amplifier["feasible"] else "NO", p.direct["machine_mass"], p.winner])
+    lb = round(s.article_mass / LB)
+    rep.table("map_restitution", ["amplifier's e", "e [-]", "(a)", "(a) launch [MJ]", "(a) gun and masses [kg]",
+                                  "(a) gun within limits", "(b0) gun and striker [kg]", "lightest"], rows,
+              ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{}", "{:,.0f}", "{}"])
+    rep.value("map_restitution", [{"e": r[1], "launch_energy": r[3] * 1e6, "machine_mass": r[4], "winner": r[7]}
+                                  for r in rows])
+    rep.text(f"The {lb} lb point of the map at the design's effective e ({rows[0][1]:.4f}, its pads at "
+             f"'{s.pad_resolution}') and at the white paper's e = {CLAIM['e']:g}: the "
+             f"amplifier's gun and masses weigh {rows[0][4]:,.0f} kg against {rows[1][4]:,.0f} kg "
+             f"({rows[0][3]:.4g} MJ launched against {rows[1][3]:.4g}); the lightest arrangement there is "
+             f"'{rows[0][7]}' at the design's e and '{rows[1][7]}' at e = {CLAIM['e']:g}.")
 
 
 def _map_reading(bd: dict, points) -> str:

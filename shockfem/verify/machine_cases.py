@@ -26,6 +26,8 @@ grid of ``launcher_design`` (no grid gun lighter), and its launch energy M V^2 /
 """
 from __future__ import annotations
 
+import dataclasses
+
 import math
 import time
 
@@ -102,18 +104,21 @@ def machine_geometry(size: str, workdir: str) -> list[dict]:
 
 
 def machine_energy(size: str, workdir: str) -> list[dict]:
-    """The 12 lb machine's energy table closes on the gas work; the gas work and the gas stored against
-    their closed forms."""
+    """The 12 lb machine's energy table closes on the gas work (its gun's shortfall, where it falls short of
+    the launch speed, taken out: the models must agree on what they hand each other); the gas work and the
+    gas stored against their closed forms.  The pads at 'estimate' (their runs are ``pad_*``'s cases; the
+    table reads whatever restitutions the amplifier was designed on)."""
     from ..machine.design import design_machine
     from ..machine.energy import CLOSURE_TOL, isentropic_work
     from ..machine.spec import read_spec
     t0 = time.perf_counter()
-    m = design_machine(read_spec({"article": "12 lb"}), workdir, starts=1)
+    spec = dataclasses.replace(read_spec({"article": "12 lb"}), pad_resolution="estimate")
+    m = design_machine(spec, workdir, starts=1)
     e = m.energy
-    out = [check("machine_energy.parts_sum_to_the_gas_work [J]", e.gas_work, e.parts, CLOSURE_TOL,
-                 time.perf_counter() - t0, 0)]
-    out[-1]["note"] = (f"gas work {e.gas_work / 1e6:.4f} MJ, parts {e.parts / 1e6:.4f} MJ ({e.closure:+.3%}); "
-                       + "; ".join(e.notes[1:]))
+    out = [check("machine_energy.parts_sum_to_the_gas_work_and_shortfall [J]", e.gas_work + e.shortfall, e.parts,
+                 CLOSURE_TOL, time.perf_counter() - t0, 0)]
+    out[-1]["note"] = (f"gas work {e.gas_work / 1e6:.4f} MJ, the gun's shortfall {e.shortfall / 1e6:.4f} MJ, parts "
+                       f"{e.parts / 1e6:.4f} MJ ({e.models_closure:+.3%}); " + "; ".join(e.notes))
     # the gun as the closed form: the reservoir open on the bore, massless gas, nothing ahead
     t0 = time.perf_counter()
     g = Gun(0.05, 10e6, 0.1, 3.0, 20.0, air_ahead="evacuated", gas_inertia="none")

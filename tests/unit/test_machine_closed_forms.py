@@ -112,13 +112,20 @@ def test_design_stop_keeps_the_shortest_absorber_within_its_limits():
 
 
 def test_chain_record_closes_on_the_rigid_chain():
+    """Each interface at its own restitution (as the designed amplifier's pads): the losses and what each
+    body keeps are the launch energy, and a uniform e is the launched chain's."""
     masses, names = [900.0, 300.0, 100.0], ["m1", "m2", "striker"]
-    r = chain_record(masses, names, 10.0, 0.8, "launched-chain")
+    run = rigid.designed_chain(masses, 10.0, [0.8, 0.5], [0.5, 0.3, 0.2], 1e-3)
+    r = chain_record(masses, names, 10.0, "launched-chain", run, "test")
     final = sum(0.5 * m * r.final_speeds[n] ** 2 for m, n in zip(masses, names))
     # the start's kinetic energy is the losses and what each body keeps (round-off)
     assert final + sum(r.losses.values()) == pytest.approx(0.5 * 900 * 10 ** 2, rel=1e-12)
-    assert r.striker_speed == pytest.approx(abs(rigid.launched_chain(masses, 10.0, 0.8).final[-1]), rel=1e-12)
-    assert all(v > 0 for v in r.losses.values())
+    assert all(v > 0 for v in r.losses.values()) and set(r.losses) == {"m1_m2", "m2_striker"}
+    # the first interface's loss in its first collision: M* dv^2 (1 - e^2) / 2 with M* = 900 * 300 / 1200
+    first = run.collisions[0]
+    assert first.left == 0 and 0.5 * 225.0 * 100.0 * (1 - 0.64) <= r.losses["m1_m2"] * (1 + 1e-12)
+    same = rigid.designed_chain(masses, 10.0, [0.8, 0.8], [0.5, 0.3, 0.2], 1e-3)
+    assert abs(same.final[-1]) == pytest.approx(abs(rigid.launched_chain(masses, 10.0, 0.8).final[-1]), rel=1e-12)
 
 
 def test_isentropic_work_and_sabot():
