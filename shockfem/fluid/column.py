@@ -67,6 +67,8 @@ GAP = 1e-12
 # n = 7, 30% off (400 cells; tests/unit/test_column.py).  Joukowsky's rho c V is 22% (n = 1) and 49%
 # (n = 7) under the Hugoniot at Mach 0.5: the column, not the acoustic formula, holds there
 MACH_LIMIT = 0.5
+# a column parted by less than this share of its volume has not cavitated (the void's round-off)
+PARTED = 1e-6
 # the energy accounts, by index in ``LiquidColumn.accounts``
 W_FLOOR, W_PISTON, OUT_MASS, OUT_MOMENTUM, OUT_ENERGY, JET_HEAT = range(6)
 ACCOUNTS = ("work of the floor [J]", "work of the piston [J]", "mass out [kg]", "momentum out [N s]",

@@ -55,7 +55,7 @@ from ..model import Model
 from ..scene.specs import Cavity
 from . import orifice
 from .cavity import WallNodes, node_areas, orifice_law, wall_forces
-from .column import MACH_LIMIT, ColumnLiquid, LiquidColumn, _interpolate, column_walls
+from .column import MACH_LIMIT, PARTED, ColumnLiquid, LiquidColumn, _interpolate, column_walls
 
 # the piston face must face the floor: the cosine between its net normal and -e above this (8 degrees)
 PARALLEL = 0.99
@@ -64,8 +64,6 @@ VOLUME_AGREEMENT = 0.02
 # the column's step against the dashpot's bound 2 m / (rho c a) on the walls' nodes: its forces are held over
 # it, a delay, stable below (pi / 2) m / (rho c a); a quarter of the bound keeps it below a third of that
 DELAY = 0.25
-# a column parted by less than this share of its volume has not cavitated (the void's round-off)
-PARTED = 1e-6
 
 
 class ColumnSource(ForceSource):

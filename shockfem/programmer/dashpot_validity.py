@@ -28,20 +28,19 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from ..fluid.column import MACH_LIMIT, PARTED
 from ..fluid.orifice import least_reynolds, valid_area_ratio
 from .concepts import INCOMPRESSIBLE_MACH
 from .liquids import MINERAL_OIL, DesignLiquid
 from .lumped_dashpot import LumpedDashpot
 
 LUMPED_MACH = INCOMPRESSIBLE_MACH
-COLUMN_MACH = 0.5
+COLUMN_MACH = MACH_LIMIT       # the column's own range (``fluid.column``)
 LUMPED_LIQUID_MASS = 0.1
 LUMPED_TRANSIT = 0.1
 # the share of the velocity change a design may deliver below the law's Reynolds range: even a
 # coefficient wrong by half there moves the velocity change by a twentieth of the band's 10% tolerance
 REYNOLDS_SHARE = 0.01
-# a column parted by less than this share of its volume has not cavitated (the void's round-off)
-PARTED = 1e-6
 
 
 @dataclass(frozen=True)
