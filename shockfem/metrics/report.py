@@ -67,7 +67,12 @@ def channel_metrics(t: np.ndarray, v: np.ndarray, v_body: np.ndarray, shock: dic
     dv_record = float(a.sum() * dt)
     out["velocity_change_record"] = dv_record
     out["velocity_change_rigid_body"] = dv_rigid
-    out["velocity_change_mismatch"] = (dv_record - dv_rigid) / dv_rigid if dv_rigid else float("nan")
+    if not dv_rigid:
+        # a point that vibrates on a body that ends as it began: no velocity change to compare with
+        out["not_measured"] = {"velocity_change_mismatch": "its body's velocity does not change (no velocity change "
+                                                           "to divide by)"}
+    else:
+        out["velocity_change_mismatch"] = (dv_record - dv_rigid) / dv_rigid
     if dv_rigid and abs(out["velocity_change_mismatch"]) > VELOCITY_CHANGE_MISMATCH:
         response = f"; CFC {cfc}'s response lasts about {1 / (2 * cfc * 2.0775):.3g} s" if cfc else ""
         notes.append(f"the {'filtered ' if cfc else ''}record's velocity change is "

@@ -237,3 +237,17 @@ def test_the_log_line_of_a_stage_from_rest_says_why_its_ratios_do_not_apply():
         assert "nan" not in line.lower() and "restitution 0.8000" in line
         assert f"velocity ratio not applicable: {NOT_MEASURED['velocity_ratio']}" in line
         assert f"vibration share not applicable: {NOT_MEASURED['vibration_share']}" in line
+
+
+def test_a_channel_on_a_body_that_ends_as_it_began_has_no_velocity_change_mismatch():
+    """A point that rings (a 0.2 ms half-sine of velocity) on a body whose velocity never changes: the record's
+    velocity change over its body's has nothing to divide by, so it is left out with the reason, and the
+    channel's metrics are strict JSON (no NaN)."""
+    import json
+    from shockfem.metrics.report import channel_metrics
+    t = np.linspace(0.0, 1e-3, 1001)
+    v = np.where((t > 2e-4) & (t < 4e-4), np.sin(np.pi * (t - 2e-4) / 2e-4), 0.0)
+    shock = {"cfc": 0, "spec": None, "srs_frequencies": None, "srs_points_per_octave": 6, "srs_q": 10.0}
+    m, _ = channel_metrics(t, v, np.zeros_like(t), shock)
+    assert "velocity_change_mismatch" not in m and "does not change" in m["not_measured"]["velocity_change_mismatch"]
+    json.dumps(m, allow_nan=False)
