@@ -169,7 +169,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
     The striker is at least ``striker_ratio`` times the payload and at least what carries the housing
-    (``carried_ratio``).  Returns a dict: the design, its runs (``column``, ``search_column``,
+    (``carried_ratio`` before the search; after it, the found handles are confirmed again at a heavier
+    striker while its own housing outweighs the one it has).  Returns a dict: the design, its runs (``column``, ``search_column``,
     ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
     ``steel`` by ``rule``), the striker (``striker``), the wall times, and ``verdict``: "inside" (band
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
@@ -198,6 +199,13 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     search_wall = time.perf_counter() - t0
     d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
     out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
+    for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
+        if out["striker"] is None or out["striker"]["carries"]:
+            break
+        striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
+        base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio)
+        d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
+        out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
                objective=float(res.fun))
     if echo:
@@ -269,7 +277,8 @@ def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liqui
     """The striker over the payload that carries the housing its own design needs: the larger of
     ``least_ratio`` and ``dashpot_design.striker_carrying`` (housing, liquid and structure) over the
     payload, the housing weighed on the column's run (``cells``) of the closed-form design at the bore
-    A0 for that striker.  A fixed point (a heavier striker closes slower, so the pressure and the
+    A0 for that striker (beyond the practical wall ratio, the heaviest housing a monobloc gives: the
+    design is then outside, and the striker its best case).  A fixed point (a heavier striker closes slower, so the pressure and the
     housing fall): ``STRIKER_ITERATIONS`` at most, to ``STRIKER_TOLERANCE``."""
     ratio = least_ratio
     for _ in range(STRIKER_ITERATIONS):
@@ -280,7 +289,7 @@ def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liqui
         except (RuntimeError, ValueError):        # the piston reached the floor: keep the last striker
             break
         w = weigh(d, run, steel, rule)
-        needed = max(least_ratio, striker_carrying(w["housing"], w["liquid"]) / d["payload_mass"])
+        needed = max(least_ratio, striker_carrying(w["housing_carried"], w["liquid"]) / d["payload_mass"])
         if not math.isfinite(needed):
             break
         converged = abs(needed / ratio - 1.0) <= STRIKER_TOLERANCE
@@ -295,7 +304,7 @@ def striker_report(d: dict, pulse: PulseSpec, weight: dict) -> dict:
     speed and the least closing speed the band takes (its velocity change at the band's floor, by the
     collision law at that striker: dV (1 + m / M)) [m/s]."""
     m, M = d["payload_mass"], d["striker_mass"]
-    carrying = striker_carrying(weight["housing"], weight["liquid"])
+    carrying = striker_carrying(weight["housing_carried"], weight["liquid"])
     dv = requirement(pulse.shape, pulse.peak, pulse.duration, m).velocity_change
     return {"mass": M, "carrying": carrying, "carries": bool(M >= carrying * (1.0 - STRIKER_TOLERANCE)),
             "ratio": M / m, "closing_speed": d["striker_speed"],

@@ -277,7 +277,8 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
     """The dashpot ``design`` (``dashpot_design``) weighed whole, its housing of ``HOUSING_STEELS[steel]``
     sized by ``rule`` (``wall_for``, ``floor_for``) for the pressure histories on its wall (the largest
     over the column) and on its floor [Pa] at times ``t`` [s], each times its own dynamic factor: a dict
-    of the parts [kg] and their sum, ``fixture``; the wall (``Wall``'s fields under ``wall_``), the floor,
+    of the parts [kg] and their sum, ``fixture``; ``housing_carried``, the housing or, beyond the practical
+    ratio, the heaviest a monobloc gives (what a striker can be asked to carry); the wall (``Wall``'s fields under ``wall_``), the floor,
     the factors, ``housing_holds`` (the wall within ``PRACTICAL_RATIO``), ``holdable_pressure`` (what
     the wall holds at that ratio), and the pin's stress (the wall's peak: ``pin_holds`` at S)."""
     s = HOUSING_STEELS[steel]
@@ -298,12 +299,15 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
         floor = floor_for(floor_peak * floor_factor, a, s)
     length = design["column"] + design.get("piston_thickness", 0.015)
     housing = wall.mass_per_length * length + s.density * math.pi * outer ** 2 * floor
+    # the heaviest housing a monobloc gives: the wall at the practical ratio, the same floor
+    practical = s.density * math.pi * a ** 2 * ((PRACTICAL_RATIO ** 2 - 1.0) * length + PRACTICAL_RATIO ** 2 * floor)
     pin = np.array(design["pin"], dtype=float)
     pin_volume = float(np.trapz(pin[:, 1].max() - pin[:, 1], pin[:, 0]))
     parts = {"piston": design["piston_mass"], "pin": s.density * pin_volume, "housing": housing,
              "liquid": design["liquid_mass"]}
     pin_pressure = max(peak, design.get("upstream_pressure", 0.0))
-    return {**parts, "fixture": sum(parts.values()), "outer_radius": outer, "wall_ratio": wall.ratio,
+    return {**parts, "fixture": sum(parts.values()), "housing_carried": min(housing, practical),
+            "outer_radius": outer, "wall_ratio": wall.ratio,
             "housing_holds": wall.within_practical, "governing": wall.governing, "rule": rule,
             **{f"wall_{k}": v for k, v in wall.as_dict().items()
                if k in ("pressure", "bore_von_mises", "first_yield", "shakes_down", "critical_flaw")},

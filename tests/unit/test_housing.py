@@ -120,7 +120,25 @@ def test_the_striker_carries_its_housing_and_sets_the_closing_speed():
     from shockfem.units import G0
     pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
     d = {"payload_mass": 6.0, "striker_mass": 400.0, "striker_speed": 500.0}
-    r = striker_report(d, pulse, {"housing": 300.0, "liquid": 10.0})
+    r = striker_report(d, pulse, {"housing_carried": 300.0, "liquid": 10.0})
     assert r["carrying"] == pytest.approx(372.0, rel=1e-12) and r["carries"]
     dv = requirement("rectangle", 10_000 * G0, 5e-3, 6.0).velocity_change
     assert r["least_closing_speed"] == pytest.approx(0.9 * dv * (1 + 6.0 / 400.0), rel=1e-9)
+
+
+def test_the_carried_striker_is_a_fixed_point_with_its_housing():
+    """``carried_ratio`` on the 12 lb article in oil at 40 cells: the striker it returns carries (within
+    ``STRIKER_TOLERANCE``) the housing of the closed-form design at that striker, and is heavier than
+    ten payloads (the housing is hundreds of kilograms at these pressures)."""
+    from shockfem.programmer import column_design as cd
+    from shockfem.programmer.column_dashpot import simulate_column
+    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, PulseSpec, dashpot_lumped, striker_carrying
+    from shockfem.programmer.liquids import MINERAL_OIL as oil
+    from shockfem.units import G0, LB
+    pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
+    ratio = cd.carried_ratio(pulse, 12 * LB, 0.0, oil, cells=40)
+    d = cd._design(pulse, 12 * LB, 0.0, oil, cd.closed_form_bore(pulse, 12 * LB, 0.0, oil, ratio), cd.START, ratio)
+    w = cd.weigh(d, simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, 40, oil.column()))
+    assert ratio > 10.0
+    assert d["striker_mass"] == pytest.approx(striker_carrying(w["housing_carried"], w["liquid"]),
+                                              rel=2 * cd.STRIKER_TOLERANCE)
