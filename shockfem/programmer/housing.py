@@ -53,7 +53,11 @@ The floor (the struck end's closure), a flat head forged with the wall: VIII-2 P
 UG-34), t = d sqrt(C P / (S E)), C = 0.17 for a head forged integral with the shell (check the table):
 near the clamped plate's elastic edge stress 3 P a^2 / (4 t^2) = S (Roark table 11.2 case 10b,
 C = 0.1875).  A floor thicker than a quarter of the bore's diameter is a thick plate, outside the
-formula's bending theory (reported as ``floor_over_diameter``).  Its own period, its first mode
+formula's bending theory (reported as ``floor_over_diameter`` and ``floor_thick``): a uniformly loaded
+clamped circular plate has the same bending moments in Mindlin's shear-deformable theory as in
+Kirchhoff's (Wang, Reddy & Lee, Shear Deformable Beams and Plates, 2000: check), so what a thick floor
+adds is the face pressure through its thickness and the stress at the floor's corner with the wall,
+which neither formula holds and a finite-element check must.  Its own period, its first mode
 clamped (Blevins, Formulas for Natural Frequency and Mode Shape, table 11-1 case 2,
 lambda^2 = 10.22):  T = 2 pi a^2 / (10.22 t) sqrt(12 rho (1 - nu^2) / E).
 
@@ -211,12 +215,12 @@ def wall_for(pressure: float, bore: float, steel: HousingSteel | str = HOUSING_S
     outer = bore * ratio
     within = ratio <= PRACTICAL_RATIO
     finite = math.isfinite(ratio)
-    vm = bore_von_mises(pressure, bore, outer) if finite and ratio > 1.0 else math.inf
+    walled = finite and ratio > 1.0                  # a wall at all (no pressure needs none)
+    vm = bore_von_mises(pressure, bore, outer) if walled else (0.0 if finite else math.inf)
+    shakes_down = pressure <= _shakedown_pressure(ratio, s.yield_stress) if walled else finite
     return Wall(rule, pressure, bore, outer, ratio, s.density * math.pi * (outer ** 2 - bore ** 2) if finite else math.inf,
                 within, _governing(rule, ratio) if within else f"no housing within Y_max = {PRACTICAL_RATIO:g}",
-                vm, vm > s.yield_stress,
-                finite and pressure <= _shakedown_pressure(ratio, s.yield_stress) if ratio > 1.0 else True,
-                critical_flaw(pressure, ratio, s))
+                vm, vm > s.yield_stress, shakes_down, critical_flaw(pressure, ratio, s))
 
 
 def _governing(rule: str, ratio: float) -> str:
@@ -311,7 +315,8 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
             "housing_holds": wall.within_practical, "governing": wall.governing, "rule": rule,
             **{f"wall_{k}": v for k, v in wall.as_dict().items()
                if k in ("pressure", "bore_von_mises", "first_yield", "shakes_down", "critical_flaw")},
-            "floor_thickness": floor, "floor_over_diameter": floor / (2.0 * a), "allowed_stress": allowed,
+            "floor_thickness": floor, "floor_over_diameter": floor / (2.0 * a),
+            "floor_thick": floor / (2.0 * a) > THICK_PLATE, "allowed_stress": allowed,
             "dynamic_factor": factor, "floor_dynamic_factor": floor_factor, "peak_pressure": peak, "steel": steel,
             "steel_source": s.source, "holdable_pressure": held_pressure(PRACTICAL_RATIO, allowed, rule),
             "pin_pressure": pin_pressure, "pin_holds": pin_pressure <= allowed}
