@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import math
 
+from scipy.optimize import brentq
+
 
 def base_pressure_ratio(u: float, c0: float, gamma: float) -> float:
     """p / p0 behind a projectile at ``u`` [m/s] (zero at and past the escape speed)."""
@@ -34,10 +36,12 @@ def _integral(u: float, c0: float, gamma: float) -> float:
     """I(u) = int_0^u s / pi(s) ds [m^2/s^2] (module docstring); inf at and past the escape speed."""
     a = (gamma - 1) / (2 * c0)
     k = 2 * gamma / (gamma - 1)
-    w = 1 - a * u
-    if w <= 0:
+    if a * u >= 1:
         return math.inf
-    return ((1 - w ** (1 - k)) / (1 - k) - (1 - w ** (2 - k)) / (2 - k)) / (a * a)
+    # 1 - w^j as -expm1(j log1p(-a u)): the two terms agree to first order in a u, so they are formed to
+    # round-off before they are subtracted
+    ln_w = math.log1p(-a * u)
+    return (-math.expm1((1 - k) * ln_w) / (1 - k) + math.expm1((2 - k) * ln_w) / (2 - k)) / (a * a)
 
 
 def travel(u: float, mass: float, pressure: float, area: float, c0: float, gamma: float) -> float:
@@ -51,3 +55,10 @@ def efficiency(u: float, c0: float, gamma: float) -> float:
     if u <= 1e-6 * c0:
         return 1.0
     return 0.5 * u * u / _integral(u, c0, gamma)
+
+
+def muzzle_speed(length: float, mass: float, pressure: float, area: float, c0: float, gamma: float) -> float:
+    """The speed [m/s] at which ``mass`` leaves a barrel of ``length`` [m] (``travel`` inverted)."""
+    top = 2 * c0 / (gamma - 1)
+    return float(brentq(lambda u: travel(u, mass, pressure, area, c0, gamma) - length, 0.0, top * (1 - 1e-12),
+                        xtol=1e-9))
