@@ -526,7 +526,7 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
     from ..output.figures import pyplot, save
     plt = pyplot()
     payloads = sorted({p.article for p in points})
-    fig, axes = plt.subplots(1, len(payloads), figsize=(4.4 * len(payloads), 4.2), squeeze=False)
+    fig, axes = plt.subplots(1, len(payloads), figsize=(max(4.4 * len(payloads), 9.0), 5.0), squeeze=False)
     # the pulse's velocity change over peak x duration (one shape on the map)
     per = points[0].velocity_change / (points[0].peak * points[0].duration)
     ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
@@ -554,9 +554,9 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
         for ax in axes[0]:
             ax.plot(T, dv / (per * T * 1e-3) / G0, style, color="#d95f02", lw=1)
         handles.append(axes[0][0].plot([], [], style, color="#d95f02", lw=1, label=label)[0])
-    fig.legend(handles=handles, fontsize=7, loc="lower center", ncol=4)
+    fig.legend(handles=handles, fontsize=7, loc="lower center", ncol=4, frameon=False)
     fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's\n"
                  "gun (p0 A L) over the direct gun's, closed form; the amplifier designed only where Q < 1", fontsize=9)
-    fig.subplots_adjust(bottom=0.3, top=0.84)
+    fig.subplots_adjust(bottom=0.34, top=0.84, wspace=0.3)
     save(fig, path)
     return path

@@ -196,7 +196,7 @@ def boundary_table(rep: Report, k: dict):
             [f"the best pad material of the library ({k['best_pad']}, sized at its rebound's sqrt(R))",
              k["best_pad_restitution"]],
             ["the design's chain (its effective e)", k["restitution"]]]
-    rep.table("premise_boundary", ["restitution", "e [-] (blank: never, not even e = 1)"], rows, ["{}", "{:.4f}"])
+    rep.table("premise_boundary", ["restitution", "e [-] (nan: never, not even at e = 1)"], rows, ["{}", "{:.4f}"])
     rep.text(f"The premise's boundary in closed form (`machine/boundary.py`, `shockfem verify premise_boundary` "
              "checks both of its closed forms against the event-driven rigid chain and the lumped simple-wave gun): "
              "a launched chain of n geometric masses that gains G at restitution e keeps G^2 m_n / m_1 = "
