@@ -51,7 +51,7 @@ from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, gun_thrust
 from .fixture import bore_radius, design_fixture
-from .boundary import TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
+from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import Layout, place
 from .spec import MachineSpec
@@ -349,6 +349,7 @@ def _closed_form_words(k: dict) -> str:
     def e_words(x):
         return f"{x:.3f}" if math.isfinite(x) else "never (not even at e = 1)"
     pays = math.isfinite(be["air"]) and k["restitution"] > be["air"]
+    air_he = k["break_even_air_against_helium"]
     return (f"the closed form (`machine.boundary`): the design's {k['masses']} masses at its effective e "
             f"{k['restitution']:.4f} keep {k['chain_efficiency']:.3g} of the launch energy "
             f"({k['chain_efficiency_elastic']:.3g} even at e = 1), so the amplifier always launches more than the "
@@ -357,7 +358,8 @@ def _closed_form_words(k: dict) -> str:
             f"e = {e_words(be['air'])} in air and {e_words(be['helium'])} in helium (the best launch speed and "
             f"mass count; at the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses "
             f"{e_words(spec['air'])} and {e_words(spec['helium'])}), and an air amplifier against a helium direct "
-            f"gun pays {'only above ' + e_words(k['break_even_air_against_helium']) if math.isfinite(k['break_even_air_against_helium']) else 'never'}; "
+            f"gun {'pays only above ' + e_words(air_he) if math.isfinite(air_he) else 'never pays'} (up to "
+            f"{MAX_MASSES} masses); "
             f"the best pad material of the library is sized at e = {k['best_pad_restitution']:.3f} "
             f"({k['best_pad']}, its rebound on rigid masses), the design's chain runs at {k['restitution']:.3f}: "
             + ("amplification pays" if pays else "amplification does not pay"))
