@@ -32,7 +32,7 @@ def machine(tmp_path_factory):
 
 
 def test_design_machine_refuses_bad_options():
-    p = shockfem("design-machine", "--article", "12 lb", "--peak", "banana", "--masses", "1", "--gas", "helium")
+    p = shockfem("design-machine", "--article", "12 lb", "--peak", "banana", "--masses", "1", "--gas", "xenon")
     assert p.returncode == 2
     for flag in ("--peak", "--masses", "--gas"):
         assert flag in p.stderr + p.stdout
