@@ -498,12 +498,14 @@ def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durati
 
 
 def boundary(points: list[MapPoint]) -> dict:
-    """The map's counts: each outcome's points, the points where the amplifier was eligible (designed), and
-    the smallest velocity change the amplifier wins at against the largest the direct gun wins at."""
+    """The map's counts: each outcome's points, the points where the amplifier was eligible (designed), each
+    arrangement's points within the limits, and the smallest velocity change the amplifier wins at against
+    the largest the direct gun wins at."""
     amp = [p for p in points if p.winner == "amplifier"]
     direct = [p for p in points if p.winner == "direct"]
     counts = {w: sum(p.winner == w for p in points) for w in WINNERS}
-    return {"counts": counts, "eligible": sum(p.eligible for p in points), "points": len(points),
+    within = {k: sum(getattr(p, k)["feasible"] for p in points) for k in ("amplifier", "direct", "flying")}
+    return {"counts": counts, "eligible": sum(p.eligible for p in points), "points": len(points), "within": within,
             "amplifier_wins": counts["amplifier"], "direct_wins": counts["direct"],
             "smallest_dv_amplifier_wins": min((p.velocity_change for p in amp), default=math.nan),
             "largest_dv_direct_wins": max((p.velocity_change for p in direct), default=math.nan)}

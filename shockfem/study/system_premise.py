@@ -247,7 +247,10 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     bd["lines"] = lines
     rep.value("map_boundary", bd)
     rep.table("map_counts", ["outcome", "points"], [[k, v] for k, v in bd["counts"].items()]
-              + [["the amplifier designed (Q < 1)", bd["eligible"]], ["all", bd["points"]]], ["{}", "{}"])
+              + [["the amplifier designed (Q < 1)", bd["eligible"]],
+                 ["the amplifier within the limits", bd["within"]["amplifier"]],
+                 ["the direct gun (b0) within the limits", bd["within"]["direct"]],
+                 ["the flying target within the limits", bd["within"]["flying"]], ["all", bd["points"]]], ["{}", "{}"])
     rep.text(_map_reading(bd, e))
     rep.text("The map's models (closed forms and lumped models per point, no finite elements): the striker is the "
              f"designed fixture's ratio ({m.fixture.striker_ratio:.3g} times the payload) at its measured "
