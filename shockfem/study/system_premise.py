@@ -265,8 +265,12 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
              "massless sabot (its lower bound; the sabot its bore would need is the column beside it). The map "
              "leaves the models' checked range everywhere but the design's point: the dashpot is designed and its "
              "validity checked only there, the amplifier's pads are not sized or run at the other points (their "
-             "restitution is carried over), its stresses and stops are not checked. A point where no arrangement "
-             "reaches the speed within the limits is 'none'.")
+             "restitution is carried over), its stresses and stops are not checked; the flying target is the "
+             "fixture designer's target ratio carried over, its dashpot not designed at the map's points"
+             + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
+                "its oil outweighs it; the oil's mass over the payload grows with the stroke, so at shorter, lower "
+                "pulses one may exist)") + ". A point where no arrangement reaches the speed within the limits is "
+             "'none'.")
     _restitution_effect(rep, m, target)
     return points
 
