@@ -530,7 +530,11 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
     from ..output.figures import pyplot, save
     plt = pyplot()
     payloads = sorted({p.article for p in points})
-    fig, axes = plt.subplots(1, len(payloads), figsize=(max(4.4 * len(payloads), 9.0), 5.0), squeeze=False)
+    fig = plt.figure(figsize=(max(4.4 * len(payloads), 9.0), 5.6))
+    grid = fig.add_gridspec(2, len(payloads), height_ratios=[5, 1.3])
+    axes = [[fig.add_subplot(grid[0, k]) for k in range(len(payloads))]]
+    key = fig.add_subplot(grid[1, :])
+    key.axis("off")
     # the pulse's velocity change over peak x duration (one shape on the map)
     per = points[0].velocity_change / (points[0].peak * points[0].duration)
     ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
@@ -549,7 +553,7 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
         ax.set_ylabel("peak [g]")
         ax.set_title(f"{a / LB:.0f} lb article", fontsize=9)
         ax.grid(alpha=0.3, which="both")
-    handles = [axes[0][0].scatter([], [], marker=m, color=c, label=k) for k, (m, c) in MARKS.items()]
+    handles = [key.scatter([], [], marker=m, color=c, label=k) for k, (m, c) in MARKS.items()]
     T = np.geomspace(min(ds) / 1.6, max(ds) * 2.2, 50)
     for label, dv in (lines or {}).items():
         if not math.isfinite(dv):
@@ -557,10 +561,9 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
         style = next(styles, "-")
         for ax in axes[0]:
             ax.plot(T, dv / (per * T * 1e-3) / G0, style, color="#d95f02", lw=1)
-        handles.append(axes[0][0].plot([], [], style, color="#d95f02", lw=1, label=label)[0])
-    fig.legend(handles=handles, fontsize=7, loc="lower center", ncol=4, frameon=False)
+        handles.append(key.plot([], [], style, color="#d95f02", lw=1, label=f"{label}: {dv:.3g} m/s")[0])
+    key.legend(handles=handles, fontsize=7, loc="center", ncol=4, frameon=False)
     fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's\n"
                  "gun (p0 A L) over the direct gun's, closed form; the amplifier designed only where Q < 1", fontsize=9)
-    fig.subplots_adjust(bottom=0.34, top=0.84, wspace=0.3)
     save(fig, path)
     return path
