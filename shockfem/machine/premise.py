@@ -282,7 +282,8 @@ def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: f
     least barrel any chamber gives)."""
     p, A, L = spec.max_pressure, math.pi * spec.max_bore ** 2 / 4, spec.max_barrel_length
     M = striker + sabot_mass(spec.max_bore, p, diameter)
-    out = {"launched": M, "constant_pressure_barrel": 0.5 * M * speed ** 2 / (p * A),
+    out = {"limits": {"barrel": L, "bore": spec.max_bore, "pressure": p}, "launched": M,
+           "constant_pressure_barrel": 0.5 * M * speed ** 2 / (p * A),
            "constant_pressure_speed": math.sqrt(2 * p * A * L / M)}
     for gas in ("air", "helium"):
         g = GASES[gas]
@@ -324,8 +325,10 @@ def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, reme
     if a_ok:
         return [f"the direct gun (b) has no gun within the limits and the amplifier (a) is feasible "
                 f"({a.machine_mass / 1e3:.3g} t, {a.machine_length:.3g} m long): amplification pays"]
-    words = [f"NEITHER arrangement is feasible within the limits ({b.barrel / FT:.3g} ft, {b.bore / IN:.3g} in, "
-             f"{b.reservoir_pressure / PSI:,.0f} psi at (b)'s gun): the amplifier (a) misses its launch energy "
+    lim = (remedies or {}).get("limits")
+    within = (f" ({lim['barrel'] / FT:.3g} ft, {lim['bore'] / IN:.3g} in, {lim['pressure'] / PSI:,.0f} psi)"
+              if lim else "")
+    words = [f"NEITHER arrangement is feasible within the limits{within}: the amplifier (a) misses its launch energy "
              f"{_times(a.required_energy, a.launch_energy)} ({a.notes[-1]}); the direct gun (b) reaches "
              f"{b.launch_speed:.4g} of the {b.striker_speed:.4g} m/s asked ({b.launch_energy / 1e6:.4g} of "
              f"{b.required_energy / 1e6:.4g} MJ)"]

@@ -106,10 +106,11 @@ def test_verdict_wording():
     b = _arrangement("(b) direct striker", 430.0, 387.0, False)
     b0 = _arrangement("(b0) direct striker, massless sabot", 430.0, 430.0, True)
     c = _arrangement("(c) flying target", math.nan, math.nan, False)
-    remedies = {"launched": 500.0, "constant_pressure_barrel": 3.0, "constant_pressure_speed": 600.0,
+    remedies = {"limits": {"barrel": 20 * FT, "bore": 36 * IN, "pressure": 5000 * PSI}, "launched": 500.0, "constant_pressure_barrel": 3.0, "constant_pressure_speed": 600.0,
                 "air": {"barrel": 12.0, "speed": 390.0}, "helium": {"barrel": 7.0, "speed": 460.0}}
     words = verdict(a, b, c, b0, None, remedies)
-    assert "NEITHER arrangement is feasible" in words and "not a machine" in words
+    assert "NEITHER arrangement is feasible within the limits (20 ft, 36 in, 5,000 psi)" in words
+    assert "not a machine" in words
     assert "better machine" not in words and "does not pay" not in words
     assert f"{12.0 / FT:.3g} ft in air" in words and f"{7.0 / FT:.3g} ft in helium" in words
     assert "387 of the 430 m/s" in words
