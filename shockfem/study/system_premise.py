@@ -157,7 +157,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     rep.heading(f"8. The premise: the amplifier against a direct striker and a flying target ({lb} lb)")
     echo("  (b) the striker fired directly")
     a = P.amplifier_arrangement(m)
-    b = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], bores=cfg["sabot_bores"])
+    b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
     c, target = P.flying_target_arrangement(m.spec, m.fixture)
