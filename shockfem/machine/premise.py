@@ -13,23 +13,29 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
   more), fired by the white paper's own gun (12 in bore, 2000 psi, 20 ft^3, ``launcher.gun.white_paper_gun``)
   with as long a barrel as the speed needs.
 
-Each is laid out with its stops designed as absorbers (``layout.place``) and weighed the same way.
+Each is laid out with its stops designed as absorbers (``layout.place``) and weighed the same way.  (b0),
+(b) with a massless sabot, is the direct gun's lower bound and never a machine.  ``verdict`` says, from the
+arrangements' numbers, which holds within the limits; when neither does, by how much and what would
+change it for the direct gun (``direct_remedies``: the barrel in air and in helium); and what the closed
+form (``closed_form``, ``boundary``) says: the restitution above which any chain needs less gun than the
+direct one, against the chain's and the best pad's.
 
 ``premise_map`` then asks where each wins over pulse durations, peaks and payloads, cheaply: the striker
 from the rigid collision law (``programmer.dashpot_design.striker_speed``) at the designed fixture's
-striker ratio and its measured restitution; the amplifier's masses from the closed form (``amplifier.gain
-.design``) at the designed amplifier's effective restitution; each gun by the lightest-launcher design (one
-start) or, for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The
-direct gun there carries the striker in a massless sabot (its lower bound); the sabot its bore and
-pressure would need (``sabot_mass``) is reported beside it, and a point the direct gun wins only without
-it is marked so.  (c) counts only where its barrel is within the spec's barrel limit.  The
-restitution the map's amplifier runs at is the caller's (the system study passes the designed
-amplifier's effective e, the rigid chain at its pads' finite-element restitutions at the spec's point,
-carried over to every point: a pad sized and run at another point would restitute otherwise).  A machine's
-figure of merit there is its gun (barrel and tank) and its moving masses; the stops and frame, which the
-full design adds, are left out.  Range: the fixture is designed (and its validity checked) only
-at the spec's point; elsewhere its ratio and restitution are carried over, and the amplifier's pads and
-stresses are not checked (only its gain).
+striker ratio and its measured restitution; the amplifier as the launched chain at its launch speed and
+mass count of least gun (``boundary.best_chain``), its masses by the closed form (``amplifier.gain
+.design``), designed only where it needs less gun than the direct one (elsewhere the point is 'nothing to
+amplify', not a direct win); each gun by the lightest-launcher design (one start) or, for (c), the white
+paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
+striker in a massless sabot (its lower bound); the sabot its bore and pressure would need (``sabot_mass``)
+is reported beside it, and a point the direct gun wins only without it is marked so.  (c) counts only
+where its barrel is within the spec's barrel limit.  The restitution the map's amplifier runs at is the
+caller's (the system study passes the designed amplifier's effective e, carried over to every point: a pad
+sized and run at another point would restitute otherwise).  A machine's figure of merit there is its gun
+(barrel and tank) and its moving masses; the stops and frame, which the full design adds, are left out.
+Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its ratio
+and restitution are carried over, the flying target's dashpot is not designed, and the amplifier's pads
+and stresses are not checked (only its gain).
 """
 from __future__ import annotations
 
