@@ -31,3 +31,10 @@ def test_the_least_velocity_change_is_the_checked_trapezoids(tmp_path):
         _, band = band_of(t, a, "rectangle")
         assert band.passed == passes, scale
         assert (dv >= bounds["least_velocity_change"]) == passes
+
+
+@pytest.mark.parametrize("shape, by_hand", [("rectangle", 0.9 * 0.9 * PEAK * DURATION),       # as the trapezoid
+                                            ("half-sine", 0.9 * 2 * PEAK * DURATION / np.pi)])
+def test_the_pulse_specs_least_velocity_change_by_hand(shape, by_hand):
+    from shockfem.programmer.dashpot_design import PulseSpec
+    assert PulseSpec(shape, PEAK, DURATION).least_velocity_change() == pytest.approx(by_hand, rel=1e-12)
