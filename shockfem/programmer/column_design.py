@@ -2,8 +2,9 @@
 (``column_dashpot``), the orifice as Idelchik's sharp-edged one with the velocity of approach and the
 jet's reaction, the bore a design variable, and every design checked against the laws' ranges.
 
-Why the bore is a handle and not the article's calibre.  At the largest area ratio the law holds for
-(n_max = 0.5625, ``fluid.orifice.VALID_AREA_RATIO``) the least force the orifice makes per unit of
+Why the bore is a handle and not the article's calibre.  At the largest area ratio the design allows
+(n_max, a parameter: by default 0.5625, ``fluid.orifice.VALID_AREA_RATIO``, the law's checked data;
+wider, the law is extrapolated and every run says so) the least force the orifice makes per unit of
 piston area is fixed by the closing speed V alone (``least_force_per_area``: the Borda-Carnot loss
 rho (u_j - u1)^2 / 2 at u_j = V / (Cc n)), so a bore of area A throttles at least q(V) A at contact.
 The payload's force m A_g and q(V) set the bore, A0 = m A_g / q(V) (``bore_for_force``): a wider bore
@@ -31,7 +32,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize
 
 from ..amplifier.interfaces import reduced_mass
-from ..fluid.orifice import AREA_RATIO, OrificeLaw, jet_reaction, mass_flow, piston_force
+from ..fluid.orifice import AREA_RATIO, VALID_AREA_RATIO, OrificeLaw, jet_reaction, mass_flow, piston_force
 from ..metrics.shapes import TOLERANCE
 from .column_dashpot import CELLS, simulate_column
 from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RATIO, PulseSpec, carrier_density,
@@ -102,22 +103,23 @@ def contact_shock(V: float, a: float, A: float, liquid, law: OrificeLaw = AREA_R
 
 
 def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, factor: float = 2.0,
-                           allowed: float | None = None) -> tuple:
+                           allowed: float | None = None, law: OrificeLaw = AREA_RATIO) -> tuple:
     """The closing speed [m/s] above which no wall of ``steel`` holds the front a piston makes at
     contact with its orifice at the law's largest area ratio (the least front any pin in the law's range
     makes), that front rising as a step on the wall (dynamic ``factor`` 2): (speed, the front [Pa] at it,
-    the most the wall holds [Pa]); ``allowed``: the wall's stress [Pa] if not the steel's design stress."""
+    the most the wall holds [Pa]); ``allowed``: the wall's stress [Pa] if not the steel's design stress;
+    ``law``: the orifice law with the design's largest area ratio."""
     held = (allowed or HOUSING_STEELS[steel].allowed_stress()) / math.sqrt(3.0) / factor
     A = 1.0e-3
-    speed = brentq(lambda V: contact_shock(V, AREA_RATIO.largest_ratio * A, A, liquid)[0] - held, 1.0, 3000.0)
+    speed = brentq(lambda V: contact_shock(V, law.largest_ratio * A, A, liquid, law)[0] - held, 1.0, 3000.0)
     return speed, held, held * factor
 
 
-def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio):
+def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio, law=AREA_RATIO):
     bore_scale, column_over_stroke, force_factor, speed_factor = h
     d = dashpot_design(pulse, article_mass, bore_scale * base_radius, (1.0, column_over_stroke, force_factor,
                                                                         speed_factor),
-                       seat_mass, striker_ratio, AREA_RATIO, liquid)
+                       seat_mass, striker_ratio, law, liquid)
     d["handles"] = dict(zip(HANDLES, map(float, h)))
     return d
 
@@ -127,29 +129,30 @@ def _objective_of(pulse, band, limits):
     banded = (10.0 * (band.worst_excess + max(0.0, abs(band.velocity_change_error) - allowed))
               + abs(band.velocity_change_error) + 0.1 * band.worst_deviation)
     outside = sum(math.log(lim.value / lim.limit) for lim in limits
-                  if ("column" in lim.models or "lumped" not in lim.models) and not lim.holds)
+                  if lim.vetoes and ("column" in lim.models or "lumped" not in lim.models) and not lim.holds)
     return banded + PENALTY * outside
 
 
 def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0.0,
                      liquid: DesignLiquid = MINERAL_OIL, striker_ratio: float = STRIKER_RATIO,
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
-                     steel: str = HOUSING_STEEL, echo=None) -> dict:
+                     steel: str = HOUSING_STEEL, echo=None, largest_ratio: float = VALID_AREA_RATIO) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
     Returns a dict: the design, its runs (``column``, ``search_column``, ``lumped``), their band checks
     and validity checks, the fixture's mass (``housing.fixture_mass`` on ``steel``), the wall times, and
     ``verdict``: "inside" (band passed, every check of the column holds, a housing holds it), "outside
-    the laws' ranges", "no housing holds it", or "fails the band"."""
-    end = pulse.record_end()
-    base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio)
+    the laws' ranges", "no housing holds it", or "fails the band".  ``largest_ratio``: the widest the
+    pin may open (n_max; beyond ``VALID_AREA_RATIO`` the law is extrapolated, which the checks flag)."""
+    end, law = pulse.record_end(), OrificeLaw(largest_ratio=largest_ratio)
+    base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
     liquid_column = liquid.column()
 
     def objective(h):
         if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
             return 100.0
-        d = _design(pulse, article_mass, seat_mass, liquid, base, h, striker_ratio)
+        d = _design(pulse, article_mass, seat_mass, liquid, base, h, striker_ratio, law)
         try:
             run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
         except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
@@ -162,7 +165,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     res = minimize(objective, np.array(START), method="Nelder-Mead",
                    options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
     search_wall = time.perf_counter() - t0
-    d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
+    d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
     out = confirm(d, pulse, liquid, search_cells, cells, steel)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
                objective=float(res.fun))
