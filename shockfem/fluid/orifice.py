@@ -11,10 +11,11 @@ where the jet mixes):
 
 the flow-meter form with the velocity of approach (ISO 5167-1's 1 / sqrt(1 - beta^4) with the jet's
 own contraction).  The contraction of a thin sharp-edged orifice against the area ratio is
-Idelchik's (Handbook of Hydraulic Resistance, 3rd ed., 1994, diagram 4-9, thin-walled orifice with
-l / d_h <= 0.015 and sharp edges, Re = w0 d_h / nu > 1e5; the diagram tabulates f0 / f1 from 0 to 1,
-check: recalled): the total-pressure loss referred to the passage's speed, with the jet entering a
-large space (f0 / f2 -> 0),
+Idelchik's (Handbook of Hydraulic Resistance, 3rd ed., 1994, the thin-walled sharp-edged orifice,
+l / d_h <= 0.015, Re = w0 d_h / nu > 1e5, over f0 / f1 from 0 to 1; cited here as diagram 4-9, check
+the number: the Modelica Standard Library's Fluid.Dissipation cites 4-9 for the sudden contraction
+and 4-15 for the thick-edged orifice): the total-pressure loss referred to the passage's speed, with
+the jet entering a large space (f0 / f2 -> 0),
 
     zeta = (1 + 0.707 sqrt(1 - n))^2 / n^2       p + rho u1^2 / 2 = zeta rho u1^2 / 2
 
@@ -35,8 +36,8 @@ Where each part of the range comes from (every run checks them, ``programmer.das
   the law outside its checked data (``extrapolated``: flagged, not vetoed).
 - the plate: a thin orifice has a land l / d_h <= ``THIN_LAND`` (Idelchik 4-9; ISO 5167-2's e <= 0.02 D
   is the meter's stricter form).  A thicker one lets the jet reattach in the bore of the orifice and
-  passes more flow unless it cavitates (Idelchik's thick-edged orifice, diagram 4-12: up to 1.36 times the
-  thin plate's coefficient, ``thick_discharge_ratio``).
+  passes more flow unless it cavitates (Idelchik's thick-edged orifice, diagrams 4-12 and 4-15: up to
+  1.36 times the thin plate's coefficient, ``thick_discharge_ratio``).
 - cavitation: a thick orifice whose vena contracta falls to the vapour pressure chokes; its flow is
   Nurick's Cd = Cc sqrt(K), K = (p1 - p_v) / (p1 - p2) (Nurick, Orifice cavitation and its effect on
   spray mixing, J. Fluids Eng. 98 (1976) 681; check: recalled), whatever its land, the contraction
@@ -54,11 +55,12 @@ Where each part of the range comes from (every run checks them, ``programmer.das
   viscous shift is Lichtarowicz, Duggins & Markland's (Discharge coefficients for incompressible
   non-cavitating flow through long orifices, J. Mech. Eng. Sci. 7 (1965) 210), fitted to lands
   2 <= l / d <= 10 down to Re ~ 10 and taken as the estimate of the shift for thin plates and longer
-  lands too (check: recalled): 1/Cd = 1/Cd_u + 20 (1 + 2.25 l / d) / Re, Re = d sqrt(2 dp / rho) / nu on the orifice's
-  own hydraulic diameter and ideal jet speed (``viscous_coefficient_ratio``); for a pin's annulus the
-  length scale is the gap's hydraulic diameter 2 (r_hole - r_pin) (``annulus_hydraulic_diameter``),
-  not the bore, since the boundary layers that shift the coefficient grow on the gap's walls.  What a
-  run may leave to these shifts is a small share of its velocity change (``programmer.dashpot_validity``).
+  lands too (check: recalled): 1/Cd = 1/Cd_u + 20 (1 + 2.25 l / d) / Re, Re = d sqrt(2 dp / rho) / nu
+  on the orifice's own hydraulic diameter and ideal jet speed (``viscous_coefficient_ratio``); for a
+  pin's annulus the length scale is the gap's hydraulic diameter 2 (r_hole - r_pin)
+  (``annulus_hydraulic_diameter``), not the bore, since the boundary layers that shift the coefficient
+  grow on the gap's walls.  What a run may leave to these shifts is a small share of its velocity
+  change (``programmer.dashpot_validity``).
 
 The jet's momentum: a control volume moving with the piston from the passage (pressure p, speed u1)
 to the jet's contracted section (0 gauge, u_j) gives the force of the liquid on the piston
@@ -216,21 +218,25 @@ def extrapolated(n: float) -> bool:
     return n > VALID_AREA_RATIO
 
 
-# Idelchik's thin-walled orifice (diagram 4-9): the land over the hydraulic diameter at most this (check)
+# Idelchik's thin-walled orifice: the land over the hydraulic diameter at most this (his thick-edged
+# orifice's formula starts above it, diagram 4-15)
 THIN_LAND = 0.015
-# Idelchik's thick-edged orifice (diagram 4-12, check: recalled): the jet reattaches fully at l / d_h = 2.4
+# Idelchik's thick-edged orifice (3rd ed., tau from diagram 4-12, the loss from diagram 4-15, for l / d_h > 0.015
+# and Re > 1e3, as the Modelica Standard Library's Fluid.Dissipation dp_thickEdgedOverall writes them): the jet
+# reattaches fully at l / d_h = 2.4
 REATTACHED_LAND = 2.4
 # the inlet's and the outlet's loss of a thick-edged orifice into a large space, referred to its own
-# speed, at n -> 0 (Idelchik 4-12's 0.5 (1 - n)^0.75 and the jet's whole head), and the land's friction
+# speed, at n -> 0 (Idelchik 4-15's 0.5 (1 - n)^0.75, and the jet's whole head for its (1 - n)^2, the jet
+# entering a large space), and the land's friction lambda (Idelchik's 0.02)
 INLET_LOSS, EXIT_LOSS, LAND_FRICTION = 0.5, 1.0, 0.02
 
 
 def thick_edge_excess(land: float) -> float:
     """Idelchik's tau(l / d_h) of a thick-edged orifice (diagram 4-12): the loss of the jet that has not
-    yet reattached, (2.4 - l) 10^-phi(l), phi = 0.25 + 0.535 l^8 / (0.05 + l^7); 0 past 2.4."""
+    yet reattached, (2.4 - l) 10^-phi(l), phi = 0.25 + 0.535 l^8 / (0.05 + l^8); 0 past 2.4."""
     if land >= REATTACHED_LAND:
         return 0.0
-    phi = 0.25 + 0.535 * land ** 8 / (0.05 + land ** 7)
+    phi = 0.25 + 0.535 * land ** 8 / (0.05 + land ** 8)
     return (REATTACHED_LAND - land) * 10.0 ** -phi
 
 

@@ -80,11 +80,13 @@ def test_the_fixed_law_cuts_the_closed_form_metering_pin():
 
 
 def test_idelchiks_thick_edged_orifice_by_hand():
-    """Idelchik 4-12's tau = (2.4 - l) 10^-phi, phi = 0.25 + 0.535 l^8 / (0.05 + l^7): 2.4 x 10^-0.25 = 1.3496
-    at l / d_h = 0; 1.4 x 10^-(0.25 + 0.535 / 1.05) = 0.2436 at 1; 0 reattached.  Into a large space the
+    """Idelchik 4-12's tau = (2.4 - l) 10^-phi, phi = 0.25 + 0.535 l^8 / (0.05 + l^8) (as the Modelica Standard
+    Library's Fluid.Dissipation writes it): 2.4 x 10^-0.25 = 1.3496 at l / d_h = 0; 1.4 x 10^-(0.25 + 0.535 / 1.05)
+    = 0.2436 at 1; at 0.5, 1.9 x 10^-(0.25 + 0.535 / (0.05 x 256 + 1)) = 0.9772; 0 reattached.  Into a large space the
     coefficient over the thin one's is sqrt((0.5 + 1.3496 + 1) / (0.5 + 1 + 0.02 x 2.4)) = 1.3568 at 2.4."""
     assert orifice.thick_edge_excess(0.0) == pytest.approx(2.4 * 10 ** -0.25, rel=1e-12)
     assert orifice.thick_edge_excess(1.0) == pytest.approx(1.4 * 10 ** -(0.25 + 0.535 / 1.05), rel=1e-12)
+    assert orifice.thick_edge_excess(0.5) == pytest.approx(1.9 * 10 ** -(0.25 + 0.535 / (0.05 * 256 + 1)), rel=1e-12)
     assert orifice.thick_edge_excess(3.0) == 0.0
     assert orifice.thick_discharge_ratio(0.0) == 1.0
     assert orifice.thick_discharge_ratio(2.4) == pytest.approx(math.sqrt((1.5 + 2.4 * 10 ** -0.25) / 1.548), rel=1e-12)
