@@ -40,8 +40,8 @@ Where each part of the range comes from (every run checks them, ``programmer.das
   1.36 times the thin plate's coefficient, ``thick_discharge_ratio``).
 - cavitation: a thick orifice whose vena contracta falls to the vapour pressure chokes; its flow is
   Nurick's Cd = Cc sqrt(K), K = (p1 - p_v) / (p1 - p2) (Nurick, Orifice cavitation and its effect on
-  spray mixing, J. Fluids Eng. 98 (1976) 681-687; the formula recalled, check), whatever its land, the contraction
-  Cc that of the sharp inlet.  Below about K = (Cd_thick / Cc)^2 (1.8 for a long land) it cavitates:
+  spray mixing, J. Fluids Eng. 98 (1976) 681-687; the formula recalled, check), whatever its land,
+  the contraction Cc that of the sharp inlet.  Below about K = (Cd_thick / Cc)^2 (1.8 for a long land) it cavitates:
   at a dashpot's hundreds of MPa into the atmosphere K - 1 is below 1e-3, so the flow is choked and
   the thin law's Cc holds within sqrt(K) - 1 (``coefficient_ratio``).  ISO 5167's single-phase
   condition fails in every such design; Nurick's form is what replaces it.
