@@ -168,7 +168,7 @@ def dashpot_lumped(d: dict) -> LumpedDashpot:
     return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
                          d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), liquid.density,
                          liquid.bulk_modulus, OIL["discharge"], liquid.tait_exponent,
-                         law=OrificeLaw(**d["orifice_law"]))
+                         law=OrificeLaw(**d["orifice_law"]), orifice_land=d.get("piston_thickness", 0.0))
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,
