@@ -36,3 +36,13 @@ def test_the_base_height_is_where_the_scene_stands_the_article():
     scene = dashpot_scene(d, "rectangle", {"h_article": 0.006, "h_pad": 0.03, "end_margin": 1.3})
     piston = next(b for b in scene["bodies"] if b["name"] == "piston")
     assert piston["position"][1] + piston["length"] == pytest.approx(article_base_height(d), rel=1e-15)
+
+
+def test_a_rings_radial_speed_is_read_from_its_energy_not_its_mean_velocity():
+    """An axisymmetric ring thrown outward has no mean radial velocity (by symmetry): what it moves at
+    besides its axial speed is sqrt(2 KE / m - v^2).  A 2 kg ring at 500 m/s axially and 100 m/s
+    radially everywhere: KE = (500^2 + 100^2) kg m^2/s^2."""
+    from shockfem.study.fixture.runs import speed_off_translation
+    ring = SimpleNamespace(summary={"bodies": {"ring": {"mass": 2.0, "velocity_final": [0.0, 500.0],
+                                                        "kinetic_energy": 500.0 ** 2 + 100.0 ** 2}}})
+    assert speed_off_translation(ring, "ring") == pytest.approx(100.0, rel=1e-12)
