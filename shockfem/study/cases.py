@@ -48,18 +48,26 @@ def _completed_before(path: str, scene) -> bool:
     return status == "completed" and ran == json.loads(json.dumps(to_plain(scene)))
 
 
+def run_wall(summary: dict, elapsed: float, read_back: bool) -> float:
+    """A case's wall time [s] as a study's tables give it: what running it took, or for a case read back
+    from an earlier run its run's own (``summary.json``'s ``wall_time_s``, the solver's), not the read's."""
+    return float(summary.get("wall_time_s", elapsed)) if read_back else elapsed
+
+
 def run_case(name: str, raw: dict, out_dir: str, echo) -> tuple[CaseRun | None, float, str]:
     """Run a case's scene into ``out_dir/name`` (the run directory of ``shockfem run``: XDMF fields,
     histories, summary); returns (the run or None, wall time, status).  With ``RESUME_ENV`` set, a
-    case completed before is read back and one stopped with a checkpoint resumed."""
+    case completed before is read back (its wall time its run's, ``run_wall``) and one stopped with a
+    checkpoint resumed."""
     t0 = time.perf_counter()
     path = os.path.join(out_dir, name)
     scene = resolve(raw)
     resuming = os.environ.get(RESUME_ENV) == "1"
     # a study's cases run for minutes: someone at a terminal sees each one's progress bar; logs do not
     watched = sys.stderr.isatty()
+    read_back = resuming and _completed_before(path, scene)
     try:
-        if resuming and _completed_before(path, scene):
+        if read_back:
             echo(f"  {name}: completed before, read back")
         elif resuming and os.path.exists(os.path.join(path, "checkpoint", "latest.json")):
             echo(f"  {name}: resumed from its checkpoint")
@@ -75,7 +83,7 @@ def run_case(name: str, raw: dict, out_dir: str, echo) -> tuple[CaseRun | None, 
     with open(os.path.join(path, "summary.json")) as fh:
         summary = json.load(fh)
     result = CaseRun(path, summary, read_history(os.path.join(path, "history.csv"))[0])
-    return result, time.perf_counter() - t0, summary["status"]
+    return result, run_wall(summary, time.perf_counter() - t0, read_back), summary["status"]
 
 
 def _text(path: str) -> str | None:
@@ -131,11 +139,12 @@ def run_cases(cases: list[tuple[str, dict]], out_dir: str, echo,
     out = []
     for (name, _), row in zip(cases, _run_table(cases, out_dir, factors, echo)):
         _say(echo, name, row)
-        path, result = os.path.join(out_dir, name), None
+        path, result, wall = os.path.join(out_dir, name), None, float(row["wall time [s]"])
         if _status(row) == "completed":
             with open(os.path.join(path, "summary.json")) as fh:
                 result = CaseRun(path, json.load(fh), read_history(os.path.join(path, "history.csv"))[0])
-        out.append((result, float(row["wall time [s]"]), _status(row)))
+            wall = run_wall(result.summary, wall, row["how"].startswith("skipped"))
+        out.append((result, wall, _status(row)))
     return out
 
 

@@ -16,11 +16,18 @@ from ..output.figures import save
 
 
 def _plain(value):
-    """A JSON value for a table cell or a reading's number (NaN becomes null)."""
+    """A JSON value for a table cell or a reading (NaN becomes null), through the dicts, lists and tuples
+    a reading may nest its numbers in."""
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
     if isinstance(value, float) and not math.isfinite(value):
         return None
-    if hasattr(value, "item"):          # numpy scalars
+    if hasattr(value, "item") and getattr(value, "size", 1) == 1:      # numpy scalars
         return _plain(value.item())
+    if hasattr(value, "tolist"):                                        # numpy arrays
+        return _plain(value.tolist())
     return value
 
 

@@ -36,3 +36,17 @@ def test_run_pictures_show_what_the_run_drew(tmp_path):
     assert "No peak_stress.png of the other run in `half/`" in text
     assert "No peak_stress.png or final_shape.png of the third run in `none/`" in text
     assert "](none/" not in text and "No " not in text.split("The other run,")[0]
+
+
+def test_a_readings_nested_numpy_values_are_written_as_json(tmp_path):
+    """A reading may be a dict of a design's numbers as numpy computed them (a housing's verdict a numpy
+    bool inside a nested dict): results.json holds them as plain JSON, NaN as null."""
+    import json
+    import numpy as np
+    from shockfem.study.report import Report
+    rep = Report(str(tmp_path), "t")
+    rep.value("fixture", {"wall": {"holds": np.bool_(True), "ratio": np.float64(3.5), "nan": np.float64("nan")},
+                          "masses": [np.float64(1.5), (np.int64(2), np.bool_(False))]})
+    with open(tmp_path / "results.json") as fh:
+        got = json.load(fh)["values"]["fixture"]
+    assert got == {"wall": {"holds": True, "ratio": 3.5, "nan": None}, "masses": [1.5, [2, False]]}
