@@ -191,14 +191,23 @@ def block_constants(S, row, B, cells, start, count, cell_material, params, one_r
 
 
 @njit(cache=True, fastmath=True, inline="always")
+def lane_index(row, B, k):
+    """The index in ``S`` of row ``row`` of lane k, unsigned: numba wraps a signed index around (a compare and
+    an add on every load and store), and in the gather and scatter below, loops over the nodes and their
+    components, LLVM packs those wrap-arounds into vector registers and takes each index out of them again
+    (docs/performance.md, "The element passes' block driver")."""
+    return np.uint64(row * B) + np.uint64(k)
+
+
+@njit(cache=True, fastmath=True, inline="always")
 def gather_nodes(S, B, k, c, nodes, gdim, x_row, v_row, dofmap, x_np1, v_half):
     """Cell c's node positions and velocities into lane k: component i of node a at rows
     ``x_row + i * nodes + a`` and ``v_row + i * nodes + a``."""
     for a in range(nodes):
         node = np.uint32(dofmap[c, a])
         for i in range(gdim):
-            S[(x_row + i * nodes + a) * B + k] = x_np1[node, i]
-            S[(v_row + i * nodes + a) * B + k] = v_half[node, i]
+            S[lane_index(x_row + i * nodes + a, B, k)] = x_np1[node, i]
+            S[lane_index(v_row + i * nodes + a, B, k)] = v_half[node, i]
 
 
 @njit(cache=True, fastmath=True, inline="always")
@@ -208,7 +217,7 @@ def scatter_forces(S, B, k, c, nodes, gdim, f_row, dofmap, f):
     for a in range(nodes):
         node = np.uint32(dofmap[c, a])
         for i in range(gdim):
-            f[node, i] += S[(f_row + i * nodes + a) * B + k]
+            f[node, i] += S[lane_index(f_row + i * nodes + a, B, k)]
 
 
 @njit(cache=True, fastmath=True, inline="always")
