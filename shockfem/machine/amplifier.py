@@ -34,6 +34,7 @@ from scipy.optimize import brentq
 
 from ..amplifier import rigid
 from ..amplifier.gain import cylinder_size, design
+from ..programmer.housing import HOUSING_STEELS
 from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
 from .limits import Limit, broken
@@ -46,6 +47,8 @@ STRUCTURAL_DAMPING = 0.02
 # the effective restitution settles when an iteration moves it by less than this: the coarse runs'
 # restitutions move by some 0.005 when the geometry moves by a rounding (``pads.FIGURES``)
 E_TOL, MAX_ITERATIONS = 5e-3, 6
+# the masses are solved, at the measured restitutions, within this of the iterations' last e
+SOLVE_SPAN = 0.1
 # a stage's struck body moves about this share of v tau before its pad lets go (the amplifier study's
 # sequenced gaps)
 SEQUENCED = 0.6
@@ -213,22 +216,25 @@ def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, e
 
 
 def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=None, resolution: str | None = None,
-                     cache_dir: str | None = None) -> Amplifier:
+                     cache_dir: str | None = None, first_diameter: float | None = None, start: float | None = None,
+                     iterations: list | None = None) -> Amplifier:
     """The amplifier for the fixture's striker (module docstring); the pad runs in ``cache_dir`` (default
-    ``out_dir/pad_runs``) at ``resolution`` (``pads.RESOLUTIONS``; default the spec's ``pad_resolution``)."""
+    ``out_dir/pad_runs``) at ``resolution`` (``pads.RESOLUTIONS``; default the spec's ``pad_resolution``);
+    the first mass a cylinder of ``first_diameter`` if given (the launcher's slug), the effective e
+    iterated from ``start`` (default the best pad material's estimate), ``iterations`` the record so far."""
     resolution = resolution or spec.pad_resolution
     rho = property_si(spec.material, "density", "density")
     Y = initial_yield_stress(spec.material)
     V, M = fixture.striker_speed, fixture.striker_mass
     cache = RunCache(cache_dir or os.path.join(out_dir, "pad_runs"))
-    e = max(estimated_restitution(m) for m in PAD_MATERIALS)
-    iterations, last, t0 = [], None, time.perf_counter()
+    e = start or max(estimated_restitution(m) for m in PAD_MATERIALS)
+    iterations, last, t0 = list(iterations or []), None, time.perf_counter()
     for it in range(MAX_ITERATIONS):
         d = design(spec.architecture, M, V, spec.launch_speed, e, spec.masses)
         if not d.feasible:
             reason = d.reason + (" (the measured restitutions)" if iterations else "")
             return _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0)
-        bodies = _bodies(d.masses, fixture, rho, None)
+        bodies = _bodies(d.masses, fixture, rho, first_diameter)
         stages = _measure(spec, d.masses, bodies, e, cache, resolution, echo)
         gain = _chain_gain(spec, d.masses, bodies, [st.restitution for st in stages])
         e_eff = rigid.effective_restitution(d.masses, spec.launch_speed, gain, spec.architecture)
@@ -245,7 +251,36 @@ def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=Non
         if abs(e_eff - e) < E_TOL:
             break
         e = e_eff
+    e, last = _to_speed(spec, fixture, rho, first_diameter, e, last)
     return _amplifier(spec, last, e, iterations, V, Y, cache, t0)
+
+
+def _to_speed(spec: MachineSpec, fixture: Fixture, rho: float, first_diameter: float | None, e: float, last):
+    """The masses designed at the e (near the iterations' last) at which the rigid chain at the stages'
+    restitutions, as measured, brings the striker to the fixture's speed exactly: the restitutions used
+    for the chain are the ones its energy and its speed are counted with (the stages were measured at
+    masses within E_TOL of e's).  ``last`` unchanged where no e near it does."""
+    masses, bodies, stages, gain = last
+    restitutions = [st.restitution for st in stages]
+    target = fixture.striker_speed / spec.launch_speed
+
+    def chain_at(x):
+        d = design(spec.architecture, fixture.striker_mass, fixture.striker_speed, spec.launch_speed, x, spec.masses)
+        if not d.feasible or len(d.masses) != len(masses):
+            return None
+        b = _bodies(d.masses, fixture, rho, first_diameter)
+        return d.masses, b, _chain_gain(spec, d.masses, b, restitutions)
+
+    def miss(x):
+        out = chain_at(x)
+        return math.nan if out is None else out[2] - target
+    lo, hi = max(e - SOLVE_SPAN, 1e-3), min(e + SOLVE_SPAN, 0.999)
+    f_lo, f_hi = miss(lo), miss(hi)
+    if not (math.isfinite(f_lo) and math.isfinite(f_hi)) or f_lo * f_hi > 0:
+        return e, last
+    x = brentq(miss, lo, hi, xtol=1e-12, rtol=1e-12)
+    m, b, g = chain_at(x)
+    return x, (m, b, stages, g)
 
 
 def _amplifier(spec, last, e, iterations, V, Y, cache: RunCache, t0, reason: str = "") -> Amplifier:
@@ -282,19 +317,14 @@ def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier
 
 def check_with_first_mass(spec: MachineSpec, fixture: Fixture, amp: Amplifier, bore: float, out_dir: str,
                           resolution: str | None = None, cache_dir: str | None = None) -> Amplifier:
-    """The designed chain measured again with its first mass the slug of the launcher's bore."""
-    resolution = resolution or spec.pad_resolution
+    """The chain designed again with its first mass the slug of the launcher's bore: its interfaces
+    measured with that body, the effective e iterated from the design's, the masses solved to the
+    fixture's speed at the restitutions measured."""
     if not amp.masses:
         return amp
-    rho = property_si(spec.material, "density", "density")
-    bodies = _bodies(amp.masses, fixture, rho, bore)
-    cache = RunCache(cache_dir or amp.cache.get("folder") or os.path.join(out_dir, "pad_runs"))
-    t0 = time.perf_counter()
-    stages = _measure(spec, amp.masses, bodies, amp.restitution, cache, resolution, None)
-    gain = _chain_gain(spec, amp.masses, bodies, [st.restitution for st in stages])
-    out = _amplifier(spec, (amp.masses, bodies, stages, gain), amp.restitution, amp.iterations, amp.target_speed,
-                     amp.yield_stress, cache, t0, amp.design_reason)
-    return out
+    return design_amplifier(spec, fixture, out_dir, None, resolution,
+                            cache_dir or amp.cache.get("folder") or os.path.join(out_dir, "pad_runs"), bore,
+                            amp.restitution, amp.iterations)
 
 
 def pad_damping(e: float) -> float:
@@ -306,8 +336,7 @@ def chain_scene(spec: MachineSpec, amp: Amplifier, fixture: Fixture) -> dict:
     """The designed chain as a chain scene (``amplifier.chain``, fidelity 1d): each pad a spring of its
     secant stiffness and its free thickness, the gaps as designed, the pads damped to restitute the
     effective e (the chain scene's pads share one damping ratio)."""
-    rho = property_si(spec.material, "density", "density")
-    steel = fixture.housing_steel_mass / rho
+    steel = fixture.housing_steel_mass / HOUSING_STEELS[fixture.housing_steel].density
     scene_bodies = []
     for b in amp.bodies[:-1]:
         scene_bodies.append({"name": b["name"], "material": "steel", "shape": "cylinder", "radius": b["diameter"] / 2,

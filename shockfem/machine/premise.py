@@ -34,6 +34,7 @@ stresses are not checked (only its gain).
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import types
 from dataclasses import asdict, dataclass, field
@@ -43,12 +44,13 @@ import numpy as np
 from ..amplifier.gain import design as gain_design
 from ..launcher.design import LauncherDesign, weights
 from ..launcher.gun import barrel_length_for, fire, white_paper_gun
-from ..programmer.dashpot_design import DASHPOT, PulseSpec, striker_speed
+from ..programmer.column_design import closed_form_bore
+from ..programmer.dashpot_design import DASHPOT, PulseSpec, carrier_density, striker_speed
 from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, LB
 from .design import Machine, gun_thrust
-from .fixture import bore_radius, design_fixture
+from .fixture import LIQUID, design_fixture
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import Layout, place
 from .spec import MachineSpec
@@ -142,14 +144,16 @@ def amplifier_arrangement(m: Machine) -> Arrangement:
     return out
 
 
-def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float, bore: float | None, starts: int,
+def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float, bore: float, starts: int,
                 report_binding: bool) -> tuple[Launcher, float]:
-    """The lightest gun (its bore ``bore`` if given) firing the striker in its sabot, designed again with
-    the sabot of its bore and pressure until the sabot settles."""
-    sabot = 0.0
+    """The lightest gun of bore ``bore`` firing the striker in its sabot, designed again with the sabot of
+    its bore and pressure until the sabot settles.  The first pass carries the sabot the spec's largest
+    pressure asks at this bore (``sabot_mass`` grows with the pressure, and the lightest gun usually runs
+    at the pressure limit): where the gun's pressure is that limit the sabot has settled at once."""
+    s = dataclasses.replace(spec, max_bore=bore)
+    sabot = sabot_mass(bore, spec.max_pressure, diameter)
     for _ in range(SABOT_PASSES):
-        s = dataclasses.replace(spec, max_bore=bore) if bore else spec
-        L = launcher_for(s, striker + sabot, speed, starts, min_bore=bore or diameter, report_binding=report_binding)
+        L = launcher_for(s, striker + sabot, speed, starts, min_bore=bore, report_binding=report_binding)
         g = L.design.gun
         new = sabot_mass(g.bore, g.reservoir_pressure, diameter)
         if abs(new - sabot) <= 1e-3 * (striker + sabot):
@@ -158,14 +162,22 @@ def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float
     return L, sabot
 
 
+@functools.lru_cache(maxsize=16)
+def bare_launcher(spec: MachineSpec, striker: float, speed: float, starts: int, report_binding: bool) -> Launcher:
+    """The lightest gun within the spec's limits firing the striker alone (a massless sabot): the direct
+    gun's lower bound and the start of its sabot's bore scan, designed once for both."""
+    return launcher_for(spec, striker, speed, starts, report_binding=report_binding)
+
+
 def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: float | None, starts: int = 3,
                     report_binding: bool = True, bores: int = SABOT_BORES) -> tuple[Launcher, float]:
     """The lightest gun within the spec's limits firing a striker of ``striker`` [kg] and ``diameter`` at
     ``speed`` in the sabot its bore needs: the gun's optimiser does not see that the sabot grows with the
     bore (as p R^3), so the bore is scanned (``bores`` bores from half the bare striker's gun's bore, or the
-    striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest gun and sabot kept.  ``diameter`` None: a massless sabot (the
-    lower bound), one design.  Returns the launcher and the sabot's mass."""
-    bare = launcher_for(spec, striker, speed, starts, report_binding=report_binding)
+    striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest gun and sabot kept.
+    ``diameter`` None: a massless sabot (the lower bound), one design (``bare_launcher``, shared with the
+    scan's start).  Returns the launcher and the sabot's mass."""
+    bare = bare_launcher(spec, striker, speed, starts, report_binding)
     if diameter is None:
         return bare, 0.0
     # the sabot favours a narrower bore than the bare striker's gun; scan from half of that bore up
@@ -325,14 +337,14 @@ def _gun_entry(L: Launcher, moving: float, feasible: bool, note: str = "") -> di
 
 
 def map_point(spec: MachineSpec, duration: float, peak: float, article: float, ratio: float, ratio_c: float,
-              fixture_e: float, amp_e: float, wall: float) -> MapPoint:
+              fixture_e: float, amp_e: float, wall: float, bore_scale: float = 1.0) -> MapPoint:
     """One point of the map: the three arrangements by closed forms and the lightest-launcher design;
     ``ratio`` and ``ratio_c`` the strikers of (b) and (c) over the payload, ``fixture_e`` the fixture's
-    restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius."""
+    restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius,
+    ``bore_scale`` the designed fixture's bore over the column designer's closed form (its handle)."""
     s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, peak, duration))
-    rho = property_si(s.material, "density", "density")
-    r = bore_radius(s, rho)
-    payload = article + rho * math.pi * r * r * DASHPOT["piston_thickness"]
+    r = bore_scale * closed_form_bore(s.pulse, article, 0.0, LIQUID, ratio)
+    payload = article + carrier_density() * math.pi * r * r * DASHPOT["piston_thickness"]
     dv = requirement(s.pulse.shape, peak, duration, payload).velocity_change
     M = ratio * payload
     V = striker_speed(payload, M, dv, fixture_e)
@@ -373,7 +385,8 @@ def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durati
         for T in durations:
             for A in peaks:
                 p = map_point(spec, T, A, a, fixture.striker_ratio, ratio_c, max(fixture.restitution, 0.0), amp_e,
-                              fixture.housing_outer_radius / fixture.bore_radius)
+                              fixture.housing_outer_radius / fixture.bore_radius,
+                              fixture.design.get("handles", {}).get("bore_scale", 1.0))
                 out.append(p)
                 if echo:
                     echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "

@@ -45,7 +45,7 @@ def energy(rep: Report, machines: dict, lb: int):
     e = m.energy
     rep.text(f"The {lb} lb machine's shot, row by row (`{lb}lb/machine.md` has it too). Each row comes from the "
              "model that owns it (the gun's own accounts, the designed chain's collisions at its pads' restitutions, "
-             "the fixture's lumped run), so the "
+             "the fixture's column run), so the "
              "parts close on the gas work only if the models agree: "
              f"{e.closure:+.3%} here (`shockfem verify machine_energy` holds it within 0.5%).")
     rep.table("energy", ["where the energy is", "energy [MJ]", "of the gas work", "a part of it"],
