@@ -18,9 +18,22 @@ lumped designer's, ``dashpot_design.design_dashpot``) plus a penalty for every c
 design found is then run on the column at ``column_dashpot.CELLS`` cells (the difference from the
 search's grid printed) and on the lumped model with the same law (the difference printed: the lumped
 model designs only where that difference is inside its own checks and the band's margin), and weighed
-whole (``housing.fixture_mass``).  The housing is a constraint of the search too: a wall's peak
-pressure times its dynamic factor above what the steel holds at its allowed stress adds its log ratio.  A design whose checks do not all hold is reported outside, not
-chosen: the search's penalty pushes it in where it can, and where it cannot, the checks say why.
+whole (``housing.fixture_mass``: the wall by ASME VIII-2's rule unless another is named).  The housing
+is a constraint of the search too: a wall's peak pressure times its dynamic factor above what the steel
+holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log ratio.  A design whose
+checks do not all hold is reported outside, not chosen: the search's penalty pushes it in where it can,
+and where it cannot, the checks say why.
+
+The striker carries the housing: before the search, the striker over the payload is iterated with the
+housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
+below ``STRIKER_RATIO``; the confirmed design reports its striker against what carries its own housing
+and the closing speed the band then takes (``striker_report``).
+
+The closed-form limits, before any design (``contact_pressure_limit``, ``upstream_pressure_limit``): the
+closing speed above which the least front at contact, reflected at the floor and as a step, exceeds
+what a wall of the practical ratio holds; and the one above which the quasi-steady pressure upstream of
+the law's largest opening (a lower bound on every pin's start of stroke) exceeds what the wall holds
+statically or the pin holds at the steel's S.
 """
 from __future__ import annotations
 
@@ -35,9 +48,10 @@ from ..fluid.orifice import AREA_RATIO, OrificeLaw, jet_reaction, mass_flow, pis
 from ..metrics.shapes import TOLERANCE
 from .column_dashpot import CELLS, simulate_column
 from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RATIO, PulseSpec, carrier_density,
-                             dashpot_design, dashpot_lumped, striker_speed)
+                             dashpot_design, dashpot_lumped, striker_carrying, striker_speed, upstream_pressure)
 from .dashpot_validity import Limit, column_holds, dashpot_limits, lumped_holds
-from .housing import HOUSING_STEEL, HOUSING_STEELS, fixture_mass
+from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE, fixture_mass, held_pressure,
+                      step_factor)
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
 from .requirement import requirement
@@ -101,16 +115,32 @@ def contact_shock(V: float, a: float, A: float, liquid, law: OrificeLaw = AREA_R
     return p, p * A - jet_reaction(mdot, rho, a, A, code)
 
 
-def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, factor: float = 2.0,
-                           allowed: float | None = None) -> tuple:
-    """The closing speed [m/s] above which no wall of ``steel`` holds the front a piston makes at
-    contact with its orifice at the law's largest area ratio (the least front any pin in the law's range
-    makes), that front rising as a step on the wall (dynamic ``factor`` 2): (speed, the front [Pa] at it,
-    the most the wall holds [Pa]); ``allowed``: the wall's stress [Pa] if not the steel's design stress."""
-    held = (allowed or HOUSING_STEELS[steel].allowed_stress()) / math.sqrt(3.0) / factor
+def wall_holds(steel: str = HOUSING_STEEL, rule: str = WALL_RULE, ratio: float = PRACTICAL_RATIO) -> float:
+    """The most a wall of ``steel`` holds [Pa] by ``rule`` at the practical wall ratio (``housing``)."""
+    return held_pressure(ratio, HOUSING_STEELS[steel].allowed_stress(), rule)
+
+
+def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, reflection: float = 2.0,
+                           rule: str = WALL_RULE, ratio: float = PRACTICAL_RATIO) -> tuple:
+    """The closing speed [m/s] above which no wall of ``steel`` up to ``ratio`` (by ``rule``) holds the
+    front a piston makes at contact with its orifice at the law's largest area ratio (the least front any
+    pin in the law's range makes in the 1D model), that front ``reflection`` times over (2 at the floor,
+    a closed end; 1 on the wall by the piston) and times its dynamic factor, on the designs' basis
+    (``housing.dynamic_factor`` of the wall's pressure history; the front's own history is a step:
+    ``housing.step_factor``, 2): (speed, the front [Pa] at it, the factor, the most the wall holds [Pa])."""
+    holds, factor = wall_holds(steel, rule, ratio), step_factor()
+    front = holds / (reflection * factor)
     A = 1.0e-3
-    speed = brentq(lambda V: contact_shock(V, AREA_RATIO.largest_ratio * A, A, liquid)[0] - held, 1.0, 3000.0)
-    return speed, held, held * factor
+    speed = brentq(lambda V: contact_shock(V, AREA_RATIO.largest_ratio * A, A, liquid)[0] - front, 1.0, 3000.0)
+    return speed, front, factor, holds
+
+
+def upstream_pressure_limit(liquid: DesignLiquid, held: float) -> float:
+    """The closing speed [m/s] at which the quasi-steady pressure upstream of the law's largest opening
+    (``dashpot_design.upstream_pressure``; it varies over the stroke's time, not a wall's period:
+    dynamic factor 1) reaches ``held`` [Pa]: what the wall (``wall_holds``) or the pin (the steel's S:
+    von Mises of a pin in the liquid is its pressure, ``housing``) bounds the closing speed to."""
+    return brentq(lambda V: upstream_pressure(AREA_RATIO.largest_ratio, V, liquid.density) - held, 1.0, 3000.0)
 
 
 def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio):
@@ -134,15 +164,20 @@ def _objective_of(pulse, band, limits):
 def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0.0,
                      liquid: DesignLiquid = MINERAL_OIL, striker_ratio: float = STRIKER_RATIO,
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
-                     steel: str = HOUSING_STEEL, echo=None) -> dict:
+                     steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
-    Returns a dict: the design, its runs (``column``, ``search_column``, ``lumped``), their band checks
-    and validity checks, the fixture's mass (``housing.fixture_mass`` on ``steel``), the wall times, and
-    ``verdict``: "inside" (band passed, every check of the column holds, a housing holds it), "outside
-    the laws' ranges", "no housing holds it", or "fails the band"."""
+    The striker is at least ``striker_ratio`` times the payload and at least what carries the housing
+    (``carried_ratio`` before the search; after it, the found handles are confirmed again at a heavier
+    striker while its own housing outweighs the one it has).  Returns a dict: the design, its runs (``column``, ``search_column``,
+    ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
+    ``steel`` by ``rule``), the striker (``striker``), the wall times, and ``verdict``: "inside" (band
+    passed, every check of the column holds, a housing within the practical wall ratio holds it, the
+    pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
+    "fails the band"."""
     end = pulse.record_end()
+    striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule)
     base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio)
     liquid_column = liquid.column()
 
@@ -156,14 +191,21 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
             return 50.0
         _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
         return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
-                + PENALTY * math.log(max(housing_ratio(d, run, steel), 1.0)))
+                + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
 
     t0 = time.perf_counter()
     res = minimize(objective, np.array(START), method="Nelder-Mead",
                    options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
     search_wall = time.perf_counter() - t0
     d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
-    out = confirm(d, pulse, liquid, search_cells, cells, steel)
+    out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
+    for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
+        if out["striker"] is None or out["striker"]["carries"]:
+            break
+        striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
+        base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio)
+        d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
+        out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
                objective=float(res.fun))
     if echo:
@@ -172,9 +214,10 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
 
 
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,
-            cells: int = CELLS, steel: str = HOUSING_STEEL) -> dict:
+            cells: int = CELLS, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
     """A design on the column at ``cells`` and ``search_cells`` and on the lumped model, each with its
-    pulse, band check and validity checks, and the fixture weighed on the column's pressures."""
+    pulse, band check and validity checks, the fixture weighed on the column's pressures, and the
+    striker against what carries that housing (``striker_report``)."""
     end, lumped_design = pulse.record_end(), dashpot_lumped(d)
     runs, walls = {}, {}
     for name, fn in (("column", lambda: simulate_column(lumped_design, end, LUMPED_SAMPLES, cells, liquid.column())),
@@ -200,21 +243,72 @@ def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int =
                         "limits": [lim.as_dict() for lim in limits],
                         "holds": column_holds(limits) if name != "lumped" else lumped_holds(limits)}
     column = runs["column"]
-    weight = (fixture_mass(d, column.t, np.maximum(column.pressure, column.floor_pressure), column.floor_pressure,
-                           steel) if column is not None else None)
+    weight = weigh(d, column, steel, rule) if column is not None else None
     col = models.get("column")
     verdict = ("not run" if col is None else "outside the laws' ranges" if not col["holds"]
-               else "no housing holds it" if not math.isfinite(weight["fixture"])
+               else "no housing within Y_max" if not weight["housing_holds"]
+               else "the pin does not hold it" if not weight["pin_holds"]
                else "fails the band" if not col["band_passed"] else "inside")
     return {"design": d, "runs": runs, "models": models, "fixture": weight, "walls": walls, "verdict": verdict,
-            "lumped_agrees": _lumped_agrees(models)}
+            "lumped_agrees": _lumped_agrees(models),
+            "striker": striker_report(d, pulse, weight) if weight is not None else None}
 
 
-def housing_ratio(d: dict, run, steel: str = HOUSING_STEEL) -> float:
-    """The wall's peak pressure times its dynamic factor over the most a wall of ``steel`` can hold at
-    its allowed stress (s / sqrt(3), an infinitely thick wall): above 1 no housing holds the design."""
-    weight = fixture_mass(d, run.t, np.maximum(run.pressure, run.floor_pressure), run.floor_pressure, steel)
+def weigh(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
+    """The fixture's mass (``housing.fixture_mass``) on a column ``run``'s pressures: the wall sized for
+    the largest over the column and the floor, the floor for its own."""
+    return fixture_mass(d, run.t, np.maximum(run.pressure, run.floor_pressure), run.floor_pressure, steel, rule)
+
+
+def housing_ratio(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> float:
+    """The wall's peak pressure times its dynamic factor over the most a wall of ``steel`` holds by
+    ``rule`` at the practical wall ratio: above 1 no housing within Y_max holds the design."""
+    weight = weigh(d, run, steel, rule)
     return weight["peak_pressure"] * weight["dynamic_factor"] / weight["holdable_pressure"]
+
+
+# the striker's fixed point with its housing: at most this many column runs, to this share of its mass
+STRIKER_ITERATIONS, STRIKER_TOLERANCE = 4, 0.02
+
+
+def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liquid: DesignLiquid,
+                  least_ratio: float = STRIKER_RATIO, cells: int = SEARCH_CELLS, steel: str = HOUSING_STEEL,
+                  rule: str = WALL_RULE) -> float:
+    """The striker over the payload that carries the housing its own design needs: the larger of
+    ``least_ratio`` and ``dashpot_design.striker_carrying`` (housing, liquid and structure) over the
+    payload, the housing weighed on the column's run (``cells``) of the closed-form design at the bore
+    A0 for that striker (beyond the practical wall ratio, the heaviest housing a monobloc gives: the
+    design is then outside, and the striker its best case).  A fixed point (a heavier striker closes slower, so the pressure and the
+    housing fall): ``STRIKER_ITERATIONS`` at most, to ``STRIKER_TOLERANCE``."""
+    ratio = least_ratio
+    for _ in range(STRIKER_ITERATIONS):
+        d = _design(pulse, article_mass, seat_mass, liquid,
+                    closed_form_bore(pulse, article_mass, seat_mass, liquid, ratio), START, ratio)
+        try:
+            run = simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, cells, liquid.column())
+        except (RuntimeError, ValueError):        # the piston reached the floor: keep the last striker
+            break
+        w = weigh(d, run, steel, rule)
+        needed = max(least_ratio, striker_carrying(w["housing_carried"], w["liquid"]) / d["payload_mass"])
+        if not math.isfinite(needed):
+            break
+        converged = abs(needed / ratio - 1.0) <= STRIKER_TOLERANCE
+        ratio = needed
+        if converged:
+            break
+    return ratio
+
+
+def striker_report(d: dict, pulse: PulseSpec, weight: dict) -> dict:
+    """The design's striker [kg] against the least that carries its housing and liquid [kg], its closing
+    speed and the least closing speed the band takes (its velocity change at the band's floor, by the
+    collision law at that striker: dV (1 + m / M)) [m/s]."""
+    m, M = d["payload_mass"], d["striker_mass"]
+    carrying = striker_carrying(weight["housing_carried"], weight["liquid"])
+    dv = requirement(pulse.shape, pulse.peak, pulse.duration, m).velocity_change
+    return {"mass": M, "carrying": carrying, "carries": bool(M >= carrying * (1.0 - STRIKER_TOLERANCE)),
+            "ratio": M / m, "closing_speed": d["striker_speed"],
+            "least_closing_speed": striker_speed(m, M, (1.0 - TOLERANCE["velocity_change"]) * dv)}
 
 
 def _lumped_agrees(models: dict) -> bool:

@@ -29,7 +29,7 @@ from ..metrics import shapes
 from ..metrics.pulse import pulse_metrics
 from ..metrics.shapes import TOLERANCE
 from ..scene.library import property_si
-from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force
+from ..fluid.orifice import AREA_RATIO, OrificeLaw, area_for_force, piston_force, pressure_for_flow
 from .column_dashpot import simulate_column
 from .dashpot_validity import Limit, dashpot_limits, lumped_holds
 from .liquids import LIQUIDS, MINERAL_OIL, DesignLiquid
@@ -45,9 +45,13 @@ ORIFICE_LAW = AREA_RATIO
 # liquid column over the relative stroke at the closed form (the liquid must outlast the stroke)
 DASHPOT = {"clearance": 0.002, "piston_thickness": 0.015, "pin_points": 200, "column_over_stroke": 1.3}
 CARRIER_STEEL = "high_strength_steel"          # the fixture's metal parts
-# striking mass over payload: heavy enough that the payload's velocity change costs the striker only a
-# tenth of its speed
+# striking mass over payload, the least a striker weighs: heavy enough that the payload's velocity change
+# costs the striker only a tenth of its speed; a striker is never lighter than what it carries
+# (``striker_carrying``)
 STRIKER_RATIO = 10.0
+# the striker's own structure beyond the housing and its liquid (its guide bands, struck face, the pin's
+# anchorage), as a share of those two: an assumption, not a design
+STRIKER_STRUCTURE = 0.2
 HANDLES = ("pin_scale", "column_over_stroke", "force_factor", "speed_factor")
 START = (1.0, DASHPOT["column_over_stroke"], 1.0, 1.0)
 DESIGN_MARGIN = 0.03             # the lumped design aims this share of the peak inside the band
@@ -93,6 +97,18 @@ def striker_speed(payload: float, striker: float, dv: float, e: float = 0.0) -> 
     return brentq(lambda v: collide(striker, v, payload, 0.0, e)[1] - dv, 0.0, 100.0 * dv)
 
 
+def striker_carrying(housing_mass: float, liquid_mass: float) -> float:
+    """The least striker [kg] that carries a housing and its liquid [kg]: the two and its own structure."""
+    return (housing_mass + liquid_mass) * (1.0 + STRIKER_STRUCTURE)
+
+
+def upstream_pressure(n: float, speed: float, density: float, law: OrificeLaw = ORIFICE_LAW) -> float:
+    """The quasi-steady pressure [Pa] upstream of an orifice of area ratio ``n`` in a piston driven at
+    ``speed`` [m/s] into incompressible liquid of ``density``: the pressure the liquid's flow needs, which
+    the wall, the floor and the pin stand in (at the law's largest ratio, the least any pin makes)."""
+    return pressure_for_flow(speed, density, n, 1.0, law.code())
+
+
 def carrier_density() -> float:
     return property_si(CARRIER_STEEL, "density", "density")
 
@@ -128,7 +144,8 @@ def dashpot_design(pulse: PulseSpec, article_mass: float, bore_radius: float, ha
             "bore_radius": bore_radius, "piston_area": area, "piston_mass": m_piston, "article_mass": article_mass,
             "seat_mass": seat_mass, "payload_mass": payload,
             "striker_mass": M, "striker_speed": V, "force": force, "design_pressure": force / area,
-            "least_pressure": p_least, "initial_overshoot": p_least * area / force - 1.0, "stroke_design": stroke,
+            "least_pressure": p_least, "upstream_pressure": upstream_pressure(law.largest_ratio, V, rho, law),
+            "initial_overshoot": p_least * area / force - 1.0, "stroke_design": stroke,
             "column": column_over_stroke * stroke, "pin": [[float(x), float(a)] for x, a in zip(strokes, pin)],
             "liquid_mass": rho * area * column_over_stroke * stroke,
             "liquid": next(k for k, v in LIQUIDS.items() if v == liquid), "piston_thickness": DASHPOT["piston_thickness"]}

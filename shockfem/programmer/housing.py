@@ -1,54 +1,112 @@
 """The fluid dashpot's mass as a designer must count it: piston, metering pin, the housing that holds the
 peak pressure, and the liquid.
 
-    bore wall (Lame, closed ends; Timoshenko & Goodier, Theory of Elasticity, sec. 33; Roark's Formulas
-    for Stress and Strain, 7th ed., table 13.5 case 1c), at the bore r = a under pressure p:
-        sigma_theta = p (b^2 + a^2) / (b^2 - a^2),  sigma_r = -p,  sigma_z = p a^2 / (b^2 - a^2)
-        von Mises  = sqrt(3) p b^2 / (b^2 - a^2)   (sigma_z is the mean of the other two)
-    so the outer radius that keeps it at the allowed stress s:  b = a sqrt(k / (k - 1)),
-        k = s / (sqrt(3) p), possible only for p < s / sqrt(3)
-    floor (a flat plate clamped at the bore under p; Roark table 11.2 case 10b): edge stress
-        3 p a^2 / (4 t^2) = s  ->  t = a sqrt(3 p / (4 s))
-    floor's own period (its first mode, clamped; Blevins, Formulas for Natural Frequency and Mode
-    Shape, table 11-1 case 2, lambda^2 = 10.22):  T = 2 pi a^2 / (10.22 t) sqrt(12 rho (1 - nu^2) / E)
-    pin: the piston's hole is the pin's largest opening a_max; at a stroke s the pin fills
-        a_max - a(s) of it: its volume is the integral of that over the stroke.
+The bore wall is sized by the code whose design stress it uses, ASME's Boiler and Pressure Vessel Code,
+Section VIII Division 2 (design by rule, a cylindrical shell under internal pressure, Part 4.3.3; check
+the edition):
 
-The pressure the wall is sized for is the liquid's peak times a dynamic factor: the wall's breathing
-mode (a ring's, period 2 pi b / c, c = sqrt(E / rho): ``liquids-and-machines.md``) driven by the
-pressure's own history, as an undamped oscillator x'' + w^2 x = w^2 p(t); the factor is its largest
-response over the largest pressure (Biggs, Introduction to Structural Dynamics, 1964, ch. 2: 2 for a
-step, 1 + |sin(pi t_r / T)| / (pi t_r / T) for a ramp of rise t_r).  A column's pressure rises in
-fronts (its waves), so the factor is read from the history, not assumed.
+    t = (D / 2) (exp(P / (S E)) - 1),  i.e.  P = S E ln Y,  Y = b / a          (``WALL_RULE``)
 
-The allowed stress is the housing steel's design stress by ASME's Boiler and Pressure Vessel Code,
-Section VIII Division 2 (the lesser of yield / 1.5 and tensile / 2.4, Part 3 annex 3-A): a housing
-that holds a shot's pressure shot after shot.  The steels and their limits: ``HOUSING_STEELS``.  The
-pressurised bore runs the column and the piston's thickness; the article's guide beyond it, which
+D the bore's diameter, S the design stress (the lesser of yield / 1.5 and tensile / 2.4, Part 3 annex
+3-A), E the joint efficiency (1: a seamless forging).  S ln Y is Tresca's collapse pressure of a
+closed thick cylinder of yield stress S (Hill, The Mathematical Theory of Plasticity, 1950, ch. V), so
+the rule keeps the fully plastic wall 1.5 on yield from collapse at any thickness; it grows without
+bound, but only as ln Y.  Its limits as recalled, not confirmed here (check): VIII-2 Part 4 sets no
+upper wall ratio for this formula; above about 70 MPa (10 ksi) VIII-3 is the code meant for the
+vessel, and maraging 300 is not a VIII-2-listed material (its 1.5 / 2.4 margins are borrowed).
+
+``PRACTICAL_RATIO`` (Y_max = 4) is the largest wall ratio a design may ask of a monobloc forging: there
+the wall holds S ln 4 = 1.39 S; doubling it to Y = 8 adds only half again (ln 8 / ln 4 = 1.5) for 4.2
+times the steel ((64 - 1) / (16 - 1)), and a forging that thick no longer hardens through.  Beyond it
+the housing is "no housing within Y_max" (its mass is still reported).
+
+A named alternative (``WALL_RULES["shakedown"]``), not the default: an autofrettaged or shrink-fit
+compound monobloc meant to stay elastic shot after shot once its proof shot has yielded the bore.
+Its limit is the closed cylinder's shakedown pressure by von Mises (Melan's theorem; Hill 1950, ch. V;
+Davidson & Kendall, The design of pressure vessels for very high pressure operation, Watervliet
+Arsenal WVT-6917, 1969: twice the elastic range, the Bauschinger effect neglected, which lowers it:
+check), with S in place of the yield stress:
+
+    P = (2 / sqrt 3) S min(1 - 1 / Y^2, ln Y)
+
+(the collapse pressure below Y = 2.22, where the two meet).  It saturates at 2 S / sqrt 3 = 880 MPa
+for maraging 300, below VIII-2's S ln 4: cyclic elasticity costs pressure.
+
+The elastic check, reported with every wall and governing nothing: Lame's von Mises at the bore
+(Timoshenko & Goodier, Theory of Elasticity, sec. 33; Roark's Formulas for Stress and Strain, 7th ed.,
+table 13.5 case 1c; closed ends)
+
+    von Mises = sqrt(3) P Y^2 / (Y^2 - 1)
+
+above the yield stress, the proof shot yields the bore (``first_yield``); whether the bore then stays
+elastic on the next shots is the shakedown check at the yield stress (``shakes_down``).
+
+Shot after shot: neither S nor shakedown is a fatigue or fracture limit.  The wall reports the depth
+of the bore crack that is critical on one shot (``critical_flaw``: a long surface crack,
+K = 1.12 (sigma_theta + P) sqrt(pi a), the pressure on its faces; K_IC of maraging 300 taken as
+80 MPa sqrt(m), recalled from ASM's range 70-90: check), so the design basis is one proof shot with an
+inspection for flaws below that depth; a shot count needs a VIII-3 KD-3 / KD-4 fatigue and
+crack-growth assessment at the ports, the floor corner and the pin's anchorage, which this module
+does not make.
+
+The floor (the struck end's closure), a flat head forged with the wall: VIII-2 Part 4.6 (as VIII-1
+UG-34), t = d sqrt(C P / (S E)), C = 0.17 for a head forged integral with the shell (check the table):
+near the clamped plate's elastic edge stress 3 P a^2 / (4 t^2) = S (Roark table 11.2 case 10b,
+C = 0.1875).  A floor thicker than a quarter of the bore's diameter is a thick plate, outside the
+formula's bending theory (reported as ``floor_over_diameter`` and ``floor_thick``): a uniformly loaded
+clamped circular plate has the same bending moments in Mindlin's shear-deformable theory as in
+Kirchhoff's (Wang, Reddy & Lee, Shear Deformable Beams and Plates, 2000: check), so what a thick floor
+adds is the face pressure through its thickness and the stress at the floor's corner with the wall,
+which neither formula holds and a finite-element check must.  Its own period, its first mode
+clamped (Blevins, Formulas for Natural Frequency and Mode Shape, table 11-1 case 2,
+lambda^2 = 10.22):  T = 2 pi a^2 / (10.22 t) sqrt(12 rho (1 - nu^2) / E).
+
+The pin: the piston's hole is the pin's largest opening a_max; at a stroke s the pin fills
+a_max - a(s) of it: its volume is the integral of that over the stroke.  A pin of uniform section
+standing in the liquid at p and crossing the orifice to the jet's side carries sigma_r = sigma_theta =
+-p, sigma_z = 0 there: its von Mises stress is the liquid's pressure, held to the pin steel's S
+(``pin_holds``; the pin of the housing's steel).
+
+The dynamic factor, one basis for every wall: the pressure the wall is sized for is the liquid's
+peak times ``dynamic_factor`` of the pressure's own history on the wall's breathing mode (a ring's,
+period 2 pi b / c, c = sqrt(E / rho): ``liquids-and-machines.md``) and on the floor's first mode, an
+undamped oscillator x'' + w^2 x = w^2 p(t); the factor is its largest response over the largest
+pressure (Biggs, Introduction to Structural Dynamics, 1964, ch. 2: 2 for a step, 1 + |sin(pi t_r /
+T)| / (pi t_r / T) for a ramp of rise t_r).  A design reads it from the column's history; the closed
+form (``column_design.contact_pressure_limit``) from the front's own, a shock: a step, 2.
+
+The pressurised bore runs the column and the piston's thickness; the article's guide beyond it, which
 holds no pressure, is not counted.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ..scene.library import initial_yield_stress, property_si
 
 YIELD_MARGIN, TENSILE_MARGIN = 1.5, 2.4          # ASME BPVC VIII-2, Part 3 annex 3-A
+JOINT_EFFICIENCY = 1.0                           # VIII-2's E for a seamless forging: no weld
+PRACTICAL_RATIO = 4.0                            # Y_max, the largest b / a of a monobloc forging (above)
+FLAT_HEAD_FACTOR = 0.17                          # VIII-2 4.6's C, a flat head forged integral (check)
+THICK_PLATE = 0.25                               # a floor over its bore's diameter beyond which it is thick
+CRACK_SHAPE = 1.12                               # a long surface crack's geometry factor (Tada, Paris & Irwin)
 
 
 @dataclass(frozen=True)
 class HousingSteel:
     """A housing steel: density [kg/m^3], Young's modulus [Pa], 0.2% yield and tensile strength [Pa],
-    and the source of the figures."""
+    its plane-strain fracture toughness [Pa sqrt(m)] (nan where not known), and the figures' source."""
     name: str
     density: float
     youngs_modulus: float
     yield_stress: float
     tensile_strength: float
     source: str
+    fracture_toughness: float = math.nan
 
     def allowed_stress(self) -> float:
         """ASME VIII-2's design stress: the lesser of yield / 1.5 and tensile / 2.4."""
@@ -68,21 +126,114 @@ HOUSING_STEELS = {
     "maraging_300": HousingSteel(
         "maraging_300", 8000.0, 190e9, 1790e6, 1830e6,
         "18Ni(300) maraging steel, aged: ASM Handbook vol. 1 (1990), Maraging Steels, typical properties "
-        "(0.2% yield 1790-2070 MPa, tensile 1830-2100 MPa: the lower ends taken), density 8.0 g/cm^3, E 190 GPa"),
+        "(0.2% yield 1790-2070 MPa, tensile 1830-2100 MPa: the lower ends taken), density 8.0 g/cm^3, E 190 GPa; "
+        "K_IC 80 MPa sqrt(m) (ASM's 70-90, check)", 80e6),
 }
 HOUSING_STEEL = "maraging_300"
 
 
-def bore_outer_radius(pressure: float, bore: float, allowed: float) -> float:
-    """The outer radius [m] at which a thick cylinder of ``bore`` radius holds ``pressure`` [Pa] with its
-    von Mises stress at the bore equal to ``allowed`` [Pa]; inf if no wall can."""
-    k = allowed / (math.sqrt(3.0) * pressure)
-    return bore * math.sqrt(k / (k - 1.0)) if k > 1.0 else math.inf
+# where the shakedown rule's two limits meet: 1 - 1 / Y^2 = ln Y
+_SHAKEDOWN_CORNER = brentq(lambda y: 1.0 - 1.0 / y ** 2 - math.log(y), 1.5, 3.0)
+
+
+def _viii2_pressure(ratio: float, allowed: float) -> float:
+    return allowed * JOINT_EFFICIENCY * math.log(ratio)
+
+
+def _viii2_ratio(pressure: float, allowed: float) -> float:
+    return math.exp(pressure / (allowed * JOINT_EFFICIENCY))
+
+
+def _shakedown_pressure(ratio: float, allowed: float) -> float:
+    return 2.0 / math.sqrt(3.0) * allowed * min(1.0 - 1.0 / ratio ** 2, math.log(ratio))
+
+
+def _shakedown_ratio(pressure: float, allowed: float) -> float:
+    x = math.sqrt(3.0) * pressure / (2.0 * allowed)
+    if x <= math.log(_SHAKEDOWN_CORNER):
+        return math.exp(x)
+    return 1.0 / math.sqrt(1.0 - x) if x < 1.0 else math.inf
+
+
+# each rule: (the pressure a wall of ratio Y holds at the design stress S, the ratio that holds P, its name)
+WALL_RULES = {"asme_viii2": (_viii2_pressure, _viii2_ratio, "ASME VIII-2 4.3.3, P = S E ln Y"),
+              "shakedown": (_shakedown_pressure, _shakedown_ratio,
+                            "shakedown of an autofrettaged monobloc, P = (2 / sqrt 3) S min(1 - 1 / Y^2, ln Y)")}
+WALL_RULE = "asme_viii2"
+
+
+def held_pressure(ratio: float, allowed: float, rule: str = WALL_RULE) -> float:
+    """The pressure [Pa] a wall of outer-over-bore ``ratio`` holds at the design stress ``allowed`` [Pa]
+    by ``rule`` (``WALL_RULES``)."""
+    return WALL_RULES[rule][0](ratio, allowed)
+
+
+def wall_ratio(pressure: float, allowed: float, rule: str = WALL_RULE) -> float:
+    """The outer-over-bore ratio a wall needs to hold ``pressure`` [Pa] at ``allowed`` [Pa] by ``rule``;
+    inf where the rule saturates below the pressure."""
+    return WALL_RULES[rule][1](pressure, allowed)
 
 
 def bore_von_mises(pressure: float, bore: float, outer: float) -> float:
     """Lame's von Mises stress at the bore of a closed thick cylinder [Pa]."""
     return math.sqrt(3.0) * pressure * outer ** 2 / (outer ** 2 - bore ** 2)
+
+
+def critical_flaw(pressure: float, ratio: float, steel: HousingSteel) -> float:
+    """The depth [m] of a long bore crack that ``pressure`` [Pa] makes critical on one shot in a wall of
+    ``ratio``: K_IC = 1.12 (sigma_theta + p) sqrt(pi a), sigma_theta Lame's hoop stress at the bore."""
+    hoop = pressure * (ratio ** 2 + 1.0) / (ratio ** 2 - 1.0) if math.isfinite(ratio) else pressure
+    return (steel.fracture_toughness / (CRACK_SHAPE * (hoop + pressure))) ** 2 / math.pi
+
+
+@dataclass(frozen=True)
+class Wall:
+    """A bore wall sized for a pressure by a rule: its radii [m], ratio, mass per metre of bore [kg/m],
+    the criterion that governs it, and its elastic and one-shot checks at that pressure."""
+    rule: str
+    pressure: float            # the design pressure [Pa]
+    bore: float                # [m]
+    outer_radius: float        # [m]
+    ratio: float               # outer / bore
+    mass_per_length: float     # [kg/m]
+    within_practical: bool     # ratio <= PRACTICAL_RATIO
+    governing: str             # the rule's criterion, or "no housing within Y_max"
+    bore_von_mises: float      # Lame at the bore [Pa] (the elastic check, governs nothing)
+    first_yield: bool          # the bore yields on the proof shot
+    shakes_down: bool          # and stays elastic after it (shakedown at the yield stress)
+    critical_flaw: float       # [m]
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+def wall_for(pressure: float, bore: float, steel: HousingSteel | str = HOUSING_STEEL, rule: str = WALL_RULE) -> Wall:
+    """The bore wall of ``steel`` (a ``HousingSteel`` or its name) that holds ``pressure`` [Pa] in a bore
+    of radius ``bore`` [m] by ``rule`` (``WALL_RULES``; VIII-2's unless named)."""
+    s = HOUSING_STEELS[steel] if isinstance(steel, str) else steel
+    ratio = wall_ratio(pressure, s.allowed_stress(), rule)
+    outer = bore * ratio
+    within = ratio <= PRACTICAL_RATIO
+    finite = math.isfinite(ratio)
+    walled = finite and ratio > 1.0                  # a wall at all (no pressure needs none)
+    vm = bore_von_mises(pressure, bore, outer) if walled else (0.0 if finite else math.inf)
+    shakes_down = pressure <= _shakedown_pressure(ratio, s.yield_stress) if walled else finite
+    return Wall(rule, pressure, bore, outer, ratio, s.density * math.pi * (outer ** 2 - bore ** 2) if finite else math.inf,
+                within, _governing(rule, ratio) if within else f"no housing within Y_max = {PRACTICAL_RATIO:g}",
+                vm, vm > s.yield_stress, shakes_down, critical_flaw(pressure, ratio, s))
+
+
+def _governing(rule: str, ratio: float) -> str:
+    if rule == "shakedown":
+        return WALL_RULES[rule][2] + (": collapse, Y below 2.22" if ratio < _SHAKEDOWN_CORNER else ": shakedown")
+    return WALL_RULES[rule][2]
+
+
+def floor_for(pressure: float, bore: float, steel: HousingSteel | str = HOUSING_STEEL) -> float:
+    """The flat floor's thickness [m] that holds ``pressure`` [Pa] over a bore of radius ``bore`` [m]:
+    VIII-2 4.6's integral flat head, t = d sqrt(C P / (S E))."""
+    s = HOUSING_STEELS[steel] if isinstance(steel, str) else steel
+    return 2.0 * bore * math.sqrt(FLAT_HEAD_FACTOR * pressure / (s.allowed_stress() * JOINT_EFFICIENCY))
 
 
 def dynamic_factor(t: np.ndarray, p: np.ndarray, period: float) -> float:
@@ -120,12 +271,20 @@ def floor_period(bore: float, thickness: float, s: HousingSteel) -> float:
                                                                            / s.youngs_modulus)
 
 
+def step_factor() -> float:
+    """``dynamic_factor`` of a pressure that rises as a step (a shock's front): 2 at any period."""
+    return dynamic_factor(np.array([0.0, 1e-12, 10.0]), np.array([0.0, 1.0, 1.0]), 1.0)
+
+
 def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_pressure: np.ndarray,
-                 steel: str = HOUSING_STEEL) -> dict:
+                 steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
     """The dashpot ``design`` (``dashpot_design``) weighed whole, its housing of ``HOUSING_STEELS[steel]``
-    sized for the pressure histories on its wall (the largest over the column) and on its floor [Pa] at
-    times ``t`` [s]: a dict of the parts [kg], the housing's radii [m], the allowed stress, the dynamic
-    factor, and their sum, ``fixture`` (inf where no wall of that steel holds the pressure)."""
+    sized by ``rule`` (``wall_for``, ``floor_for``) for the pressure histories on its wall (the largest
+    over the column) and on its floor [Pa] at times ``t`` [s], each times its own dynamic factor: a dict
+    of the parts [kg] and their sum, ``fixture``; ``housing_carried``, the housing or, beyond the practical
+    ratio, the heaviest a monobloc gives (what a striker can be asked to carry); the wall (``Wall``'s fields under ``wall_``), the floor,
+    the factors, ``housing_holds`` (the wall within ``PRACTICAL_RATIO``), ``holdable_pressure`` (what
+    the wall holds at that ratio), and the pin's stress (the wall's peak: ``pin_holds`` at S)."""
     s = HOUSING_STEELS[steel]
     a = design["bore_radius"]
     allowed = s.allowed_stress()
@@ -134,20 +293,30 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
     outer, factor = 2.0 * a, 1.0
     for _ in range(4):
         factor = dynamic_factor(t, wall_pressure, 2.0 * math.pi * outer / s.bar_speed())
-        outer = bore_outer_radius(peak * factor, a, allowed)
+        wall = wall_for(peak * factor, a, s, rule)
+        outer = wall.outer_radius
         if not math.isfinite(outer):
             break
     floor_peak, floor, floor_factor = float(np.max(floor_pressure)), a, 1.0
     for _ in range(4):
         floor_factor = dynamic_factor(t, floor_pressure, floor_period(a, floor, s))
-        floor = a * math.sqrt(3.0 * floor_peak * floor_factor / (4.0 * allowed))
+        floor = floor_for(floor_peak * floor_factor, a, s)
     length = design["column"] + design.get("piston_thickness", 0.015)
-    housing = (s.density * math.pi * ((outer ** 2 - a ** 2) * length + outer ** 2 * floor) if math.isfinite(outer)
-               else math.inf)
+    housing = wall.mass_per_length * length + s.density * math.pi * outer ** 2 * floor
+    # the heaviest housing a monobloc gives: the wall at the practical ratio, the same floor
+    practical = s.density * math.pi * a ** 2 * ((PRACTICAL_RATIO ** 2 - 1.0) * length + PRACTICAL_RATIO ** 2 * floor)
     pin = np.array(design["pin"], dtype=float)
     pin_volume = float(np.trapz(pin[:, 1].max() - pin[:, 1], pin[:, 0]))
     parts = {"piston": design["piston_mass"], "pin": s.density * pin_volume, "housing": housing,
              "liquid": design["liquid_mass"]}
-    return {**parts, "fixture": sum(parts.values()), "outer_radius": outer, "floor_thickness": floor,
-            "allowed_stress": allowed, "dynamic_factor": factor, "floor_dynamic_factor": floor_factor, "peak_pressure": peak, "steel": steel,
-            "steel_source": s.source, "holdable_pressure": allowed / math.sqrt(3.0)}
+    pin_pressure = max(peak, design.get("upstream_pressure", 0.0))
+    return {**parts, "fixture": sum(parts.values()), "housing_carried": min(housing, practical),
+            "outer_radius": outer, "wall_ratio": wall.ratio,
+            "housing_holds": wall.within_practical, "governing": wall.governing, "rule": rule,
+            **{f"wall_{k}": v for k, v in wall.as_dict().items()
+               if k in ("pressure", "bore_von_mises", "first_yield", "shakes_down", "critical_flaw")},
+            "floor_thickness": floor, "floor_over_diameter": floor / (2.0 * a),
+            "floor_thick": floor / (2.0 * a) > THICK_PLATE, "allowed_stress": allowed,
+            "dynamic_factor": factor, "floor_dynamic_factor": floor_factor, "peak_pressure": peak, "steel": steel,
+            "steel_source": s.source, "holdable_pressure": held_pressure(PRACTICAL_RATIO, allowed, rule),
+            "pin_pressure": pin_pressure, "pin_holds": pin_pressure <= allowed}

@@ -1,0 +1,144 @@
+"""The housing's closed forms (``programmer/housing.py``) against hand values, and the closed-form limits
+and the striker of the column designer (``programmer/column_design.py``) that read them."""
+import math
+
+import numpy as np
+import pytest
+
+from shockfem.programmer.housing import (HOUSING_STEELS, PRACTICAL_RATIO, bore_von_mises, critical_flaw,
+                                         fixture_mass, floor_for, held_pressure, step_factor, wall_for, wall_ratio)
+
+MARAGING = HOUSING_STEELS["maraging_300"]
+S = 1830e6 / 2.4                         # the lesser of 1790 / 1.5 and 1830 / 2.4 [Pa]
+
+
+def test_the_design_stress_is_asmes_lesser_margin():
+    assert MARAGING.allowed_stress() == pytest.approx(S, rel=1e-12)
+
+
+def test_lames_von_mises_at_the_bore_by_hand():
+    """a = 1, b = 2, p = 200 MPa, closed ends: sigma_theta = 200 (4 + 1) / 3 = 333.3, sigma_r = -200,
+    sigma_z = 200 / 3 = 66.7 MPa; von Mises sqrt(((533.3)^2 + (266.7)^2 + (266.7)^2) / 2) = 461.9 MPa."""
+    st, sr, sz = 200e6 * 5 / 3, -200e6, 200e6 / 3
+    by_hand = math.sqrt(((st - sr) ** 2 + (sr - sz) ** 2 + (sz - st) ** 2) / 2)
+    assert by_hand == pytest.approx(461.88e6, rel=1e-4)
+    assert bore_von_mises(200e6, 1.0, 2.0) == pytest.approx(by_hand, rel=1e-12)
+
+
+def test_the_viii2_wall_is_s_ln_y():
+    """VIII-2 4.3.3, t = (D / 2) (exp(P / (S E)) - 1), E = 1: P = S ln 2 gives t = D / 2 (b = 2a), P = S gives
+    b = e a (by hand); and the reviewer's independent script (a hostile review's ``housing_alt.py``: the plain
+    oil design, 645 MPa x 1.40 in a 29.2 mm bore 1.236 m long) gives Y = 3.27 and 256 kg of maraging steel."""
+    a = 0.05
+    assert wall_for(S * math.log(2.0), a).outer_radius == pytest.approx(2 * a, rel=1e-12)
+    assert wall_for(S, a).ratio == pytest.approx(math.e, rel=1e-12)
+    w = wall_for(645e6 * 1.40, 29.2e-3)
+    assert w.ratio == pytest.approx(3.27, abs=0.005)
+    assert w.mass_per_length * 1.236 == pytest.approx(256, abs=0.5)
+    assert w.within_practical and w.governing.startswith("ASME VIII-2")
+    # the elastic check governs nothing: the bore's von Mises is Lame's at that wall, here below yield
+    assert w.bore_von_mises == pytest.approx(bore_von_mises(903e6, 29.2e-3, w.outer_radius), rel=1e-12)
+    assert not w.first_yield
+    # beyond the practical ratio the wall still has a finite mass, and says so
+    far = wall_for(S * math.log(2 * PRACTICAL_RATIO), 0.03)
+    assert not far.within_practical and math.isfinite(far.mass_per_length) and "Y_max" in far.governing
+
+
+def test_the_shakedown_rule_is_the_collapse_then_twice_the_elastic_range():
+    """(2 / sqrt 3) S min(1 - 1 / Y^2, ln Y): ln 1.5 below the corner (Y = 2.218, where 1 - 1/Y^2 = ln Y),
+    1 - 1/16 at Y = 4 (825 MPa for maraging 300), 2 S / sqrt 3 at no wall; its inverse is the ratio."""
+    k = 2 / math.sqrt(3) * S
+    assert held_pressure(1.5, S, "shakedown") == pytest.approx(k * math.log(1.5), rel=1e-12)
+    assert held_pressure(4.0, S, "shakedown") == pytest.approx(k * 15 / 16, rel=1e-12)
+    assert held_pressure(4.0, S, "shakedown") == pytest.approx(825.4e6, rel=1e-4)
+    for y in (1.5, 2.2, 2.3, 3.0, 10.0):
+        assert wall_ratio(held_pressure(y, S, "shakedown"), S, "shakedown") == pytest.approx(y, rel=1e-9)
+    assert math.isinf(wall_ratio(1.01 * k, S, "shakedown"))
+
+
+def test_the_floor_is_viii2s_integral_flat_head():
+    """t = d sqrt(C P / S), C = 0.17: at P = S, t = 2 a sqrt(0.17) = 0.8246 a."""
+    assert floor_for(S, 0.04) == pytest.approx(0.04 * 2 * math.sqrt(0.17), rel=1e-12)
+    assert 2 * math.sqrt(0.17) == pytest.approx(0.8246, rel=1e-4)
+
+
+def test_the_critical_flaw_by_hand():
+    """p = 500 MPa, Y = 2: hoop 500 x 5 / 3 = 833.3 MPa, with the pressure on the faces 1333.3 MPa:
+    a_c = (80 / (1.12 x 1333.3))^2 / pi = 0.9135 mm."""
+    assert critical_flaw(500e6, 2.0, MARAGING) == pytest.approx(0.9135e-3, rel=1e-3)
+
+
+def test_a_step_is_a_factor_2():
+    assert step_factor() == pytest.approx(2.0, rel=1e-9)
+
+
+def test_the_fixture_is_weighed_whole_and_finite_beyond_the_old_elastic_bound():
+    """``fixture_mass`` on a slow ramp (factor 1): the wall is ``wall_for`` at the peak, the parts sum to
+    the fixture; 600 MPa (above Lame's s / sqrt 3 = 440 MPa) is a wall of Y = exp(600 / 762.5) = 2.20;
+    1200 MPa needs Y = 4.82, beyond Y_max: finite, and no housing within it."""
+    d = {"bore_radius": 0.03, "column": 1.0, "piston_mass": 0.2, "liquid_mass": 2.5,
+         "pin": [[0.0, 1e-3], [1.0, 0.0]]}
+    t = np.linspace(0.0, 0.1, 20001)
+    ramp = np.clip(t / 0.05, 0, 1)                 # a rise 50 ms long: hundreds of breathing periods
+    w = fixture_mass(d, t, 300e6 * ramp, 300e6 * ramp)
+    assert w["dynamic_factor"] == pytest.approx(1.0, abs=1e-3)
+    assert w["outer_radius"] == pytest.approx(wall_for(300e6 * w["dynamic_factor"], 0.03).outer_radius, rel=1e-12)
+    assert w["fixture"] == pytest.approx(w["piston"] + w["pin"] + w["housing"] + w["liquid"], rel=1e-12)
+    assert w["pin"] == pytest.approx(MARAGING.density * 0.5e-3, rel=1e-9)   # 1e-3 m^2 x 1 m / 2 of steel
+    high = fixture_mass(d, t, 600e6 * ramp, 600e6 * ramp)
+    assert high["wall_ratio"] == pytest.approx(math.exp(600e6 * high["dynamic_factor"] / S), rel=1e-12)
+    assert high["wall_ratio"] == pytest.approx(2.20, abs=0.01) and high["housing_holds"]
+    beyond = fixture_mass(d, t, 1200e6 * ramp, 1200e6 * ramp)
+    assert math.isfinite(beyond["fixture"]) and not beyond["housing_holds"]
+    # the pin stands in the liquid: its von Mises is the pressure, held to S
+    assert high["pin_holds"] and not beyond["pin_holds"]
+
+
+def test_the_closed_form_limits_read_one_wall_and_one_factor():
+    """``contact_pressure_limit``: the front at the limit times the reflection and the step's factor is
+    what the wall holds at Y_max (S ln 4 = 1057 MPa); ``upstream_pressure_limit`` returns the speed at which
+    the quasi-steady upstream pressure is the bound.  The reviewer's independent solver: 735 MPa upstream
+    of n = 0.5625 in oil at 539.4 m/s, 595 MPa at 485.4 m/s."""
+    from shockfem.programmer.column_design import contact_pressure_limit, upstream_pressure_limit, wall_holds
+    from shockfem.programmer.dashpot_design import upstream_pressure
+    from shockfem.programmer.liquids import MINERAL_OIL as oil
+    assert wall_holds() == pytest.approx(S * math.log(4.0), rel=1e-12)
+    speed, front, factor, holds = contact_pressure_limit(oil, reflection=2.0)
+    assert front * 2.0 * factor == pytest.approx(holds, rel=1e-12) and factor == pytest.approx(2.0, rel=1e-9)
+    assert upstream_pressure(0.5625, 539.4, oil.density) == pytest.approx(735e6, rel=2e-3)
+    assert upstream_pressure(0.5625, 485.4, oil.density) == pytest.approx(595e6, rel=2e-3)
+    v = upstream_pressure_limit(oil, S)
+    assert upstream_pressure(0.5625, v, oil.density) == pytest.approx(S, rel=1e-9)
+
+
+def test_the_striker_carries_its_housing_and_sets_the_closing_speed():
+    """``striker_report``: the least striker is (housing + liquid) x 1.2; the least closing speed is the
+    band floor's velocity change times 1 + m / M (the collision law at restitution 0)."""
+    from shockfem.programmer.column_design import striker_report
+    from shockfem.programmer.dashpot_design import PulseSpec
+    from shockfem.programmer.requirement import requirement
+    from shockfem.units import G0
+    pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
+    d = {"payload_mass": 6.0, "striker_mass": 400.0, "striker_speed": 500.0}
+    r = striker_report(d, pulse, {"housing_carried": 300.0, "liquid": 10.0})
+    assert r["carrying"] == pytest.approx(372.0, rel=1e-12) and r["carries"]
+    dv = requirement("rectangle", 10_000 * G0, 5e-3, 6.0).velocity_change
+    assert r["least_closing_speed"] == pytest.approx(0.9 * dv * (1 + 6.0 / 400.0), rel=1e-9)
+
+
+def test_the_carried_striker_is_a_fixed_point_with_its_housing():
+    """``carried_ratio`` on the 12 lb article in oil at 40 cells: the striker it returns carries (within
+    ``STRIKER_TOLERANCE``) the housing of the closed-form design at that striker, and is heavier than
+    ten payloads (the housing is hundreds of kilograms at these pressures)."""
+    from shockfem.programmer import column_design as cd
+    from shockfem.programmer.column_dashpot import simulate_column
+    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, PulseSpec, dashpot_lumped, striker_carrying
+    from shockfem.programmer.liquids import MINERAL_OIL as oil
+    from shockfem.units import G0, LB
+    pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
+    ratio = cd.carried_ratio(pulse, 12 * LB, 0.0, oil, cells=40)
+    d = cd._design(pulse, 12 * LB, 0.0, oil, cd.closed_form_bore(pulse, 12 * LB, 0.0, oil, ratio), cd.START, ratio)
+    w = cd.weigh(d, simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, 40, oil.column()))
+    assert ratio > 10.0
+    assert d["striker_mass"] == pytest.approx(striker_carrying(w["housing_carried"], w["liquid"]),
+                                              rel=2 * cd.STRIKER_TOLERANCE)
