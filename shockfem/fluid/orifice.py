@@ -11,9 +11,11 @@ where the jet mixes):
 
 the flow-meter form with the velocity of approach (ISO 5167-1's 1 / sqrt(1 - beta^4) with the jet's
 own contraction).  The contraction of a thin sharp-edged orifice against the area ratio is
-Idelchik's (Handbook of Hydraulic Resistance, 3rd ed., 1994, diagram 4-9, thin-walled orifice,
-Re > 1e5): the total-pressure loss referred to the passage's speed, with the jet entering a large
-space (f0 / f2 -> 0),
+Idelchik's (Handbook of Hydraulic Resistance, 3rd ed., 1994, the thin-walled sharp-edged orifice,
+l / d_h <= 0.015, Re = w0 d_h / nu > 1e5, over f0 / f1 from 0 to 1; cited here as diagram 4-9, check
+the number: the Modelica Standard Library's Fluid.Dissipation cites 4-9 for the sudden contraction
+and 4-15 for the thick-edged orifice): the total-pressure loss referred to the passage's speed, with
+the jet entering a large space (f0 / f2 -> 0),
 
     zeta = (1 + 0.707 sqrt(1 - n))^2 / n^2       p + rho u1^2 / 2 = zeta rho u1^2 / 2
 
@@ -21,18 +23,44 @@ which is the law above with
 
     Cc(n) = 1 / (1 + 0.707 sqrt(1 - n))          0.586 at n -> 0, 0.667 at n = 0.5, 1 at n = 1.
 
-``shockfem verify orifice_law`` checks it against ISO 5167-2's Reader-Harris/Gallagher coefficient at
-three area ratios.  Its range of validity (``VALID_AREA_RATIO``): the thin sharp-edged orifice
-of ISO 5167-2 (beta = d / D <= 0.75, n <= 0.56), where it agrees with the standard within 3%; above
-that the jet hardly contracts, the pressure a given flow needs falls to zero at n = 1, and the law is
-Idelchik's extrapolation, not a measured coefficient.  Reynolds number (``least_reynolds``): the law has
-none in it, the coefficient of a turbulent orifice; ISO 5167-2:2003 (5.3.1, corner tappings) holds its
-Reader-Harris/Gallagher equation down to Re_D = rho u1 D / mu = 5000 for beta <= 0.56 and
-16000 beta^2 above, and between there and Re_D -> inf that equation's coefficient rises by a few
-percent (``shockfem verify orifice_reynolds`` prints by how much); below it the flow turns laminar and
-the coefficient is another law's.  At the end of a stroke every dashpot's flow slows through that
-bound; what a design may leave there is a small share of its velocity change
-(``programmer.dashpot_validity``).
+At small n, the end of a stroke, this Cc(0) = 0.586 is 4% under Kirchhoff's free-streamline
+pi / (pi + 2) = 0.611 (and ISO 5167-2's C = 0.596 at beta -> 0): the law passes 4% less flow there than
+the potential-flow jet, and a pin cut on it opens 4% wider than one cut on Kirchhoff's.
+
+Where each part of the range comes from (every run checks them, ``programmer.dashpot_validity``):
+- area ratio: Idelchik's formula covers 0 <= n <= 1, but the law is checked against measured
+  coefficients only up to ISO 5167-2's beta = 0.75 (``VALID_AREA_RATIO``, n = 0.5625, where it agrees
+  with the Reader-Harris/Gallagher equation within 3%: ``shockfem verify orifice_law``).  That bound
+  is a flow meter's envelope, not a physical limit; it is the default largest opening a designer
+  cuts (``OrificeLaw.largest_ratio``, a parameter of a design), and a design that opens wider runs on
+  the law outside its checked data (``extrapolated``: flagged, not vetoed).
+- the plate: a thin orifice has a land l / d_h <= ``THIN_LAND`` (Idelchik 4-9; ISO 5167-2's e <= 0.02 D
+  is the meter's stricter form).  A thicker one lets the jet reattach in the bore of the orifice and
+  passes more flow unless it cavitates (Idelchik's thick-edged orifice, diagrams 4-12 and 4-15: up to
+  1.36 times the thin plate's coefficient, ``thick_discharge_ratio``).
+- cavitation: a thick orifice whose vena contracta falls to the vapour pressure chokes; its flow is
+  Nurick's Cd = Cc sqrt(K), K = (p1 - p_v) / (p1 - p2) (Nurick, Orifice cavitation and its effect on
+  spray mixing, J. Fluids Eng. 98 (1976) 681-687; the formula recalled, check), whatever its land,
+  the contraction Cc that of the sharp inlet.  Below about K = (Cd_thick / Cc)^2 (1.8 for a long land) it cavitates:
+  at a dashpot's hundreds of MPa into the atmosphere K - 1 is below 1e-3, so the flow is choked and
+  the thin law's Cc holds within sqrt(K) - 1 (``coefficient_ratio``).  ISO 5167's single-phase
+  condition fails in every such design; Nurick's form is what replaces it.
+- the bore: ISO 5167-2 holds its coefficient for 50 mm <= D <= 1000 mm (``ISO_DIAMETERS``); Idelchik's
+  diagram names no size.  A smaller bore is outside the data the law is checked on (flagged).
+- Reynolds number: the law is a turbulent orifice's; ISO 5167-2:2003 (5.3.1, corner tappings) holds
+  the Reader-Harris/Gallagher equation down to Re_D = rho u1 D / mu = 5000 for beta <= 0.56 and
+  16000 beta^2 above (``least_reynolds``); that bound is the edge of the standard's data set, not a
+  laminar transition, and ``shockfem verify orifice_reynolds`` prints how far the coefficient has
+  moved there (2.3 to 4.8% over its turbulent limit at three area ratios).  Below it the coefficient's
+  viscous shift is Lichtarowicz, Duggins & Markland's (Discharge coefficients for incompressible
+  non-cavitating flow through long orifices, J. Mech. Eng. Sci. 7 (1965) 210), fitted to lands
+  2 <= l / d <= 10 down to Re ~ 10 and taken as the estimate of the shift for thin plates and longer
+  lands too (check: recalled): 1/Cd = 1/Cd_u + 20 (1 + 2.25 l / d) / Re, Re = d sqrt(2 dp / rho) / nu
+  on the orifice's own hydraulic diameter and ideal jet speed (``viscous_coefficient_ratio``); for a
+  pin's annulus the length scale is the gap's hydraulic diameter 2 (r_hole - r_pin)
+  (``annulus_hydraulic_diameter``), not the bore, since the boundary layers that shift the coefficient
+  grow on the gap's walls.  What a run may leave to these shifts is a small share of its velocity
+  change (``programmer.dashpot_validity``).
 
 The jet's momentum: a control volume moving with the piston from the passage (pressure p, speed u1)
 to the jet's contracted section (0 gauge, u_j) gives the force of the liquid on the piston
@@ -57,7 +85,8 @@ from numba import njit
 
 # the coefficient of Idelchik's thin-orifice contraction term, 0.707 = 1 / sqrt(2) (diagram 4-9)
 IDELCHIK_CONTRACTION = 0.707
-# the largest area ratio of ISO 5167-2's thin orifice plates (beta <= 0.75), where the law is checked
+# the largest area ratio of ISO 5167-2's thin orifice plates (beta <= 0.75): where the law is checked against
+# measured coefficients, and the default largest opening of a design (a flow meter's bound, not a physical one)
 VALID_AREA_RATIO = 0.75 ** 2
 # 1 - (Cc n)^2 is kept above this: at n -> 1 the law lets any flow pass at no pressure (Idelchik's Cc
 # -> 1), which a stiff integration cannot follow; 1e-3 is reached only above n = 1 - 5e-7
@@ -71,7 +100,8 @@ class OrificeLaw:
     """How an orifice passes liquid.  ``discharge``: a fixed coefficient, or None for Idelchik's
     contraction against the area ratio; ``approach``: count the passage's velocity of approach;
     ``jet``: take the jet's momentum from the force on the piston; ``largest_ratio``: the largest area
-    ratio a designer may cut (the law's range)."""
+    ratio a designer may cut (``VALID_AREA_RATIO`` by default, the law's checked data; a design may set
+    it wider, to 1, where it runs on the law's extrapolation)."""
     discharge: float | None = None
     approach: bool = True
     jet: bool = True
@@ -183,6 +213,90 @@ def area_for_force(force: float, speed: float, rho: float, A: float, largest: fl
     return 0.5 * (low + high)
 
 
+def extrapolated(n: float) -> bool:
+    """Whether the area ratio ``n`` lies beyond the data the law is checked on (``VALID_AREA_RATIO``)."""
+    return n > VALID_AREA_RATIO
+
+
+# Idelchik's thin-walled orifice: the land over the hydraulic diameter at most this (his thick-edged
+# orifice's formula starts above it, diagram 4-15)
+THIN_LAND = 0.015
+# Idelchik's thick-edged orifice (3rd ed., tau from diagram 4-12, the loss from diagram 4-15, for l / d_h > 0.015
+# and Re > 1e3, as the Modelica Standard Library's Fluid.Dissipation dp_thickEdgedOverall writes them): the jet
+# reattaches fully at l / d_h = 2.4
+REATTACHED_LAND = 2.4
+# the inlet's and the outlet's loss of a thick-edged orifice into a large space, referred to its own
+# speed, at n -> 0 (Idelchik 4-15's 0.5 (1 - n)^0.75, and the jet's whole head for its (1 - n)^2, the jet
+# entering a large space), and the land's friction lambda (Idelchik's 0.02)
+INLET_LOSS, EXIT_LOSS, LAND_FRICTION = 0.5, 1.0, 0.02
+
+
+def thick_edge_excess(land: float) -> float:
+    """Idelchik's tau(l / d_h) of a thick-edged orifice (diagram 4-12): the loss of the jet that has not
+    yet reattached, (2.4 - l) 10^-phi(l), phi = 0.25 + 0.535 l^8 / (0.05 + l^8); 0 past 2.4."""
+    if land >= REATTACHED_LAND:
+        return 0.0
+    phi = 0.25 + 0.535 * land ** 8 / (0.05 + land ** 8)
+    return (REATTACHED_LAND - land) * 10.0 ** -phi
+
+
+def thick_discharge(land: float) -> float:
+    """The discharge coefficient of a thick-edged orifice of land ``land`` = l / d_h into a large space,
+    not cavitating, at small area ratio: 1 / sqrt(inlet + tau + exit + lambda l)."""
+    return 1.0 / math.sqrt(INLET_LOSS + thick_edge_excess(land) + EXIT_LOSS + LAND_FRICTION * land)
+
+
+def thick_discharge_ratio(land: float) -> float:
+    """The thick-edged orifice's coefficient over the thin one's (the same formula at no land): 1 for a
+    thin plate, 1.36 where the jet has reattached (l / d_h = 2.4)."""
+    return thick_discharge(land) / thick_discharge(0.0)
+
+
+def cavitation_number(p: float, vapour_pressure: float, downstream: float = 0.0) -> float:
+    """Nurick's K = (p1 - p_v) / (p1 - p2) of an orifice at the upstream gauge pressure ``p`` [Pa]
+    discharging to ``downstream`` [Pa gauge]; inf with no pressure drop."""
+    return (p - vapour_pressure) / (p - downstream) if p > downstream else math.inf
+
+
+def coefficient_ratio(land: float, cavitation: float) -> float:
+    """The orifice's coefficient over the thin law's: a thick orifice's, choked at Nurick's Cc sqrt(K)
+    if that is the lower (the vena contracta at the vapour pressure); 1 for a thin plate."""
+    return min(thick_discharge_ratio(land), math.sqrt(cavitation))
+
+
+def cavitates(land: float, cavitation: float) -> bool:
+    """Whether the orifice's flow is choked by cavitation (Nurick): sqrt(K) below the coefficient it
+    would have without (a thin plate's jet is free already: it never chokes in this sense)."""
+    return math.sqrt(cavitation) < thick_discharge_ratio(land)
+
+
+# Lichtarowicz, Duggins & Markland (1965): the viscous term of 1/Cd, 20 (1 + 2.25 l / d) / Re
+VISCOUS_TERM, VISCOUS_LAND = 20.0, 2.25
+
+
+def jet_reynolds(p: float, density: float, viscosity: float, hydraulic_diameter: float) -> float:
+    """The orifice's Reynolds number d_h sqrt(2 p / rho) / nu of Lichtarowicz et al. (ideal jet speed)."""
+    return hydraulic_diameter * math.sqrt(2.0 * max(p, 0.0) / density) * density / viscosity
+
+
+def viscous_coefficient_ratio(reynolds: float, land: float, cd: float) -> float:
+    """The coefficient at ``reynolds`` over its turbulent limit ``cd`` (Lichtarowicz et al.'s viscous
+    term, at the land ``land`` = l / d_h): 1 / (1 + cd 20 (1 + 2.25 l) / Re); 0 with no flow."""
+    if reynolds <= 0.0:
+        return 0.0
+    return 1.0 / (1.0 + cd * VISCOUS_TERM * (1.0 + VISCOUS_LAND * land) / reynolds)
+
+
+def annulus_hydraulic_diameter(area: float, hole_area: float) -> float:
+    """The hydraulic diameter [m] of a pin's annulus of ``area`` [m^2] in a hole of ``hole_area``:
+    2 (r_hole - r_pin), the whole hole's diameter with no pin."""
+    r_hole = math.sqrt(hole_area / math.pi)
+    r_pin = math.sqrt(max(hole_area - area, 0.0) / math.pi)
+    return 2.0 * (r_hole - r_pin)
+
+
+# ISO 5167-2:2003, 5.3.1: the pipe diameters [m] its orifice coefficient is measured over
+ISO_DIAMETERS = (0.05, 1.0)
 # ISO 5167-2:2003, 5.3.1 (corner and D-D/2 tappings): the least Re_D of the orifice coefficient, and
 # the area ratio above which it grows as 16000 beta^2
 ISO_LEAST_REYNOLDS, ISO_REYNOLDS_SLOPE = 5000.0, 16000.0
@@ -212,9 +326,10 @@ APPROACH_NEGLIGIBLE = 0.05
 
 
 def valid_area_ratio(law: OrificeLaw) -> float:
-    """The largest area ratio at which ``law`` holds: ISO 5167-2's plates for a law with the approach,
-    (Cc n)^2 <= 5% for one without (n <= 0.32 at Cd 0.7)."""
+    """The largest area ratio a design on ``law`` may open to: its ``largest_ratio`` for a law with the
+    approach (``VALID_AREA_RATIO`` by default; beyond that ``extrapolated``), (Cc n)^2 <= 5% for one
+    without (n <= 0.32 at Cd 0.7)."""
     if law.approach:
-        return VALID_AREA_RATIO
+        return law.largest_ratio
     cc = law.discharge if law.discharge is not None else contraction(0.0)
     return math.sqrt(APPROACH_NEGLIGIBLE) / cc

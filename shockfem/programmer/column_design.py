@@ -2,8 +2,9 @@
 (``column_dashpot``), the orifice as Idelchik's sharp-edged one with the velocity of approach and the
 jet's reaction, the bore a design variable, and every design checked against the laws' ranges.
 
-Why the bore is a handle and not the article's calibre.  At the largest area ratio the law holds for
-(n_max = 0.5625, ``fluid.orifice.VALID_AREA_RATIO``) the least force the orifice makes per unit of
+Why the bore is a handle and not the article's calibre.  At the largest area ratio the design allows
+(n_max, a parameter: by default 0.5625, ``fluid.orifice.VALID_AREA_RATIO``, the law's checked data;
+wider, the law is extrapolated and every run says so) the least force the orifice makes per unit of
 piston area is fixed by the closing speed V alone (``least_force_per_area``: the Borda-Carnot loss
 rho (u_j - u1)^2 / 2 at u_j = V / (Cc n)), so a bore of area A throttles at least q(V) A at contact.
 The payload's force m A_g and q(V) set the bore, A0 = m A_g / q(V) (``bore_for_force``): a wider bore
@@ -44,7 +45,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize
 
 from ..amplifier.interfaces import reduced_mass
-from ..fluid.orifice import AREA_RATIO, OrificeLaw, jet_reaction, mass_flow, piston_force
+from ..fluid.orifice import AREA_RATIO, VALID_AREA_RATIO, OrificeLaw, jet_reaction, mass_flow, piston_force
 from ..metrics.shapes import TOLERANCE
 from .column_dashpot import CELLS, simulate_column
 from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RATIO, PulseSpec, carrier_density,
@@ -121,17 +122,18 @@ def wall_holds(steel: str = HOUSING_STEEL, rule: str = WALL_RULE, ratio: float =
 
 
 def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, reflection: float = 2.0,
-                           rule: str = WALL_RULE, ratio: float = PRACTICAL_RATIO) -> tuple:
+                           rule: str = WALL_RULE, ratio: float = PRACTICAL_RATIO, law: OrificeLaw = AREA_RATIO) -> tuple:
     """The closing speed [m/s] above which no wall of ``steel`` up to ``ratio`` (by ``rule``) holds the
     front a piston makes at contact with its orifice at the law's largest area ratio (the least front any
     pin in the law's range makes in the 1D model), that front ``reflection`` times over (2 at the floor,
     a closed end; 1 on the wall by the piston) and times its dynamic factor, on the designs' basis
     (``housing.dynamic_factor`` of the wall's pressure history; the front's own history is a step:
-    ``housing.step_factor``, 2): (speed, the front [Pa] at it, the factor, the most the wall holds [Pa])."""
+    ``housing.step_factor``, 2): (speed, the front [Pa] at it, the factor, the most the wall holds [Pa]);
+    ``law``: the orifice law with the design's largest area ratio."""
     holds, factor = wall_holds(steel, rule, ratio), step_factor()
     front = holds / (reflection * factor)
     A = 1.0e-3
-    speed = brentq(lambda V: contact_shock(V, AREA_RATIO.largest_ratio * A, A, liquid)[0] - front, 1.0, 3000.0)
+    speed = brentq(lambda V: contact_shock(V, law.largest_ratio * A, A, liquid, law)[0] - front, 1.0, 3000.0)
     return speed, front, factor, holds
 
 
@@ -143,11 +145,11 @@ def upstream_pressure_limit(liquid: DesignLiquid, held: float) -> float:
     return brentq(lambda V: upstream_pressure(AREA_RATIO.largest_ratio, V, liquid.density) - held, 1.0, 3000.0)
 
 
-def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio):
+def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio, law=AREA_RATIO):
     bore_scale, column_over_stroke, force_factor, speed_factor = h
     d = dashpot_design(pulse, article_mass, bore_scale * base_radius, (1.0, column_over_stroke, force_factor,
                                                                         speed_factor),
-                       seat_mass, striker_ratio, AREA_RATIO, liquid)
+                       seat_mass, striker_ratio, law, liquid)
     d["handles"] = dict(zip(HANDLES, map(float, h)))
     return d
 
@@ -157,14 +159,15 @@ def _objective_of(pulse, band, limits):
     banded = (10.0 * (band.worst_excess + max(0.0, abs(band.velocity_change_error) - allowed))
               + abs(band.velocity_change_error) + 0.1 * band.worst_deviation)
     outside = sum(math.log(lim.value / lim.limit) for lim in limits
-                  if ("column" in lim.models or "lumped" not in lim.models) and not lim.holds)
+                  if lim.vetoes and ("column" in lim.models or "lumped" not in lim.models) and not lim.holds)
     return banded + PENALTY * outside
 
 
 def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0.0,
                      liquid: DesignLiquid = MINERAL_OIL, striker_ratio: float = STRIKER_RATIO,
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
-                     steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None) -> dict:
+                     steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None,
+                     largest_ratio: float = VALID_AREA_RATIO) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
@@ -175,16 +178,18 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     ``steel`` by ``rule``), the striker (``striker``), the wall times, and ``verdict``: "inside" (band
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
     pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
-    "fails the band"."""
-    end = pulse.record_end()
-    striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule)
-    base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio)
+    "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
+    the law is extrapolated, which the checks flag)."""
+    end, law = pulse.record_end(), OrificeLaw(largest_ratio=largest_ratio)
+    striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule,
+                                  law)
+    base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
     liquid_column = liquid.column()
 
     def objective(h):
         if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
             return 100.0
-        d = _design(pulse, article_mass, seat_mass, liquid, base, h, striker_ratio)
+        d = _design(pulse, article_mass, seat_mass, liquid, base, h, striker_ratio, law)
         try:
             run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
         except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
@@ -197,14 +202,14 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     res = minimize(objective, np.array(START), method="Nelder-Mead",
                    options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
     search_wall = time.perf_counter() - t0
-    d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
+    d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
     out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
         if out["striker"] is None or out["striker"]["carries"]:
             break
         striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
-        base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio)
-        d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio)
+        base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
+        d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
         out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
                objective=float(res.fun))
@@ -273,7 +278,7 @@ STRIKER_ITERATIONS, STRIKER_TOLERANCE = 4, 0.02
 
 def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liquid: DesignLiquid,
                   least_ratio: float = STRIKER_RATIO, cells: int = SEARCH_CELLS, steel: str = HOUSING_STEEL,
-                  rule: str = WALL_RULE) -> float:
+                  rule: str = WALL_RULE, law: OrificeLaw = AREA_RATIO) -> float:
     """The striker over the payload that carries the housing its own design needs: the larger of
     ``least_ratio`` and ``dashpot_design.striker_carrying`` (housing, liquid and structure) over the
     payload, the housing weighed on the column's run (``cells``) of the closed-form design at the bore
@@ -283,7 +288,7 @@ def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liqui
     ratio = least_ratio
     for _ in range(STRIKER_ITERATIONS):
         d = _design(pulse, article_mass, seat_mass, liquid,
-                    closed_form_bore(pulse, article_mass, seat_mass, liquid, ratio), START, ratio)
+                    closed_form_bore(pulse, article_mass, seat_mass, liquid, ratio, law), START, ratio, law)
         try:
             run = simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, cells, liquid.column())
         except (RuntimeError, ValueError):        # the piston reached the floor: keep the last striker
@@ -305,10 +310,9 @@ def striker_report(d: dict, pulse: PulseSpec, weight: dict) -> dict:
     collision law at that striker: dV (1 + m / M)) [m/s]."""
     m, M = d["payload_mass"], d["striker_mass"]
     carrying = striker_carrying(weight["housing_carried"], weight["liquid"])
-    dv = requirement(pulse.shape, pulse.peak, pulse.duration, m).velocity_change
     return {"mass": M, "carrying": carrying, "carries": bool(M >= carrying * (1.0 - STRIKER_TOLERANCE)),
             "ratio": M / m, "closing_speed": d["striker_speed"],
-            "least_closing_speed": striker_speed(m, M, (1.0 - TOLERANCE["velocity_change"]) * dv)}
+            "least_closing_speed": striker_speed(m, M, pulse.least_velocity_change())}
 
 
 def _lumped_agrees(models: dict) -> bool:

@@ -75,6 +75,12 @@ class PulseSpec:
         """The record a band check needs after first contact: the pulse and the window after it."""
         return self.duration * (1.0 + TOLERANCE["after"]) * 1.2
 
+    def least_velocity_change(self) -> float:
+        """The least velocity change [m/s] the band accepts: the checked shape's (a rectangle's is
+        MIL-STD-810's trapezoid's, 0.9 A T) less the band's tolerance, not the specified shape's own."""
+        ideal = shapes.specified(self.checked_shape, self.peak, self.duration)
+        return (1.0 - TOLERANCE["velocity_change"]) * ideal.velocity_change
+
     def placed_ideal(self, t, a, pulse):
         """The specified pulse placed on a measured one."""
         return shapes.place(shapes.specified(self.checked_shape, self.peak, self.duration), t, pulse.sign * a, pulse)
@@ -162,7 +168,7 @@ def dashpot_lumped(d: dict) -> LumpedDashpot:
     return LumpedDashpot(d["striker_mass"], d["payload_mass"], d["striker_speed"],
                          d["piston_area"], d["column"], tuple(map(tuple, d["pin"])), liquid.density,
                          liquid.bulk_modulus, OIL["discharge"], liquid.tait_exponent,
-                         law=OrificeLaw(**d["orifice_law"]))
+                         law=OrificeLaw(**d["orifice_law"]), orifice_land=d.get("piston_thickness", 0.0))
 
 
 def design_dashpot(pulse: PulseSpec, article_mass: float, bore_radius: float, seat_mass: float = 0.0,

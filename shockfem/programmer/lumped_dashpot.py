@@ -42,6 +42,7 @@ class LumpedDashpot:
     tait_exponent: float = 1.0
     initial_pressure: float = 0.0       # a pre-charge [Pa] (gauge), as the cavity's
     law: OrificeLaw | None = None       # the orifice's law; None: ``discharge`` fixed, as the cavity's
+    orifice_land: float = 0.0           # the orifice's length through the piston [m] (0: a thin plate)
 
     def orifice_law(self) -> OrificeLaw:
         return self.law or OrificeLaw(discharge=self.discharge, approach=False, jet=False)

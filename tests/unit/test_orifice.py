@@ -77,3 +77,50 @@ def test_the_fixed_law_cuts_the_closed_form_metering_pin():
     F, v = 5e5, 400.0
     closed = metering_pin_area(0.0, A, F, 1.0, v, RHO, 0.7)
     assert orifice.area_for_force(F, v, RHO, A, A, FIXED_CD.code()) == pytest.approx(closed, rel=1e-10)
+
+
+def test_idelchiks_thick_edged_orifice_by_hand():
+    """Idelchik 4-12's tau = (2.4 - l) 10^-phi, phi = 0.25 + 0.535 l^8 / (0.05 + l^8) (as the Modelica Standard
+    Library's Fluid.Dissipation writes it): 2.4 x 10^-0.25 = 1.3496 at l / d_h = 0; 1.4 x 10^-(0.25 + 0.535 / 1.05)
+    = 0.2436 at 1; at 0.5, 1.9 x 10^-(0.25 + 0.535 / (0.05 x 256 + 1)) = 0.9772; 0 reattached.  Into a large space the
+    coefficient over the thin one's is sqrt((0.5 + 1.3496 + 1) / (0.5 + 1 + 0.02 x 2.4)) = 1.3568 at 2.4."""
+    assert orifice.thick_edge_excess(0.0) == pytest.approx(2.4 * 10 ** -0.25, rel=1e-12)
+    assert orifice.thick_edge_excess(1.0) == pytest.approx(1.4 * 10 ** -(0.25 + 0.535 / 1.05), rel=1e-12)
+    assert orifice.thick_edge_excess(0.5) == pytest.approx(1.9 * 10 ** -(0.25 + 0.535 / (0.05 * 256 + 1)), rel=1e-12)
+    assert orifice.thick_edge_excess(3.0) == 0.0
+    assert orifice.thick_discharge_ratio(0.0) == 1.0
+    assert orifice.thick_discharge_ratio(2.4) == pytest.approx(math.sqrt((1.5 + 2.4 * 10 ** -0.25) / 1.548), rel=1e-12)
+
+
+def test_nurick_cavitation_chokes_a_thick_orifice_to_the_thin_laws_coefficient():
+    """K = (p1 - p_v) / (p1 - p2): at 287 MPa into the atmosphere (p_v one atmosphere below it) 287.1 / 287;
+    a reattached land chokes there at sqrt(K) (within 2e-4 of the thin law), and not at 0.05 MPa (K = 3,
+    sqrt 1.73 above its 1.36); a thin plate never chokes."""
+    k = orifice.cavitation_number(287e6, -1e5)
+    assert k == pytest.approx(287.1 / 287.0, rel=1e-12)
+    assert orifice.coefficient_ratio(2.4, k) == pytest.approx(math.sqrt(k), rel=1e-12)
+    assert orifice.cavitates(2.4, k) and not orifice.cavitates(0.0, k)
+    k_low = orifice.cavitation_number(0.05e6, -1e5)
+    assert k_low == pytest.approx(3.0, rel=1e-12)
+    assert orifice.coefficient_ratio(2.4, k_low) == orifice.thick_discharge_ratio(2.4)
+    assert math.isinf(orifice.cavitation_number(0.0, -1e5))
+
+
+def test_lichtarowiczs_viscous_shift_and_the_annulus_length_scale():
+    """1 / Cd = 1 / Cd_inf + 20 (1 + 2.25 l / d) / Re: at Re = 1000, a thin plate at Cd 0.6 keeps
+    1 / 1.012 of its coefficient; the ideal jet's Re at 2 MPa in water through 1 mm: 1e-3 sqrt(4000) 1e6 =
+    63246; a pin of 6 mm in a hole of 10 mm radius leaves a gap of hydraulic diameter 8 mm."""
+    assert orifice.viscous_coefficient_ratio(1000.0, 0.0, 0.6) == pytest.approx(1 / 1.012, rel=1e-12)
+    assert orifice.viscous_coefficient_ratio(1000.0, 2.0, 0.6) == pytest.approx(1 / (1 + 0.012 * 5.5), rel=1e-12)
+    assert orifice.jet_reynolds(2e6, 1000.0, 1e-3, 1e-3) == pytest.approx(1e-3 * math.sqrt(4000.0) * 1e6, rel=1e-12)
+    hole = math.pi * 0.01 ** 2
+    assert orifice.annulus_hydraulic_diameter(hole - math.pi * 0.006 ** 2, hole) == pytest.approx(0.008, rel=1e-9)
+    assert orifice.annulus_hydraulic_diameter(hole, hole) == pytest.approx(0.02, rel=1e-12)
+
+
+def test_the_largest_opening_is_the_designs_and_beyond_the_checked_data_it_is_extrapolation():
+    """``valid_area_ratio`` of a law with the approach is its own largest_ratio (0.5625 by default, the
+    data the law is checked on); 0.8 is extrapolated, 0.5625 is not."""
+    assert orifice.valid_area_ratio(AREA_RATIO) == orifice.VALID_AREA_RATIO == 0.5625
+    assert orifice.valid_area_ratio(OrificeLaw(largest_ratio=0.8)) == 0.8
+    assert orifice.extrapolated(0.8) and not orifice.extrapolated(0.5625)
