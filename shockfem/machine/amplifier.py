@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 import os
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 
 from scipy.optimize import brentq
 
@@ -39,7 +39,7 @@ from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
 from .limits import Limit, broken
 from .pad_materials import PAD_MATERIALS
-from .pads import Interface, Measured, PadDesign, RunCache, estimated_restitution, size_pad
+from .pads import PAD_MASS_SHARE, Interface, Measured, PadDesign, RunCache, estimated_restitution, size_pad
 from .spec import MachineSpec
 
 ASPECT = 1.0                # the intermediate masses' length over diameter
@@ -104,6 +104,8 @@ class Amplifier:
     # why the masses themselves failed (no chain of them makes the gain), apart from the checks ``reason``
     # adds on the chain designed (its speed, its pads' limits)
     design_reason: str = ""
+    # the first check's findings (``pad_bound``): an interface where no pad material holds its limits
+    pad_bounds: list = field(default_factory=list)
 
     @property
     def restitutions(self) -> list[float]:
@@ -201,10 +203,55 @@ def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], all
                  list(pad.limits) + measured, table)
 
 
-def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, echo) -> list[Stage]:
+def pad_bound(iface: Interface) -> str:
+    """The first check of an interface, closed forms only: "" when some material's pad keeps every limit
+    there, else why none does.  A pad that holds M* dv^2 / 2 at its material's working energy per volume w
+    weighs rho dv^2 / (2 w) m_a / (m_a + m_b) times the struck body whatever the bodies' size, so its mass
+    share goes as dv^2 and stays within ``PAD_MASS_SHARE`` only below a speed (``share_speed``); bare
+    steel faces stay at the allowable only below dv S / stress (the 1D impedance stress goes as dv)."""
+    sized = {m: size_pad(iface, m, estimated_restitution(m)) for m in PAD_MATERIALS}
+    if any(p.feasible for p in sized.values()):
+        return ""
+    words = []
+    padded = [(p.mass / iface.struck_mass, m) for m, p in sized.items() if p.mass > 0]
+    if padded:
+        share, m = min(padded)
+        words.append(f"the lightest pad ({m}) weighs {share:.3g} times the struck body (at most "
+                     f"{PAD_MASS_SHARE:g}: below {share_speed(iface, m):.4g} m/s)")
+    bare = sized.get("none")
+    if bare is not None:
+        face = next((lim for lim in bare.limits if lim.component.startswith("face")), None)
+        if face is not None and face.ratio > 1:
+            words.append(f"bare steel faces reach {face.ratio:.3g} times the allowable (within it below "
+                         f"{iface.speed / face.ratio:.3g} m/s)")
+    return f"{iface.name} closing at {iface.speed:.4g} m/s: no pad material holds its limits: " + "; ".join(words)
+
+
+def share_speed(iface: Interface, material: str) -> float:
+    """The closing speed [m/s] at which the pad of ``material`` sized on ``iface`` weighs ``PAD_MASS_SHARE``
+    of the struck body (about dv sqrt(limit / share): an elastomer's share goes as dv^2 at its fixed
+    working point, a crushed disc's nearly so), root-found on the sizing itself."""
+    def over(v):
+        return size_pad(replace(iface, speed=v), material).mass / iface.struck_mass - PAD_MASS_SHARE
+    if over(iface.speed) <= 0:
+        return iface.speed
+    return float(brentq(over, 1e-6 * iface.speed, iface.speed, xtol=1e-9, rtol=1e-10))
+
+
+def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, echo,
+             bounds: list[str] | None = None) -> list[Stage]:
+    """Each interface's pad chosen and measured; where the first check (``pad_bound``) finds that no
+    material holds its limits at some interface, no pad is run at all (each keeps its material's estimate,
+    the square root of its rebound resilience) and ``bounds`` gets the reasons."""
     allowable = initial_yield_stress(spec.material) / spec.safety_factor
     stages = []
-    for iface in interfaces(spec, masses, bodies, e):
+    faces = interfaces(spec, masses, bodies, e)
+    why = [w for w in (pad_bound(i) for i in faces) if w]
+    if bounds is not None:
+        bounds[:] = why
+    if why:
+        resolution = "estimate"
+    for iface in faces:
         pad, table = choose_pad(iface)
         m, pad = cache.measure(iface, pad.material, resolution)
         stages.append(_stage(iface.rounded(), pad, m, table, allowable))
@@ -228,14 +275,14 @@ def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=Non
     V, M = fixture.striker_speed, fixture.striker_mass
     cache = RunCache(cache_dir or os.path.join(out_dir, "pad_runs"))
     e = start or max(estimated_restitution(m) for m in PAD_MATERIALS)
-    iterations, last, t0 = list(iterations or []), None, time.perf_counter()
+    iterations, last, t0, bounds = list(iterations or []), None, time.perf_counter(), []
     for it in range(MAX_ITERATIONS):
         d = design(spec.architecture, M, V, spec.launch_speed, e, spec.masses)
         if not d.feasible:
             reason = d.reason + (" (the measured restitutions)" if iterations else "")
             return _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0)
         bodies = _bodies(d.masses, fixture, rho, first_diameter)
-        stages = _measure(spec, d.masses, bodies, e, cache, resolution, echo)
+        stages = _measure(spec, d.masses, bodies, e, cache, resolution, echo, bounds)
         gain = _chain_gain(spec, d.masses, bodies, [st.restitution for st in stages])
         e_eff = rigid.effective_restitution(d.masses, spec.launch_speed, gain, spec.architecture)
         iterations.append({"assumed": e, "measured": [st.restitution for st in stages], "gain": gain,
@@ -252,7 +299,10 @@ def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=Non
             break
         e = e_eff
     e, last = _to_speed(spec, fixture, rho, first_diameter, e, last)
-    return _amplifier(spec, last, e, iterations, V, Y, cache, t0)
+    out = _amplifier(spec, last, e, iterations, V, Y, cache, t0,
+                     "; ".join(bounds) + (": no pad was run, each interface at its material's estimate" if bounds else ""))
+    out.pad_bounds = bounds
+    return out
 
 
 def _to_speed(spec: MachineSpec, fixture: Fixture, rho: float, first_diameter: float | None, e: float, last):

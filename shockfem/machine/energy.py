@@ -158,6 +158,14 @@ def energy_table(launcher, amp, fixture, stops, record: ChainRecord) -> EnergyTa
              f"the gun fires at {shot.muzzle_velocity:.4f} m/s, the chain was launched at "
              f"{math.sqrt(2 * record.launch_energy / sum(amp.masses[:1] if amp.architecture == 'launched-chain' else amp.masses)):.4f} m/s",
              f"the chain gives the striker {record.striker_speed:.3f} m/s, the fixture takes it at {V:.3f} m/s"]
+    launched = math.sqrt(2 * record.launch_energy / sum(amp.masses[:1] if amp.architecture == "launched-chain"
+                                                         else amp.masses))
+    if shot.muzzle_velocity < launched * (1 - 1e-3):
+        # the rigid chain's speeds scale with its launch: the shot this machine fires, beside the one it needs
+        notes.append(f"the shot this machine fires: the gun launches at {shot.muzzle_velocity:.4g} m/s, so the chain "
+                     f"brings the striker to {record.striker_speed * shot.muzzle_velocity / launched:.4g} m/s "
+                     f"({shot.muzzle_velocity / launched:.2%} of the {V:.4g} m/s the pulse needs); the table is the "
+                     "shot the design needs, the gun's shortfall beside it")
     return EnergyTable(rows, stored, rows[1].energy, gas_work, parts, parts / gas_work - 1, payload, record.source,
                        notes, record.launch_energy - E["projectile"])
 

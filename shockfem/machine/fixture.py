@@ -11,15 +11,16 @@ fixture's ``limits`` (``machine.limits.Limit``): a design outside a law's range 
 the machine, with its ratio.  The lumped model's run of the same design is kept beside it
 (``design["column_design"]["models"]["lumped"]``), not designed on.
 
-The housing is the fixture study's: ``programmer.housing.HOUSING_STEEL`` (maraging 300 at ASME
-VIII-2's design stress), its wall by Lame's von Mises stress at the bore at the column's peak wall
-pressure times the dynamic factor read from the column's own history, its floor a clamped plate at
-the floor's (``housing.fixture_mass``).  The machine's striker carries it over the whole bore: the
-column, the piston and the article standing in it (``BORE_HEADROOM`` above its nose), at the same
-outer radius, with the metering pin and the oil.  If that housing outweighs the striker ratio times
-the payload, the dashpot is designed again for the ratio the housing needs, until the two agree.
-Where no wall holds the pressure, the striker keeps the ratio's mass, its outer radius is the one that
-weighs it, and the housing's limit is broken by how far the pressure is above what any wall holds.
+The housing is the fixture study's (``programmer.housing``, the one place for its formulas):
+``HOUSING_STEEL`` at ASME VIII-2's design stress S, its wall by VIII-2 4.3.3 (P = S ln Y, Y = b / a) at
+the column's peak wall pressure times the dynamic factor read from the column's own history, at most
+a monobloc forging's Y_max = ``PRACTICAL_RATIO``, its floor VIII-2 4.6's integral flat head at the
+floor's pressure and factor (``housing.fixture_mass``).  The machine's striker carries it over the
+whole bore: the column, the piston and the article standing in it (``BORE_HEADROOM`` above its nose),
+at the same outer radius, with the metering pin and the oil.  The column designer's striker already
+carries its pressurised housing; if the machine's longer housing outweighs it, the dashpot is designed
+again for the ratio that housing needs, until the two agree.  Beyond Y_max the housing is drawn at
+Y_max and its limit is broken by how far its wall ratio is past it.
 
 What it leaves out: the bodies' elasticity (the fixture study's finite-element runs), the column's own
 (friction on the bore, liquid returning through the orifice: ``fluid.column``).
@@ -32,9 +33,10 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
-from ..programmer.column_design import design_on_column
+from ..programmer.column_design import closed_form_bore, design_on_column
 from ..programmer.dashpot_design import DASHPOT
-from ..programmer.housing import HOUSING_STEEL, HOUSING_STEELS, bore_von_mises
+from ..programmer.housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, THICK_PLATE, floor_for,
+                                  held_pressure)
 from ..programmer.liquids import MINERAL_OIL
 from ..scene.library import property_si
 from .limits import Limit
@@ -74,9 +76,9 @@ class Fixture:
     bore_depth: float             # [m]
     housing_steel_mass: float     # wall and floor [kg]
     housing_binds: bool           # the wall and floor set the striker's mass, not the striker ratio
-    wall_stress: float            # Lame's von Mises at the bore at the peak pressure times its dynamic factor [Pa]
-    floor_stress: float           # the clamped floor's edge stress at its peak times its factor [Pa]
-    allowable: float              # the housing steel's design stress [Pa]
+    wall_stress: float            # the wall rule's stress at the peak pressure times its factor: S P / P_held(Y) [Pa]
+    floor_stress: float           # the flat head's at its peak times its factor: S (t_needed / t)^2 [Pa]
+    allowable: float              # the housing steel's design stress S (ASME VIII-2) [Pa]
     peak: float                   # the payload's column pulse: peak [m/s^2]
     duration: float               # [s]
     velocity_change: float        # [m/s]
@@ -112,14 +114,13 @@ def article_length(spec: MachineSpec) -> float:
                               REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R)
 
 
-def housing_wall(p: float, r: float, S: float) -> float:
-    """The smallest outer radius whose Lame hoop stress at the bore r stays at S under p (inf if p >= S)."""
-    return r * math.sqrt((S + p) / (S - p)) if p < S else math.inf
-
-
-def floor_thickness(p: float, r: float, S: float) -> float:
-    """The clamped plate's thickness whose edge stress 3 p r^2 / (4 t^2) is S."""
-    return r * math.sqrt(3 * p / (4 * S))
+def bore_radius(spec: MachineSpec, rho_piston: float | None = None) -> float:
+    """The column designer's closed-form bore for the spec's article and pulse (``column_design
+    .closed_form_bore``, A0: the least force the orifice makes inside its law's range at the collision
+    law's closing speed is the payload's m A_g), with the spec's striker ratio: the bore the fixture's
+    design starts from, for a caller that needs one without designing (the premise's map).
+    ``rho_piston``: unused (the piston is the dashpot designer's carrier steel)."""
+    return closed_form_bore(spec.pulse, spec.article_mass, 0.0, LIQUID, spec.striker_ratio)
 
 
 @dataclass(frozen=True)
@@ -135,18 +136,19 @@ class Housing:
 
 def striker_housing(d: dict, weight: dict, depth: float, steel: str) -> Housing:
     """The housing over the whole bore ``depth`` at the wall and floor ``weight`` (``housing.fixture_mass``)
-    sized, or, where the design's striker is heavier, at the outer radius that weighs it."""
+    sized (its wall at most Y_max), or, where the design's striker is heavier, at the outer radius that
+    weighs it."""
     rho = HOUSING_STEELS[steel].density
     r, t = d["bore_radius"], weight["floor_thickness"]
     carried = weight["pin"] + d["liquid_mass"]
 
     def steel_of(R):
         return rho * math.pi * ((R * R - r * r) * depth + R * R * t)
-    R_wall = weight["outer_radius"]
+    R_wall = min(weight["outer_radius"], PRACTICAL_RATIO * r)
     # the outer radius at which the housing (steel, pin and oil) weighs the design's striker
     R_mass = math.sqrt((max(d["striker_mass"] - carried, 0.0) / (rho * math.pi) + r * r * depth) / (depth + t))
-    R = max(R_wall, R_mass) if math.isfinite(R_wall) else R_mass
-    return Housing(R, t, depth, steel_of(R), steel_of(R) + carried, math.isfinite(R_wall) and R_wall > R_mass)
+    R = max(R_wall, R_mass)
+    return Housing(R, t, depth, steel_of(R), steel_of(R) + carried, R_wall > R_mass)
 
 
 def design_fixture(spec: MachineSpec, echo=None, evaluations: int = DESIGN_EVALUATIONS,
@@ -180,6 +182,10 @@ def _fixture(spec, out: dict, housing: Housing, ratio: float, runs: int, redesig
     allowed = s.allowed_stress()
     wall_pressure = weight["peak_pressure"] * weight["dynamic_factor"]
     floor_pressure = float(np.max(run.floor_pressure)) * weight["floor_dynamic_factor"]
+    # the stresses the rules hold at S: the wall's at its ratio (S P / P_held(Y)), the floor's at its
+    # thickness (S (t_needed / t)^2, the flat head's t going as sqrt(P / S))
+    wall_stress = allowed * wall_pressure / held_pressure(R / r, allowed, weight["rule"])
+    floor_stress = allowed * (floor_for(floor_pressure, r, s) / housing.floor) ** 2
     payload_after, striker_after = float(run.payload_speed[-1]), float(run.striker_speed[-1])
     taken = oil_work(run, d)
     record = {k: out[k] for k in ("verdict", "models", "walls", "evaluations", "search_wall", "closed_form_bore",
@@ -189,8 +195,7 @@ def _fixture(spec, out: dict, housing: Housing, ratio: float, runs: int, redesig
         spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"], ratio,
         housing.striker_mass, d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()),
         weight["peak_pressure"], R, housing.floor + housing.depth, housing.floor, housing.depth, housing.steel_mass,
-        housing.wall_binds or redesigns > 0, bore_von_mises(wall_pressure, r, R),
-        3 * floor_pressure * r * r / (4 * housing.floor ** 2), allowed, pulse.peak, pulse.duration,
+        housing.wall_binds or redesigns > 0, wall_stress, floor_stress, allowed, pulse.peak, pulse.duration,
         pulse.velocity_change, bool(band.passed), float(band.worst_excess), payload_after, striker_after,
         float(np.trapz(run.striker_speed, run.t)), float(np.trapz(run.payload_speed, run.t)),
         taken / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, redesigns, {**d, "column_design": record},
@@ -230,12 +235,17 @@ def fixture_limits(out: dict, weight: dict, steel) -> list[Limit]:
                             lim["limit"] * scale, unit, "the column dashpot's run of the design "
                             "(`programmer.column_dashpot`, `programmer.dashpot_validity`)",
                             _RANGE_SOURCE.get(lim["models"], lim["models"])))
-    limits.append(Limit("dashpot housing", "peak wall pressure times its dynamic factor",
-                        weight["peak_pressure"] * weight["dynamic_factor"], weight["holdable_pressure"], "Pa",
-                        "the column's largest wall pressure, its dynamic factor from the pressure's history "
-                        "(`programmer.housing.dynamic_factor`)",
-                        f"the most any wall of {steel.name} holds (Lame, von Mises at the bore: its ASME VIII-2 "
-                        "design stress over sqrt(3))"))
+    limits += [Limit("dashpot housing", "wall ratio b / a by ASME VIII-2 4.3.3 (P = S ln Y)", weight["wall_ratio"],
+                     PRACTICAL_RATIO, "-", "the column's largest wall pressure times its dynamic factor (from the "
+                     "pressure's own history, `programmer.housing`)", f"a monobloc forging of {steel.name}: "
+                     "Y_max (`programmer.housing.PRACTICAL_RATIO`)"),
+               Limit("dashpot metering pin", "stress (von Mises, the liquid's pressure all round)",
+                     weight["pin_pressure"], weight["allowed_stress"], "Pa",
+                     "the largest of the column's peak and the quasi-steady upstream pressure",
+                     f"{steel.name}: ASME VIII-2 design stress"),
+               Limit("dashpot housing floor", "thickness over diameter", weight["floor_over_diameter"], THICK_PLATE,
+                     "-", "VIII-2 4.6's integral flat head at the floor's peak pressure times its factor",
+                     "the flat-head formula's thin-plate range (`programmer.housing.THICK_PLATE`)")]
     return limits
 
 

@@ -12,7 +12,7 @@ from .cad import read_step, write_step
 from .design import Machine
 from .drawing import draw_sheet
 from .energy import energy_figure
-from .limits import broken
+from .limits import broken, verdict_line
 
 UNITS = {"mass": "kg", "length": "m", "speed": "m/s", "stress": "Pa", "pressure": "Pa", "energy": "J",
          "acceleration": "m/s^2", "force": "N", "stiffness": "N/m", "time": "s", "temperature rise": "K"}
@@ -47,9 +47,7 @@ def summary_lines(m: Machine) -> list[str]:
                                          f"{st.force / 1e6:.3g} MN" for st in m.layout.stops))
     lines += [f"  binds: {b}" for b in m.binding]
     lines += [f"  PROBLEM: {p}" for p in m.problems]
-    worst = max(m.limits, key=lambda lim: lim.ratio)
-    lines.append(f"  {len(m.limits)} limits checked, {len(broken(m.limits))} broken; the highest ratio: {worst.component} "
-                 f"{worst.quantity} {worst.ratio:.2f}")
+    lines.append(f"  {verdict_line(m.limits)}")
     return lines
 
 

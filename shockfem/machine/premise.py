@@ -44,13 +44,12 @@ import numpy as np
 from ..amplifier.gain import design as gain_design
 from ..launcher.design import LauncherDesign, weights
 from ..launcher.gun import barrel_length_for, fire, white_paper_gun
-from ..programmer.column_design import closed_form_bore
-from ..programmer.dashpot_design import DASHPOT, PulseSpec, carrier_density, striker_speed
+from ..programmer.dashpot_design import DASHPOT, PulseSpec, striker_speed
 from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, LB
 from .design import Machine, gun_thrust
-from .fixture import LIQUID, design_fixture
+from .fixture import bore_radius, design_fixture
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import Layout, place
 from .spec import MachineSpec
@@ -337,14 +336,14 @@ def _gun_entry(L: Launcher, moving: float, feasible: bool, note: str = "") -> di
 
 
 def map_point(spec: MachineSpec, duration: float, peak: float, article: float, ratio: float, ratio_c: float,
-              fixture_e: float, amp_e: float, wall: float, bore_scale: float = 1.0) -> MapPoint:
+              fixture_e: float, amp_e: float, wall: float) -> MapPoint:
     """One point of the map: the three arrangements by closed forms and the lightest-launcher design;
     ``ratio`` and ``ratio_c`` the strikers of (b) and (c) over the payload, ``fixture_e`` the fixture's
-    restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius,
-    ``bore_scale`` the designed fixture's bore over the column designer's closed form (its handle)."""
+    restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius."""
     s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, peak, duration))
-    r = bore_scale * closed_form_bore(s.pulse, article, 0.0, LIQUID, ratio)
-    payload = article + carrier_density() * math.pi * r * r * DASHPOT["piston_thickness"]
+    rho = property_si(s.material, "density", "density")
+    r = bore_radius(s, rho)
+    payload = article + rho * math.pi * r * r * DASHPOT["piston_thickness"]
     dv = requirement(s.pulse.shape, peak, duration, payload).velocity_change
     M = ratio * payload
     V = striker_speed(payload, M, dv, fixture_e)
@@ -385,8 +384,7 @@ def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durati
         for T in durations:
             for A in peaks:
                 p = map_point(spec, T, A, a, fixture.striker_ratio, ratio_c, max(fixture.restitution, 0.0), amp_e,
-                              fixture.housing_outer_radius / fixture.bore_radius,
-                              fixture.design.get("handles", {}).get("bore_scale", 1.0))
+                              fixture.housing_outer_radius / fixture.bore_radius)
                 out.append(p)
                 if echo:
                     echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "

@@ -1,11 +1,11 @@
 """The whole machine's closed forms and its input checks (``shockfem/machine``); the end-to-end design runs
 in ``tests/sim/test_machine.py``."""
+import dataclasses
 import math
 
 import pytest
 
 from shockfem.amplifier import rigid
-from shockfem.machine.fixture import floor_thickness, housing_wall
 from shockfem.machine import stops
 from shockfem.machine.energy import chain_record, isentropic_work
 from shockfem.machine.premise import sabot_mass
@@ -37,14 +37,13 @@ def test_spec_names_every_bad_option():
         read_spec({"article": "12 lb", "catch_deceleration": "20000 gee"})    # harsher than the test
 
 
-def test_housing_wall_and_floor_hold_the_allowable():
+def test_buffer_wall_and_backing_plate_hold_the_allowable():
+    """The buffer's cylinder by the housing's wall rule (ASME VIII-2 4.3.3: S ln Y = p) and the crushable's
+    backing plate (Roark's clamped plate: 3 p r^2 / (4 t^2) = S) at their sizing, written out."""
+    from shockfem.programmer.housing import wall_ratio
     p, r, S = 200e6, 0.032, 460e6
-    R = housing_wall(p, r, S)
-    # Lame's hoop stress at the bore of the smallest wall is the allowable, and a thicker wall is below it
-    assert p * (R * R + r * r) / (R * R - r * r) == pytest.approx(S, rel=1e-12)
-    assert p * ((1.1 * R) ** 2 + r * r) / ((1.1 * R) ** 2 - r * r) < S
-    assert housing_wall(S, r, S) == math.inf                   # no wall holds the allowable itself
-    t = floor_thickness(p, r, S)
+    assert S * math.log(wall_ratio(p, S)) == pytest.approx(p, rel=1e-12)
+    t = stops.backing_plate(p, r, S)
     assert 3 * p * r * r / (4 * t * t) == pytest.approx(S, rel=1e-12)
 
 
@@ -172,3 +171,23 @@ def test_chain_is_solved_to_the_fixture_speed_at_the_restitutions_used():
     kept_energy = sum(0.5 * m * r.final_speeds[q["name"]] ** 2 for m, q in zip(masses[:-1], b[:-1]))
     assert (kept_energy + sum(r.losses.values()) + 0.5 * 333.0 * 430.0 ** 2
             == pytest.approx(r.launch_energy, rel=1e-9))
+
+
+def test_pad_bound_is_scale_free_and_comes_before_any_run():
+    """The amplifier's first check (closed forms, no finite elements): at the 12 lb design's first interface
+    (4,773 kg on 1,600 kg at 99 m/s) no pad material holds its limits, and the speed it names is the one at
+    which the lightest pad's mass share is the limit (the pad sized there meets it to the printed figures,
+    whatever the bodies' size); at a tenth of that speed a pad holds and the check passes."""
+    import re
+    from shockfem.machine import amplifier
+    from shockfem.machine.pads import PAD_MASS_SHARE, Interface, size_pad
+    iface = Interface("m1_m2", 4772.5, 0.914, 0.926, 1599.6, 0.638, 0.638, 99.06, "high_strength_steel", 460e6)
+    words = amplifier.pad_bound(iface)
+    assert "no pad material holds its limits" in words
+    material, below = re.search(r"the lightest pad \((\w+)\) weighs [\d.e+-]+ times the struck body \(at most "
+                                r"[\d.]+: below ([\d.e+]+) m/s\)", words).groups()
+    speed = float(below)
+    at = dataclasses.replace(iface, speed=speed)
+    share = size_pad(at, material).mass / at.struck_mass
+    assert share == pytest.approx(PAD_MASS_SHARE, rel=2e-3)        # the speed is printed to 4 figures
+    assert amplifier.pad_bound(dataclasses.replace(iface, speed=0.1 * speed)) == ""
