@@ -196,6 +196,13 @@ def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], all
                       over * initial_yield_stress(iface.steel), allowable, "Pa",
                       "the interface's finite-element run: the body's peak von Mises stress",
                       f"{iface.steel}: yield / safety factor") for body, over in m.peak_stress_over_yield.items()]
+    mat = PAD_MATERIALS[pad.material]
+    if m.ran and pad.diameter > 0 and mat.working_stress > 0:
+        # the pad's own stress in its run: the peak contact force over the pad's face, against its working stress
+        force = m.peak_interface_stress * iface.face_area
+        measured.append(Limit(f"pad {iface.name}", "stress (FE contact)", force / (math.pi * pad.diameter ** 2 / 4),
+                              mat.working_stress, "Pa", "the interface's finite-element run: the peak contact force "
+                              "over the pad's free face", f"{mat.name}: working stress ({mat.source})"))
     k = pad.peak_force / pad.travel if pad.travel else 0.0
     return Stage(iface.name, iface.speed, pad.material, pad.kind, k, pad.travel, pad.thickness, pad.diameter,
                  pad.mass, pad.energy, pad.contact_time, iface.face_area, pad.peak_force / iface.face_area,

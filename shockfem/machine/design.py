@@ -277,7 +277,8 @@ def _binding(spec, fixture, amp, launcher, layout, limits: list[Limit]) -> tuple
     if not launcher.design.feasible:
         problems.append(f"launcher: {launcher.design.note}")
     if fixture.housing_binds:
-        binding.append(f"fixture: the housing's wall (Lame at {fixture.peak_pressure / 1e6:.0f} MPa) sets the striker "
+        binding.append(f"fixture: the housing (ASME VIII-2 at the column's {fixture.peak_pressure / 1e6:.0f} MPa peak, "
+                       "over the whole bore) sets the striker "
                        f"at {fixture.striker_ratio:.2f} times the payload, above the {spec.striker_ratio:g} asked")
     if not fixture.band_passed:
         problems.append(f"fixture: the column's pulse is outside the specification's band (worst excess "

@@ -228,11 +228,17 @@ def fixture_limits(out: dict, weight: dict, steel) -> list[Limit]:
     and the housing's as machine limits: a design outside a law's range is a broken limit."""
     limits = []
     for lim in out["models"]["column"]["limits"]:
-        if "lumped" in lim["models"] and "column" not in lim["models"]:
+        # the checks that bound the column and veto it (a flag, data a law was not checked on, is reported
+        # with the design's record, not a limit)
+        if ("lumped" in lim["models"] and "column" not in lim["models"]) or not lim.get("vetoes", True):
             continue
+        name = lim["name"].replace(" " + _MPA, "")
         scale, unit = (1e6, "Pa") if _MPA in lim["name"] else (1.0, "-")
-        limits.append(Limit("dashpot (column run)", lim["name"].replace(" " + _MPA, ""), lim["value"] * scale,
-                            lim["limit"] * scale, unit, "the column dashpot's run of the design "
+        value, limit = lim["value"] * scale, lim["limit"] * scale
+        if lim.get("lower"):
+            # a least value: its ratio is the least over the value
+            name, value, limit = f"{name} (the least over it)", limit, value
+        limits.append(Limit("dashpot (column run)", name, value, limit, unit, "the column dashpot's run of the design "
                             "(`programmer.column_dashpot`, `programmer.dashpot_validity`)",
                             _RANGE_SOURCE.get(lim["models"], lim["models"])))
     limits += [Limit("dashpot housing", "wall ratio b / a by ASME VIII-2 4.3.3 (P = S ln Y)", weight["wall_ratio"],
