@@ -32,7 +32,7 @@ def summary_lines(m: Machine) -> list[str]:
         + ", ".join(f"{st.pad_material} (e {st.restitution:.3f}{'' if st.measured else ', estimate'})"
                     for st in a.stages) + (" (finite elements); " if any(st.measured for st in a.stages) else
                                            " (no pad run: each its material's estimate); ")
-        f"effective e {a.restitution:.4f}; the rigid chain of them gives the striker {a.striker_speed:.4g} m/s",
+        + f"effective e {a.restitution:.4f}; the rigid chain of them gives the striker {a.striker_speed:.4g} m/s",
         f"  launcher: bore {g.bore / IN:.3g} in, barrel {g.length / FT:.3g} ft, {g.reservoir_volume:.3g} m^3 at "
         f"{g.reservoir_pressure / PSI:,.0f} psi ({g.gas}, {L.gas_mass:.4g} kg); barrel and tank {L.design.weight:,.0f} kg",
         f"  machine: {t['overall_length']:.3g} m long, {t['overall_width']:.3g} m wide, {t['machine_mass']:,.0f} kg; "
