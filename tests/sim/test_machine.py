@@ -229,7 +229,8 @@ def test_energy_table_closes_and_names_every_part(machine):
 
 def test_premise_arrangements_and_map(machine):
     """The three arrangements deliver the same striker; (b0)'s launch energy is the striker's M V^2 / 2 at the
-    gun's muzzle speed (the optimiser's 2e-4 on the speed, doubled); the map has a row per point and a winner
+    gun's muzzle speed (the optimiser's 2e-4 on the speed, doubled) where its gun reaches it, less where no
+    gun within the limits does; the map has a row per point and a winner
     among the arrangements; the map's amplifier at the design's measured effective e, and the spec's point at
     it and at the white paper's e = 0.9; (a) carries the machine's verdict."""
     m, results, out = machine
@@ -240,7 +241,11 @@ def test_premise_arrangements_and_map(machine):
     assert ("NOT FEASIBLE" in a[-1]) == (not m["feasible"])
     assert a[3] * 1e6 == pytest.approx(m["launcher"]["launch_energy"], rel=1e-12)
     assert b0[1] == pytest.approx(f["striker_mass"], rel=1e-12)
-    assert b0[3] * 1e6 == pytest.approx(0.5 * f["striker_mass"] * f["striker_speed"] ** 2, rel=4e-4)
+    need = 0.5 * f["striker_mass"] * f["striker_speed"] ** 2
+    if b0[14] == "yes":
+        assert b0[3] * 1e6 == pytest.approx(need, rel=4e-4)
+    else:                                   # no gun within the limits reaches the speed: it launches less
+        assert b0[3] * 1e6 < need
     b = rows["(b) direct striker"]
     assert b[1] >= b0[1] and "sabot" in b[-1]
     points = results["tables"]["map"]["rows"]
