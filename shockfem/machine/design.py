@@ -301,11 +301,11 @@ def models(spec: MachineSpec) -> list[str]:
         "fixture: the fluid dashpot designed on the compressible liquid column (two rigid masses, the oil as a 1D "
         "column of finite volumes, Idelchik's sharp-edged orifice with the velocity of approach and the jet's "
         "reaction; `programmer.column_design`), its bore, column, pin and striker's speed iterated to the band; its "
-        "validity checks (area ratio, Reynolds number, piston Mach number, cavitation, freezing, the housing) are "
-        "machine limits; the bodies' elasticity, friction on the bore and liquid returning through the orifice "
-        "are left out",
-        "housing: Lame thick cylinder (von Mises at the bore) and a clamped plate at the column's peak pressures "
-        "times their dynamic factors (`programmer.housing`)",
+        "vetoing validity checks (area ratio, the coefficient's velocity-change error, piston Mach number, parting, "
+        "freezing) and its housing's (wall ratio within Y_max, the pin's stress, the floor's range) are machine "
+        "limits; the bodies' elasticity, friction on the bore and liquid returning through the orifice are left out",
+        "housing: ASME VIII-2 4.3.3's wall (P = S ln Y) and 4.6's integral flat head at the column's peak "
+        "pressures times their dynamic factors (`programmer.housing`)",
         f"amplifier: the {spec.architecture}'s masses by the closed form (`amplifier.gain.design`) at an effective "
         "restitution; each interface's pad of a real material sized within its limits (`machine.pads`), its "
         "restitution measured by the interface's axisymmetric finite-element run (the two bodies at their sizes, "

@@ -33,7 +33,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
-from ..programmer.column_design import closed_form_bore, design_on_column
+from ..programmer.column_design import design_on_column
 from ..programmer.dashpot_design import DASHPOT
 from ..programmer.housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, THICK_PLATE, floor_for,
                                   held_pressure)
@@ -114,13 +114,15 @@ def article_length(spec: MachineSpec) -> float:
                               REFERENCE_ARTICLE["crh"], REFERENCE_ARTICLE["meplat_over_radius"] * R)
 
 
-def bore_radius(spec: MachineSpec, rho_piston: float | None = None) -> float:
-    """The column designer's closed-form bore for the spec's article and pulse (``column_design
-    .closed_form_bore``, A0: the least force the orifice makes inside its law's range at the collision
-    law's closing speed is the payload's m A_g), with the spec's striker ratio: the bore the fixture's
-    design starts from, for a caller that needs one without designing (the premise's map).
-    ``rho_piston``: unused (the piston is the dashpot designer's carrier steel)."""
-    return closed_form_bore(spec.pulse, spec.article_mass, 0.0, LIQUID, spec.striker_ratio)
+def bore_radius(spec: MachineSpec, rho_piston: float) -> float:
+    """A bore by the design oil pressure (``spec.oil_pressure``), for a caller that needs one without
+    designing (the premise's map): the payload's force (article and piston) at the pulse's peak is that
+    pressure, pi r^2 p = (m_a + rho pi r^2 t) A, so r^2 = m_a A / (pi (p - rho t A)); never narrower than the
+    article and its clearance.  (The machine's own dashpot takes the column designer's bore.)"""
+    A, p, t = spec.pulse.peak, spec.oil_pressure, DASHPOT["piston_thickness"]
+    if p <= rho_piston * t * A:
+        return math.inf          # the piston alone would need more than the design pressure
+    return max(spec.diameter / 2 + DASHPOT["clearance"], math.sqrt(spec.article_mass * A / (math.pi * (p - rho_piston * t * A))))
 
 
 @dataclass(frozen=True)

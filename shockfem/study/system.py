@@ -133,7 +133,8 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
              "the one restitution with which the rigid chain of these masses gains what the rigid chain of the "
              "pads' own restitutions gains, each measured by its interface's finite-element run (or its "
              f"material's estimate where not run; the pads' meshes: '{base.pad_resolution}'); the chain's "
-             "striker speed is that chain's, with the first mass as the launcher's slug.")
+             "striker speed is that chain's (with the first mass as the launcher's slug where its gun reaches the launch "
+             "speed).")
     for lb, m in machines.items():
         rep.text(f"**{lb} lb**: " + "; ".join(m.binding) + ("." if m.feasible else
                                                              ". NOT FEASIBLE: " + "; ".join(m.problems) + "."))
