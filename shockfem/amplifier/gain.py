@@ -47,6 +47,17 @@ def chain_gain(e: float, R: float, n: int) -> float:
     return stage_factor(e, R ** (1 / (n - 1))) ** (n - 1)
 
 
+def chain_efficiency(e: float, G: float, n: int) -> float:
+    """KE_n / KE_1 of the launched chain of n geometric masses that gains G at restitution e: G^2 m_n / m_1.
+
+    Each stage of gain g = G^(1/(n-1)) needs the mass ratio r = (1 + e) / g - 1 and keeps g^2 r =
+    g (1 + e - g) of the energy, so the chain keeps [g (1 + e - g)]^(n-1).  A stage keeps at most e (as
+    g -> 1), so many masses lose everything unless e = 1, where the chain keeps 1 - O(1/n).  Zero when
+    no chain of n masses gains G (g >= 1 + e)."""
+    g = G ** (1 / (n - 1))
+    return (g * (1 + e - g)) ** (n - 1) if g < 1 + e else 0.0
+
+
 def stack_gain(e: float, R: float, n: int) -> float:
     """v_n / V of a stack falling at V onto a rigid anvil: (1 + e) G - 1 (the paper's Eq. 2)."""
     return (1 + e) * chain_gain(e, R, n) - 1

@@ -198,21 +198,26 @@ def characteristic_lengths(xc, cell_kind):
     return out
 
 
-@njit(cache=True)
 def cell_orientation(dofmap, x, dN):
     """+1 or -1 per cell: the sign of det(J) at the first point in the reference configuration.
 
     Meshes may list a cell's vertices clockwise (det J < 0); integrals use |det J|, and a cell
-    has inverted when det J changes sign from this one.
+    has inverted when det J changes sign from this one.  In numpy, over all cells at once, with
+    ``gradients``' sums in its order (node by node) and its determinant: it runs once a model, and compiled
+    it would add 2-3 s to every first run's compile (docs/performance.md, "Compile time").
     """
     nn = dofmap.shape[1]
     gdim = x.shape[1]
-    sign = np.empty(dofmap.shape[0])
-    xe = np.empty((nn, 3))
-    dNdx = np.empty((nn, 3))
-    for c in range(dofmap.shape[0]):
-        for a in range(nn):
-            for i in range(gdim):
-                xe[a, i] = x[dofmap[c, a], i]
-        sign[c] = 1.0 if gradients(xe, dN[0], gdim, nn, dNdx) > 0 else -1.0
-    return sign
+    dN0 = dN[0]
+    J = np.zeros((gdim, gdim, dofmap.shape[0]))       # J[i, k] = sum_a x_a,i dN_a,k
+    for a in range(nn):
+        xa = x[dofmap[:, a]]
+        for i in range(gdim):
+            for k in range(gdim):
+                J[i, k] += xa[:, i] * dN0[a, k]
+    if gdim == 2:
+        det = J[0, 0] * J[1, 1] - J[0, 1] * J[1, 0]
+    else:
+        det = (J[0, 0] * (J[1, 1] * J[2, 2] - J[1, 2] * J[2, 1]) + J[1, 0] * (J[0, 2] * J[2, 1] - J[0, 1] * J[2, 2])
+               + J[2, 0] * (J[0, 1] * J[1, 2] - J[0, 2] * J[1, 1]))
+    return np.where(det > 0, 1.0, -1.0)

@@ -50,11 +50,26 @@ def orifice_law(spec: Cavity) -> OrificeLaw:
     return AREA_RATIO
 
 
+class OrificeArea:
+    """The orifice's area against the stroke [m^2]: fixed (the scene's table has one row) or a table of the
+    stroke [m] (a metering pin), its ends held."""
+
+    def __init__(self, table):
+        curve = np.array(table, dtype=float)
+        self.stroke, self.area = curve[:, 0], curve[:, 1]
+
+    def __call__(self, stroke: float) -> float:
+        if len(self.area) == 1:
+            return float(self.area[0])
+        return _interpolate(stroke, self.stroke, self.area)
+
+
 class WallNodes:
     """The walls' nodes of a liquid source, compact over the ranks (``NodeExchange``): the facets of each
     wall in the walls' order (``facets``, ``wall_of_facet``), each node's moving mass (a rigid body's node
-    moves with its whole body) and its rigid body's place among the walls' rigid bodies (-1: deformable).
-    Collective."""
+    moves with its whole body) and its rigid body's place among the walls' rigid bodies (-1: deformable);
+    every step, their state (``state``) and the liquid's forces on them, from a pressure on each facet
+    (``pressure``, ``push``).  Collective."""
 
     def __init__(self, model: Model, spec: Cavity):
         surfaces = [build_surface(model, w) for w in spec.walls]
@@ -79,6 +94,26 @@ class WallNodes:
         self.rigid_group = np.where(rigid, np.searchsorted(rigid_bodies, body), -1)
         self.group_area = np.zeros(len(rigid_bodies))
         self.group_mass = model.body_mass[rigid_bodies] if len(rigid_bodies) else np.zeros(0)
+        # the step's state, in buffers kept for the run
+        n, gdim = len(self.global_nodes), model.gdim
+        self.x, self.v = np.empty((n, gdim)), np.empty((n, gdim))
+        self.S = np.empty((len(self.facets), gdim))
+        self.pressure = np.zeros(len(self.facets))      # on each facet, set by the source before ``push``
+        self.f, self._f_old = np.zeros((n, gdim)), np.zeros((n, gdim))
+
+    def state(self, model: Model, x_local: np.ndarray, v_local: np.ndarray):
+        """The walls' nodes' positions and velocities (compact) and their facets' area vectors on those
+        positions: (x, v, S).  Collective."""
+        x = self.exchange.gather(x_local, out=self.x)
+        v = self.exchange.gather(v_local, out=self.v)
+        return x, v, area_vectors(model, x, self.facets, out=self.S)
+
+    def push(self, f: np.ndarray, dt: float) -> float:
+        """The facets' ``pressure`` as forces on the walls' nodes (``wall_forces``, on the last ``state``),
+        added into the bodies' ``f``; returns their work over the step [J]."""
+        work = wall_forces(self.f, self._f_old, self.facets, self.S, self.pressure, self.v, dt)
+        self.exchange.add_to(self.f, f)
+        return work
 
     def lumped_period(self, S: np.ndarray, stiffness_per_area2: float, whole: float | None = None) -> float:
         """2 pi / omega of the liquid spring on the rigid bodies among the walls, omega^2 = (K_t / V) A_g A /
@@ -112,17 +147,11 @@ class LiquidCavity(ForceSource):
         walls = WallNodes(model, spec)
         self.walls = walls
         self.global_nodes, self.exchange, self.facets = walls.global_nodes, walls.exchange, walls.facets
-        self.gdim = model.gdim
         self.axisymmetric = model.axisymmetric
         self.mass = walls.mass
         # the orifice's wall (the last), where the sharp-edged law's jet reaction acts
         self._orifice_wall = walls.wall_of_facet == len(spec.walls) - 1
-        self.period = math.inf           # of the liquid spring on its rigid walls' bodies [s] (``compute``)
-        self._x = np.empty((len(self.global_nodes), self.gdim))
-        self._v = np.empty_like(self._x)
-        self._S = np.empty((len(self.facets), self.gdim))
-        self.f = np.zeros((len(self.global_nodes), self.gdim))
-        self._f_old = np.zeros_like(self.f)
+        self.period = math.inf           # of the liquid spring on its rigid walls' bodies [s] (``apply``)
         # a cavity closed by its walls (no volume given) takes its volume from them, every step
         self.enclosed = spec.volume <= 0.0
         self.volume = self.enclosed_volume(self.exchange.gather(model.X0)) if self.enclosed else spec.volume
@@ -140,17 +169,15 @@ class LiquidCavity(ForceSource):
         self.work = 0.0                  # work of the liquid on the walls [J]
         self.throttled = 0.0             # energy dissipated by the orifice [J]
         self.max_pressure = 0.0
-        curve = np.array(spec.orifice, dtype=float)
-        self._stroke, self._area = curve[:, 0], curve[:, 1]
+        self._orifice = OrificeArea(spec.orifice)
         self.law = orifice_law(spec)
         self._law = self.law.code()
         # the passage the liquid approaches the orifice through: the piston's area, or the orifice wall's own
         S0 = area_vectors(model, self.exchange.gather(model.X0), self.facets)
         self.passage = spec.piston_area or float(np.linalg.norm(S0[self._orifice_wall].sum(axis=0)))
-        if self.passage <= 0.0 and self._area.max() > 0.0:
+        if self.passage <= 0.0 and self._orifice.area.max() > 0.0:
             raise ModelError(f"cavity '{spec.name}': its last wall {spec.walls[-1]} has no net area (a closed "
                              f"surface) to approach the orifice through: give orifice.piston_area")
-        self._p_facet = np.zeros(len(self.facets))       # the pressure on each facet (the jet's taken off)
         self.jet_force = 0.0             # the jet's reaction on the orifice's wall [N]
         self.jet_work = 0.0              # its work on that wall [J]
         self.max_area_ratio = 0.0        # the largest orifice area over the passage's
@@ -171,9 +198,7 @@ class LiquidCavity(ForceSource):
         return (self.initial_volume - self.volume) / self.spec.piston_area if self.spec.piston_area else 0.0
 
     def orifice_area(self) -> float:
-        if len(self._area) == 1:
-            return float(self._area[0])
-        return _interpolate(self.stroke(), self._stroke, self._area)
+        return self._orifice(self.stroke())
 
     def _mass_out(self, dt: float) -> float:
         """The mass the orifice lets out over the step, at the pressure it leaves behind
@@ -191,15 +216,13 @@ class LiquidCavity(ForceSource):
         return _enclosed_volume(x, self.facets, area_vectors(self.model, x, self.facets), self.axisymmetric)
 
     # ---------------------------------------------------------------- step
-    def compute(self, x_local: np.ndarray, v_local: np.ndarray, dt: float) -> float:
-        """Advance the liquid over the step just taken (``v`` is v_n+1/2), then the pressure forces on
-        the walls at t_n+1.  Returns the step limit of the liquid's stiffness.  Collective.
+    def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
+        """Advance the liquid over the step just taken (``v`` is v_n+1/2), then its pressure's forces on
+        the walls at t_n+1 into ``f``.  Returns the step limit of the liquid's stiffness.  Collective.
 
         Its loops are compiled (``_flux``, ``wall_forces``, ``_stable_step``): a cavity has a few
         walls' facets, and numpy's calls on them took most of a dashpot run's step."""
-        x = self.exchange.gather(x_local, out=self._x)
-        v = self.exchange.gather(v_local, out=self._v)
-        S = area_vectors(self.model, x, self.facets, out=self._S)
+        x, v, S = self.walls.state(self.model, x, v)
         if dt > 0.0:
             if self.enclosed:
                 self.volume = _enclosed_volume(x, self.facets, S, self.axisymmetric)
@@ -220,7 +243,7 @@ class LiquidCavity(ForceSource):
         self.pressure = self.pressure_of(self.density_ratio())
         self.max_pressure = max(self.max_pressure, self.pressure)
         self._jet(S, v, dt)
-        self.work += wall_forces(self.f, self._f_old, self.facets, S, self._p_facet, v, dt)
+        self.work += self.walls.push(f, dt)
         # the liquid as a volume spring, K_t = dp / d(ln rho), on the walls' nodes
         K_t = self.spec.bulk_modulus * self.density_ratio() ** self.spec.tait_exponent
         w = self.walls
@@ -232,7 +255,8 @@ class LiquidCavity(ForceSource):
         """The pressure on each facet: the cavity's, less J / A_w on the orifice's wall (its area A_w), J the
         jet's reaction at this step's outflow (0 for the fixed-Cd law); and J's work on that wall over the step
         (its velocity into the liquid, the volume it sweeps over its area)."""
-        self._p_facet[:] = self.pressure
+        on_facet = self.walls.pressure
+        on_facet[:] = self.pressure
         area = self.orifice_area()
         if area > 0.0:
             self.max_area_ratio = max(self.max_area_ratio, area / self.passage)
@@ -241,20 +265,12 @@ class LiquidCavity(ForceSource):
         if self.jet_force > 0.0:
             on = self._orifice_wall
             A_w = float(np.linalg.norm(S[on].sum(axis=0)))
-            self._p_facet[on] -= self.jet_force / A_w
+            on_facet[on] -= self.jet_force / A_w
             self.jet_work += dt * self.jet_force * _flux(v, self.facets[on], S[on]) / A_w
-
-    def add_forces(self, f: np.ndarray):
-        self.exchange.add_to(self.f, f)
 
     # ------------------------------------------------------ force source
     def rows(self) -> np.ndarray:
         return self.exchange.local
-
-    def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
-        limit = self.compute(x, v, dt)
-        self.add_forces(f)
-        return limit
 
     def energy(self) -> float:
         return -self.work

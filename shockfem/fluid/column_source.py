@@ -54,8 +54,8 @@ from ..forces.source import ForceSource
 from ..model import Model
 from ..scene.specs import Cavity
 from . import orifice
-from .cavity import WallNodes, node_areas, orifice_law, wall_forces
-from .column import MACH_LIMIT, PARTED, ColumnLiquid, LiquidColumn, _interpolate, column_walls
+from .cavity import OrificeArea, WallNodes, node_areas, orifice_law
+from .column import MACH_LIMIT, PARTED, ColumnLiquid, LiquidColumn, column_walls
 
 # the piston face must face the floor: the cosine between its net normal and -e above this (8 degrees)
 PARALLEL = 0.99
@@ -93,13 +93,7 @@ class ColumnSource(ForceSource):
                                    spec.initial_pressure, v_floor)
         self.initial_length = s_piston - s_floor
         self._check_volume(spec)
-        curve = np.array(spec.orifice, dtype=float)
-        self._stroke, self._area = curve[:, 0], curve[:, 1]
-        n = len(w.global_nodes)
-        self._x, self._v = np.empty((n, model.gdim)), np.empty((n, model.gdim))
-        self._S = np.empty((len(self.facets), model.gdim))
-        self.f, self._f_old = np.zeros((n, model.gdim)), np.zeros((n, model.gdim))
-        self._p_facet = np.zeros(len(self.facets))
+        self._orifice = OrificeArea(spec.orifice)
         self.period = math.inf
         self.work = 0.0                  # of the liquid on the walls [J] (trapezoidal, the solver's)
         self.column_work = 0.0           # of the walls on the liquid, as the column's step counts it [J]
@@ -158,18 +152,14 @@ class ColumnSource(ForceSource):
 
     # ---------------------------------------------------------------- step
     def orifice_area(self) -> float:
-        if len(self._area) == 1:
-            return float(self._area[0])
-        return _interpolate(self.initial_length - self.column.length(), self._stroke, self._area)
+        return self._orifice(self.initial_length - self.column.length())
 
     def apply(self, x: np.ndarray, u: np.ndarray, v: np.ndarray, dt: float, t: float, f: np.ndarray) -> float:
         """The walls' axial velocities at v_n+1/2 (their volume swept over the step); the column stepped once
         the steps since its last one reach its own step (``_interval``), on the walls' mean velocities over
         them; its mean forces of that step on the walls' facets at t_n+1, held until its next.  Returns the
         step limit (module docstring).  Collective."""
-        x = self.exchange.gather(x, out=self._x)
-        v = self.exchange.gather(v, out=self._v)
-        S = area_vectors(self.model, x, self.facets, out=self._S)
+        x, v, S = self.walls.state(self.model, x, v)
         a_floor, flux_floor, a_piston, flux_piston = _walls_state(x, v, self.facets, S, self.n_floor, self.axis)
         w_f, w_p = flux_floor / a_floor, flux_piston / a_piston
         if dt > 0.0:
@@ -189,10 +179,9 @@ class ColumnSource(ForceSource):
             self._step_limit = self._limit(S)
         F_f, F_p = self.forces
         # q on each facet: -q S_f sums to F e on a wall whose axial area is sum S_f . e = a (q = -F / a)
-        self._p_facet[:self.n_floor] = -F_f / a_floor
-        self._p_facet[self.n_floor:] = -F_p / a_piston
-        self.work += wall_forces(self.f, self._f_old, self.facets, S, self._p_facet, v, dt)
-        self.exchange.add_to(self.f, f)
+        self.walls.pressure[:self.n_floor] = -F_f / a_floor
+        self.walls.pressure[self.n_floor:] = -F_p / a_piston
+        self.work += self.walls.push(f, dt)
         return self._step_limit
 
     def _advance(self, w_f: float, w_p: float, dt: float):

@@ -53,10 +53,12 @@ class Gas:
         return Gas(self.name + " (Noble-Abel)", self.gamma, self.R, COVOLUMES[self.name])
 
 
-# gamma, R: air 1.4, 287.05; nitrogen 1.4, 296.8.  Covolumes from the van der Waals b
-# (air 3.66e-5 m^3/mol over 0.02897 kg/mol; nitrogen 3.87e-5 over 0.02801): 1.26e-3 and 1.38e-3 m^3/kg.
-GASES = {"air": Gas("air", 1.4, 287.05), "nitrogen": Gas("nitrogen", 1.4, 296.8)}
-COVOLUMES = {"air": 1.26e-3, "nitrogen": 1.38e-3}
+# gamma, R: air 1.4, 287.05; nitrogen 1.4, 296.8; helium 5/3, 2077.1 (8.3145 J/mol K over 4.0026e-3
+# kg/mol).  Covolumes from the van der Waals b (air 3.66e-5 m^3/mol over 0.02897 kg/mol; nitrogen 3.87e-5
+# over 0.02801; helium 2.38e-5 over 4.0026e-3): 1.26e-3, 1.38e-3 and 5.95e-3 m^3/kg.
+GASES = {"air": Gas("air", 1.4, 287.05), "nitrogen": Gas("nitrogen", 1.4, 296.8),
+         "helium": Gas("helium", 5 / 3, 2077.1)}
+COVOLUMES = {"air": 1.26e-3, "nitrogen": 1.38e-3, "helium": 5.95e-3}
 
 
 # Relative pressure difference below which orifice flow is taken linear in the difference.

@@ -38,6 +38,7 @@ from scipy.integrate import solve_ivp
 
 from ..units import FT, IN, PSI
 from .gas import GASES, Gas, orifice_flow
+from .simple_wave import base_pressure_ratio
 
 GAS_INERTIA = ("none", "lagrange", "simple-wave")
 # LSODA: explicit (Adams) while the shot is non-stiff, implicit (BDF) where it turns stiff, which
@@ -209,8 +210,7 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
                 mdot = -orifice_flow(gas, a_eff, p_b, T_b, p_r)
                 h = gas.cp * T_b
         if simple:
-            base = 1 - (gas.gamma - 1) * v / (2 * c0)
-            p_base = pr0 * max(base, 0.0) ** (2 * gas.gamma / (gas.gamma - 1))
+            p_base = pr0 * base_pressure_ratio(v, c0, gas.gamma)
             p_mean, m_eff = p_base, gun.projectile_mass
         elif lagrange:
             m_eff = gun.projectile_mass + m_b / 3

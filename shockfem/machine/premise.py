@@ -13,23 +13,29 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
   more), fired by the white paper's own gun (12 in bore, 2000 psi, 20 ft^3, ``launcher.gun.white_paper_gun``)
   with as long a barrel as the speed needs.
 
-Each is laid out with its stops designed as absorbers (``layout.place``) and weighed the same way.
+Each is laid out with its stops designed as absorbers (``layout.place``) and weighed the same way.  (b0),
+(b) with a massless sabot, is the direct gun's lower bound and never a machine.  ``verdict`` says, from the
+arrangements' numbers, which holds within the limits; when neither does, by how much and what would
+change it for the direct gun (``direct_remedies``: the barrel in air and in helium); and what the closed
+form (``closed_form``, ``boundary``) says: the restitution above which any chain needs less gun than the
+direct one, against the chain's and the best pad's.
 
 ``premise_map`` then asks where each wins over pulse durations, peaks and payloads, cheaply: the striker
 from the rigid collision law (``programmer.dashpot_design.striker_speed``) at the designed fixture's
-striker ratio and its measured restitution; the amplifier's masses from the closed form (``amplifier.gain
-.design``) at the designed amplifier's effective restitution; each gun by the lightest-launcher design (one
-start) or, for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The
-direct gun there carries the striker in a massless sabot (its lower bound); the sabot its bore and
-pressure would need (``sabot_mass``) is reported beside it, and a point the direct gun wins only without
-it is marked so.  (c) counts only where its barrel is within the spec's barrel limit.  The
-restitution the map's amplifier runs at is the caller's (the system study passes the designed
-amplifier's effective e, the rigid chain at its pads' finite-element restitutions at the spec's point,
-carried over to every point: a pad sized and run at another point would restitute otherwise).  A machine's
-figure of merit there is its gun (barrel and tank) and its moving masses; the stops and frame, which the
-full design adds, are left out.  Range: the fixture is designed (and its validity checked) only
-at the spec's point; elsewhere its ratio and restitution are carried over, and the amplifier's pads and
-stresses are not checked (only its gain).
+striker ratio and its measured restitution; the amplifier as the launched chain at its launch speed and
+mass count of least gun (``boundary.best_chain``), its masses by the closed form (``amplifier.gain
+.design``), designed only where it needs less gun than the direct one (elsewhere the point is 'nothing to
+amplify', not a direct win); each gun by the lightest-launcher design (one start) or, for (c), the white
+paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
+striker in a massless sabot (its lower bound); the sabot its bore and pressure would need (``sabot_mass``)
+is reported beside it, and a point the direct gun wins only without it is marked so.  (c) counts only
+where its barrel is within the spec's barrel limit.  The restitution the map's amplifier runs at is the
+caller's (the system study passes the designed amplifier's effective e, carried over to every point: a pad
+sized and run at another point would restitute otherwise).  A machine's figure of merit there is its gun
+(barrel and tank) and its moving masses; the stops and frame, which the full design adds, are left out.
+Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its ratio
+and restitution are carried over, the flying target's dashpot is not designed, and the amplifier's pads
+and stresses are not checked (only its gain).
 """
 from __future__ import annotations
 
@@ -41,15 +47,18 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from ..amplifier.gain import design as gain_design
+from ..amplifier.gain import chain_efficiency, design as gain_design
+from ..launcher.gas import GASES
 from ..launcher.design import LauncherDesign, weights
 from ..launcher.gun import barrel_length_for, fire, white_paper_gun
+from ..launcher.simple_wave import muzzle_speed, travel
 from ..programmer.dashpot_design import DASHPOT, PulseSpec, striker_speed
 from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
-from ..units import FT, G0, LB
+from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, gun_thrust
 from .fixture import bore_radius, design_fixture
+from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import Layout, place
 from .spec import MachineSpec
@@ -261,43 +270,129 @@ def _times(x: float, y: float) -> str:
     return f"{x / y:.3g} times" if x >= y else f"{y / x:.3g} times less than"
 
 
-def b0_words(a: Arrangement, bound: Arrangement | None) -> str:
-    if bound is None:
-        return "not designed"
-    return f"{bound.launch_energy / 1e6:.3g} MJ ((a) needs {_times(a.required_energy, bound.launch_energy)} that)"
+def closed_form(m: Machine) -> dict:
+    """The premise's closed form (``boundary``) at the design's striker: what the design's chain keeps of its
+    launch energy (at its effective e, and at e = 1), the least gun any chain needs at that e, the break-even
+    restitutions (the best chain, and the spec's launch speed and mass count; air, helium, an air amplifier
+    against a helium direct gun) and the best restitution a pad of the library is sized with."""
+    s, e = m.spec, m.amplifier.restitution
+    V = m.fixture.striker_speed
+    G = V / s.launch_speed
+    pad, e_pad = best_pad_restitution()
+    ok = math.isfinite(e) and e > 0
+    return {"striker_speed": V, "restitution": e, "masses": s.masses, "launch_speed": s.launch_speed, "gain": G,
+            "chain_efficiency": chain_efficiency(e, G, s.masses) if ok else math.nan,
+            "chain_efficiency_elastic": chain_efficiency(1.0, G, s.masses),
+            "best": best_chain(e, V, s.gas).as_dict() if ok else None,
+            "break_even": {gas: break_even(V, gas) for gas in ("air", "helium")},
+            "break_even_spec": {gas: break_even(V, gas, masses=s.masses, launch_speed=s.launch_speed)
+                                for gas in ("air", "helium")},
+            "break_even_air_against_helium": break_even(V, "air", "helium"),
+            "best_pad": pad, "best_pad_restitution": e_pad}
 
 
-def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement | None = None) -> str:
-    """What the three arrangements say about the premise, from their numbers (``bound``: (b) with a
-    massless sabot, the direct gun's lower bound)."""
-    a_ok = a.gun_feasible and a.feasible
-    launches = (f"launches {a.launch_energy / 1e6:.3g} MJ" if a.gun_feasible else
+def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: float) -> dict:
+    """What one gun at the spec's widest bore and highest pressure needs to fire the striker, in its sabot
+    there, at ``speed``: the barrel, and the speed a barrel of the spec's limit gives, in air and in helium,
+    by the simple-wave gun (a straight infinite chamber of the bore's section, ``launcher.simple_wave``) and
+    the constant-pressure bound (an infinite reservoir behind the base, massless gas: p A L = M V^2 / 2, the
+    least barrel any chamber gives)."""
+    p, A, L = spec.max_pressure, math.pi * spec.max_bore ** 2 / 4, spec.max_barrel_length
+    M = striker + sabot_mass(spec.max_bore, p, diameter)
+    out = {"limits": {"barrel": L, "bore": spec.max_bore, "pressure": p}, "launched": M,
+           "constant_pressure_barrel": 0.5 * M * speed ** 2 / (p * A),
+           "constant_pressure_speed": math.sqrt(2 * p * A * L / M)}
+    for gas in ("air", "helium"):
+        g = GASES[gas]
+        c0 = g.sound_speed(p, TEMPERATURE)
+        top = 2 * c0 / (g.gamma - 1)
+        out[gas] = {"barrel": travel(speed, M, p, A, c0, g.gamma) if speed < top else math.inf,
+                    "speed": muzzle_speed(L, M, p, A, c0, g.gamma)}
+    return out
+
+
+def _energies(a: Arrangement, b: Arrangement, bound: Arrangement | None) -> str:
+    """The energy each arrangement launches for the striker's; (b0) as the lower bound it is."""
+    launches = (f"launches {a.launch_energy / 1e6:.4g} MJ" if a.gun_feasible else
                 f"must launch {a.required_energy / 1e6:.4g} MJ (its gun, every limit reached, launches only "
-                f"{a.launch_energy / 1e6:.3g} MJ)")
-    words = [f"to give the striker {0.5 * a.striker_mass * a.striker_speed ** 2 / 1e6:.3g} MJ the amplifier (a) "
-             f"{launches} from {a.stored / 1e6:.3g} MJ of stored gas; "
-             f"the direct gun (b) {'launches' if b.gun_feasible else 'must launch'} {b.required_energy / 1e6:.3g} MJ "
-             f"(striker and sabot) from {b.stored / 1e6:.3g} MJ, so (a) needs "
-             f"{_times(a.required_energy, b.required_energy)} (b)'s energy; "
-             f"(b0), the striker alone, {b0_words(a, bound)}"]
-    if not a_ok:
-        words.append(f"the amplifier (a) is not a feasible machine ({a.launched_mass / 1e3:,.4g} t first mass; "
-                     f"{a.notes[-1]})")
-    for x in [b] + ([bound] if bound else []):
-        if not x.gun_feasible:
-            words.append(f"{x.name}: no gun within the limits fires it at its speed")
-            continue
-        if not a_ok:
-            words.append(f"{x.name}'s gun is within the limits ({x.machine_mass / 1e3:.3g} t, "
-                         f"{x.machine_length:.3g} m long): the direct gun is the better machine, amplification does "
-                         "not pay")
-            continue
-        better = x.machine_mass <= a.machine_mass and x.machine_length <= a.machine_length
-        worse = x.machine_mass >= a.machine_mass and x.machine_length >= a.machine_length
-        words.append(f"{x.name} weighs {x.machine_mass / 1e3:.3g} t and is {x.machine_length:.3g} m long against "
-                     f"(a)'s {a.machine_mass / 1e3:.3g} t and {a.machine_length:.3g} m: "
-                     + ("the direct gun is the better machine, amplification does not pay" if better else
-                        "amplification pays" if worse else "neither is better on both mass and length"))
+                f"{a.launch_energy / 1e6:.4g} MJ, {_times(a.required_energy, a.launch_energy)} short of it)")
+    words = (f"to give the striker {0.5 * a.striker_mass * a.striker_speed ** 2 / 1e6:.4g} MJ the amplifier (a) "
+             f"{launches} from {a.stored / 1e6:.4g} MJ of gas stored (p0 V0 / (gamma - 1), counted from vacuum); "
+             f"the direct gun (b) {'launches' if b.gun_feasible else 'must launch'} {b.required_energy / 1e6:.4g} MJ "
+             f"(the striker and its sabot) from {b.stored / 1e6:.4g} MJ stored, so (a) asks "
+             f"{_times(a.required_energy, b.required_energy)} (b)'s launch energy")
+    if bound is not None:
+        words += (f"; (b0), the striker alone, {bound.required_energy / 1e6:.4g} MJ: a lower bound on any direct gun "
+                  "(no sabot weighs nothing), not a machine")
+    return words
+
+
+def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, remedies: dict | None) -> list[str]:
+    a_ok, b_ok = a.gun_feasible and a.feasible, b.gun_feasible
+    if a_ok and b_ok:
+        better = b.machine_mass <= a.machine_mass and b.machine_length <= a.machine_length
+        worse = b.machine_mass >= a.machine_mass and b.machine_length >= a.machine_length
+        return [f"(b) weighs {b.machine_mass / 1e3:.3g} t and is {b.machine_length:.3g} m long against (a)'s "
+                f"{a.machine_mass / 1e3:.3g} t and {a.machine_length:.3g} m: "
+                + ("the direct gun is the better machine, amplification does not pay" if better else
+                   "amplification pays" if worse else "neither is better on both mass and length")]
+    if b_ok:
+        return [f"the amplifier (a) is not a feasible machine ({a.notes[-1]}); the direct gun (b) is within the limits "
+                f"({b.machine_mass / 1e3:.3g} t, {b.machine_length:.3g} m long): amplification does not pay"]
+    if a_ok:
+        return [f"the direct gun (b) has no gun within the limits and the amplifier (a) is feasible "
+                f"({a.machine_mass / 1e3:.3g} t, {a.machine_length:.3g} m long): amplification pays"]
+    lim = (remedies or {}).get("limits")
+    within = (f" ({lim['barrel'] / FT:.3g} ft, {lim['bore'] / IN:.3g} in, {lim['pressure'] / PSI:,.0f} psi)"
+              if lim else "")
+    words = [f"NEITHER arrangement is feasible within the limits{within}: the amplifier (a) misses its launch energy "
+             f"{_times(a.required_energy, a.launch_energy)} ({a.notes[-1]}); the direct gun (b) reaches "
+             f"{b.launch_speed:.4g} of the {b.striker_speed:.4g} m/s asked ({b.launch_energy / 1e6:.4g} of "
+             f"{b.required_energy / 1e6:.4g} MJ)"]
+    if bound is not None:
+        words.append(f"only the lower bound (b0) is within them ({bound.machine_mass / 1e3:.3g} t, "
+                     f"{bound.machine_length:.3g} m long)" if bound.gun_feasible else
+                     "not even the lower bound (b0) is within them")
+    if remedies:
+        air, he = remedies["air"], remedies["helium"]
+        words.append(f"what would change it for (b), the striker in its sabot ({remedies['launched']:.4g} kg) at the "
+                     f"widest bore and highest pressure: a barrel of at least {air['barrel'] / FT:.3g} ft in air "
+                     f"(the simple-wave gun; {remedies['constant_pressure_barrel'] / FT:.3g} ft at the "
+                     f"constant-pressure bound), or {he['barrel'] / FT:.3g} ft in helium; at the barrel limit the "
+                     f"simple-wave gun gives {air['speed']:.4g} m/s in air and {he['speed']:.4g} m/s in helium")
+    return words
+
+
+def _closed_form_words(k: dict) -> str:
+    be, spec = k["break_even"], k["break_even_spec"]
+
+    def e_words(x):
+        return f"{x:.3f}" if math.isfinite(x) else "never (not even at e = 1)"
+    pays = math.isfinite(be["air"]) and k["restitution"] > be["air"]
+    air_he = k["break_even_air_against_helium"]
+    return (f"the closed form (`machine.boundary`): the design's {k['masses']} masses at its effective e "
+            f"{k['restitution']:.4f} keep {k['chain_efficiency']:.3g} of the launch energy "
+            f"({k['chain_efficiency_elastic']:.3g} even at e = 1), so the amplifier always launches more than the "
+            f"striker's energy and only the gun's higher efficiency at a lower speed can pay it back: for a striker "
+            f"at {k['striker_speed']:.4g} m/s the amplifier needs less gun (p0 A L) than the direct gun only above "
+            f"e = {e_words(be['air'])} in air and {e_words(be['helium'])} in helium (the best launch speed and "
+            f"mass count; at the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses "
+            f"{e_words(spec['air'])} and {e_words(spec['helium'])}), and an air amplifier against a helium direct "
+            f"gun {'pays only above ' + e_words(air_he) if math.isfinite(air_he) else 'never pays'} (up to "
+            f"{MAX_MASSES} masses); "
+            f"the best pad material of the library is sized at e = {k['best_pad_restitution']:.3f} "
+            f"({k['best_pad']}, its rebound on rigid masses), the design's chain runs at {k['restitution']:.3f}: "
+            + ("amplification pays" if pays else "amplification does not pay"))
+
+
+def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement | None = None,
+            closed: dict | None = None, remedies: dict | None = None) -> str:
+    """What the arrangements say about the premise, from their numbers (``bound``: (b) with a massless
+    sabot, the direct gun's lower bound, never a machine; ``closed``: ``closed_form``; ``remedies``:
+    ``direct_remedies``)."""
+    words = [_energies(a, b, bound)] + _feasibility(a, b, bound, remedies)
+    if closed:
+        words.append(_closed_form_words(closed))
     if not math.isfinite(c.striker_speed):
         words.append(f"the white paper's flying target (c) has no fixture: {c.notes[-1]}")
         return "; ".join(words) + "."
@@ -310,6 +405,10 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
 
 # --- the map -------------------------------------------------------------------------------------------
 
+# what a point can come to: the lightest feasible arrangement, or why the amplifier was not designed there
+WINNERS = ("amplifier", "direct", "direct, if its sabot is light", "flying target", "nothing to amplify", "none")
+
+
 @dataclass
 class MapPoint:
     duration: float               # [s]
@@ -319,10 +418,12 @@ class MapPoint:
     velocity_change: float        # [m/s]
     striker_mass: float
     striker_speed: float
+    chain: dict                   # the closed form's best chain (``boundary.best_chain``)
+    eligible: bool                # that chain needs less gun than the direct one (Q < 1): the amplifier designed
     amplifier: dict               # launch energy, first mass, gun mass, machine mass, feasible, note
     direct: dict
     flying: dict
-    winner: str
+    winner: str                   # WINNERS
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -335,11 +436,45 @@ def _gun_entry(L: Launcher, moving: float, feasible: bool, note: str = "") -> di
             "machine_mass": L.design.weight + moving, "feasible": bool(feasible), "note": note}
 
 
+def _no_gun(note: str) -> dict:
+    nan = math.nan
+    return {"launch_energy": nan, "launched": nan, "bore": nan, "barrel": nan, "pressure": nan, "stored": nan,
+            "gun_mass": nan, "machine_mass": nan, "feasible": False, "note": note}
+
+
+def _amplifier_entry(s: MachineSpec, M: float, V: float, chain: Chain) -> dict:
+    """The amplifier at the closed form's best launch speed and mass count: its masses by the closed form
+    (the launched chain), its gun by the lightest-launcher design."""
+    d = gain_design("launched-chain", M, V, chain.launch_speed, chain.restitution, chain.masses)
+    if not d.feasible:
+        return _no_gun(d.reason)
+    L = launcher_for(s, d.masses[0], chain.launch_speed, starts=1, report_binding=False)
+    return _gun_entry(L, sum(d.masses), L.design.feasible,
+                      f"{chain.masses} masses launched at {chain.launch_speed:.0f} m/s, first mass {d.masses[0]:,.0f} kg")
+
+
+def _winner(amp: dict, direct: dict, flying: dict, eligible: bool) -> str:
+    """The lightest feasible arrangement (WINNERS); where the amplifier was not designed (no chain needs
+    less gun than the direct one), the direct gun's point is 'nothing to amplify', not a direct win."""
+    options = {"amplifier": amp, "direct": direct, "flying target": flying}
+    feasible = {k: v for k, v in options.items() if v["feasible"]}
+    if not feasible:
+        return "none"
+    winner = min(feasible, key=lambda k: feasible[k]["machine_mass"])
+    if winner == "direct" and not eligible:
+        return "nothing to amplify"
+    if winner == "direct" and amp["feasible"] and direct["machine_mass"] + direct["sabot_estimate"] > amp["machine_mass"]:
+        return "direct, if its sabot is light"
+    return winner
+
+
 def map_point(spec: MachineSpec, duration: float, peak: float, article: float, ratio: float, ratio_c: float,
               fixture_e: float, amp_e: float, wall: float) -> MapPoint:
     """One point of the map: the three arrangements by closed forms and the lightest-launcher design;
     ``ratio`` and ``ratio_c`` the strikers of (b) and (c) over the payload, ``fixture_e`` the fixture's
-    restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius."""
+    restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius.  The
+    amplifier's launch speed and mass count are the closed form's best (``boundary.best_chain``), and it is
+    designed only where that chain needs less gun than the direct one."""
     s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, peak, duration))
     rho = property_si(s.material, "density", "density")
     r = bore_radius(s, rho)
@@ -347,33 +482,23 @@ def map_point(spec: MachineSpec, duration: float, peak: float, article: float, r
     dv = requirement(s.pulse.shape, peak, duration, payload).velocity_change
     M = ratio * payload
     V = striker_speed(payload, M, dv, fixture_e)
-    diameter = 2 * r * wall
     Lb, _ = direct_launcher(s, M, V, None, starts=1, report_binding=False)
     gb = Lb.design.gun
-    sabot = sabot_mass(gb.bore, gb.reservoir_pressure, diameter)
+    sabot = sabot_mass(gb.bore, gb.reservoir_pressure, 2 * r * wall)
     direct = _gun_entry(Lb, M, Lb.design.feasible, f"massless sabot; its sabot would weigh {sabot:.3g} kg")
     direct["sabot_estimate"] = sabot
-    d = gain_design(s.architecture, M, V, s.launch_speed, amp_e, s.masses)
-    if d.feasible and V > s.launch_speed and d.masses:
-        La = launcher_for(s, d.masses[0] if s.architecture == "launched-chain" else sum(d.masses), s.launch_speed,
-                          starts=1, report_binding=False)
-        amp = _gun_entry(La, sum(d.masses), La.design.feasible, f"first mass {d.masses[0]:,.0f} kg")
-    else:
-        amp = {"launch_energy": math.nan, "launched": math.nan, "bore": math.nan, "barrel": math.nan,
-               "pressure": math.nan, "stored": math.nan, "gun_mass": math.nan, "machine_mass": math.nan,
-               "feasible": False, "note": d.reason or f"the striker's {V:.3g} m/s is below the launch speed: "
-                                                      "nothing to amplify"}
+    chain = best_chain(amp_e, V, s.gas)
+    eligible = chain.gun_ratio < 1
+    amp = (_amplifier_entry(s, M, V, chain) if eligible else
+           _no_gun(f"nothing to amplify: the best chain ({chain.masses} masses launched at {chain.launch_speed:.0f} "
+                   f"m/s) needs {chain.gun_ratio:.3g} times the direct gun's p0 A L"))
     Mc = ratio_c * payload
     Vc = striker_speed(payload, Mc, dv, fixture_e)
     Lc, ok = white_paper_launcher(s, Mc, Vc)
     flying = _gun_entry(Lc, Mc, ok and Lc.design.gun.length <= s.max_barrel_length,
                         f"barrel {Lc.design.gun.length / FT:.3g} ft" if ok else "never reaches the speed")
-    options = {"amplifier": amp, "direct": direct, "flying target": flying}
-    feasible = {k: v for k, v in options.items() if v["feasible"]}
-    winner = min(feasible, key=lambda k: feasible[k]["machine_mass"]) if feasible else "none"
-    if winner == "direct" and amp["feasible"] and direct["machine_mass"] + sabot > amp["machine_mass"]:
-        winner = "direct, if its sabot is light"
-    return MapPoint(duration, peak, article, payload, dv, M, V, amp, direct, flying, winner)
+    return MapPoint(duration, peak, article, payload, dv, M, V, chain.as_dict(), eligible, amp, direct, flying,
+                    _winner(amp, direct, flying, eligible))
 
 
 def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durations, peaks, payloads, echo=None
@@ -388,52 +513,77 @@ def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durati
                 out.append(p)
                 if echo:
                     echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "
-                         f"winner {p.winner}")
+                         f"Q {p.chain['gun_ratio']:.3g}, winner {p.winner}")
     return out
 
 
 def boundary(points: list[MapPoint]) -> dict:
-    """Where amplification pays on the map: the points it wins and the smallest velocity change among them,
-    against the largest velocity change the direct gun still wins."""
+    """The map's counts: each outcome's points, the points where the amplifier was eligible (designed), each
+    arrangement's points within the limits, and the smallest velocity change the amplifier wins at against
+    the largest the direct gun wins at."""
     amp = [p for p in points if p.winner == "amplifier"]
     direct = [p for p in points if p.winner == "direct"]
-    return {"amplifier_wins": len(amp), "direct_wins": len(direct),
-            "flying_wins": sum(p.winner == "flying target" for p in points),
-            "direct_if_light_sabot": sum(p.winner == "direct, if its sabot is light" for p in points),
-            "none": sum(p.winner == "none" for p in points), "points": len(points),
+    counts = {w: sum(p.winner == w for p in points) for w in WINNERS}
+    within = {k: sum(getattr(p, k)["feasible"] for p in points) for k in ("amplifier", "direct", "flying")}
+    return {"counts": counts, "eligible": sum(p.eligible for p in points), "points": len(points), "within": within,
+            "amplifier_wins": counts["amplifier"], "direct_wins": counts["direct"],
             "smallest_dv_amplifier_wins": min((p.velocity_change for p in amp), default=math.nan),
             "largest_dv_direct_wins": max((p.velocity_change for p in direct), default=math.nan)}
 
 
-def map_figure(points: list[MapPoint], path: str):
-    """One panel per payload: the winner at each (duration, peak), and the direct machine's mass over the
-    amplifier's written at each point."""
+def boundary_velocity_change(points: list[MapPoint], e: float, gas: str) -> float:
+    """The velocity change [m/s] above which an amplifier of restitution ``e`` needs less gun than the direct
+    gun: the closed form's striker speed (``boundary.break_even_speed``) over the map's striker speed per
+    velocity change (one ratio: every point has the designed fixture's striker ratio and restitution)."""
+    p = points[0]
+    return break_even_speed(e, gas) * p.velocity_change / p.striker_speed
+
+
+MARKS = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "direct, if its sabot is light": ("D", "#a6d854"),
+         "flying target": ("^", "#7570b3"), "nothing to amplify": ("s", "#bbbbbb"), "none": ("x", "#444444")}
+
+
+def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
+    """One panel per payload: the outcome at each (duration, peak) with its velocity change and Q (the best
+    chain's gun over the direct gun's), and ``lines`` {label: velocity change [m/s]} drawn as the
+    peak-duration curve of that velocity change (the closed form's boundary)."""
     from ..output.figures import pyplot, save
     plt = pyplot()
     payloads = sorted({p.article for p in points})
-    fig, axes = plt.subplots(1, len(payloads), figsize=(4.2 * len(payloads), 4.0), squeeze=False)
-    marks = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "direct, if its sabot is light": ("D", "#a6d854"),
-             "flying target": ("^", "#7570b3"), "none": ("x", "#444444")}
+    fig = plt.figure(figsize=(max(4.4 * len(payloads), 9.0), 5.6))
+    grid = fig.add_gridspec(2, len(payloads), height_ratios=[5, 1.3])
+    axes = [[fig.add_subplot(grid[0, k]) for k in range(len(payloads))]]
+    key = fig.add_subplot(grid[1, :])
+    key.axis("off")
+    # the pulse's velocity change over peak x duration (one shape on the map)
+    per = points[0].velocity_change / (points[0].peak * points[0].duration)
+    ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
+    styles = iter(["-", "--", ":", "-."])
     for ax, a in zip(axes[0], payloads):
         for p in (q for q in points if q.article == a):
-            m, c = marks[p.winner]
+            m, c = MARKS[p.winner]
             ax.scatter(p.duration * 1e3, p.peak / G0, marker=m, color=c, s=70)
-            ratio = p.amplifier["machine_mass"] / p.direct["machine_mass"] if p.direct["feasible"] else math.nan
-            ax.annotate(f"{p.velocity_change:.0f} m/s" + (f"\na/b {ratio:.2g}" if math.isfinite(ratio) else ""),
-                        (p.duration * 1e3, p.peak / G0), fontsize=6, xytext=(4, 4), textcoords="offset points")
+            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio']:.2g}", (p.duration * 1e3, p.peak / G0),
+                        fontsize=6, xytext=(4, 4), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
         ax.set_xlim(min(ds) / 1.6, max(ds) * 2.2)
         ax.set_ylim(min(ps) / 1.4, max(ps) * 1.6)
         ax.set_xlabel("pulse duration [ms]")
         ax.set_ylabel("peak [g]")
         ax.set_title(f"{a / LB:.0f} lb article", fontsize=9)
         ax.grid(alpha=0.3, which="both")
-    handles = [axes[0][0].scatter([], [], marker=m, color=c, label=f"{k} wins") for k, (m, c) in marks.items()]
-    fig.legend(handles=handles, fontsize=7, loc="lower center", ncol=len(marks))
-    fig.suptitle("The lightest machine (gun and moving masses) that gives the pulse\n"
-                 "a/b: the amplifier's mass over the direct gun's (massless sabot)", fontsize=9)
-    fig.subplots_adjust(bottom=0.27, top=0.82)
+    handles = [key.scatter([], [], marker=m, color=c, label=k) for k, (m, c) in MARKS.items()]
+    T = np.geomspace(min(ds) / 1.6, max(ds) * 2.2, 50)
+    for label, dv in (lines or {}).items():
+        if not math.isfinite(dv):
+            continue
+        style = next(styles, "-")
+        for ax in axes[0]:
+            ax.plot(T, dv / (per * T * 1e-3) / G0, style, color="#d95f02", lw=1)
+        handles.append(key.plot([], [], style, color="#d95f02", lw=1, label=f"{label}: {dv:.3g} m/s")[0])
+    key.legend(handles=handles, fontsize=7, loc="center", ncol=4, frameon=False)
+    fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's\n"
+                 "gun (p0 A L) over the direct gun's, closed form; the amplifier designed only where Q < 1", fontsize=9)
     save(fig, path)
     return path

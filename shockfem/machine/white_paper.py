@@ -9,18 +9,22 @@ same pressure; task 3, Eq. 2, a gain of five with four or five masses at e = 0.9
 
 Each is computed by the project's models: the masses by the closed form (``amplifier.gain.design``), the
 gains by Eq. 2 (``amplifier.gain.stack_gain``, the stack on an anvil it describes) and the launched chain's
-(``chain_gain``), the guns by the lumped gun (``launcher.gun.fire``, the white paper's gun as
-``white_paper_gun`` describes it: 20 ft^3 at 2000 psi, an 8 in valve opening in 2 ms) and the barrel a speed
-needs (``barrel_length_for``), with the simple-wave gun (an infinite chamber of the bore's section) as the
-gas-dynamic bound of any barrel at that pressure.
+(``chain_gain``), the guns by the lumped gun (``launcher.gun.fire``) and the barrel a speed needs
+(``barrel_length_for``).  The white paper gives its gun's bore, barrel and pressure only: the 20 ft^3 tank
+and the 8 in valve opening in 2 ms are this project's assumptions (``white_paper_gun``), so the lumped
+gun's speeds depend on them.  Beside them, two tank-free bounds at its bore, barrel and pressure: the
+simple-wave gun (a straight infinite chamber of the bore's section, ``launcher.simple_wave``) and the
+constant-pressure bound (an infinite reservoir right behind the base, massless gas: p A L = m v^2 / 2,
+the most any chamber gives).  Its "800 lb" counts the intermediate masses only; the masses it adds to the
+article include its first mass too, so they are tabled as well.
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 
 from ..amplifier.gain import chain_gain, design, stack_gain
 from ..launcher.gun import barrel_length_for, fire, white_paper_gun
+from ..launcher.simple_wave import muzzle_speed, travel
 from ..scene.library import property_si
 from ..units import FT, LB
 
@@ -29,15 +33,38 @@ CLAIM = {"article": 12 * LB, "masses": 5, "velocity_change": 1600 * FT, "launch"
          "target_speed": 1600 * FT, "target_gun": 90 * FT}
 
 
+def tank_free_speeds(mass: float) -> dict:
+    """The white paper's bore, barrel and pressure firing ``mass`` [kg] without the assumed tank and valve:
+    the simple-wave gun's and the constant-pressure bound's muzzle speeds [m/s]."""
+    g = white_paper_gun(mass)
+    gas = g.gas_model()
+    c0 = gas.sound_speed(g.reservoir_pressure, g.reservoir_temperature)
+    return {"simple_wave": muzzle_speed(g.length, mass, g.reservoir_pressure, g.area, c0, gas.gamma),
+            "constant_pressure": math.sqrt(2 * g.reservoir_pressure * g.area * g.length / mass)}
+
+
+def tank_free_barrels(mass: float, speed: float) -> dict:
+    """The barrels [m] the white paper's bore and pressure need for ``mass`` at ``speed`` without the assumed
+    tank and valve: the simple-wave gun's and the constant-pressure bound's."""
+    g = white_paper_gun(mass)
+    gas = g.gas_model()
+    c0 = gas.sound_speed(g.reservoir_pressure, g.reservoir_temperature)
+    return {"simple_wave": travel(speed, mass, g.reservoir_pressure, g.area, c0, gas.gamma),
+            "constant_pressure": 0.5 * mass * speed ** 2 / (g.reservoir_pressure * g.area)}
+
+
 def _chain(last: float, speed: float, launch: float, e: float, n: int, rho: float) -> dict:
     d = design("launched-chain", last, speed, launch, e, n)
     if not d.feasible:
-        return {k: math.nan for k in ("first", "intermediate", "volume", "eq2_gain", "chain_gain", "R", "wp_gun_muzzle")}
+        return {k: math.nan for k in ("first", "intermediate", "added", "volume", "added_volume", "eq2_gain",
+                                      "chain_gain", "R", "wp_gun_muzzle", "simple_wave", "constant_pressure")}
     mid = sum(d.masses[1:-1])
     R = d.masses[-1] / d.masses[0]
     return {"masses": d.masses, "first": d.masses[0], "intermediate": mid, "volume": mid / rho,
+            "added": mid + d.masses[0], "added_volume": (mid + d.masses[0]) / rho,
             "eq2_gain": stack_gain(e, R, n), "chain_gain": chain_gain(e, R, n), "R": R,
-            "wp_gun_muzzle": fire(white_paper_gun(d.masses[0]), samples=2).muzzle_velocity}
+            "wp_gun_muzzle": fire(white_paper_gun(d.masses[0]), samples=2).muzzle_velocity,
+            **tank_free_speeds(d.masses[0])}
 
 
 def claims(m) -> list[dict]:
@@ -60,6 +87,11 @@ def claims(m) -> list[dict]:
                  f"housing, {striker:.3g} kg at {V:.1f} m/s), {striker / CLAIM['article']:.3g} times heavier"},
         {"claim": "their volume of steel [m^3]", "white_paper": CLAIM["volume"], "wp_assumptions": wp.get("volume"),
          "design_at_0.9": at_09.get("volume"), "design": at_e.get("volume"), "note": f"at {rho:g} kg/m^3"},
+        {"claim": "the masses added to the article, the first included [kg]", "white_paper": CLAIM["intermediate"],
+         "wp_assumptions": wp.get("added"), "design_at_0.9": at_09.get("added"),
+         "design": sum(m.amplifier.masses[:-1]),
+         "note": "the white paper's 800 lb counts the intermediate masses only, not its own first mass; their "
+                 f"steel: {wp.get('added_volume', math.nan) / FT ** 3:.3g} ft^3 at its assumptions"},
         {"claim": "first mass [kg]", "white_paper": math.nan, "wp_assumptions": wp.get("first"),
          "design_at_0.9": at_09.get("first"), "design": m.amplifier.masses[0],
          "note": f"launched at {launch / FT:.0f} ft/s (the white paper: 300-350)"},
@@ -73,17 +105,24 @@ def claims(m) -> list[dict]:
         {"claim": "the white paper's 12 in x 6 ft gun at 2000 psi: first mass's muzzle speed [m/s]",
          "white_paper": 325 * FT, "wp_assumptions": wp.get("wp_gun_muzzle"), "design_at_0.9": at_09.get("wp_gun_muzzle"),
          "design": fire(white_paper_gun(m.amplifier.masses[0]), samples=2).muzzle_velocity,
-         "note": f"the design's own gun: {m.launcher.design.gun.bore / 0.0254:.3g} in x "
+         "note": "the lumped gun with this project's assumed 20 ft^3 tank and 8 in valve (the white paper gives "
+                 f"neither); the design's own gun: {m.launcher.design.gun.bore / 0.0254:.3g} in x "
                  f"{m.launcher.design.gun.length / FT:.3g} ft at {m.launcher.design.gun.reservoir_pressure / 6894.76:,.0f} psi"},
+        {"claim": "the same gun without a tank: the simple-wave gun [m/s]", "white_paper": 325 * FT,
+         "wp_assumptions": wp.get("simple_wave"), "design_at_0.9": at_09.get("simple_wave"),
+         "design": tank_free_speeds(m.amplifier.masses[0])["simple_wave"],
+         "note": "a straight infinite chamber of the bore's section"},
+        {"claim": "the same gun without a tank: the constant-pressure bound [m/s]", "white_paper": 325 * FT,
+         "wp_assumptions": wp.get("constant_pressure"), "design_at_0.9": at_09.get("constant_pressure"),
+         "design": tank_free_speeds(m.amplifier.masses[0])["constant_pressure"],
+         "note": "p A L = m v^2 / 2: the most any gun of that bore, barrel and pressure gives"},
     ]
     g = white_paper_gun(CLAIM["target"])
     lumped = barrel_length_for(g, CLAIM["target_speed"])
-    wave = barrel_length_for(dataclasses.replace(g, gas_inertia="simple-wave"), CLAIM["target_speed"])
+    free = tank_free_barrels(CLAIM["target"], CLAIM["target_speed"])
     rows.append({"claim": "barrel for a 30 lb flying target at 1600 ft/s, 12 in at 2000 psi [m]",
                  "white_paper": CLAIM["target_gun"], "wp_assumptions": lumped, "design_at_0.9": math.nan,
-                 "design": math.nan,
-                 "note": f"the lumped gun with the white paper's 20 ft^3 tank and valve; a straight infinite chamber "
-                         f"of the bore's section (the simple-wave gun, no chambrage) needs {wave / FT:.3g} ft"
-                 if math.isfinite(wave) else "the lumped gun with the white paper's tank and valve; a straight "
-                                             "infinite chamber of the bore's section never reaches it"})
+                 "design": math.nan, "simple_wave": free["simple_wave"], "constant_pressure": free["constant_pressure"],
+                 "note": f"the lumped gun with the assumed 20 ft^3 tank and valve; the simple-wave gun (no tank) needs "
+                         f"{free['simple_wave'] / FT:.3g} ft, the constant-pressure bound {free['constant_pressure'] / FT:.3g} ft"})
     return rows

@@ -67,7 +67,12 @@ def channel_metrics(t: np.ndarray, v: np.ndarray, v_body: np.ndarray, shock: dic
     dv_record = float(a.sum() * dt)
     out["velocity_change_record"] = dv_record
     out["velocity_change_rigid_body"] = dv_rigid
-    out["velocity_change_mismatch"] = (dv_record - dv_rigid) / dv_rigid if dv_rigid else float("nan")
+    if not dv_rigid:
+        # a point that vibrates on a body that ends as it began: no velocity change to compare with
+        out["not_measured"] = {"velocity_change_mismatch": "its body's velocity does not change (no velocity change "
+                                                           "to divide by)"}
+    else:
+        out["velocity_change_mismatch"] = (dv_record - dv_rigid) / dv_rigid
     if dv_rigid and abs(out["velocity_change_mismatch"]) > VELOCITY_CHANGE_MISMATCH:
         response = f"; CFC {cfc}'s response lasts about {1 / (2 * cfc * 2.0775):.3g} s" if cfc else ""
         notes.append(f"the {'filtered ' if cfc else ''}record's velocity change is "
@@ -178,25 +183,43 @@ def shock_report(run_dir: str, cfc: int | None = None, plots: bool = True) -> tu
         lines.append(f"contact {ev.pair}: carried force from {ev.start * 1e6:.4g} to {ev.end * 1e6:.4g} us (peak "
                      f"{ev.peak_force:.4g} N) without the bodies closing: a sustained contact (resting, sliding, a "
                      "fit), not an impact stage")
-    for s in stages:
-        line = (f"stage {s.pair}: {s.striker} {s.striker_before:.4g} -> {s.striker_after:.4g} m/s, "
-                f"{s.struck} {s.struck_before:.4g} -> {s.struck_after:.4g} m/s over {(s.end - s.start) * 1e6:.4g} us")
-        if np.isfinite(s.restitution):
-            line += (f"; restitution {s.restitution:.4f}, velocity ratio {s.velocity_ratio:.4f}, "
-                     f"{s.vibration_share:.1%} of the launch energy in vibration")
-        lines.append(line)
+    lines += [describe_stage(s) for s in result["stages"]]
     summary["shock"] = result
     write_json_atomic(os.path.join(run_dir, "summary.json"), summary)
     if plots:
         try:
-            _draw(run_dir, result, arrays)
+            lines += _draw(run_dir, result, arrays)
         except Exception as e:          # the metrics are written: a figure that cannot be drawn costs only itself
             lines.append(f"WARNING: the shock metrics' figures were not drawn ({type(e).__name__}: {e})")
     return result, lines
 
 
-def _draw(run_dir: str, result: dict, arrays: dict):
-    """The pulse and spectrum of each channel with a pulse, and the stages' velocity gain."""
+# a stage's ratios in the run log: key, name, and the value's wording
+STAGE_RATIOS = (("restitution", "restitution", "restitution {:.4f}"),
+                ("velocity_ratio", "velocity ratio", "velocity ratio {:.4f}"),
+                ("vibration_share", "vibration share", "{:.1%} of the launch energy in vibration"))
+
+
+def not_applicable(stage: dict, key: str) -> str:
+    """The wording of a stage's ratio that has no value (``Stage.as_dict`` left it out, with its reason)."""
+    name = next(n for k, n, _ in STAGE_RATIOS if k == key)
+    return f"{name} not applicable: {stage['not_measured'][key]}"
+
+
+def describe_stage(stage: dict) -> str:
+    """One line for the run log from a row of the stage table (``Stage.as_dict``): the velocities, then each
+    ratio, or why it does not apply."""
+    s = stage
+    line = (f"stage {s['pair']}: {s['striker']} {s['striker_before']:.4g} -> {s['striker_after']:.4g} m/s, "
+            f"{s['struck']} {s['struck_before']:.4g} -> {s['struck_after']:.4g} m/s over "
+            f"{(s['end'] - s['start']) * 1e6:.4g} us")
+    ratios = [wording.format(s[key]) if key in s else not_applicable(s, key) for key, _, wording in STAGE_RATIOS]
+    return line + "; " + "; ".join(ratios)
+
+
+def _draw(run_dir: str, result: dict, arrays: dict) -> list[str]:
+    """The pulse and spectrum of each channel with a pulse, and the stages' velocity gain; returns the run
+    log's lines for a figure that does not apply."""
     from ..output.plots import ChannelPlots, plot_stages
     drawn = [name for name in arrays if result["channels"][name].get("pulse")]
     if drawn:
@@ -205,6 +228,8 @@ def _draw(run_dir: str, result: dict, arrays: dict):
                 plots.pulse(os.path.join(run_dir, f"pulse_{name}.png"), name, arrays[name],
                             result["channels"][name])
                 plots.srs(os.path.join(run_dir, f"srs_{name}.png"), name, arrays[name]["srs"])
-    if result["stages"]:
-        plot_stages(os.path.join(run_dir, "stages.png"), result["stages"])
+    stages = result["stages"]
+    if stages and plot_stages(os.path.join(run_dir, "stages.png"), stages) is None:
+        return [f"stage figure not drawn: {not_applicable(stages[0], 'velocity_ratio')}"]
+    return []
 

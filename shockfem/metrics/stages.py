@@ -9,6 +9,9 @@ its start and after it (just before either body's next event, or at the end of t
 restitution e = -(v_a' - v_b') / (v_a - v_b), the struck body's velocity over the launch
 speed, and the energy left in vibration: kinetic plus stored elastic energy, less the
 kinetic energy of the bodies' mean motion (translation only: spin counts as vibration).
+When every body starts at rest (the motion comes from a prescribed boundary or a load) there is
+no launch speed or energy to divide by: those ratios are left out, with the reason
+(``NOT_MEASURED``).
 """
 from __future__ import annotations
 
@@ -24,6 +27,10 @@ MERGE_GAP = 0.25
 # the axis in the record; slower (a body resting or sliding on a surface, chatter, a fit from rest) it is a
 # sustained contact: no restitution to speak of (the closing speed would divide it)
 STAGE_APPROACH = 0.02
+# a body "starts at rest" when its speed at the first sample is below this fraction of the fastest speed in the
+# record: what a settled preload or round-off leaves (a true launch speed divides a velocity ratio of order 1-100;
+# that residue would divide it into 1e6 and more)
+AT_REST = 1e-6
 
 
 @dataclass
@@ -100,9 +107,9 @@ class Stage:
 # why a stage's ratio can have no value
 NOT_MEASURED = {
     "restitution": "the bodies did not close (no approach speed to divide by)",
-    "velocity_ratio": "every body starts at rest: no launch speed to divide by (the motion comes from a "
-                      "prescribed boundary or a load)",
-    "vibration_share": "every body starts at rest: no launch energy to divide by",
+    "velocity_ratio": "every body starts at rest, so there is no launch speed to divide by (the motion comes "
+                      "from a prescribed boundary or a load)",
+    "vibration_share": "every body starts at rest, so there is no launch energy to divide by",
 }
 
 
@@ -130,9 +137,12 @@ def stage_table(h: dict, bodies: dict[str, float], contacts: list[dict], axis: s
     """
     t = h["time"]
     v = {b: h[f"{b}.v_{axis}"] for b in bodies}
-    launch = max((abs(x[0]) for x in v.values()), default=0.0)
     fastest = max((float(np.abs(x).max()) for x in v.values()), default=0.0)
+    at_rest = AT_REST * fastest
+    launch = max((abs(x[0]) for x in v.values()), default=0.0)
+    launch = launch if launch > at_rest else 0.0
     e_launch = sum(0.5 * m * sum(h[f"{b}.v_{ax}"][0] ** 2 for ax in translation_axes) for b, m in bodies.items())
+    e_launch = e_launch if e_launch > 0.5 * sum(bodies.values()) * at_rest ** 2 else 0.0
     vib = vibration_energy(h, bodies, translation_axes)
     events = []
     for c in contacts:

@@ -52,6 +52,15 @@ class MassScaling:
                 f"elements), set once on the initial mesh")
 
 
+def row_bodies(num_rows: int, cell_body: np.ndarray, cell_material: np.ndarray) -> np.ndarray:
+    """The body of each of the ``num_rows`` rows of params: row k is body k's own, and a row ``scale_rows``
+    split off a body's row for its scaled cells is that body's (read from the cells on it)."""
+    rows = np.arange(num_rows)
+    cells = cell_body >= 0
+    rows[cell_material[cells]] = cell_body[cells]
+    return rows
+
+
 def element_steps(X0, dofmap, cell_name: str, wave_speed: np.ndarray, safety_factor: float) -> np.ndarray:
     """Each cell's stable step as the mesh check estimates it: safety x characteristic length / wave speed."""
     lengths = characteristic_lengths(X0[dofmap], cell_name)

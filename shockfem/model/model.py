@@ -160,6 +160,11 @@ class Model:
     def body_names(self) -> list[str]:
         return [b.name for b in self.bodies]
 
+    @property
+    def row_body(self) -> np.ndarray:
+        """The body of each row of ``params`` (a body's own, and those mass scaling split off it)."""
+        return mass_scaling.row_bodies(len(self.params), self.cell_body, self.cell_material)
+
 
 def slot_width(body, kinematics: str) -> float:
     """The total width of a body's axial slots where its section cannot hold them (a split cone

@@ -47,7 +47,8 @@ from .rundir import CHECKPOINT_DIRECTORY as DIRECTORY, write_json_atomic
 # 5: the solver's buffer of a step's sums over the ranks holds band damping's loss too (15 entries)
 # 6: band damping's terms held in each body's co-rotating frame (``solver/band.py``)
 # 7: the peak von Mises stress kept per row of params by the element pass (the solver's ``peak``)
-FORMAT = 7
+# 8: a liquid source's walls keep the step's forces on them (``fluid.cavity.WallNodes``)
+FORMAT = 8
 
 # objects whose state is not the run's: built again from the scene on resume
 _REBUILT_MODULES = ("shockfem.model", "shockfem.scene", "shockfem.geometry")

@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ..elements.blocks import PEAK_CELL, PEAK_TIME, PEAK_VM2, no_peak
+from ..model.mass_scaling import row_bodies
 
 
 class PeakStress:
@@ -25,10 +26,8 @@ class PeakStress:
         """``state``: what ``state()`` returned, from a checkpoint."""
         m = solver.model
         self.solver = solver
-        kernel = np.asarray(m.kernel_cells, dtype=np.int64)
-        # the body of each row of params that this rank's deformable cells use (-1: none)
-        self.row_body = np.full(len(solver.peak), -1, dtype=np.int64)
-        self.row_body[m.cell_material[kernel]] = m.cell_body[kernel]
+        # a row no cell of this rank's passes uses keeps ``no_peak``
+        self.row_body = row_bodies(len(solver.peak), m.cell_body, m.cell_material)
         # the run's peaks from here: a checkpoint's, or none (what the solver's set-up or a preload stage's
         # settling passed through before the event is not the event's)
         solver.peak[:] = state["rows"] if state is not None else no_peak(len(solver.peak))

@@ -142,7 +142,7 @@ def plot_stages(path: str, stages: list[dict]) -> str | None:
     ratios = [s["velocity_ratio"] for s in stages]
     bars = ax.bar(range(len(stages)), ratios, color="C0")
     for bar, s in zip(bars, stages):
-        e = f"e = {s['restitution']:.3f}" if "restitution" in s else "e not measured"
+        e = f"e = {s['restitution']:.3f}" if "restitution" in s else "e not applicable"
         ax.annotate(e, (bar.get_x() + bar.get_width() / 2, bar.get_height()),
                     ha="center", va="bottom", fontsize=8)
     ax.set_xticks(range(len(stages)))

@@ -181,9 +181,10 @@ class ExplicitSolver:
         self.hourglass = np.zeros((len(m.dofmap), (2 if gdim == 2 else 12) if m.one_point else 0))
         # per row of params, the peak von Mises stress the pass has seen, with when and where (``blocks``)
         self.peak = no_peak(len(m.params))
-        # per body (a row of params each), this rank's share: the stresses' work (stored and plastic
-        # energy), the hourglass work and the plastic work [J], for per-body energies and warnings
+        # per row of params, this rank's share: the stresses' work (stored and plastic energy), the hourglass
+        # work and the plastic work [J], summed per body (``_row_body``) for per-body energies and warnings
         self.body_energy = np.zeros((len(m.params), 3))
+        self._row_body = m.row_body
 
     def _masses(self):
         """Owned nodes, the inverse masses and the masses of the kinetic energy, per node and per dof."""
@@ -776,7 +777,9 @@ class ExplicitSolver:
             mv, ma, kinetic = nodal.body_sums(self.v, self.a, self.dt, m.alpha, m.mass, self.kinetic_mass,
                                               self.constrained, m.node_body, len(m.bodies), m.num_owned,
                                               self._constrained_dofs, v_held, a_held)
-            work = self.body_energy[:len(m.bodies)].copy()
+            # a body's rows: its own and those of its mass-scaled cells
+            work = np.zeros((len(m.bodies), 3))
+            np.add.at(work, self._row_body, self.body_energy)
             if self.parallel:
                 parts = (mv, ma, kinetic, work)
                 sums = np.concatenate([p.reshape(-1) for p in parts])

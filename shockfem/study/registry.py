@@ -28,6 +28,8 @@ STUDIES = {
                                           "rigid to finite elements"),
     "launcher": Study("study.launcher", "task 4: the gas gun that launches the first mass, and its trade curves"),
     "system": Study("study.system", "task 5: the whole machine for 10 to 100 lb payloads, and the coupled check"),
+    "premise": Study("study.premise", "the white paper's premise at 12 lb: the amplifier against one gun firing "
+                                      "the striker, the closed form's boundary, the map, the white paper's claims"),
 }
 
 

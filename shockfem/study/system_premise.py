@@ -141,7 +141,8 @@ def damping(rep: Report, m, out_dir: str):
 
 ARRANGEMENT_HEADER = ["arrangement", "launched [kg]", "launch speed [m/s]", "launch energy [MJ]", "striker [kg]",
                       "striker speed [m/s]", "bore [in]", "barrel [ft]", "reservoir [psi]", "reservoir [m^3]",
-                      "gas stored [MJ]", "gun [kg]", "machine [kg]", "length [m]", "gun reaches it", "notes"]
+                      "gas stored, p0 V0 / (gamma - 1) from vacuum [MJ]", "gun [kg]", "machine [kg]", "length [m]",
+                      "gun reaches it", "notes"]
 ARRANGEMENT_FORMATS = ["{}", "{:,.4g}", "{:.1f}", "{:.4g}", "{:.4g}", "{:.1f}", "{:.3g}", "{:.3g}", "{:,.0f}",
                        "{:.3g}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}"]
 
@@ -158,7 +159,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     rep.heading(f"8. The premise: the amplifier against a direct striker and a flying target ({lb} lb)")
     echo("  (b) the striker fired directly")
     a = P.amplifier_arrangement(m)
-    b = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], bores=cfg["sabot_bores"])
+    b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
     c, target = P.flying_target_arrangement(m.spec, m.fixture)
@@ -170,11 +171,46 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
              "target (30 lb for a 12 lb article, the fixture designed for it) fired by the white paper's own gun "
              "(12 in, 2,000 psi, 20 ft^3) with as long a barrel as it needs.")
-    words = P.verdict(a, b, c, b0)
+    closed = P.closed_form(m)
+    remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
+                                 2 * m.fixture.housing_outer_radius)
+    boundary_table(rep, closed)
+    words = P.verdict(a, b, c, b0, closed, remedies)
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
     for x in (a, b, b0, c):
         rep.value(f"launch_energy_{x.name.split(')')[0].strip('(')}", x.launch_energy)
+    rep.value("premise_closed_form", closed)
+    rep.value("direct_remedies", remedies)
     return a, b, b0, c, target
+
+
+def boundary_table(rep: Report, k: dict):
+    """The closed form's break-even restitutions at the design's striker speed, beside the restitutions the
+    chain has."""
+    be, spec = k["break_even"], k["break_even_spec"]
+    best = k["best"] or {}
+    rows = [["the best launch speed and mass count (2 to 10), both guns in air", be["air"]],
+            ["the best launch speed and mass count, both guns in helium", be["helium"]],
+            ["the best launch speed and mass count, an air amplifier against a helium direct gun",
+             k["break_even_air_against_helium"]],
+            [f"the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses, air", spec["air"]],
+            [f"the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses, helium", spec["helium"]],
+            [f"the best pad material of the library ({k['best_pad']}, sized at its rebound's sqrt(R))",
+             k["best_pad_restitution"]],
+            ["the design's chain (its effective e)", k["restitution"]]]
+    rep.table("premise_boundary", ["restitution", "e [-] (nan: never, not even at e = 1)"], rows, ["{}", "{:.4f}"])
+    rep.text(f"The premise's boundary in closed form (`machine/boundary.py`, `shockfem verify premise_boundary` "
+             "checks both of its closed forms against the event-driven rigid chain and the lumped simple-wave gun): "
+             "a launched chain of n geometric masses that gains G at restitution e keeps G^2 m_n / m_1 = "
+             "[g (1 + e - g)]^(n-1) of its launch energy, g = G^(1/(n-1)); the simple-wave gun turns "
+             "u^2 / (2 I(u)) of p0 A L into kinetic energy at its muzzle speed u (Seigel 1965), whatever the mass, "
+             "bore and pressure. So the amplifier's gun (p0 A L, the barrel's steel and the gas it draws) over the "
+             f"direct gun's is Q = eta(V_s) / (chi eta(V_s / G)). At the design's striker speed "
+             f"{k['striker_speed']:.4g} m/s and its e {k['restitution']:.4f}, the best chain ({best.get('masses')} "
+             f"masses launched at {best.get('launch_speed', float('nan')):.4g} m/s) has Q = "
+             f"{best.get('gun_ratio', float('nan')):.3g}; the design's {k['masses']} masses at "
+             f"{k['launch_speed']:.4g} m/s keep {k['chain_efficiency']:.3g} of the launch energy "
+             f"({k['chain_efficiency_elastic']:.3g} at e = 1).")
 
 
 def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
@@ -182,39 +218,61 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     rep.heading("9. Where each arrangement wins")
     grid = cfg["map"]
     echo(f"  the map: {len(grid['durations']) * len(grid['peaks']) * len(grid['payloads'])} points")
-    points = P.premise_map(m.spec, m.fixture, m.amplifier.restitution, target.striker_ratio,
+    e = m.amplifier.restitution
+    points = P.premise_map(m.spec, m.fixture, e, target.striker_ratio,
                            [d * 1e-3 for d in grid["durations"]], [p * G0 for p in grid["peaks"]],
                            [w * LB for w in grid["payloads"]], echo)
     rows = []
     for p in points:
+        c = p.chain
         rows.append([p.article / LB, p.duration * 1e3, p.peak / G0, p.velocity_change, p.striker_speed,
+                     c["masses"], c["launch_speed"], c["gun_ratio"], "yes" if p.eligible else "no",
                      p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"], p.direct["launch_energy"] / 1e6,
                      p.direct["machine_mass"], p.direct["sabot_estimate"], p.flying["barrel"] / FT,
                      p.flying["machine_mass"], p.winner, p.amplifier["note"]])
     rep.table("map", ["payload [lb]", "duration [ms]", "peak [g]", "velocity change [m/s]", "striker speed [m/s]",
+                      "best chain: masses", "best chain: launch [m/s]", "Q [-]", "amplifier designed",
                       "(a) launch [MJ]", "(a) gun and masses [kg]", "(b0) launch [MJ]", "(b0) gun and striker [kg]",
                       "(b) its sabot [kg]", "(c) barrel [ft]", "(c) gun and target [kg]", "lightest", "(a) note"],
-              rows, ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{:.0f}", "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}",
-                     "{:,.0f}", "{:.3g}", "{:,.0f}", "{}", "{}"])
-    P.map_figure(points, rep.path("premise_map.png"))
-    rep.figure("premise_map.png", "Where each arrangement gives the lightest machine (gun and moving masses), "
-               "with each point's velocity change and the amplifier's mass over the direct gun's")
+              rows, ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{:.0f}", "{}", "{:.0f}", "{:.3g}", "{}", "{:.3g}",
+                     "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{}", "{}"])
+    _, e_pad = P.best_pad_restitution()
+    lines = {}
+    for label, x in ((f"Q = 1 at the design's e {e:.3f}", e), (f"at the best pad's e {e_pad:.3f}", e_pad),
+                     ("at the white paper's e 0.9", CLAIM["e"]), ("at e = 1", 1.0)):
+        lines[label] = P.boundary_velocity_change(points, x, m.spec.gas)
+    P.map_figure(points, rep.path("premise_map.png"), lines)
+    rep.figure("premise_map.png", "Where each arrangement gives the lightest feasible machine (gun and moving "
+               "masses), each point's velocity change and Q; the lines: the velocity change above which the best "
+               "chain needs less gun than the direct one (Q < 1), at four restitutions")
     bd = P.boundary(points)
+    bd["lines"] = lines
     rep.value("map_boundary", bd)
-    rep.text(_map_reading(bd, points))
+    rep.table("map_counts", ["outcome", "points"], [[k, v] for k, v in bd["counts"].items()]
+              + [["the amplifier designed (Q < 1)", bd["eligible"]],
+                 ["the amplifier within the limits", bd["within"]["amplifier"]],
+                 ["the direct gun (b0) within the limits", bd["within"]["direct"]],
+                 ["the flying target within the limits", bd["within"]["flying"]], ["all", bd["points"]]], ["{}", "{}"])
+    rep.text(_map_reading(bd, e))
     rep.text("The map's models (closed forms and lumped models per point, no finite elements): the striker is the "
              f"designed fixture's ratio ({m.fixture.striker_ratio:.3g} times the payload) at its measured "
-             f"restitution ({max(m.fixture.restitution, 0.0):.3f}) by the rigid collision law; the amplifier's masses "
-             f"by the closed form at one restitution for every point, the design's effective e "
-             f"({m.amplifier.restitution:.4f}: the rigid chain at its pads' restitutions "
-             + ", ".join(f"{e:.3f}" for e in m.amplifier.restitutions) + f", from their '{m.spec.pad_resolution}' "
-             f"runs at the design's point), {m.spec.masses} masses launched at {m.spec.launch_speed / FT:.0f} ft/s; "
-             "each gun by the lightest-launcher design (one start). The map leaves the models' checked range "
-             "everywhere but the design's point: the dashpot is designed and its validity checked only there, the "
-             "amplifier's pads are not sized or run at the other points (their restitution is carried over), its "
-             "stresses and stops are not checked, and the direct gun's sabot is left out of its design (its "
-             "estimate is the column beside it). A point where no arrangement reaches the speed within the limits "
-             "is 'none'.")
+             f"restitution ({max(m.fixture.restitution, 0.0):.3f}) by the rigid collision law; the amplifier is the "
+             f"launched chain at one restitution for every point, the design's effective e ({e:.4f}: the rigid "
+             "chain at its pads' restitutions " + ", ".join(f"{x:.3f}" for x in m.amplifier.restitutions)
+             + f", from their '{m.spec.pad_resolution}' runs at the design's point), its launch speed and mass count "
+             "(2 to 10) at each point those that need the least gun (`boundary.best_chain`, closed form), its masses "
+             "by the closed form, its gun by the lightest-launcher design (one start), designed only where that "
+             "chain needs less gun than the direct one (Q < 1): elsewhere amplification has nothing to do and the "
+             "point says so ('nothing to amplify'), whichever gun wins there. The direct gun fires the striker in a "
+             "massless sabot (its lower bound; the sabot its bore would need is the column beside it). The map "
+             "leaves the models' checked range everywhere but the design's point: the dashpot is designed and its "
+             "validity checked only there, the amplifier's pads are not sized or run at the other points (their "
+             "restitution is carried over), its stresses and stops are not checked; the flying target is the "
+             "fixture designer's target ratio carried over, its dashpot not designed at the map's points"
+             + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
+                "its oil outweighs it; the oil's mass over the payload grows with the stroke, so at shorter, lower "
+                "pulses one may exist)") + ". A point where no arrangement reaches the speed within the limits is "
+             "'none'.")
     _restitution_effect(rep, m, target)
     return points
 
@@ -243,17 +301,18 @@ def _restitution_effect(rep: Report, m, target):
              f"'{rows[0][7]}' at the design's e and '{rows[1][7]}' at e = {CLAIM['e']:g}.")
 
 
-def _map_reading(bd: dict, points) -> str:
-    if bd["amplifier_wins"]:
-        return (f"Amplification gives the lightest machine at {bd['amplifier_wins']} of {bd['points']} points, the "
-                f"smallest velocity change among them {bd['smallest_dv_amplifier_wins']:.0f} m/s; the direct gun "
-                f"wins up to {bd['largest_dv_direct_wins']:.0f} m/s ({bd['direct_wins']} points, "
-                f"{bd['direct_if_light_sabot']} more only if its sabot is light); the flying target at "
-                f"{bd['flying_wins']}; none reaches the speed at {bd['none']}.")
-    return (f"Amplification gives the lightest machine at none of the {bd['points']} points: the direct gun wins at "
-            f"{bd['direct_wins']} (up to {bd['largest_dv_direct_wins']:.0f} m/s of velocity change), "
-            f"{bd['direct_if_light_sabot']} more only if its sabot is light, the flying target at {bd['flying_wins']}, "
-            f"and at {bd['none']} no arrangement reaches the speed within the limits.")
+def _map_reading(bd: dict, e: float) -> str:
+    n = bd["counts"]
+    lines = bd["lines"]
+    first = next(iter(lines.values()))
+    where = (f"above {first:.0f} m/s of velocity change" if first == first else "nowhere below the gas's escape speed")
+    return (f"Of the {bd['points']} points the amplifier at e {e:.3f} needs less gun than the direct one, and so was "
+            f"designed, at {bd['eligible']} (the closed form: {where}). The lightest feasible machine: the amplifier "
+            f"at {n['amplifier']}, the direct gun at {n['direct']} where the amplifier was designed "
+            f"({n['direct, if its sabot is light']} more only if its sabot is light), the flying target at "
+            f"{n['flying target']}; at {n['nothing to amplify']} amplification has nothing to do (the direct gun "
+            f"is feasible there and no chain needs less gun), and at {n['none']} no arrangement is feasible within "
+            "the limits.")
 
 
 def white_paper(rep: Report, m):
@@ -264,14 +323,20 @@ def white_paper(rep: Report, m):
                               "the design", "note"],
               [[r["claim"], r["white_paper"], r["wp_assumptions"], r["design_at_0.9"], r["design"], r["note"]]
                for r in rows], ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.4g}", "{}"])
-    by = {r["claim"].split(" (")[0].split(" [")[0]: r for r in rows}
-    mid = by["intermediate masses"]
-    gun = rows[5]
-    target = rows[-1]
+    mid, added, gun, wave, bound, target = (rows[0], rows[2], rows[6], rows[7], rows[8], rows[-1])
+    over = [CLAIM["target_gun"] / target[k] for k in ("wp_assumptions", "simple_wave")]
     rep.text(f"At its own assumptions (the 12 lb article the last mass, e = 0.9) the white paper's amplifier holds: "
-             f"{mid['wp_assumptions'] / LB:,.0f} lb of intermediate masses against its 800 lb. The design is not that "
-             f"machine: its last mass is the striker that carries the dashpot ({m.fixture.striker_mass:.3g} kg), so its "
-             f"intermediate masses are {mid['design'] / LB:,.0f} lb ({mid['design'] / mid['white_paper']:.3g} times "
-             f"the claim). The white paper's 12 in x 6 ft gun at 2000 psi fires the design's first mass at "
-             f"{gun['design']:.1f} m/s against the {m.spec.launch_speed:.1f} asked. Its 90 ft gun for a 30 lb target "
-             f"at 1600 ft/s: our lumped model of its gun needs {target['wp_assumptions'] / FT:.3g} ft.")
+             f"{mid['wp_assumptions'] / LB:,.0f} lb of intermediate masses against its 800 lb; but that figure leaves "
+             f"out its own first mass: the masses it adds to the article weigh {added['wp_assumptions'] / LB:,.0f} lb. "
+             f"Its 12 in x 6 ft gun at 2000 psi fires that {rows[3]['wp_assumptions']:.0f} kg first mass at "
+             f"{gun['wp_assumptions']:.1f} m/s with the 20 ft^3 tank and 8 in valve this project assumes (the white "
+             f"paper gives neither), and at {bound['wp_assumptions']:.1f} m/s at most without any tank (the "
+             f"constant-pressure bound; the simple-wave gun {wave['wp_assumptions']:.1f} m/s): short of the "
+             f"{325 * FT:.1f} m/s it needs, whatever the tank. The design is not that machine: its last mass is the "
+             f"striker that carries the dashpot ({m.fixture.striker_mass:.3g} kg), so its intermediate masses are "
+             f"{mid['design'] / LB:,.0f} lb ({mid['design'] / mid['white_paper']:.3g} times the claim), and the white "
+             f"paper's gun fires the design's first mass at {gun['design']:.3g} m/s. Its 90 ft gun for a 30 lb "
+             f"target at 1600 ft/s: the lumped gun needs {target['wp_assumptions'] / FT:.3g} ft, the simple-wave gun "
+             f"{target['simple_wave'] / FT:.3g} ft (the constant-pressure bound {target['constant_pressure'] / FT:.3g} "
+             f"ft), so the white paper overstates the flying target's gun {min(over):.2g}-{max(over):.2g} times, which "
+             "cuts against its own premise.")

@@ -18,6 +18,7 @@ from .modal_cases import circular_plate, modal_rod, nafems_fv12
 from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .machine_cases import direct_striker, machine_energy, machine_geometry
+from .premise_cases import premise_boundary
 from .pad_cases import pad_bars, pad_johnson, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
@@ -103,6 +104,7 @@ CASES = {
     "machine_geometry": machine_geometry,
     "machine_energy": machine_energy,
     "direct_striker": direct_striker,
+    "premise_boundary": premise_boundary,
     "pad_bars": pad_bars,
     "pad_rigid": pad_rigid,
     "pad_johnson": pad_johnson,

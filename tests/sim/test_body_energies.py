@@ -45,6 +45,26 @@ def test_body_energies_add_up_to_the_run(tmp_path):
     assert errors[0] < 0.01 and errors[1] < errors[0] / 3, errors
 
 
+def test_a_mass_scaled_body_keeps_its_energies(tmp_path):
+    """Mass scaling moves the scaled cells to rows of params of their own (``model/mass_scaling.py``); the
+    kernels sum their works on those rows, and a body's energies are its own row's and its scaled rows'.  The
+    target rod at 0.4 mm, scaled to 0.04 us (every one of its cells, +0.4% mass), the striker at 0.5 mm not:
+    the bodies' hourglass work adds up to the run's to round-off, and their internal energy to the 1% of
+    ``test_body_energies_add_up_to_the_run``; the target's row alone would leave out all of its energy."""
+    scene = shockfem.load_scene(os.path.join(REPO, "studies", "metrics", "rod_pulse.toml"),
+                                ['scene.end_time="20 us"', 'scene.mass_scaling_step="0.04 us"',
+                                 'bodies.striker.element_size="0.5 mm"', 'bodies.target.element_size="0.4 mm"'])
+    s = shockfem.run(scene, str(tmp_path / "scaled"), fields=False).summary
+    scaled = s["mass_scaling"]["bodies"]
+    assert scaled["target"]["cells"] > 0 and scaled["striker"]["cells"] == 0
+    e, bodies = s["energy"], s["bodies"]
+    assert sum(b["kinetic_energy"] for b in bodies.values()) == pytest.approx(e["kinetic"], rel=1e-10)
+    assert sum(b["hourglass_energy"] for b in bodies.values()) == pytest.approx(e["hourglass"], rel=1e-10)
+    assert sum(b["internal_energy"] for b in bodies.values()) == pytest.approx(e["internal"] + e["plastic"],
+                                                                               rel=0.01)
+    assert bodies["target"]["internal_energy"] > 0.4 * e["internal"]       # struck end to end: about half
+
+
 def test_plastic_work_and_rigid_kinetic_energy_by_body(tmp_path):
     """3D, a plastic article dropped on a rigid anvil: the bodies' plastic work is the run's, to round-off,
     and the kinetic energies (the rigid anvil's its own) add up to the run's."""

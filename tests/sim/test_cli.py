@@ -148,9 +148,9 @@ def test_check_reads_a_launcher_scene_through_the_scene_checker():
     gun = os.path.join(REPO, "studies", "launcher", "white_paper_gun.toml")
     p = shockfem("check", gun)
     assert p.returncode == 0 and "ok (launcher white_paper_gun, bore 0.3048 m" in p.stdout, p.stderr
-    p = shockfem("check", gun, "--set", 'launcher.bore="-3 in"', "--set", "launcher.gas=helium",
+    p = shockfem("check", gun, "--set", 'launcher.bore="-3 in"', "--set", "launcher.gas=xenon",
                  "--set", 'launcher.colour="red"')
     assert p.returncode == 2 and "Traceback" not in p.stderr
-    for expected in ("launcher.bore: must be > 0, got -3 in", "launcher.gas: must be one of air, nitrogen, got 'helium'",
+    for expected in ("launcher.bore: must be > 0, got -3 in", "launcher.gas: must be one of air, nitrogen, helium, got 'xenon'",
                      "launcher.colour: unknown field"):
         assert expected in p.stderr

@@ -11,6 +11,7 @@ import sys
 
 import pytest
 
+from shockfem.machine.premise import WINNERS
 from shockfem.units import G0, LB
 
 
@@ -31,7 +32,7 @@ def machine(tmp_path_factory):
 
 
 def test_design_machine_refuses_bad_options():
-    p = shockfem("design-machine", "--article", "12 lb", "--peak", "banana", "--masses", "1", "--gas", "helium")
+    p = shockfem("design-machine", "--article", "12 lb", "--peak", "banana", "--masses", "1", "--gas", "xenon")
     assert p.returncode == 2
     for flag in ("--peak", "--masses", "--gas"):
         assert flag in p.stderr + p.stdout
@@ -229,10 +230,11 @@ def test_energy_table_closes_and_names_every_part(machine):
 
 def test_premise_arrangements_and_map(machine):
     """The three arrangements deliver the same striker; (b0)'s launch energy is the striker's M V^2 / 2 at the
-    gun's muzzle speed (the optimiser's 2e-4 on the speed, doubled) where its gun reaches it, less where no
-    gun within the limits does; the map has a row per point and a winner
-    among the arrangements; the map's amplifier at the design's measured effective e, and the spec's point at
-    it and at the white paper's e = 0.9; (a) carries the machine's verdict."""
+    gun's muzzle speed (the optimiser's 2e-4 on the speed, doubled) where its gun reaches it, less where no gun
+    within the limits does; the map has a row per point and an outcome,
+    the amplifier designed exactly where the closed form's Q < 1 and never a direct win where it was not; the
+    map's amplifier at the design's measured effective e, and the spec's point at it and at the white paper's
+    e = 0.9; (a) carries the machine's verdict; (b0) is never called a machine."""
     m, results, out = machine
     rows = {r[0]: r for r in results["tables"]["arrangements"]["rows"]}
     f = m["fixture"]
@@ -248,11 +250,23 @@ def test_premise_arrangements_and_map(machine):
         assert b0[3] * 1e6 < need
     b = rows["(b) direct striker"]
     assert b[1] >= b0[1] and "sabot" in b[-1]
-    points = results["tables"]["map"]["rows"]
+    table = results["tables"]["map"]
+    col = {h: k for k, h in enumerate(table["columns"])}
+    points = table["rows"]
     assert len(points) == 4
-    assert {p[12] for p in points} <= {"amplifier", "direct", "direct, if its sabot is light", "flying target", "none"}
+    assert {p[col["lightest"]] for p in points} <= set(WINNERS)
+    # the amplifier is designed exactly where its best chain needs less gun than the direct one (Q < 1); a
+    # point where it was not is never a direct win
+    for p in points:
+        assert (p[col["amplifier designed"]] == "yes") == (p[col["Q [-]"]] < 1)
+        if p[col["amplifier designed"]] == "no":
+            assert p[col["lightest"]] not in ("direct", "direct, if its sabot is light", "amplifier")
     boundary = results["values"]["map_boundary"]
-    assert boundary["points"] == 4
+    assert boundary["points"] == 4 and sum(boundary["counts"].values()) == 4
+    assert boundary["eligible"] == sum(p[col["amplifier designed"]] == "yes" for p in points)
+    # the massless-sabot bound is never called a machine
+    report = (out.parent / "report.md").read_text()
+    assert "(b0), the striker alone" in report and "not a machine" in report
     # the map's amplifier runs at the design's effective e; the spec's point at it and at the white paper's 0.9
     effect = results["values"]["map_restitution"]
     assert [p["e"] for p in effect] == pytest.approx([m["amplifier"]["restitution"], 0.9], rel=1e-12)
@@ -274,3 +288,12 @@ def test_white_paper_side_by_side(machine):
     assert by["intermediate masses (section 1.2) [kg]"][2] < 800 * LB
     # every claim has the white paper's figure but the first mass's (it gives none: null in the JSON)
     assert [r[0] for r in rows if not isinstance(r[1], (int, float))] == ["first mass [kg]"]
+    # the masses it adds to the article include its first mass; no gun of its bore, barrel and pressure beats
+    # the constant-pressure bound (the lumped gun with its assumed tank, the simple-wave gun without one)
+    added = by["the masses added to the article, the first included [kg]"]
+    assert added[2] == pytest.approx(by["intermediate masses (section 1.2) [kg]"][2] + by["first mass [kg]"][2],
+                                     rel=1e-12)
+    lumped = by["the white paper's 12 in x 6 ft gun at 2000 psi: first mass's muzzle speed [m/s]"]
+    wave = by["the same gun without a tank: the simple-wave gun [m/s]"]
+    bound = by["the same gun without a tank: the constant-pressure bound [m/s]"]
+    assert bound[2] > max(lumped[2], wave[2])

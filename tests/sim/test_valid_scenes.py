@@ -80,6 +80,12 @@ def test_a_run_from_rest_driven_by_a_boundary_completes_without_a_velocity_ratio
     assert s["shock"]["stages"], "the driven rod struck the other: a stage"
     stage = s["shock"]["stages"][0]
     assert "velocity_ratio" not in stage and "at rest" in stage["not_measured"]["velocity_ratio"]
+    # the run log says the same: each ratio that does not apply, with its reason, and no NaN
+    log = open(tmp_path / "run" / "run.log").read()
+    stage_lines = [line for line in log.splitlines() if "stage hit:" in line]
+    assert stage_lines and "nan" not in " ".join(stage_lines).lower()
+    assert f"velocity ratio not applicable: {stage['not_measured']['velocity_ratio']}" in stage_lines[0]
+    assert "stage figure not drawn: velocity ratio not applicable" in log
 
 
 def test_a_rigid_piston_on_a_liquid_column_steps_for_accuracy(tmp_path):

@@ -69,7 +69,7 @@ def test_launcher_command(tmp_path):
     assert p.returncode == 0, p.stderr
     assert "muzzle velocity" in p.stdout and (tmp_path / "gun" / "launcher.png").stat().st_size > 10_000
     p = subprocess.run([sys.executable, "-m", "shockfem", "launcher", scene, "--set", 'launcher.bore="-3 in"',
-                        "--set", "launcher.gas=helium"], capture_output=True, text=True, timeout=300)
+                        "--set", "launcher.gas=xenon"], capture_output=True, text=True, timeout=300)
     assert p.returncode == 2 and "launcher.bore: must be > 0" in p.stderr and "launcher.gas" in p.stderr
     assert "Traceback" not in p.stderr
 

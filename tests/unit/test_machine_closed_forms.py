@@ -28,7 +28,7 @@ def test_spec_reads_units_and_scales_the_article():
 
 def test_spec_names_every_bad_option():
     with pytest.raises(SceneError) as err:
-        read_spec({"article": "12 furlongs", "masses": 1, "gas": "helium", "shape": "square",
+        read_spec({"article": "12 furlongs", "masses": 1, "gas": "xenon", "shape": "square",
                    "striker_ratio": 0.5, "max_pressure": "-1 psi", "colour": "red"})
     text = str(err.value)
     for flag in ("--article", "--masses", "--gas", "--shape", "--striker-ratio", "--max-pressure", "--colour"):

@@ -6,8 +6,9 @@ from dolfinx import fem, mesh
 
 from shockfem import compat
 from shockfem.model import kinematics as kin
-from shockfem.elements import cells as ec, full_integration
+from shockfem.elements import blocks, cells as ec, full_integration
 from shockfem.materials import layout
+from shockfem.output.cell_fields import von_mises
 
 from element_helpers import NO_CURVES, NO_STATE, distorted_mesh as _mesh, run_pass, steel_params as _params
 
@@ -113,3 +114,60 @@ def test_characteristic_length_of_unit_cells():
     assert ec.characteristic_length(cube, 3, 8) == pytest.approx(1 / np.sqrt(3))
     tet = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0]])
     assert ec.characteristic_length(tet, 2, 4) == pytest.approx(1 / np.sqrt(3))
+
+
+@pytest.mark.parametrize("kinematics, cell", CASES)
+def test_cell_orientation_is_the_sign_of_the_jacobian(kinematics, cell):
+    """+1 or -1 per cell as det(J) at the first point (numpy's determinant), and the opposite sign for the
+    cells whose vertex order is mirrored (every other cell)."""
+    m = _mesh(kinematics, cell)
+    V, dofmap, X, wq, N, dN, kind = _arrays(m, kinematics)
+    mirror = {3: [1, 0, 2], 4: [1, 0, 2, 3] if cell == mesh.CellType.tetrahedron else [1, 0, 3, 2],
+              8: [1, 0, 3, 2, 5, 4, 7, 6]}[dofmap.shape[1]]
+    flipped = dofmap.copy()
+    flipped[::2] = dofmap[::2][:, mirror]
+    for d in (dofmap, flipped):
+        J = np.einsum("cai,ak->cik", X[d], dN[0][:, :X.shape[1]])
+        np.testing.assert_array_equal(ec.cell_orientation(d, X, dN), np.sign(np.linalg.det(J)))
+    np.testing.assert_array_equal(ec.cell_orientation(flipped, X, dN)[::2], -ec.cell_orientation(dofmap, X, dN)[::2])
+
+
+@pytest.mark.parametrize("elastic_only", [True, False])
+def test_each_row_keeps_the_peak_over_its_cells_points(elastic_only):
+    """2x2 quads, shuffled, on two rows (every third cell on row 1), the stress left as given (dt = 0, v = 0):
+    each row's peak is the largest squared von Mises stress over its cells' points (to 1e-12: the pass's
+    formula, in another order), at the pass's time, in the first cell of ``cells`` that holds it (exactly);
+    the stresses doubled at a later time move all three."""
+    m = _mesh("axisymmetric", mesh.CellType.quadrilateral)
+    V, dofmap, X, wq, N, dN, kind = _arrays(m, "axisymmetric")
+    ncell, nq = len(dofmap), len(wq)
+    cells = np.random.default_rng(3).permutation(ncell).astype(np.int32)
+    rows = (np.arange(ncell) % 3 == 0).astype(np.int32)
+    p = np.vstack([_params(), _params(E=100e9)])
+    sigma = np.random.default_rng(4).normal(size=(ncell, nq, 6)) * 1e7
+    sigma[..., 3:5] = 0.0
+    peak = blocks.no_peak(len(p))
+
+    def step(t):
+        run_pass(full_integration.stress_divergence_kernel(elastic_only), cells, dofmap, rows,
+                 ec.cell_orientation(dofmap, X, dN), X, np.zeros_like(X), 0.0, p, NO_CURVES, NO_STATE, sigma,
+                 np.zeros_like(X), np.zeros((len(p), 3)), rule=(N, dN, wq), kinematics=ec.AXISYMMETRIC,
+                 cell_kind=kind, t_np1=t, peak=peak)
+
+    def expected(t):
+        vm2 = (von_mises(sigma) ** 2).max(axis=1)               # each cell's largest over its points
+        out = []
+        for r in range(len(p)):
+            mine = cells[rows[cells] == r]
+            out.append((vm2[mine].max(), t, mine[np.argmax(vm2[mine])]))
+        return np.array(out)
+
+    step(1e-6)
+    first = expected(1e-6)
+    assert (np.argmax(von_mises(sigma), axis=1) > 0).any()     # some cells' highest point is not their first
+    np.testing.assert_allclose(peak[:, blocks.PEAK_VM2], first[:, 0], rtol=1e-12)
+    np.testing.assert_array_equal(peak[:, 1:], first[:, 1:])
+    sigma *= 2.0
+    step(2e-6)
+    np.testing.assert_allclose(peak[:, blocks.PEAK_VM2], 4.0 * first[:, 0], rtol=1e-12)
+    np.testing.assert_array_equal(peak[:, 1:], expected(2e-6)[:, 1:])

@@ -8,7 +8,8 @@ from shockfem.metrics import filters, shapes
 from shockfem.metrics.pulse import pulse_metrics
 from shockfem.metrics.signals import acceleration_from_velocity
 from shockfem.metrics.srs import shock_response_spectrum
-from shockfem.metrics.stages import contact_events, stage_table
+from shockfem.metrics.report import describe_stage
+from shockfem.metrics.stages import NOT_MEASURED, contact_events, stage_table
 from shockfem.scene.specs import CFC_CLASSES
 
 
@@ -210,7 +211,6 @@ def test_a_chain_started_at_rest_has_no_velocity_ratio_and_draws_no_stage_figure
     """Every body at rest at t = 0 (the first one driven by a prescribed boundary from the first sample on):
     no launch speed, so the stage has no velocity ratio or vibration share; they are left out with the reason,
     and the stage figure is skipped instead of failing on a missing number."""
-    from shockfem.metrics.stages import NOT_MEASURED
     from shockfem.output.plots import plot_stages
     h, masses, contacts = _chain_history()
     h = {k: (np.concatenate([[0.0], v[1:]]) if k.endswith(".v_z") else v) for k, v in h.items()}
@@ -220,3 +220,34 @@ def test_a_chain_started_at_rest_has_no_velocity_ratio_and_draws_no_stage_figure
     assert stages[0]["restitution"] == pytest.approx(0.8, rel=1e-9)      # it applies: the bodies closed
     assert plot_stages(str(tmp_path / "stages.png"), stages) is None
     assert not (tmp_path / "stages.png").exists()
+
+
+def test_the_log_line_of_a_stage_from_rest_says_why_its_ratios_do_not_apply():
+    """The run log's line of a stage with no launch speed names each ratio that does not apply and its reason
+    (the one in summary.json's ``not_measured``), and prints no NaN; a launched chain's line gives the values."""
+    h, masses, contacts = _chain_history()
+    launched = describe_stage(stage_table(h, masses, contacts, "z", ("z",))[0].as_dict())
+    assert "restitution 0.8000" in launched and "velocity ratio 1.2000" in launched      # 1.8 x 4 / 6
+    assert "not applicable" not in launched
+    # at rest, or left with a residue of a settled preload (1e-9 m/s against the record's fastest, 14.4 m/s: a
+    # velocity ratio of 1.2e10 if it divided)
+    for start in (0.0, 1e-9):
+        h_rest = {k: (np.concatenate([[start], v[1:]]) if k.endswith(".v_z") else v) for k, v in h.items()}
+        line = describe_stage(stage_table(h_rest, masses, contacts, "z", ("z",))[0].as_dict())
+        assert "nan" not in line.lower() and "restitution 0.8000" in line
+        assert f"velocity ratio not applicable: {NOT_MEASURED['velocity_ratio']}" in line
+        assert f"vibration share not applicable: {NOT_MEASURED['vibration_share']}" in line
+
+
+def test_a_channel_on_a_body_that_ends_as_it_began_has_no_velocity_change_mismatch():
+    """A point that rings (a 0.2 ms half-sine of velocity) on a body whose velocity never changes: the record's
+    velocity change over its body's has nothing to divide by, so it is left out with the reason, and the
+    channel's metrics are strict JSON (no NaN)."""
+    import json
+    from shockfem.metrics.report import channel_metrics
+    t = np.linspace(0.0, 1e-3, 1001)
+    v = np.where((t > 2e-4) & (t < 4e-4), np.sin(np.pi * (t - 2e-4) / 2e-4), 0.0)
+    shock = {"cfc": 0, "spec": None, "srs_frequencies": None, "srs_points_per_octave": 6, "srs_q": 10.0}
+    m, _ = channel_metrics(t, v, np.zeros_like(t), shock)
+    assert "velocity_change_mismatch" not in m and "does not change" in m["not_measured"]["velocity_change_mismatch"]
+    json.dumps(m, allow_nan=False)

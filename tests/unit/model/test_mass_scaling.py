@@ -8,7 +8,7 @@ import sys
 import numpy as np
 
 from shockfem.materials import layout
-from shockfem.model.mass_scaling import FACTOR_STEP, scale_rows
+from shockfem.model.mass_scaling import FACTOR_STEP, row_bodies, scale_rows
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 
@@ -41,6 +41,8 @@ def test_only_the_cells_below_the_target_get_rows_whose_step_reaches_it():
         assert 1e-7 <= scaled_step < 1e-7 * math.sqrt(FACTOR_STEP)
         assert np.array_equal(c[row], curves[source])
     assert len(p) == 4                   # one row per (material row, factor) pair
+    # each new row is its cells' body's (the bodies' energies sum their rows: ``ExplicitSolver._body_sums``)
+    assert list(row_bodies(len(p), cell_material, cm)) == [0, 1, 0, 1]
 
 
 def test_cells_with_the_same_factor_share_a_row_and_nothing_below_changes_nothing():

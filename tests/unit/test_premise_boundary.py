@@ -1,0 +1,119 @@
+"""The premise's closed forms (``machine.boundary``, ``amplifier.gain.chain_efficiency``,
+``launcher.simple_wave``) against hand values, the map's outcome labels and the premise verdict's wording.
+Each tolerance says where its reference comes from."""
+import math
+
+import pytest
+
+from shockfem.amplifier.gain import chain_efficiency
+from shockfem.launcher.gas import GASES
+from shockfem.launcher.simple_wave import efficiency, muzzle_speed, travel
+from shockfem.machine import boundary as B
+from shockfem.machine.premise import Arrangement, _winner, verdict
+from shockfem.machine.white_paper import CLAIM, tank_free_barrels, tank_free_speeds
+from shockfem.units import FT, IN, PSI
+
+
+def test_chain_efficiency_hand_values():
+    # one plastic collision of equal masses (G = 1/2): the struck body keeps a quarter of the energy
+    assert chain_efficiency(0.0, 0.5, 2) == pytest.approx(0.25, rel=1e-15)
+    # one elastic collision of equal masses hands over everything
+    assert chain_efficiency(1.0, 1.0, 2) == pytest.approx(1.0, rel=1e-15)
+    # the 12 lb chain's gain 430 / 99.06 over 5 masses: the hostile review's own recomputation (0.0013 at
+    # e 0.576, 0.19 at 0.9, 0.42 at 1), to its quoted digits
+    G = 430.0 / 99.06
+    assert chain_efficiency(0.576, G, 5) == pytest.approx(0.0013, abs=5e-5)
+    assert chain_efficiency(0.9, G, 5) == pytest.approx(0.19, abs=5e-3)
+    assert chain_efficiency(1.0, G, 5) == pytest.approx(0.42, abs=5e-3)
+    # no chain of 2 masses gains 1 + e or more
+    assert chain_efficiency(0.5, 1.5, 2) == 0.0
+
+
+def test_simple_wave_hand_values():
+    # gamma = 3 (k = 3) makes I(u) elementary: at u = c0 / 2 (w = 1/2), I = (3/2 - 1) / a^2 with a = 1/c0, so
+    # eta = (c0^2 / 4) / (2 c0^2 / 2) = 1/4 exactly
+    assert efficiency(0.5 * 300.0, 300.0, 3.0) == pytest.approx(0.25, rel=1e-12)
+    # slow shots lose nothing to the gas's inertia; the escape speed 2 c0 / (gamma - 1) takes an infinite barrel
+    assert efficiency(1e-3, 343.0, 1.4) == pytest.approx(1.0, abs=1e-5)
+    assert travel(1.001 * 2 * 343.0 / 0.4, 1.0, 1e6, 0.01, 343.0, 1.4) == math.inf
+    # the review's simple-wave air gun: 0.756 at 99 m/s, 0.245 at 430 m/s; helium 0.60 at 430 (its digits)
+    air, he = GASES["air"], GASES["helium"]
+    c_air, c_he = air.sound_speed(1e5, 293.15), he.sound_speed(1e5, 293.15)
+    assert efficiency(99.06, c_air, 1.4) == pytest.approx(0.756, abs=5e-4)
+    assert efficiency(430.0, c_air, 1.4) == pytest.approx(0.245, abs=5e-4)
+    assert efficiency(430.0, c_he, he.gamma) == pytest.approx(0.60, abs=5e-3)
+    # travel and muzzle speed invert each other (brentq's 1e-9 m/s)
+    L = travel(300.0, 50.0, 20e6, 0.05, c_air, 1.4)
+    assert muzzle_speed(L, 50.0, 20e6, 0.05, c_air, 1.4) == pytest.approx(300.0, abs=1e-7)
+
+
+def test_white_paper_gun_without_its_tank():
+    # the review's hand values: the white paper's 12 in x 6 ft at 2000 psi on its 944 kg first mass at constant
+    # pressure, 62.4 m/s; its 30 lb target at 1600 ft/s: 5.3 ft at constant pressure, 27.2 ft simple-wave
+    A = math.pi * (12 * IN) ** 2 / 4
+    assert tank_free_speeds(944.3)["constant_pressure"] == pytest.approx(math.sqrt(2 * 2000 * PSI * A * 6 * FT / 944.3),
+                                                                         rel=1e-12)
+    assert tank_free_speeds(944.3)["constant_pressure"] == pytest.approx(62.4, abs=0.05)
+    barrels = tank_free_barrels(CLAIM["target"], CLAIM["target_speed"])
+    assert barrels["constant_pressure"] / FT == pytest.approx(5.3, abs=0.05)
+    assert barrels["simple_wave"] / FT == pytest.approx(27.2, abs=0.05)
+
+
+def test_gun_ratio_and_break_even():
+    # the review's breakeven.py at the spec's 99.06 m/s and 5 masses for a 430 m/s striker, air: the amplifier's
+    # p0 A L over the direct gun's 1.72 at e 0.9, 1.13 at 0.95, 0.78 at 1 (its digits), so break-even near 0.97
+    G = 430.0 / 99.06
+    assert B.gun_ratio(0.9, 430.0, G, 5) == pytest.approx(1.72, abs=5e-3)
+    assert B.gun_ratio(0.95, 430.0, G, 5) == pytest.approx(1.13, abs=5e-3)
+    assert B.gun_ratio(1.0, 430.0, G, 5) == pytest.approx(0.78, abs=5e-3)
+    e5 = B.break_even(430.0, "air", masses=5, launch_speed=99.06)
+    assert 0.95 < e5 < 1.0 and B.gun_ratio(e5, 430.0, G, 5) == pytest.approx(1.0, abs=1e-6)
+    # the best chain needs no more gun than the spec's, so it breaks even lower; helium's flatter efficiency
+    # pays a chain back later; an air chain against a helium direct gun never pays within 10 masses
+    e_air, e_he = B.break_even(430.0, "air"), B.break_even(430.0, "helium")
+    assert e_air < e5 and e_air < e_he < 1.0
+    assert B.best_chain(e_air, 430.0).gun_ratio == pytest.approx(1.0, abs=1e-6)
+    assert math.isnan(B.break_even(430.0, "air", "helium"))
+    # the faster the striker, the lower the restitution that pays (the gun's efficiency falls toward its escape speed)
+    assert B.break_even(800.0, "air") < e_air
+    assert B.break_even_speed(e_air, "air") == pytest.approx(430.0, rel=1e-3)
+
+
+def _entry(mass, feasible, sabot=0.0):
+    return {"machine_mass": mass, "feasible": feasible, "sabot_estimate": sabot}
+
+
+def test_map_outcomes():
+    # the amplifier not designed (Q >= 1): a direct gun's point is 'nothing to amplify', never a direct win
+    assert _winner(_entry(math.nan, False), _entry(10.0, True), _entry(math.nan, False), False) == "nothing to amplify"
+    assert _winner(_entry(20.0, True), _entry(10.0, True), _entry(math.nan, False), True) == "direct"
+    assert _winner(_entry(12.0, True), _entry(10.0, True, 5.0), _entry(math.nan, False), True) == \
+        "direct, if its sabot is light"
+    assert _winner(_entry(9.0, True), _entry(10.0, True), _entry(math.nan, False), True) == "amplifier"
+    assert _winner(_entry(math.nan, False), _entry(math.nan, False), _entry(math.nan, False), False) == "none"
+
+
+def _arrangement(name, speed, launched_speed, feasible, mass=1e4):
+    return Arrangement(name, 300.0, launched_speed, 0.5 * 300 * launched_speed ** 2, 300.0, speed, 0.9, 6.1,
+                       34.5e6, 100.0, 8e9, 5e3, mass, 50.0, feasible, ["a note"], feasible,
+                       0.5 * 300 * speed ** 2)
+
+
+def test_verdict_wording():
+    """(b0) is a lower bound, never a machine; when neither arrangement holds the verdict says so, by how much,
+    and what would change it."""
+    a = _arrangement("(a) amplifier", 430.0, 7.5, False)
+    b = _arrangement("(b) direct striker", 430.0, 387.0, False)
+    b0 = _arrangement("(b0) direct striker, massless sabot", 430.0, 430.0, True)
+    c = _arrangement("(c) flying target", math.nan, math.nan, False)
+    remedies = {"limits": {"barrel": 20 * FT, "bore": 36 * IN, "pressure": 5000 * PSI}, "launched": 500.0, "constant_pressure_barrel": 3.0, "constant_pressure_speed": 600.0,
+                "air": {"barrel": 12.0, "speed": 390.0}, "helium": {"barrel": 7.0, "speed": 460.0}}
+    words = verdict(a, b, c, b0, None, remedies)
+    assert "NEITHER arrangement is feasible within the limits (20 ft, 36 in, 5,000 psi)" in words
+    assert "not a machine" in words
+    assert "better machine" not in words and "does not pay" not in words
+    assert f"{12.0 / FT:.3g} ft in air" in words and f"{7.0 / FT:.3g} ft in helium" in words
+    assert "387 of the 430 m/s" in words
+    # a feasible direct gun against an infeasible amplifier: amplification does not pay, on (b), not on (b0)
+    b.gun_feasible = True
+    assert "amplification does not pay" in verdict(a, b, c, b0)
