@@ -153,8 +153,9 @@ def _design_machine_arguments(dm):
                                                                       "(the housing may ask for more)")
     dm.add_argument("--safety-factor", type=float, default=1.5, help="yield over allowable stress")
     dm.add_argument("--catch-deceleration", help="the payload's catcher (default: half the pulse's peak)")
-    dm.add_argument("--oil-pressure", default="120 MPa", help="the dashpot's design pressure, the payload's force "
-                                                            "over the piston: it sets the bore")
+    dm.add_argument("--oil-pressure", default="120 MPa", help="the design oil pressure the premise's map sizes its "
+                                                            "bores by, and the most the stops' hydraulic buffers work "
+                                                            "at (the machine's dashpot bore is its column designer's)")
     dm.add_argument("--out", help="directory for machine.json and machine.md (default: results/machine/<N>lb)")
 
 

@@ -28,17 +28,18 @@ from __future__ import annotations
 import math
 import os
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 
 from scipy.optimize import brentq
 
 from ..amplifier import rigid
 from ..amplifier.gain import cylinder_size, design
+from ..programmer.housing import HOUSING_STEELS
 from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
 from .limits import Limit, broken
 from .pad_materials import PAD_MATERIALS
-from .pads import Interface, Measured, PadDesign, RunCache, estimated_restitution, size_pad
+from .pads import PAD_MASS_SHARE, Interface, Measured, PadDesign, RunCache, estimated_restitution, size_pad
 from .spec import MachineSpec
 
 ASPECT = 1.0                # the intermediate masses' length over diameter
@@ -46,6 +47,8 @@ STRUCTURAL_DAMPING = 0.02
 # the effective restitution settles when an iteration moves it by less than this: the coarse runs'
 # restitutions move by some 0.005 when the geometry moves by a rounding (``pads.FIGURES``)
 E_TOL, MAX_ITERATIONS = 5e-3, 6
+# the masses are solved, at the measured restitutions, within this of the iterations' last e
+SOLVE_SPAN = 0.1
 # a stage's struck body moves about this share of v tau before its pad lets go (the amplifier study's
 # sequenced gaps)
 SEQUENCED = 0.6
@@ -101,6 +104,8 @@ class Amplifier:
     # why the masses themselves failed (no chain of them makes the gain), apart from the checks ``reason``
     # adds on the chain designed (its speed, its pads' limits)
     design_reason: str = ""
+    # the first check's findings (``pad_bound``): an interface where no pad material holds its limits
+    pad_bounds: list = field(default_factory=list)
 
     @property
     def restitutions(self) -> list[float]:
@@ -191,6 +196,13 @@ def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], all
                       over * initial_yield_stress(iface.steel), allowable, "Pa",
                       "the interface's finite-element run: the body's peak von Mises stress",
                       f"{iface.steel}: yield / safety factor") for body, over in m.peak_stress_over_yield.items()]
+    mat = PAD_MATERIALS[pad.material]
+    if m.ran and pad.diameter > 0 and mat.working_stress > 0:
+        # the pad's own stress in its run: the peak contact force over the pad's face, against its working stress
+        force = m.peak_interface_stress * iface.face_area
+        measured.append(Limit(f"pad {iface.name}", "stress (FE contact)", force / (math.pi * pad.diameter ** 2 / 4),
+                              mat.working_stress, "Pa", "the interface's finite-element run: the peak contact force "
+                              "over the pad's free face", f"{mat.name}: working stress ({mat.source})"))
     k = pad.peak_force / pad.travel if pad.travel else 0.0
     return Stage(iface.name, iface.speed, pad.material, pad.kind, k, pad.travel, pad.thickness, pad.diameter,
                  pad.mass, pad.energy, pad.contact_time, iface.face_area, pad.peak_force / iface.face_area,
@@ -198,10 +210,55 @@ def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], all
                  list(pad.limits) + measured, table)
 
 
-def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, echo) -> list[Stage]:
+def pad_bound(iface: Interface) -> str:
+    """The first check of an interface, closed forms only: "" when some material's pad keeps every limit
+    there, else why none does.  A pad that holds M* dv^2 / 2 at its material's working energy per volume w
+    weighs rho dv^2 / (2 w) m_a / (m_a + m_b) times the struck body whatever the bodies' size, so its mass
+    share goes as dv^2 and stays within ``PAD_MASS_SHARE`` only below a speed (``share_speed``); bare
+    steel faces stay at the allowable only below dv S / stress (the 1D impedance stress goes as dv)."""
+    sized = {m: size_pad(iface, m, estimated_restitution(m)) for m in PAD_MATERIALS}
+    if any(p.feasible for p in sized.values()):
+        return ""
+    words = []
+    padded = [(p.mass / iface.struck_mass, m) for m, p in sized.items() if p.mass > 0]
+    if padded:
+        share, m = min(padded)
+        words.append(f"the lightest pad ({m}) weighs {share:.3g} times the struck body (at most "
+                     f"{PAD_MASS_SHARE:g}: below {share_speed(iface, m):.4g} m/s)")
+    bare = sized.get("none")
+    if bare is not None:
+        face = next((lim for lim in bare.limits if lim.component.startswith("face")), None)
+        if face is not None and face.ratio > 1:
+            words.append(f"bare steel faces reach {face.ratio:.3g} times the allowable (within it below "
+                         f"{iface.speed / face.ratio:.3g} m/s)")
+    return f"{iface.name} closing at {iface.speed:.4g} m/s: no pad material holds its limits: " + "; ".join(words)
+
+
+def share_speed(iface: Interface, material: str) -> float:
+    """The closing speed [m/s] at which the pad of ``material`` sized on ``iface`` weighs ``PAD_MASS_SHARE``
+    of the struck body (about dv sqrt(limit / share): an elastomer's share goes as dv^2 at its fixed
+    working point, a crushed disc's nearly so), root-found on the sizing itself."""
+    def over(v):
+        return size_pad(replace(iface, speed=v), material).mass / iface.struck_mass - PAD_MASS_SHARE
+    if over(iface.speed) <= 0:
+        return iface.speed
+    return float(brentq(over, 1e-6 * iface.speed, iface.speed, xtol=1e-9, rtol=1e-10))
+
+
+def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, echo,
+             bounds: list[str] | None = None) -> list[Stage]:
+    """Each interface's pad chosen and measured; where the first check (``pad_bound``) finds that no
+    material holds its limits at some interface, no pad is run at all (each keeps its material's estimate,
+    the square root of its rebound resilience) and ``bounds`` gets the reasons."""
     allowable = initial_yield_stress(spec.material) / spec.safety_factor
     stages = []
-    for iface in interfaces(spec, masses, bodies, e):
+    faces = interfaces(spec, masses, bodies, e)
+    why = [w for w in (pad_bound(i) for i in faces) if w]
+    if bounds is not None:
+        bounds[:] = why
+    if why:
+        resolution = "estimate"
+    for iface in faces:
         pad, table = choose_pad(iface)
         m, pad = cache.measure(iface, pad.material, resolution)
         stages.append(_stage(iface.rounded(), pad, m, table, allowable))
@@ -213,23 +270,26 @@ def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, e
 
 
 def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=None, resolution: str | None = None,
-                     cache_dir: str | None = None) -> Amplifier:
+                     cache_dir: str | None = None, first_diameter: float | None = None, start: float | None = None,
+                     iterations: list | None = None) -> Amplifier:
     """The amplifier for the fixture's striker (module docstring); the pad runs in ``cache_dir`` (default
-    ``out_dir/pad_runs``) at ``resolution`` (``pads.RESOLUTIONS``; default the spec's ``pad_resolution``)."""
+    ``out_dir/pad_runs``) at ``resolution`` (``pads.RESOLUTIONS``; default the spec's ``pad_resolution``);
+    the first mass a cylinder of ``first_diameter`` if given (the launcher's slug), the effective e
+    iterated from ``start`` (default the best pad material's estimate), ``iterations`` the record so far."""
     resolution = resolution or spec.pad_resolution
     rho = property_si(spec.material, "density", "density")
     Y = initial_yield_stress(spec.material)
     V, M = fixture.striker_speed, fixture.striker_mass
     cache = RunCache(cache_dir or os.path.join(out_dir, "pad_runs"))
-    e = max(estimated_restitution(m) for m in PAD_MATERIALS)
-    iterations, last, t0 = [], None, time.perf_counter()
+    e = start or max(estimated_restitution(m) for m in PAD_MATERIALS)
+    iterations, last, t0, bounds = list(iterations or []), None, time.perf_counter(), []
     for it in range(MAX_ITERATIONS):
         d = design(spec.architecture, M, V, spec.launch_speed, e, spec.masses)
         if not d.feasible:
             reason = d.reason + (" (the measured restitutions)" if iterations else "")
             return _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0)
-        bodies = _bodies(d.masses, fixture, rho, None)
-        stages = _measure(spec, d.masses, bodies, e, cache, resolution, echo)
+        bodies = _bodies(d.masses, fixture, rho, first_diameter)
+        stages = _measure(spec, d.masses, bodies, e, cache, resolution, echo, bounds)
         gain = _chain_gain(spec, d.masses, bodies, [st.restitution for st in stages])
         e_eff = rigid.effective_restitution(d.masses, spec.launch_speed, gain, spec.architecture)
         iterations.append({"assumed": e, "measured": [st.restitution for st in stages], "gain": gain,
@@ -245,7 +305,39 @@ def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=Non
         if abs(e_eff - e) < E_TOL:
             break
         e = e_eff
-    return _amplifier(spec, last, e, iterations, V, Y, cache, t0)
+    e, last = _to_speed(spec, fixture, rho, first_diameter, e, last)
+    out = _amplifier(spec, last, e, iterations, V, Y, cache, t0,
+                     "; ".join(bounds) + (": no pad was run, each interface at its material's estimate" if bounds else ""))
+    out.pad_bounds = bounds
+    return out
+
+
+def _to_speed(spec: MachineSpec, fixture: Fixture, rho: float, first_diameter: float | None, e: float, last):
+    """The masses designed at the e (near the iterations' last) at which the rigid chain at the stages'
+    restitutions, as measured, brings the striker to the fixture's speed exactly: the restitutions used
+    for the chain are the ones its energy and its speed are counted with (the stages were measured at
+    masses within E_TOL of e's).  ``last`` unchanged where no e near it does."""
+    masses, bodies, stages, gain = last
+    restitutions = [st.restitution for st in stages]
+    target = fixture.striker_speed / spec.launch_speed
+
+    def chain_at(x):
+        d = design(spec.architecture, fixture.striker_mass, fixture.striker_speed, spec.launch_speed, x, spec.masses)
+        if not d.feasible or len(d.masses) != len(masses):
+            return None
+        b = _bodies(d.masses, fixture, rho, first_diameter)
+        return d.masses, b, _chain_gain(spec, d.masses, b, restitutions)
+
+    def miss(x):
+        out = chain_at(x)
+        return math.nan if out is None else out[2] - target
+    lo, hi = max(e - SOLVE_SPAN, 1e-3), min(e + SOLVE_SPAN, 0.999)
+    f_lo, f_hi = miss(lo), miss(hi)
+    if not (math.isfinite(f_lo) and math.isfinite(f_hi)) or f_lo * f_hi > 0:
+        return e, last
+    x = brentq(miss, lo, hi, xtol=1e-12, rtol=1e-12)
+    m, b, g = chain_at(x)
+    return x, (m, b, stages, g)
 
 
 def _amplifier(spec, last, e, iterations, V, Y, cache: RunCache, t0, reason: str = "") -> Amplifier:
@@ -282,19 +374,14 @@ def _infeasible(spec, last, e, iterations, V, Y, cache, reason, t0) -> Amplifier
 
 def check_with_first_mass(spec: MachineSpec, fixture: Fixture, amp: Amplifier, bore: float, out_dir: str,
                           resolution: str | None = None, cache_dir: str | None = None) -> Amplifier:
-    """The designed chain measured again with its first mass the slug of the launcher's bore."""
-    resolution = resolution or spec.pad_resolution
+    """The chain designed again with its first mass the slug of the launcher's bore: its interfaces
+    measured with that body, the effective e iterated from the design's, the masses solved to the
+    fixture's speed at the restitutions measured."""
     if not amp.masses:
         return amp
-    rho = property_si(spec.material, "density", "density")
-    bodies = _bodies(amp.masses, fixture, rho, bore)
-    cache = RunCache(cache_dir or amp.cache.get("folder") or os.path.join(out_dir, "pad_runs"))
-    t0 = time.perf_counter()
-    stages = _measure(spec, amp.masses, bodies, amp.restitution, cache, resolution, None)
-    gain = _chain_gain(spec, amp.masses, bodies, [st.restitution for st in stages])
-    out = _amplifier(spec, (amp.masses, bodies, stages, gain), amp.restitution, amp.iterations, amp.target_speed,
-                     amp.yield_stress, cache, t0, amp.design_reason)
-    return out
+    return design_amplifier(spec, fixture, out_dir, None, resolution,
+                            cache_dir or amp.cache.get("folder") or os.path.join(out_dir, "pad_runs"), bore,
+                            amp.restitution, amp.iterations)
 
 
 def pad_damping(e: float) -> float:
@@ -306,8 +393,7 @@ def chain_scene(spec: MachineSpec, amp: Amplifier, fixture: Fixture) -> dict:
     """The designed chain as a chain scene (``amplifier.chain``, fidelity 1d): each pad a spring of its
     secant stiffness and its free thickness, the gaps as designed, the pads damped to restitute the
     effective e (the chain scene's pads share one damping ratio)."""
-    rho = property_si(spec.material, "density", "density")
-    steel = fixture.housing_steel_mass / rho
+    steel = fixture.housing_steel_mass / HOUSING_STEELS[fixture.housing_steel].density
     scene_bodies = []
     for b in amp.bodies[:-1]:
         scene_bodies.append({"name": b["name"], "material": "steel", "shape": "cylinder", "radius": b["diameter"] / 2,

@@ -30,6 +30,7 @@ from ..geometry.outline import draw
 from ..launcher.vessel import MATERIALS as VESSEL_MATERIALS
 from ..parts.catalog import PARTS, solid_ogive
 from ..programmer.dashpot_design import OIL
+from ..programmer.housing import HOUSING_STEELS
 from ..scene.library import property_si
 from .layout import rail_geometry, shoe_length
 from .pad_materials import pad_material
@@ -109,7 +110,9 @@ def solids(machine) -> list[tuple[str, int, float, str]]:
         elif it.kind == "mass":
             add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], rho)
         elif it.kind == "housing":
-            add(it.name, housing_solid(it, fixture.floor_thickness), rho)
+            add(it.name, housing_solid(it, fixture.floor_thickness), HOUSING_STEELS[fixture.housing_steel].density)
+        elif it.kind == "pin":
+            add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], HOUSING_STEELS[fixture.housing_steel].density)
         elif it.kind == "oil":
             add(it.name, [_cylinder(it.x0, it.length, it.diameter / 2)], OIL["density"])
         elif it.kind == "piston":

@@ -22,9 +22,9 @@ from .spec import REFERENCE_ARTICLE
 
 SHEET = (16.54, 11.69)               # A3 landscape [in]
 COLOURS = {"tank": "#9db4c0", "barrel": "#9db4c0", "mass": "#c2c5cc", "pad": "#e0b04a", "housing": "#8fa7c7",
-           "oil": "#d9c27a", "piston": "#8fa7c7", "article": "#c0504d", "stop": "#7f7f7f", "rail": "#5b6770",
+           "oil": "#d9c27a", "pin": "#8fa7c7", "piston": "#8fa7c7", "article": "#c0504d", "stop": "#7f7f7f", "rail": "#5b6770",
            "frame": "#3d4a52"}
-AXIAL_KINDS = ("tank", "barrel", "mass", "pad", "housing", "oil", "piston", "article", "stop")
+AXIAL_KINDS = ("tank", "barrel", "mass", "pad", "housing", "oil", "pin", "piston", "article", "stop")
 
 
 def _ogive_outline(it):

@@ -13,9 +13,10 @@ Each row comes from the model that owns it, so that the table closes only if the
   made, every collision followed): each interface's loss (what its pad and the bodies' waves in its run
   did not return, over every collision at that interface) and each mass's kinetic energy after its last
   collision, which its stop takes;
-* the fixture (its lumped run, ``machine.fixture``): the work the oil takes from striker and payload
-  (integrated from its pressure and jet, not the bodies' speeds), the payload's kinetic energy (which the
-  catcher takes) and the striker's after the pulse (which its stop takes).
+* the fixture (its column run, ``machine.fixture``): the energy the oil takes from striker and payload
+  (integrated from its floor pressure on the housing and its force on the payload, not the bodies'
+  speeds, ``fixture.oil_work``), the payload's kinetic energy (which the catcher takes) and the
+  striker's after the pulse (which its stop takes).
 
 The parts (the gun's losses, the interfaces', every stop's, the oil's and the payload's) must sum to
 the gas work: what they miss is how far the gun's muzzle speed, the chain's launch and striker speeds and
@@ -110,7 +111,7 @@ def chain_record(masses: list[float], names: list[str], launch: float, architect
 
 def energy_table(launcher, amp, fixture, stops, record: ChainRecord) -> EnergyTable:
     """The shot's energy table: the designed gun fired again for its accounts, the chain's ``record``,
-    the fixture's lumped run and the layout's ``stops``."""
+    the fixture's column run and the layout's ``stops``."""
     g = launcher.design.gun
     shot = fire(g)
     E = shot.energies
@@ -144,7 +145,7 @@ def energy_table(launcher, amp, fixture, stops, record: ChainRecord) -> EnergyTa
     rows.append(EnergyRow(f"striker at impact (the chain: {record.striker_speed:.2f} m/s)",
                           0.5 * M * record.striker_speed ** 2, "through", False))
     rows.append(EnergyRow(f"striker at impact (the fixture: {V:.2f} m/s)", 0.5 * M * V * V, "through", False))
-    rows.append(EnergyRow("the fixture's oil (its pressure and jet on the two bodies)", fixture.oil_work, "fixture",
+    rows.append(EnergyRow("the fixture's oil (its pressures and jet on the two bodies)", fixture.oil_work, "fixture",
                           True))
     payload = 0.5 * fixture.payload_mass * fixture.after_speed_payload ** 2
     st, ct = by_body.get("striker"), by_body.get("payload")
@@ -157,6 +158,14 @@ def energy_table(launcher, amp, fixture, stops, record: ChainRecord) -> EnergyTa
              f"the gun fires at {shot.muzzle_velocity:.4f} m/s, the chain was launched at "
              f"{math.sqrt(2 * record.launch_energy / sum(amp.masses[:1] if amp.architecture == 'launched-chain' else amp.masses)):.4f} m/s",
              f"the chain gives the striker {record.striker_speed:.3f} m/s, the fixture takes it at {V:.3f} m/s"]
+    launched = math.sqrt(2 * record.launch_energy / sum(amp.masses[:1] if amp.architecture == "launched-chain"
+                                                         else amp.masses))
+    if shot.muzzle_velocity < launched * (1 - 1e-3):
+        # the rigid chain's speeds scale with its launch: the shot this machine fires, beside the one it needs
+        notes.append(f"the shot this machine fires: the gun launches at {shot.muzzle_velocity:.4g} m/s, so the chain "
+                     f"brings the striker to {record.striker_speed * shot.muzzle_velocity / launched:.4g} m/s "
+                     f"({shot.muzzle_velocity / launched:.2%} of the {V:.4g} m/s the pulse needs); the table is the "
+                     "shot the design needs, the gun's shortfall beside it")
     return EnergyTable(rows, stored, rows[1].energy, gas_work, parts, parts / gas_work - 1, payload, record.source,
                        notes, record.launch_energy - E["projectile"])
 

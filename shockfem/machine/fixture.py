@@ -1,29 +1,45 @@
-"""The fixture: the fluid dashpot the fixture study chose, designed for this article, and its housing.
+"""The fixture: the fluid dashpot the fixture study designs (``programmer.column_design``: the liquid as a
+compressible column, Idelchik's sharp-edged orifice with the velocity of approach and the jet's
+reaction, the bore a design variable), designed for this article, and the housing the striker *is*.
 
-The dashpot law is ``programmer.dashpot_design`` (the fixture study's, iterated on the lumped model to
-the band).  What the machine adds is the housing the striker *is*: a steel tube closed at its struck
-end, its bore full of oil, sized by two closed forms at the peak oil pressure p and the allowable
-S = yield / safety factor:
+The dashpot is iterated on the column (``design_on_column``) and confirmed on it at
+``column_dashpot.CELLS`` cells; its validity checks on that run (``programmer.dashpot_validity``: the
+orifice's area ratio, the share of the velocity change below the law's Reynolds range, the piston's
+Mach number in the liquid, cavitation, the liquid's freezing) and the housing's (the wall's peak
+pressure times its dynamic factor against the most a wall of the housing steel holds) are the
+fixture's ``limits`` (``machine.limits.Limit``): a design outside a law's range is a broken limit of
+the machine, with its ratio.  The lumped model's run of the same design is kept beside it
+(``design["column_design"]["models"]["lumped"]``), not designed on.
 
-* wall (Lame, thick cylinder, hoop stress at the bore): p (R^2 + r^2) / (R^2 - r^2) <= S, so
-  R >= r sqrt((S + p) / (S - p)), and no wall holds p >= S;
-* floor (a clamped circular plate under uniform pressure; Roark, Formulas for Stress and Strain, 7th
-  ed., Table 11.2 case 10b: radial stress at the edge 3 p r^2 / (4 t^2)): t >= r sqrt(3 p / (4 S)).
+The housing is the fixture study's (``programmer.housing``, the one place for its formulas):
+``HOUSING_STEEL`` at ASME VIII-2's design stress S, its wall by VIII-2 4.3.3 (P = S ln Y, Y = b / a) at
+the column's peak wall pressure times the dynamic factor read from the column's own history, at most
+a monobloc forging's Y_max = ``PRACTICAL_RATIO``, its floor VIII-2 4.6's integral flat head at the
+floor's pressure and factor (``housing.fixture_mass``).  The machine's striker carries it over the
+whole bore: the column, the piston and the article standing in it (``BORE_HEADROOM`` above its nose),
+at the same outer radius, with the metering pin and the oil.  The column designer's striker already
+carries its pressurised housing; if the machine's longer housing outweighs it, the dashpot is designed
+again for the ratio that housing needs, until the two agree.  Beyond Y_max the housing is drawn at
+Y_max and its limit is broken by how far its wall ratio is past it.
 
-The striker's mass is the housing's and its oil's.  If the housing the dashpot asks for (the striker
-ratio times the payload) is lighter than the wall and floor the pressure needs, the striker takes the
-housing's mass and the dashpot is designed again for that ratio, until the two agree.
+What it leaves out: the bodies' elasticity (the fixture study's finite-element runs), the column's own
+(friction on the bore, liquid returning through the orifice: ``fluid.column``).
 """
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
-from ..programmer.dashpot_design import DASHPOT, design_dashpot
-from ..scene.library import initial_yield_stress, property_si
+from ..programmer.column_design import design_on_column
+from ..programmer.dashpot_design import DASHPOT
+from ..programmer.housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, THICK_PLATE, floor_for,
+                                  held_pressure)
+from ..programmer.liquids import MINERAL_OIL
+from ..scene.library import property_si
+from .limits import Limit
 from .spec import REFERENCE_ARTICLE, MachineSpec
 
 # the free length left in the bore above the article's nose [m]
@@ -31,8 +47,12 @@ BORE_HEADROOM = 0.02
 # the striker ratio has converged when the housing's mass moves it by less than this
 RATIO_TOL = 1e-3
 MAX_REDESIGNS = 6
-# the oil's specific heat [J/(kg K)] (a mineral oil near room temperature)
-OIL_HEAT_CAPACITY = 1900.0
+# the oil's specific heat [J/(kg K)] (the design liquid's, ``programmer.liquids.MINERAL_OIL``)
+OIL_HEAT_CAPACITY = MINERAL_OIL.heat_capacity
+LIQUID = MINERAL_OIL
+# the column designer's runs and its search grid (``column_design.design_on_column``'s own defaults)
+DESIGN_EVALUATIONS = 120
+SEARCH_CELLS = 100
 
 
 @dataclass
@@ -43,43 +63,48 @@ class Fixture:
     bore_radius: float            # [m]
     piston_mass: float            # [kg]
     payload_mass: float           # article and piston [kg]
-    striker_ratio: float          # striker (housing and oil) over payload
+    striker_ratio: float          # striker (housing, pin and oil) over payload
     striker_mass: float           # [kg]
     striker_speed: float          # closing speed on the payload at rest [m/s]
     liquid_mass: float            # [kg]
     column: float                 # the liquid column at rest [m]
-    stroke: float                 # relative stroke used by the lumped run [m]
-    peak_pressure: float          # [Pa]
+    stroke: float                 # relative stroke used by the column run [m]
+    peak_pressure: float          # the column's largest wall pressure [Pa]
     housing_outer_radius: float   # [m]
     housing_length: float         # floor and bore [m]
     floor_thickness: float        # [m]
     bore_depth: float             # [m]
-    housing_steel_mass: float     # [kg]
+    housing_steel_mass: float     # wall and floor [kg]
     housing_binds: bool           # the wall and floor set the striker's mass, not the striker ratio
-    wall_hoop_stress: float       # Lame at the bore, at the peak pressure [Pa]
-    floor_stress: float           # [Pa]
-    allowable: float              # [Pa]
-    peak: float                   # the payload's lumped pulse: peak [m/s^2]
+    wall_stress: float            # the wall rule's stress at the peak pressure times its factor: S P / P_held(Y) [Pa]
+    floor_stress: float           # the flat head's at its peak times its factor: S (t_needed / t)^2 [Pa]
+    allowable: float              # the housing steel's design stress S (ASME VIII-2) [Pa]
+    peak: float                   # the payload's column pulse: peak [m/s^2]
     duration: float               # [s]
     velocity_change: float        # [m/s]
     band_passed: bool
     worst_excess: float
-    after_speed_payload: float    # when the lumped record ends [m/s]
+    after_speed_payload: float    # when the column record ends [m/s]
     after_speed_striker: float    # [m/s]
-    striker_travel: float         # over the lumped record (the pulse and the window after it) [m]
+    striker_travel: float         # over the record (the pulse and the window after it) [m]
     payload_travel: float         # [m]
-    oil_heating: float            # if the oil keeps the energy the orifice throttles [K]
-    lumped_runs: int
+    oil_heating: float            # if the oil keeps the energy it takes from the bodies [K]
+    design_runs: int              # the column runs of every design made
     redesigns: int
-    design: dict                  # the dashpot design (``programmer.dashpot_design``), the pin table included
-    # the work the oil's forces take from the two bodies over the record, integrated from the lumped run's
-    # pressure, jet and speeds: int (p A (v_s - v_p) + J v_p) dt [J] (the energy table's fixture row)
+    design: dict                  # the dashpot design (``programmer.dashpot_design``), its column designer's record
+    # the energy the oil takes from striker and payload over the record [J] (the energy table's fixture row;
+    # ``oil_work``), and the payload's parting speed over the closing speed at the record's end [-]
     oil_work: float = math.nan
-    # the payload's parting speed over the closing speed, (v_p - v_s) / V at the record's end [-]
     restitution: float = math.nan
+    housing_steel: str = HOUSING_STEEL
+    pin_mass: float = 0.0         # the metering pin, carried by the striker [kg]
+    limits: list = field(default_factory=list)      # of ``machine.limits.Limit``: the laws' ranges, the housing
+    verdict: str = ""             # the column designer's ("inside", "outside the laws' ranges", ...)
 
     def as_dict(self) -> dict:
-        return asdict(self)
+        out = asdict(self)
+        out["limits"] = [lim.as_dict() for lim in self.limits]
+        return out
 
 
 def article_length(spec: MachineSpec) -> float:
@@ -90,75 +115,150 @@ def article_length(spec: MachineSpec) -> float:
 
 
 def bore_radius(spec: MachineSpec, rho_piston: float) -> float:
-    """The bore at which the payload's force (article and piston) at the pulse's peak is the design oil
-    pressure: pi r^2 p = (m_a + rho pi r^2 t) A, so r^2 = m_a A / (pi (p - rho t A)); never narrower than
-    the article and its clearance."""
+    """A bore by the design oil pressure (``spec.oil_pressure``), for a caller that needs one without
+    designing (the premise's map): the payload's force (article and piston) at the pulse's peak is that
+    pressure, pi r^2 p = (m_a + rho pi r^2 t) A, so r^2 = m_a A / (pi (p - rho t A)); never narrower than the
+    article and its clearance.  (The machine's own dashpot takes the column designer's bore.)"""
     A, p, t = spec.pulse.peak, spec.oil_pressure, DASHPOT["piston_thickness"]
     if p <= rho_piston * t * A:
         return math.inf          # the piston alone would need more than the design pressure
     return max(spec.diameter / 2 + DASHPOT["clearance"], math.sqrt(spec.article_mass * A / (math.pi * (p - rho_piston * t * A))))
 
 
-def housing_wall(p: float, r: float, S: float) -> float:
-    """The smallest outer radius whose Lame hoop stress at the bore r stays at S under p (inf if p >= S)."""
-    return r * math.sqrt((S + p) / (S - p)) if p < S else math.inf
+@dataclass(frozen=True)
+class Housing:
+    """The striker's housing around a column design: its outer radius and floor [m], its steel [kg]."""
+    outer_radius: float
+    floor: float
+    depth: float
+    steel_mass: float
+    striker_mass: float           # steel, pin and liquid [kg]
+    wall_binds: bool              # the wall the pressure needs is thicker than the ratio's mass gives
 
 
-def floor_thickness(p: float, r: float, S: float) -> float:
-    """The clamped plate's thickness whose edge stress 3 p r^2 / (4 t^2) is S."""
-    return r * math.sqrt(3 * p / (4 * S))
+def striker_housing(d: dict, weight: dict, depth: float, steel: str) -> Housing:
+    """The housing over the whole bore ``depth`` at the wall and floor ``weight`` (``housing.fixture_mass``)
+    sized (its wall at most Y_max), or, where the design's striker is heavier, at the outer radius that
+    weighs it."""
+    rho = HOUSING_STEELS[steel].density
+    r, t = d["bore_radius"], weight["floor_thickness"]
+    carried = weight["pin"] + d["liquid_mass"]
+
+    def steel_of(R):
+        return rho * math.pi * ((R * R - r * r) * depth + R * R * t)
+    R_wall = min(weight["outer_radius"], PRACTICAL_RATIO * r)
+    # the outer radius at which the housing (steel, pin and oil) weighs the design's striker
+    R_mass = math.sqrt((max(d["striker_mass"] - carried, 0.0) / (rho * math.pi) + r * r * depth) / (depth + t))
+    R = max(R_wall, R_mass)
+    return Housing(R, t, depth, steel_of(R), steel_of(R) + carried, R_wall > R_mass)
 
 
-def design_fixture(spec: MachineSpec, echo=None) -> Fixture:
-    rho_s = property_si(spec.material, "density", "density")
-    S = initial_yield_stress(spec.material) / spec.safety_factor
-    r = bore_radius(spec, rho_s)
+def design_fixture(spec: MachineSpec, echo=None, evaluations: int = DESIGN_EVALUATIONS,
+                   search_cells: int = SEARCH_CELLS, steel: str = HOUSING_STEEL) -> Fixture:
+    """The dashpot for the spec's article and pulse on the column, and the striker that carries it."""
     L_article = article_length(spec)
-    ratio, runs, redesigns, near = spec.striker_ratio, 0, 0, None
+    ratio, runs, redesigns = spec.striker_ratio, 0, 0
     while True:
-        d, run, n = design_dashpot(spec.pulse, spec.article_mass, r, striker_ratio=ratio, echo=echo, near=near)
-        near = d["handles"]
-        runs += n
-        p = float(run.pressure.max())
+        out = design_on_column(spec.pulse, spec.article_mass, 0.0, LIQUID, ratio, evaluations, search_cells,
+                               steel=steel, echo=echo)
+        runs += out["evaluations"] + 2
+        d, weight, run = out["design"], out["fixture"], out["runs"]["column"]
+        if run is None:
+            raise ValueError(f"fixture: the column dashpot designed for the striker ratio {ratio:.3g} did not run "
+                               f"({out['walls'].get('column_error', '')})")
         depth = d["column"] + DASHPOT["piston_thickness"] + L_article + BORE_HEADROOM
-        t_floor = floor_thickness(p, r, S)
-        R_wall = housing_wall(p, r, S)
-        # the outer radius at which the housing (steel and oil) weighs the striker's mass
-        steel = d["striker_mass"] - d["liquid_mass"]
-        R_mass = math.sqrt((steel / (rho_s * math.pi) + r * r * depth) / (depth + t_floor))
-        R = max(R_mass, R_wall)
-        if not math.isfinite(R):
-            break
-        housing = rho_s * math.pi * ((R * R - r * r) * depth + R * R * t_floor)
-        needed = (housing + d["liquid_mass"]) / d["payload_mass"]
+        housing = striker_housing(d, weight, depth, steel)
+        needed = housing.striker_mass / d["payload_mass"]
         if needed <= ratio * (1 + RATIO_TOL) or redesigns >= MAX_REDESIGNS:
             break
         ratio, redesigns = needed, redesigns + 1
-    pulse_t, pulse_a = run.t, run.acceleration
-    pulse, band = spec.pulse.band(pulse_t, pulse_a)
+    return _fixture(spec, out, housing, ratio, runs, redesigns, L_article, steel)
+
+
+def _fixture(spec, out: dict, housing: Housing, ratio: float, runs: int, redesigns: int, L_article: float,
+             steel: str) -> Fixture:
+    d, weight, run = out["design"], out["fixture"], out["runs"]["column"]
+    pulse, band = spec.pulse.band(run.t, run.acceleration)
+    r, R = d["bore_radius"], housing.outer_radius
+    s = HOUSING_STEELS[steel]
+    allowed = s.allowed_stress()
+    wall_pressure = weight["peak_pressure"] * weight["dynamic_factor"]
+    floor_pressure = float(np.max(run.floor_pressure)) * weight["floor_dynamic_factor"]
+    # the stresses the rules hold at S: the wall's at its ratio (S P / P_held(Y)), the floor's at its
+    # thickness (S (t_needed / t)^2, the flat head's t going as sqrt(P / S))
+    wall_stress = allowed * wall_pressure / held_pressure(R / r, allowed, weight["rule"])
+    floor_stress = allowed * (floor_for(floor_pressure, r, s) / housing.floor) ** 2
     payload_after, striker_after = float(run.payload_speed[-1]), float(run.striker_speed[-1])
-    throttled = (0.5 * d["striker_mass"] * d["striker_speed"] ** 2 - 0.5 * d["striker_mass"] * striker_after ** 2
-                 - 0.5 * d["payload_mass"] * payload_after ** 2)
-    R_ok = R if math.isfinite(R) else math.nan
+    taken = oil_work(run, d)
+    record = {k: out[k] for k in ("verdict", "models", "walls", "evaluations", "search_wall", "closed_form_bore",
+                                  "lumped_agrees", "objective")}
+    record["housing"] = weight
     fixture = Fixture(
-        spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"], ratio, d["striker_mass"],
-        d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()), p, R_ok, t_floor + depth,
-        t_floor, depth, housing if math.isfinite(R) else math.nan, redesigns > 0 or R_wall > R_mass,
-        p * (R_ok ** 2 + r * r) / (R_ok ** 2 - r * r) if math.isfinite(R) else math.inf,
-        3 * p * r * r / (4 * t_floor ** 2), S, pulse.peak, pulse.duration, pulse.velocity_change, bool(band.passed),
-        float(band.worst_excess), payload_after, striker_after, float(np.trapz(run.striker_speed, run.t)),
-        float(np.trapz(run.payload_speed, run.t)),
-        throttled / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, redesigns, d)
-    fixture.oil_work = oil_work(run, d["piston_area"])
-    fixture.restitution = (payload_after - striker_after) / d["striker_speed"]
+        spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"], ratio,
+        housing.striker_mass, d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()),
+        weight["peak_pressure"], R, housing.floor + housing.depth, housing.floor, housing.depth, housing.steel_mass,
+        housing.wall_binds or redesigns > 0, wall_stress, floor_stress, allowed, pulse.peak, pulse.duration,
+        pulse.velocity_change, bool(band.passed), float(band.worst_excess), payload_after, striker_after,
+        float(np.trapz(run.striker_speed, run.t)), float(np.trapz(run.payload_speed, run.t)),
+        taken / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, redesigns, {**d, "column_design": record},
+        taken, (payload_after - striker_after) / d["striker_speed"], steel)
+    fixture.verdict = out["verdict"]
+    fixture.pin_mass = weight["pin"]
+    fixture.limits = fixture_limits(out, weight, s)
     return fixture
 
 
-def oil_work(run, area: float) -> float:
-    """The work the oil takes from striker and payload [J]: its pressure p A on the relative motion and
-    the jet's reaction J on the payload (``programmer.lumped_dashpot``: m x_p'' = p A - J, M x_s'' = -p A),
-    by the trapezoidal rule over the run's samples."""
-    jet = getattr(run, "jet_force", np.zeros_like(run.t))
-    power = run.pressure * area * (run.striker_speed - run.payload_speed) + jet * run.payload_speed
-    return float(np.trapz(power, run.t))
+def oil_work(run, d: dict) -> float:
+    """The energy the oil takes from striker and payload over the column ``run`` [J]: the kinetic energy
+    it had, closing with the housing at V, plus the work its floor pressure takes from the housing,
+    less the work its face pressure and jet give the payload (``column_dashpot``: (M - m_l) x_s'' =
+    -p_floor A, m x_p'' = p A - J, the payload's force read as m a), less its kinetic energy at the
+    record's end moving with the housing (which the striker's stop takes with it), by the trapezoidal
+    rule over the run's samples."""
+    m_l, V, A = d["liquid_mass"], d["striker_speed"], d["piston_area"]
+    from_housing = float(np.trapz(run.floor_pressure * A * run.striker_speed, run.t))
+    to_payload = float(np.trapz(d["payload_mass"] * run.acceleration * run.payload_speed, run.t))
+    return 0.5 * m_l * (V * V - run.striker_speed[-1] ** 2) + from_housing - to_payload
 
+
+# the machine's unit of each validity check (``dashpot_validity`` gives the freezing check in MPa)
+_MPA = "[MPa]"
+
+
+def fixture_limits(out: dict, weight: dict, steel) -> list[Limit]:
+    """The column run's validity checks (those that bound the column, ``dashpot_validity.column_holds``)
+    and the housing's as machine limits: a design outside a law's range is a broken limit."""
+    limits = []
+    for lim in out["models"]["column"]["limits"]:
+        # the checks that bound the column and veto it (a flag, data a law was not checked on, is reported
+        # with the design's record, not a limit)
+        if ("lumped" in lim["models"] and "column" not in lim["models"]) or not lim.get("vetoes", True):
+            continue
+        name = lim["name"].replace(" " + _MPA, "")
+        scale, unit = (1e6, "Pa") if _MPA in lim["name"] else (1.0, "-")
+        value, limit = lim["value"] * scale, lim["limit"] * scale
+        if lim.get("lower"):
+            # a least value: its ratio is the least over the value
+            name, value, limit = f"{name} (the least over it)", limit, value
+        limits.append(Limit("dashpot (column run)", name, value, limit, unit, "the column dashpot's run of the design "
+                            "(`programmer.column_dashpot`, `programmer.dashpot_validity`)",
+                            _RANGE_SOURCE.get(lim["models"], lim["models"])))
+    limits += [Limit("dashpot housing", "wall ratio b / a by ASME VIII-2 4.3.3 (P = S ln Y)", weight["wall_ratio"],
+                     PRACTICAL_RATIO, "-", "the column's largest wall pressure times its dynamic factor (from the "
+                     "pressure's own history, `programmer.housing`)", f"a monobloc forging of {steel.name}: "
+                     "Y_max (`programmer.housing.PRACTICAL_RATIO`)"),
+               Limit("dashpot metering pin", "stress (von Mises, the liquid's pressure all round)",
+                     weight["pin_pressure"], weight["allowed_stress"], "Pa",
+                     "the largest of the column's peak and the quasi-steady upstream pressure",
+                     f"{steel.name}: ASME VIII-2 design stress"),
+               Limit("dashpot housing floor", "thickness over diameter", weight["floor_over_diameter"], THICK_PLATE,
+                     "-", "VIII-2 4.6's integral flat head at the floor's peak pressure times its factor",
+                     "the flat-head formula's thin-plate range (`programmer.housing.THICK_PLATE`)")]
+    return limits
+
+
+_RANGE_SOURCE = {"the orifice law": "Idelchik's sharp-edged orifice within ISO 5167-2's area ratio and Reynolds "
+                                    "number (`fluid.orifice`)",
+                 "the liquid": "the liquid's state (`programmer.liquids`)",
+                 "column": "the column's linearised wall faces (`fluid.column`)",
+                 "lumped and column": "a column that does not part while the stroke goes on (`fluid.column`)"}

@@ -23,6 +23,7 @@ import math
 from dataclasses import asdict, dataclass, field
 
 from ..programmer.dashpot_design import DASHPOT, OIL
+from ..programmer.housing import HOUSING_STEELS
 from .stops import Stop, design_stop
 
 ROLLING_CARRIAGE_SPEED = 5.0       # [m/s], item PS 4 bearing carriages (catalogue)
@@ -128,10 +129,16 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
             rear = pad_rear + stage.pad_thickness
         if b["name"] == "striker":
             items.append(Item(b["name"], "housing", rear, b["length"], b["diameter"], b["bore"],
-                              fixture.housing_steel_mass, material, f"bore {b['bore'] * 1e3:.0f} mm, floor "
+                              fixture.housing_steel_mass, fixture.housing_steel, f"bore {b['bore'] * 1e3:.0f} mm, floor "
                                                                     f"{fixture.floor_thickness * 1e3:.0f} mm"))
             items.append(Item("oil", "oil", rear + fixture.floor_thickness, fixture.column, b["bore"], 0.0,
                               fixture.liquid_mass, "oil", f"{OIL['density']:g} kg/m^3, carried by the striker"))
+            if fixture.pin_mass > 0:
+                # the metering pin stands on the floor through the column: drawn as the cylinder of its volume
+                steel = HOUSING_STEELS[fixture.housing_steel].density
+                d_pin = math.sqrt(4 * fixture.pin_mass / (math.pi * steel * fixture.column))
+                items.append(Item("pin", "pin", rear + fixture.floor_thickness, fixture.column, d_pin, 0.0,
+                                  fixture.pin_mass, fixture.housing_steel, "metering pin, carried by the striker"))
         else:
             items.append(Item(b["name"], "mass", rear, b["length"], b["diameter"], 0.0, m, material))
         fronts.append(rear + b["length"])

@@ -44,3 +44,43 @@ class Limit:
 def broken(limits: list[Limit]) -> list[Limit]:
     """The limits that do not hold, the worst first."""
     return sorted((lim for lim in limits if not lim.holds), key=lambda lim: -lim.ratio)
+
+
+# the part of the machine a limit belongs to, by its component's name: a verdict lists its broken limits
+# by these, so that many limits broken for one reason (the pads' energy per volume) read as one cause
+CAUSES = (("the amplifier's pads", ("pad ", "face ", "body ", "interface ")),
+          ("the fixture", ("dashpot", "striker housing", "piston", "article")),
+          ("the launcher", ("launcher", "first mass in the barrel")),
+          ("the stops", ("stop of",)),
+          ("the guides and frame", ("guide shoes", "frame")))
+TRANSPORT = "the parts' size for transport"
+
+
+def cause(lim: Limit) -> str:
+    """The part of the machine ``lim`` belongs to (``CAUSES``; the transport limits on their own)."""
+    if lim.quantity.endswith("for transport"):
+        return TRANSPORT
+    return next((name for name, starts in CAUSES if lim.component.startswith(starts)), "other")
+
+
+def counted(limits: list[Limit]) -> list[Limit]:
+    """The limits that could fail: those the design did not set to their limit (a sized one holds by
+    construction)."""
+    return [lim for lim in limits if not lim.sized]
+
+
+def by_cause(limits: list[Limit]) -> list[tuple[str, int, Limit]]:
+    """The broken limits grouped by ``cause``: (cause, how many, the worst), the worst group first."""
+    groups: dict[str, list[Limit]] = {}
+    for lim in broken(limits):
+        groups.setdefault(cause(lim), []).append(lim)
+    return sorted(((c, len(v), v[0]) for c, v in groups.items()), key=lambda g: -g[2].ratio)
+
+
+def verdict_line(limits: list[Limit]) -> str:
+    """The limits in one sentence: how many could fail, how many the design set to their limit, how many
+    are broken and by which cause (each with its worst)."""
+    causes = "; ".join(f"{c}: {n} (worst {w.component}, {w.quantity}, {w.ratio:.3g} times its limit)"
+                       for c, n, w in by_cause(limits))
+    return (f"{len(counted(limits))} limits checked ({len(limits) - len(counted(limits))} more set by the design to "
+            f"their limit), {len(broken(limits))} broken" + (f", by cause: {causes}" if causes else ""))

@@ -12,7 +12,7 @@ from .cad import read_step, write_step
 from .design import Machine
 from .drawing import draw_sheet
 from .energy import energy_figure
-from .limits import broken
+from .limits import broken, verdict_line
 
 UNITS = {"mass": "kg", "length": "m", "speed": "m/s", "stress": "Pa", "pressure": "Pa", "energy": "J",
          "acceleration": "m/s^2", "force": "N", "stiffness": "N/m", "time": "s", "temperature rise": "K"}
@@ -25,13 +25,14 @@ def summary_lines(m: Machine) -> list[str]:
         f"machine for a {s.article_mass:.4g} kg ({s.article_mass / LB:.4g} lb) article, {s.pulse.shape} "
         f"{s.pulse.peak / G0:,.0f} g for {s.pulse.duration * 1e3:g} ms: {'FEASIBLE' if m.feasible else 'NOT FEASIBLE'}",
         f"  fixture: dashpot, bore {2 * f.bore_radius * 1e3:.0f} mm, payload {f.payload_mass:.3g} kg; striker "
-        f"{f.striker_mass:.4g} kg at {f.striker_speed:.4g} m/s ({f.striker_speed / FT:.0f} ft/s); lumped pulse "
+        f"{f.striker_mass:.4g} kg at {f.striker_speed:.4g} m/s ({f.striker_speed / FT:.0f} ft/s); column pulse "
         f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band "
-        f"{'pass' if f.band_passed else 'FAIL'}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
+        f"{'pass' if f.band_passed else 'FAIL'}, {f.verdict}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
         f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; pads "
         + ", ".join(f"{st.pad_material} (e {st.restitution:.3f}{'' if st.measured else ', estimate'})"
-                    for st in a.stages) + " (finite elements); "
-        f"effective e {a.restitution:.4f}; the rigid chain of them gives the striker {a.striker_speed:.4g} m/s",
+                    for st in a.stages) + (" (finite elements); " if any(st.measured for st in a.stages) else
+                                           " (no pad run: each its material's estimate); ")
+        + f"effective e {a.restitution:.4f}; the rigid chain of them gives the striker {a.striker_speed:.4g} m/s",
         f"  launcher: bore {g.bore / IN:.3g} in, barrel {g.length / FT:.3g} ft, {g.reservoir_volume:.3g} m^3 at "
         f"{g.reservoir_pressure / PSI:,.0f} psi ({g.gas}, {L.gas_mass:.4g} kg); barrel and tank {L.design.weight:,.0f} kg",
         f"  machine: {t['overall_length']:.3g} m long, {t['overall_width']:.3g} m wide, {t['machine_mass']:,.0f} kg; "
@@ -47,9 +48,7 @@ def summary_lines(m: Machine) -> list[str]:
                                          f"{st.force / 1e6:.3g} MN" for st in m.layout.stops))
     lines += [f"  binds: {b}" for b in m.binding]
     lines += [f"  PROBLEM: {p}" for p in m.problems]
-    worst = max(m.limits, key=lambda lim: lim.ratio)
-    lines.append(f"  {len(m.limits)} limits checked, {len(broken(m.limits))} broken; the highest ratio: {worst.component} "
-                 f"{worst.quantity} {worst.ratio:.2f}")
+    lines.append(f"  {verdict_line(m.limits)}")
     return lines
 
 
@@ -114,7 +113,7 @@ def markdown(m: Machine) -> str:
     parts += ["", "## Totals", "", _table(["quantity", "value"], [[k, f"{v:.6g}"] for k, v in t.items()]),
               "", "(SI: kg, m, m^2, J, Pa, K.)", "",
               f"Launcher: {g.bore / IN:.4g} in bore, {g.length / FT:.4g} ft of travel, {g.reservoir_volume:.4g} m^3 at "
-              f"{g.reservoir_pressure / PSI:,.0f} psi; fixture lumped pulse {f.peak / G0:,.0f} g.",
+              f"{g.reservoir_pressure / PSI:,.0f} psi; fixture column pulse {f.peak / G0:,.0f} g ({f.verdict}).",
               f"Designed in {m.wall_time_s:.1f} s."]
     return "\n".join(parts) + "\n"
 

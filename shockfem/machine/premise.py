@@ -40,6 +40,7 @@ and stresses are not checked (only its gain).
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import types
 from dataclasses import asdict, dataclass, field
@@ -151,14 +152,16 @@ def amplifier_arrangement(m: Machine) -> Arrangement:
     return out
 
 
-def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float, bore: float | None, starts: int,
+def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float, bore: float, starts: int,
                 report_binding: bool) -> tuple[Launcher, float]:
-    """The lightest gun (its bore ``bore`` if given) firing the striker in its sabot, designed again with
-    the sabot of its bore and pressure until the sabot settles."""
-    sabot = 0.0
+    """The lightest gun of bore ``bore`` firing the striker in its sabot, designed again with the sabot of
+    its bore and pressure until the sabot settles.  The first pass carries the sabot the spec's largest
+    pressure asks at this bore (``sabot_mass`` grows with the pressure, and the lightest gun usually runs
+    at the pressure limit): where the gun's pressure is that limit the sabot has settled at once."""
+    s = dataclasses.replace(spec, max_bore=bore)
+    sabot = sabot_mass(bore, spec.max_pressure, diameter)
     for _ in range(SABOT_PASSES):
-        s = dataclasses.replace(spec, max_bore=bore) if bore else spec
-        L = launcher_for(s, striker + sabot, speed, starts, min_bore=bore or diameter, report_binding=report_binding)
+        L = launcher_for(s, striker + sabot, speed, starts, min_bore=bore, report_binding=report_binding)
         g = L.design.gun
         new = sabot_mass(g.bore, g.reservoir_pressure, diameter)
         if abs(new - sabot) <= 1e-3 * (striker + sabot):
@@ -167,14 +170,22 @@ def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float
     return L, sabot
 
 
+@functools.lru_cache(maxsize=16)
+def bare_launcher(spec: MachineSpec, striker: float, speed: float, starts: int, report_binding: bool) -> Launcher:
+    """The lightest gun within the spec's limits firing the striker alone (a massless sabot): the direct
+    gun's lower bound and the start of its sabot's bore scan, designed once for both."""
+    return launcher_for(spec, striker, speed, starts, report_binding=report_binding)
+
+
 def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: float | None, starts: int = 3,
                     report_binding: bool = True, bores: int = SABOT_BORES) -> tuple[Launcher, float]:
     """The lightest gun within the spec's limits firing a striker of ``striker`` [kg] and ``diameter`` at
     ``speed`` in the sabot its bore needs: the gun's optimiser does not see that the sabot grows with the
     bore (as p R^3), so the bore is scanned (``bores`` bores from half the bare striker's gun's bore, or the
-    striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest gun and sabot kept.  ``diameter`` None: a massless sabot (the
-    lower bound), one design.  Returns the launcher and the sabot's mass."""
-    bare = launcher_for(spec, striker, speed, starts, report_binding=report_binding)
+    striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest gun and sabot kept.
+    ``diameter`` None: a massless sabot (the lower bound), one design (``bare_launcher``, shared with the
+    scan's start).  Returns the launcher and the sabot's mass."""
+    bare = bare_launcher(spec, striker, speed, starts, report_binding)
     if diameter is None:
         return bare, 0.0
     # the sabot favours a narrower bore than the bare striker's gun; scan from half of that bore up

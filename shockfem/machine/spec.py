@@ -43,7 +43,8 @@ class MachineSpec:
     striker_ratio: float = STRIKER_RATIO      # striker (housing and oil) over payload, at least
     safety_factor: float = 1.5                # allowable = yield / safety factor (structural parts)
     catch_deceleration: float = 0.0           # the payload's catcher [m/s^2]; 0: half the pulse's peak
-    oil_pressure: float = OIL_PRESSURE        # the dashpot's design pressure m A_g / A [Pa] (sets the bore)
+    oil_pressure: float = OIL_PRESSURE        # the map's design oil pressure (``fixture.bore_radius``) and the
+                                              #   most the stops' hydraulic buffers work at [Pa]
     pad_resolution: str = "smoke"             # the pads' finite-element runs (``pads.RESOLUTIONS``): the
                                               #   design runs each interface at every iteration; "estimate":
                                               #   none, each material's estimate (a study's quickest size)

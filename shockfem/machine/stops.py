@@ -11,7 +11,8 @@ with its broken limits in the machine's verdict):
   pressure would not fit the stop ring).  Stroke x = E / F.  The oil swept by the piston keeps the
   energy, so it warms by p / (rho c_p) whatever the size: the cylinder runs at the pressure at which that
   is the allowed rise (99 MPa for 60 K), or the dashpot's design pressure if lower; bore area F / p, the
-  wall by Lame at the allowable (``fixture.housing_wall``), length 2.2 x (cylinder and rod retracted).
+  wall by ASME VIII-2 4.3.3 at the allowable (``programmer.housing.wall_ratio``: P = S ln Y), length 2.2 x
+  (cylinder and rod retracted).
   Limits: the pressure a sudden impact raises in the oil, Joukowsky rho c v (Wylie and Streeter, Fluid
   Transients in Systems, ch. 1), at most p; the piston's Mach number in the oil v / c at most 0.1 (the
   lumped orifice law's range, ``programmer.dashpot_validity``); the oil's temperature rise a shot when
@@ -51,7 +52,8 @@ from dataclasses import asdict, dataclass, field
 
 from ..programmer.dashpot_design import OIL
 from ..units import G0
-from .fixture import OIL_HEAT_CAPACITY, floor_thickness, housing_wall
+from ..programmer.housing import wall_ratio
+from .fixture import OIL_HEAT_CAPACITY
 from .limits import Limit
 
 # the oil's speed of sound sqrt(K / rho) [m/s]
@@ -133,7 +135,7 @@ def hydraulic_buffer(body: str, mass: float, speed: float, force: float, ring_ar
     force = area * pressure
     stroke = energy / force
     r = math.sqrt(area / math.pi)
-    R = housing_wall(pressure, r, allowable)
+    R = r * wall_ratio(pressure, allowable)
     length = BUFFER_LENGTH * stroke
     steel = rho_steel * math.pi * (R * R - r * r) * length + rho_steel * area * stroke   # cylinder and rod
     oil = OIL["density"] * area * stroke
@@ -156,6 +158,13 @@ def hydraulic_buffer(body: str, mass: float, speed: float, force: float, ring_ar
             "detail": f"bore {2e3 * r:.0f} mm at {pressure / 1e6:.0f} MPa, wall {1e3 * (R - r):.0f} mm, oil {oil:.3g} kg"}
 
 
+def backing_plate(p: float, r: float, S: float) -> float:
+    """The thickness [m] of a circular plate of radius ``r`` clamped at its rim whose edge stress under the
+    uniform pressure ``p`` is ``S``: 3 p r^2 / (4 t^2) = S (Roark, Formulas for Stress and Strain, 7th ed.,
+    Table 11.2 case 10b)."""
+    return r * math.sqrt(3 * p / (4 * S))
+
+
 def crushable(body: str, mass: float, speed: float, force: float, ring_area: float, grade: str, rho_steel: float,
               allowable: float) -> dict:
     """An aluminium honeycomb block of ``grade`` crushed by ``mass`` at ``speed``, its peak force at most
@@ -167,8 +176,8 @@ def crushable(body: str, mass: float, speed: float, force: float, ring_area: flo
     stroke = mass * math.log(1 + k * speed * speed / sigma_c) / (2 * area * k)
     block = stroke / DENSIFICATION
     consumed = rho0 * area * block
-    # a steel backing plate carrying the peak crush stress, clamped at its rim (``fixture.floor_thickness``)
-    plate = floor_thickness(peak_stress, math.sqrt(area / math.pi), allowable)
+    # a steel backing plate carrying the peak crush stress, clamped at its rim (``backing_plate``)
+    plate = backing_plate(peak_stress, math.sqrt(area / math.pi), allowable)
     speed_limit = CRUSH_SPEED_LIMIT * math.sqrt(sigma_c / k)
     limits = [
         Limit(f"stop of {body} (crushable)", "crush speed", speed, speed_limit, "m/s",

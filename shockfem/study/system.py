@@ -106,7 +106,8 @@ def choices(rep: Report, s: MachineSpec):
              "shape that gives the white paper's 1650 ft/s of velocity change, `docs/fixture.md` section 1). "
              f"Choices: a {s.architecture} of {s.masses} masses launched at {s.launch_speed / FT:.0f} ft/s, "
              f"{s.material} ({s.safety_factor:g} on yield for every allowable), the striker at least "
-             f"{s.striker_ratio:g} times the payload, the dashpot's design pressure {s.oil_pressure / 1e6:.0f} MPa, "
+             f"{s.striker_ratio:g} times the payload, the dashpot designed on its liquid column (its bore a design "
+             "variable), "
              f"the launcher within {s.max_barrel_length / FT:.0f} ft, {s.max_bore / IN:.0f} in and "
              f"{s.max_pressure / PSI:,.0f} psi ({s.gas}; the launcher study's 'customary equipment dimensions and "
              "industry standard pressures'), the payload caught at half the pulse's peak. The article of each "
@@ -132,7 +133,8 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
              "the one restitution with which the rigid chain of these masses gains what the rigid chain of the "
              "pads' own restitutions gains, each measured by its interface's finite-element run (or its "
              f"material's estimate where not run; the pads' meshes: '{base.pad_resolution}'); the chain's "
-             "striker speed is that chain's, with the first mass as the launcher's slug.")
+             "striker speed is that chain's (with the first mass as the launcher's slug where its gun reaches the launch "
+             "speed).")
     for lb, m in machines.items():
         rep.text(f"**{lb} lb**: " + "; ".join(m.binding) + ("." if m.feasible else
                                                              ". NOT FEASIBLE: " + "; ".join(m.problems) + "."))
@@ -142,7 +144,7 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
 
 
 MACHINE_HEADER = ["payload [lb]", "bore [mm]", "payload with piston [kg]", "striker [kg]", "striker speed [m/s]",
-                  "peak oil pressure [MPa]", "lumped peak [g]", "band", "first mass [kg]", "effective e",
+                  "peak oil pressure [MPa]", "column peak [g]", "band", "first mass [kg]", "effective e",
                   "chain's striker speed [m/s]", "gun bore [in]", "gun travel [ft]", "reservoir [psi]",
                   "reservoir [m^3]", "gas [kg]", "launcher [kg]", "length [m]", "width [m]", "machine [kg]",
                   "stress / allowable", "feasible", "designed in [s]"]
@@ -332,7 +334,7 @@ def coupled(rep: Report, m, cfg, out_dir: str, echo):
     scene["scene"]["name"] = "coupled_fixture"
     echo(f"  the fixture in finite elements, the striker at {v_striker:.1f} m/s")
     fe, wall, status = run_case("fixture", scene, os.path.join(out_dir, "coupled"), echo)
-    rows = [["system model (lumped fixture, rigid chain at effective e)", f.striker_speed, f.peak / G0,
+    rows = [["system model (column fixture, rigid chain at effective e)", f.striker_speed, f.peak / G0,
              f.duration * 1e3, f.velocity_change, "pass" if f.band_passed else "FAIL", "-", f"{m.wall_time_s:.1f}"]]
     if fe is not None:
         t, acc = fe_pulse(fe)

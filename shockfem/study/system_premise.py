@@ -10,7 +10,7 @@ from ..amplifier import rigid
 from ..amplifier.chain import run_chain_scene
 from ..machine import premise as P
 from ..machine.amplifier import chain_scene
-from ..machine.limits import broken
+from ..machine.limits import broken, by_cause, counted, verdict_line
 from ..machine.white_paper import CLAIM, claims
 from ..units import FT, G0, IN, LB, PSI
 from .report import Report
@@ -45,7 +45,7 @@ def energy(rep: Report, machines: dict, lb: int):
     e = m.energy
     rep.text(f"The {lb} lb machine's shot, row by row (`{lb}lb/machine.md` has it too). Each row comes from the "
              "model that owns it (the gun's own accounts, the designed chain's collisions at its pads' restitutions, "
-             "the fixture's lumped run), so the "
+             "the fixture's column run), so the "
              "parts close on the gas work only if the models agree: "
              f"{e.closure:+.3%} here (`shockfem verify machine_energy` holds it within 0.5%).")
     rep.table("energy", ["where the energy is", "energy [MJ]", "of the gas work", "a part of it"],
@@ -74,17 +74,19 @@ def limits(rep: Report, machines: dict):
     rows = []
     for n, m in machines.items():
         worst = max(m.limits, key=lambda lim: lim.ratio)
-        rows.append([n, len(m.limits), len(broken(m.limits)), f"{worst.component}: {worst.quantity}", worst.ratio,
+        rows.append([n, len(counted(m.limits)), len(m.limits) - len(counted(m.limits)), len(broken(m.limits)),
+                     len(by_cause(m.limits)), f"{worst.component}: {worst.quantity}", worst.ratio,
                      "FEASIBLE" if m.feasible else "NOT FEASIBLE"])
-    rep.table("verdicts", ["payload [lb]", "limits checked", "broken", "the highest ratio", "ratio", "verdict"], rows,
-              ["{}", "{}", "{}", "{}", "{:.3f}", "{}"])
+    rep.table("verdicts", ["payload [lb]", "limits checked", "set by the design (not counted)", "broken",
+                           "causes", "the highest ratio", "ratio", "verdict"], rows,
+              ["{}", "{}", "{}", "{}", "{}", "{}", "{:.3f}", "{}"])
     rep.text("A machine is FEASIBLE only when every limit holds (every stress against its own material's allowable, "
              "each absorber's limits, the dashpot oil's heating a shot, the largest single part against the road's "
              "envelope: 13.6 m, 2.55 m, 24 t, Council Directive 96/53/EC on a standard semi-trailer, the frame, rails "
              "and tank sectioned) and every part's model found a design. `<N>lb/machine.md` lists every limit with its basis and source.")
     for n, m in machines.items():
         if not m.feasible:
-            rep.text(f"**{n} lb, NOT FEASIBLE**: " + "; ".join(m.problems) + ".")
+            rep.text(f"**{n} lb, NOT FEASIBLE**: {verdict_line(m.limits)}. Each: " + "; ".join(m.problems) + ".")
 
 
 def not_runnable(m) -> str:

@@ -10,13 +10,14 @@ computes it by formula, so the two are independent:
 * the article: the catalogue's ogive, its nose pi * integral of r(z)^2 (``parts.catalog``), turned end
   over end in the assembly.
 
-And the housing's two closed forms at their sizing: Lame's hoop stress at the bore of the wall
-``housing_wall`` gives is the allowable, and the clamped plate's edge stress of ``floor_thickness``'s
-floor is the allowable (each against its textbook expression written out here).
+And the housing's two rules at their sizing (``programmer.housing``, which the machine's fixture sizes
+by): the wall ``wall_for`` gives holds the pressure by ASME VIII-2 4.3.3, S ln(b / a) = P, and the floor
+``floor_for`` gives is VIII-2 4.6's integral flat head, t = d sqrt(0.17 P / S) (each against its
+expression written out here).
 
 ``machine_energy``: the 12 lb machine's energy table closes: its parts, each from the model that owns
-it (the gun's accounts, the chain's 1D stage table, the fixture's lumped run integrated from its
-pressure and jet), sum to the gas work within 0.5%; and the gas work the table takes from the gun
+it (the gun's accounts, the chain's 1D stage table, the fixture's column run integrated from its
+pressures and its force on the payload), sum to the gas work within 0.5%; and the gas work the table takes from the gun
 equals the isentropic expansion work p0 V0 (1 - (V0 / V1)^(gamma - 1)) / (gamma - 1) where the gun is that
 closed form (no valve, massless gas, an evacuated barrel), and the gas stored is p0 V0 / (gamma - 1).
 
@@ -37,7 +38,7 @@ from ..launcher.design import Limits
 from ..launcher.gun import Gun, fire, white_paper_gun
 from ..launcher.vessel import MATERIALS, tank_diameter_for, tank_weight
 from ..machine.cad import article_solid, empty_gmsh, housing_solid, tank_solid
-from ..machine.fixture import floor_thickness, housing_wall
+from ..programmer.housing import HOUSING_STEELS, floor_for, wall_for
 from ..machine.layout import Item
 from ..parts.catalog import PARTS, solid_ogive, solid_ogive_length
 from ..scene.library import property_si
@@ -52,7 +53,7 @@ ARTICLE = {"radius": 0.030, "mass": 5.443, "crh": 3.0, "meplat_over_radius": 0.2
 # OpenCASCADE's volume integration of these solids agrees with the closed forms to about 1e-10 (measured);
 # 1e-6 would still catch a wrong head, a missing floor or a nose drawn at the wrong radius (each >1e-3)
 VOLUME_TOL = 1e-6
-PRESSURE, ALLOWABLE = 126e6, 460e6       # the 12 lb housing's peak oil pressure and its allowable
+PRESSURE = 126e6                         # a housing's peak oil pressure
 
 
 def machine_geometry(size: str, workdir: str) -> list[dict]:
@@ -92,14 +93,15 @@ def machine_geometry(size: str, workdir: str) -> list[dict]:
     wall = time.perf_counter() - t0
     for c in out:
         c["wall_time_s"] = wall / 3
-    # the housing's closed forms at their sizing, against the textbook expressions
-    r, p, S = h["bore_radius"], PRESSURE, ALLOWABLE
-    Rw = housing_wall(p, r, S)
-    out.append(check("Lame hoop stress at the bore of the sized wall [Pa]", S, p * (Rw ** 2 + r ** 2) / (Rw ** 2 - r ** 2),
+    # the housing's rules at their sizing, against the code's expressions (maraging 300's design stress)
+    r, p = h["bore_radius"], PRESSURE
+    S = HOUSING_STEELS["maraging_300"].allowed_stress()
+    w = wall_for(p, r, "maraging_300")
+    out.append(check("ASME VIII-2 4.3.3 wall: S ln(b / a) of the sized wall [Pa]", p, S * math.log(w.outer_radius / r),
                      1e-12, 0.0, 0))
-    t = floor_thickness(p, r, S)
-    out.append(check("clamped floor's edge stress 3 p r^2 / (4 t^2) [Pa] (Roark 11.2 case 10b)", S,
-                     3 * p * r * r / (4 * t * t), 1e-12, 0.0, 0))
+    t = floor_for(p, r, "maraging_300")
+    out.append(check("ASME VIII-2 4.6 integral flat head: 0.17 P d^2 / t^2 of the sized floor [Pa]", S,
+                     0.17 * p * (2 * r) ** 2 / (t * t), 1e-12, 0.0, 0))
     return out
 
 

@@ -42,16 +42,25 @@ def test_machine_closes(machine):
     m, results, _ = machine
     f, a, L = m["fixture"], m["amplifier"], m["launcher"]
     assert m["spec"]["article_mass"] == pytest.approx(10 * LB) and m["spec"]["pad_resolution"] == "estimate"
-    # the fixture's lumped pulse is inside the specification's band (MIL-STD-810 trapezoid, +/-20%)
-    assert f["band_passed"] and 8000 * G0 < f["peak"] < 12000 * G0
+    # the fixture is the column designer's: its pulse inside the specification's band (MIL-STD-810 trapezoid,
+    # +/-20%) or the verdict says it is not; its validity checks (the laws' ranges, the housing) are machine
+    # limits, each broken one among the broken
+    assert f["band_passed"] or any(p.startswith("fixture: the column's pulse") for p in m["problems"])
+    assert f["design"]["column_design"]["models"]["column"]["limits"]
+    keys = {(lim["component"], lim["quantity"]) for lim in m["limits"]}
+    assert {(lim["component"], lim["quantity"]) for lim in f["limits"]} <= keys
+    assert {"dashpot housing", "dashpot (column run)"} <= {lim["component"] for lim in f["limits"]}
+    outside = {(lim["component"], lim["quantity"]) for lim in f["limits"] if not lim["holds"]}
+    assert outside <= {(lim["component"], lim["quantity"]) for lim in m["broken"]}
+    assert (f["verdict"] == "outside the laws' ranges") <= bool(outside)
     # the payload is the article and the piston; the striker at least the asked ratio of it
     assert f["payload_mass"] == pytest.approx(f["article_mass"] + f["piston_mass"], rel=1e-12)
     assert f["striker_mass"] >= 10 * f["payload_mass"] * (1 - 1e-9)
     # the amplifier's last mass is the striker; the rigid chain at its pads' restitutions brings it to the
-    # fixture's speed within 2% (the design's own test of its masses), and the effective e is the one that
-    # gives a uniform chain that gain (``rigid.effective_restitution``: brentq to 1e-10)
+    # fixture's speed (the masses solved to it at those restitutions: brentq's 1e-12), and the effective e is
+    # the one that gives a uniform chain that gain (``rigid.effective_restitution``: brentq to 1e-10)
     assert a["masses"][-1] == pytest.approx(f["striker_mass"], rel=1e-12)
-    assert a["striker_speed"] == pytest.approx(f["striker_speed"], rel=0.02)
+    assert a["striker_speed"] == pytest.approx(f["striker_speed"], rel=1e-9)
     assert a["restitutions"] == [st["restitution"] for st in a["stages"]]
     assert all(not st["measured"] and "estimate" in st["note"] for st in a["stages"])
     # (the effective e lies among the interfaces' restitutions: 1e-9 is brentq's 1e-10 and round-off)
@@ -100,9 +109,9 @@ def test_machine_totals_follow_from_its_parts(machine):
     m, _, out = machine
     items, t = m["layout"]["items"], m["totals"]
     assert t["machine_mass"] == pytest.approx(sum(i["mass"] for i in items), rel=1e-12)
-    # the striker's steel and its oil are the amplifier's last mass
+    # the striker's steel, its metering pin and its oil are the amplifier's last mass
     parts = {i["name"]: i["mass"] for i in items}
-    assert parts["striker"] + parts["oil"] == pytest.approx(m["amplifier"]["masses"][-1], rel=1e-9)
+    assert parts["striker"] + parts["pin"] + parts["oil"] == pytest.approx(m["amplifier"]["masses"][-1], rel=1e-9)
     assert t["overall_length"] == pytest.approx(max(i["x0"] + i["length"] for i in items), rel=1e-12)
     # every stop's absorber takes its body's kinetic energy (a buffer at its constant force over its stroke;
     # a crushable or a water brake at a force that falls with the speed, so over more than E / F_peak), and
@@ -164,7 +173,7 @@ def test_step_assembly_reimports_to_the_designed_solids(machine):
         part = r["name"] if r["name"] in {i["name"] for i in m["layout"]["items"]} else r["name"].rsplit("_", 1)[0]
         mass[part] = mass.get(part, 0.0) + back[r["name"]] * r["density"]
     designed = {i["name"]: i["mass"] for i in m["layout"]["items"] if i["mass"]}
-    for name in ("tank", "barrel", "m1", "striker", "oil", "piston", "article", "frame"):
+    for name in ("tank", "barrel", "m1", "striker", "pin", "oil", "piston", "article", "frame"):
         assert mass[name] == pytest.approx(designed[name], rel=5e-3), name
     assert (out / "machine.step").read_text().count("PRODUCT('article'") == 1
 
@@ -221,7 +230,8 @@ def test_energy_table_closes_and_names_every_part(machine):
 
 def test_premise_arrangements_and_map(machine):
     """The three arrangements deliver the same striker; (b0)'s launch energy is the striker's M V^2 / 2 at the
-    gun's muzzle speed (the optimiser's 2e-4 on the speed, doubled); the map has a row per point and an outcome,
+    gun's muzzle speed (the optimiser's 2e-4 on the speed, doubled) where its gun reaches it, less where no gun
+    within the limits does; the map has a row per point and an outcome,
     the amplifier designed exactly where the closed form's Q < 1 and never a direct win where it was not; the
     map's amplifier at the design's measured effective e, and the spec's point at it and at the white paper's
     e = 0.9; (a) carries the machine's verdict; (b0) is never called a machine."""
@@ -233,7 +243,11 @@ def test_premise_arrangements_and_map(machine):
     assert ("NOT FEASIBLE" in a[-1]) == (not m["feasible"])
     assert a[3] * 1e6 == pytest.approx(m["launcher"]["launch_energy"], rel=1e-12)
     assert b0[1] == pytest.approx(f["striker_mass"], rel=1e-12)
-    assert b0[3] * 1e6 == pytest.approx(0.5 * f["striker_mass"] * f["striker_speed"] ** 2, rel=4e-4)
+    need = 0.5 * f["striker_mass"] * f["striker_speed"] ** 2
+    if b0[14] == "yes":
+        assert b0[3] * 1e6 == pytest.approx(need, rel=4e-4)
+    else:                                   # no gun within the limits reaches the speed: it launches less
+        assert b0[3] * 1e6 < need
     b = rows["(b) direct striker"]
     assert b[1] >= b0[1] and "sabot" in b[-1]
     table = results["tables"]["map"]
