@@ -16,7 +16,7 @@ from .report import Report
 from . import system_premise as sections
 from .system import SIZES as SYSTEM_SIZES
 
-# the default's sabot scan at one start and three bores: for the 12 lb striker (333 kg at 430 m/s) three starts
+# the default's sabot scan at one start and three bores: for a 12 lb striker of 333 kg at 430 m/s three starts
 # and five bores had not finished in 14 min on the shared 2-core machine, one start and three took 5 s
 SIZES = {"smoke": {**SYSTEM_SIZES["smoke"], "pads": "estimate"},
          "default": {**SYSTEM_SIZES["default"], "pads": None, "sabot_starts": 1, "sabot_bores": 3}}

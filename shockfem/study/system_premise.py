@@ -259,7 +259,7 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
              f"restitution ({max(m.fixture.restitution, 0.0):.3f}) by the rigid collision law; the amplifier is the "
              f"launched chain at one restitution for every point, the design's effective e ({e:.4f}: the rigid "
              "chain at its pads' restitutions " + ", ".join(f"{x:.3f}" for x in m.amplifier.restitutions)
-             + f", from their '{m.spec.pad_resolution}' runs at the design's point), its launch speed and mass count "
+             + f", {_pads_source(m)}), its launch speed and mass count "
              "(2 to 10) at each point those that need the least gun (`boundary.best_chain`, closed form), its masses "
              "by the closed form, its gun by the lightest-launcher design (one start), designed only where that "
              "chain needs less gun than the direct one (Q < 1): elsewhere amplification has nothing to do and the "
@@ -277,12 +277,24 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     return points
 
 
+def _pads_source(m) -> str:
+    """Where the chain's restitutions come from: its pads' finite-element runs, or, for an interface whose
+    pad was not run (the pads' first check, the run budget, the 'estimate' resolution), its material's
+    estimate sqrt(R)."""
+    ran = sum(st.measured for st in m.amplifier.stages)
+    if not ran:
+        return "each its material's estimate sqrt(R): no pad was run"
+    rest = len(m.amplifier.stages) - ran
+    return (f"from their '{m.spec.pad_resolution}' runs at the design's point"
+            + (f", {rest} of them at their material's estimate sqrt(R)" if rest else ""))
+
+
 def _restitution_effect(rep: Report, m, target):
     """The design's point of the map at the design's measured effective e and at the white paper's assumed
     e: what the measured pads do to the amplifier's side of the premise."""
     s, f = m.spec, m.fixture
     rows = []
-    for label, e in ((f"the design's effective e ('{s.pad_resolution}' pads)", m.amplifier.restitution),
+    for label, e in ((f"the design's effective e ({_pads_source(m)})", m.amplifier.restitution),
                      ("the white paper's assumed e", CLAIM["e"])):
         p = P.map_point(s, s.pulse.duration, s.pulse.peak, s.article_mass, f.striker_ratio, target.striker_ratio,
                         max(f.restitution, 0.0), e, f.housing_outer_radius / f.bore_radius)
@@ -294,8 +306,8 @@ def _restitution_effect(rep: Report, m, target):
               ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{}", "{:,.0f}", "{}"])
     rep.value("map_restitution", [{"e": r[1], "launch_energy": r[3] * 1e6, "machine_mass": r[4], "winner": r[7]}
                                   for r in rows])
-    rep.text(f"The {lb} lb point of the map at the design's effective e ({rows[0][1]:.4f}, its pads at "
-             f"'{s.pad_resolution}') and at the white paper's e = {CLAIM['e']:g}: the "
+    rep.text(f"The {lb} lb point of the map at the design's effective e ({rows[0][1]:.4f}, {_pads_source(m)}) "
+             f"and at the white paper's e = {CLAIM['e']:g}: the "
              f"amplifier's gun and masses weigh {rows[0][4]:,.0f} kg against {rows[1][4]:,.0f} kg "
              f"({rows[0][3]:.4g} MJ launched against {rows[1][3]:.4g}); the lightest arrangement there is "
              f"'{rows[0][7]}' at the design's e and '{rows[1][7]}' at e = {CLAIM['e']:g}.")

@@ -21,7 +21,7 @@ pressures and its force on the payload), sum to the gas work within 0.5%; and th
 equals the isentropic expansion work p0 V0 (1 - (V0 / V1)^(gamma - 1)) / (gamma - 1) where the gun is that
 closed form (no valve, massless gas, an evacuated barrel), and the gas stored is p0 V0 / (gamma - 1).
 
-``direct_striker``: the direct-striker gun (the 12 lb fixture's striker alone at its speed, within the
+``direct_striker``: the direct-striker gun (a 12 lb fixture's striker, 60.2 kg at 441.4 m/s, alone, within the
 machine's limits: the premise's (b0)) against the launcher model's own verification, the brute-force
 grid of ``launcher_design`` (no grid gun lighter), and its launch energy M V^2 / 2.
 """

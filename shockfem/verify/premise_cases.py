@@ -22,10 +22,10 @@ from ..launcher.gun import Gun, fire
 from ..launcher.simple_wave import efficiency, travel
 from .checks import check
 
-# (e, n, gain): the 12 lb chain's (e 0.576, 4.341), the white paper's (0.9, 1600 ft/s over 325), an
+# (e, n, gain): a 12 lb chain's (e 0.576, 4.341: 99.06 to 430 m/s), the white paper's (0.9, 1600 ft/s over 325), an
 # elastic one and a single collision
 CHAINS = ((0.576, 5, 4.341), (0.9, 5, 4.923), (1.0, 3, 2.0), (0.671, 2, 1.2))
-# (gas, muzzle speed [m/s]): the amplifier's launch and the 12 lb striker's speed
+# (gas, muzzle speed [m/s]): the amplifier's launch and a 12 lb striker's speed (430 m/s)
 GUNS = (("air", 99.06), ("air", 430.0), ("helium", 430.0))
 CHAIN_TOL = 1e-12     # the same collisions in another order of operations
 GUN_TOL = 1e-6        # the lumped gun's integrator at rtol 1e-9
