@@ -121,14 +121,32 @@ def _library_steel(name: str, tensile: float) -> HousingSteel:
                         initial_yield_stress(name), tensile, f"the material library's {name}")
 
 
-HOUSING_STEELS = {
-    "high_strength_steel": _library_steel("high_strength_steel", 760e6),
+class _SteelTable(dict):
+    """The housing steels by name.  A steel of the material library is read at its first use, not at
+    import: the library's figures carry units, and reading them imports pint, which a scene of bare SI
+    numbers never needs (``units._pint``)."""
+
+    def __init__(self, steels: dict, library: dict):
+        super().__init__(steels)
+        self.library = library          # name: tensile strength [Pa] (the library keeps no tensile figure)
+
+    def __missing__(self, name: str) -> HousingSteel:
+        if name not in self.library:
+            raise KeyError(name)
+        steel = self[name] = _library_steel(name, self.library[name])
+        return steel
+
+    def __contains__(self, name) -> bool:
+        return dict.__contains__(self, name) or name in self.library
+
+
+HOUSING_STEELS = _SteelTable({
     "maraging_300": HousingSteel(
         "maraging_300", 8000.0, 190e9, 1790e6, 1830e6,
         "18Ni(300) maraging steel, aged: ASM Handbook vol. 1 (1990), Maraging Steels, typical properties "
         "(0.2% yield 1790-2070 MPa, tensile 1830-2100 MPa: the lower ends taken), density 8.0 g/cm^3, E 190 GPa; "
         "K_IC 80 MPa sqrt(m) (ASM's 70-90, check)", 80e6),
-}
+}, library={"high_strength_steel": 760e6})
 HOUSING_STEEL = "maraging_300"
 
 

@@ -50,6 +50,7 @@ def _lumped_efficiency(gas: str, u: float) -> tuple[float, float]:
 
 
 def premise_boundary(size: str, workdir: str) -> list[dict]:
+    """The premise's break-even: the chain's and the gun's closed forms against the rigid chain and the lumped gun."""
     from ..machine.boundary import best_chain, break_even, gun_efficiency
     out = []
     for e, n, G in CHAINS:

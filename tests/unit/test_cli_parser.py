@@ -57,3 +57,10 @@ def test_the_study_command_takes_its_studies_from_the_registry():
     assert tuple(name.choices) == tuple(STUDIES) and tuple(size.choices) == SIZES
     for study_name in STUDIES:         # and every study names a module that runs it
         assert cli._parser().parse_args(["study", study_name]).name == study_name
+
+
+def test_every_verification_case_has_a_one_line_summary():
+    """``shockfem verify --list`` prints each case's docstring's first line: a case without one has nothing
+    to say there (and the listing would fail on it)."""
+    from shockfem.verify import CASES
+    assert [name for name, case in CASES.items() if not (case.__doc__ or "").strip()] == []
