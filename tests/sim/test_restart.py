@@ -12,7 +12,6 @@ import shutil
 import signal
 import subprocess
 import sys
-import threading
 import time
 
 import meshio
@@ -20,6 +19,7 @@ import numpy as np
 import pytest
 
 import shockfem
+from shockfem import runner
 from shockfem.cli import main
 from shockfem.errors import RunInterrupted
 from shockfem.output.history_file import read_history_csv
@@ -178,21 +178,27 @@ def test_resume_under_mpirun(tmp_path):
     _same_run(tmp_path / "whole", tmp_path / "cut")
 
 
-def test_a_chain_resumes_through_to_its_report(tmp_path):
+def test_a_chain_resumes_through_to_its_report(tmp_path, monkeypatch):
     """A chain scene's finite-element run, stopped and resumed, ends in the same chain report (gain,
     stages) as one never stopped."""
     chain = os.path.join(REPO, "studies", "amplifier", "three_rods.toml")
     args = ["run", chain, "--fidelity", "axisymmetric", "--no-progress"]
     assert main(args + ["--out", str(tmp_path / "whole")]) == 0
+    steps = json.loads((tmp_path / "whole" / "summary.json").read_text())["steps"]
     cut = tmp_path / "cut"
+    # the SIGTERM at a fixed step of the command's loop, as the tests above send it through ``on_step``: a
+    # thread watching the files raced a run of half a second and lost it once
+    loop = runner._Run.loop
 
-    def stop_when_under_way():
-        while not (cut / "history.csv").exists() or (cut / "history.csv").read_text().count("\n") < 100:
-            time.sleep(0.01)
-        os.kill(os.getpid(), signal.SIGTERM)
+    def loop_stopped_midway(self, progress, on_step):
+        def stop(step):
+            if step.step == steps // 2:
+                os.kill(os.getpid(), signal.SIGTERM)
+        return loop(self, progress, stop)
 
-    threading.Thread(target=stop_when_under_way, daemon=True).start()
+    monkeypatch.setattr(runner._Run, "loop", loop_stopped_midway)
     assert main(args + ["--out", str(cut)]) == 128 + signal.SIGTERM
+    monkeypatch.undo()
     assert main(["run", "--resume", str(cut), "--no-progress"]) == 0
     a = json.loads((tmp_path / "whole" / "summary.json").read_text())["chain"]
     b = json.loads((cut / "summary.json").read_text())["chain"]
