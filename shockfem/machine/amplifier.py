@@ -39,7 +39,8 @@ from ..scene.library import initial_yield_stress, property_si
 from .fixture import Fixture
 from .limits import Limit, broken
 from .pad_materials import PAD_MATERIALS
-from .pads import PAD_MASS_SHARE, Interface, Measured, PadDesign, RunCache, estimated_restitution, size_pad
+from .pads import (PAD_MASS_SHARE, Interface, Measured, PadDesign, Resizing, RunCache, estimated_restitution,
+                   pad_contact_stress, size_pad)
 from .spec import MachineSpec
 
 ASPECT = 1.0                # the intermediate masses' length over diameter
@@ -78,6 +79,7 @@ class Stage:
     note: str = ""
     limits: list = field(default_factory=list)          # of Limit
     alternatives: list = field(default_factory=list)    # every material sized here: material, worst ratio
+    resizing: dict = field(default_factory=dict)        # ``pads.Resizing``: its sizes and runs
 
 
 @dataclass
@@ -191,23 +193,24 @@ def _gaps(spec: MachineSpec, masses, e: float, stages: list[Stage]) -> list[floa
                         for k in range(len(stages) - 1)]
 
 
-def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], allowable: float) -> Stage:
+def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], allowable: float,
+           resizing: Resizing) -> Stage:
     measured = [Limit(f"body {'striker' if body == 'a' else 'struck'} of {iface.name}", "stress (FE, von Mises)",
                       over * initial_yield_stress(iface.steel), allowable, "Pa",
                       "the interface's finite-element run: the body's peak von Mises stress",
                       f"{iface.steel}: yield / safety factor") for body, over in m.peak_stress_over_yield.items()]
     mat = PAD_MATERIALS[pad.material]
     if m.ran and pad.diameter > 0 and mat.working_stress > 0:
-        # the pad's own stress in its run: the peak contact force over the pad's face, against its working stress
-        force = m.peak_interface_stress * iface.face_area
-        measured.append(Limit(f"pad {iface.name}", "stress (FE contact)", force / (math.pi * pad.diameter ** 2 / 4),
+        # the pad's own stress in its run (the final size's: ``pads.RunCache.measure_within_limits``)
+        measured.append(Limit(f"pad {iface.name}", "stress (FE contact)", pad_contact_stress(iface, pad, m),
                               mat.working_stress, "Pa", "the interface's finite-element run: the peak contact force "
                               "over the pad's free face", f"{mat.name}: working stress ({mat.source})"))
     k = pad.peak_force / pad.travel if pad.travel else 0.0
     return Stage(iface.name, iface.speed, pad.material, pad.kind, k, pad.travel, pad.thickness, pad.diameter,
                  pad.mass, pad.energy, pad.contact_time, iface.face_area, pad.peak_force / iface.face_area,
-                 m.peak_interface_stress, m.restitution, m.run, m.wall_time_s, m.ran, m.note,
-                 list(pad.limits) + measured, table)
+                 m.peak_interface_stress, m.restitution, m.run, m.wall_time_s, m.ran,
+                 "; ".join(w for w in (m.note, resizing.verdict) if w), list(pad.limits) + measured, table,
+                 resizing.as_dict())
 
 
 def pad_bound(iface: Interface) -> str:
@@ -260,12 +263,13 @@ def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, e
         resolution = "estimate"
     for iface in faces:
         pad, table = choose_pad(iface)
-        m, pad = cache.measure(iface, pad.material, resolution)
-        stages.append(_stage(iface.rounded(), pad, m, table, allowable))
+        m, pad, resizing = cache.measure_within_limits(iface, pad.material, resolution)
+        stages.append(_stage(iface.rounded(), pad, m, table, allowable, resizing))
         if echo:
             echo(f"    {iface.name}: {pad.material} at {iface.speed:.4g} m/s -> e = {m.restitution:.4f} "
                  + (f"({'cached' if m.cached else 'run'}, {m.elements} cells, {m.steps} steps, "
-                    f"{m.wall_time_s:.3g} s)" if m.ran else f"({m.note})"))
+                    f"{m.wall_time_s:.3g} s)" if m.ran else f"({m.note})")
+                 + (f"; {resizing.verdict}" if resizing.verdict else ""))
     return stages
 
 

@@ -80,6 +80,19 @@ MAX_WORK = 6e7
 # narrow as holds it, since a rubber's band takes its moduli static and stiffens it by
 # (4 zeta / pi) ln(band) across the band (``materials.band_damping``)
 PAD_BAND = 10.0
+# An elastomer pad's peak stress in its run over the closed form's at the same pad (rigid bodies on a
+# Neo-Hookean disc, quasi-static): the run's band hysteresis stiffens the pad and adds its viscous stress
+# at the peak, the bodies' and the pad's waves ring on it.  PEAK_FACTOR_RANGE is where the runs put it
+# (``scripts/pad-sizing-range.py``, docs/machine.md "Pads"); the sizing takes PEAK_FACTOR, so that the
+# closed form times it is within PEAK_FACTOR_RANGE / PEAK_FACTOR of the runs there: its range of
+# validity, checked on every run (``Resizing.verdict``)
+PEAK_FACTOR = 1.22
+PEAK_FACTOR_RANGE = (1.15, 1.32)
+# an elastomer sized (and resized on its run) to this share of its working stress: the runs' own scatter
+# (a resize moves the mesh with the pad) stays below the limit; a pad is resized until its run's peak is
+# between RESIZE_BAND and 1 of its working stress (or below it with the working strain binding), at most
+# MAX_RESIZES times
+RESIZE_AIM, RESIZE_BAND, MAX_RESIZES = 0.98, 0.93, 4
 
 
 @dataclass(frozen=True)
@@ -133,6 +146,7 @@ class PadDesign:
     crown: float = 0.0          # [m]
     contact_time: float = 0.0   # estimated [s]
     limits: tuple = ()          # of Limit
+    peak_factor: float = 1.0    # an elastomer's: the peak stress its sizing allows for over the closed form's
 
     @property
     def feasible(self) -> bool:
@@ -170,21 +184,25 @@ def _common_limits(iface: Interface, mat: PadMaterial, mass: float, force: float
                   "the chain's range of validity: its masses are the steel bodies', the pads left out")]
 
 
-def _working_strain(mat: PadMaterial, G: float) -> float:
-    """The largest strain inside both working limits (the stress rises monotonically with the strain)."""
+def _working_strain(mat: PadMaterial, G: float, stress: float) -> float:
+    """The largest strain inside the working strain at which the closed form's stress is at most ``stress``
+    (the stress rises monotonically with the strain)."""
     strain = mat.working_strain
-    if neo_hookean_stress(G, strain) <= mat.working_stress:
+    if neo_hookean_stress(G, strain) <= stress:
         return strain
     lo, hi = 0.0, strain
     for _ in range(60):
         mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if neo_hookean_stress(G, mid) < mat.working_stress else (lo, mid)
+        lo, hi = (mid, hi) if neo_hookean_stress(G, mid) < stress else (lo, mid)
     return lo
 
 
-def _elastomer(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
+def _elastomer(iface: Interface, mat: PadMaterial, e: float, peak_factor: float) -> PadDesign:
     G = mat.youngs_modulus / 3
-    strain = _working_strain(mat, G)
+    # the closed form's stress aimed at RESIZE_AIM of the working stress over the factor by which the runs'
+    # peak exceeds it: the pad's own peak (the runs') then at RESIZE_AIM of its working stress
+    target = RESIZE_AIM * mat.working_stress / peak_factor
+    strain = _working_strain(mat, G, target)
     w = neo_hookean_energy(G, strain)
     # as wide as the face, or narrower where that would make it thinner than MIN_HEIGHT of its diameter
     volume = iface.energy / w
@@ -198,8 +216,9 @@ def _elastomer(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
     heat = (1 - e * e) * iface.energy / (mass * mat.heat_capacity)
     part = f"pad {iface.name}"
     stress_binds = strain < mat.working_strain
-    limits = [Limit(part, "stress", neo_hookean_stress(G, strain), mat.working_stress, "Pa",
-                    "Neo-Hookean disc in uniaxial compression, G (1/l^2 - l)", mat.source, sized=stress_binds),
+    limits = [Limit(part, "stress", peak_factor * neo_hookean_stress(G, strain), mat.working_stress, "Pa",
+                    f"Neo-Hookean disc in uniaxial compression, G (1/l^2 - l), times {peak_factor:.4g} (the runs' "
+                    f"peak over it; sized to {RESIZE_AIM:g} of the working stress)", mat.source),
               Limit(part, "strain", strain, mat.working_strain, "-", "its largest compression over its thickness",
                     mat.source, sized=not stress_binds),
               Limit(part, "stored energy per volume", w, neo_hookean_energy(G, strain), "J/m^3",
@@ -207,9 +226,9 @@ def _elastomer(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
               Limit(part, "temperature rise a shot", heat, mat.temperature_rise, "K",
                     "(1 - e^2) M* dv^2 / 2 over its mass times c_p (adiabatic)", mat.source),
               Limit(part, "slenderness", t / d, mat.slenderness, "-", "free height over diameter", mat.source),
-              *_common_limits(iface, mat, mass, force)]
+              *_common_limits(iface, mat, mass, peak_factor * force)]
     return PadDesign(iface.name, mat.name, mat.kind, d, t, mass, strain * t, force, iface.energy, 0.0, duration,
-                     tuple(limits))
+                     tuple(limits), peak_factor)
 
 
 def _metal(iface: Interface, mat: PadMaterial, e: float) -> PadDesign:
@@ -258,13 +277,15 @@ def _steel_faces(iface: Interface, mat: PadMaterial) -> PadDesign:
     return PadDesign(iface.name, mat.name, mat.kind, energy=iface.energy, contact_time=transit, limits=limits)
 
 
-def size_pad(iface: Interface, material: str, restitution: float = 0.0) -> PadDesign:
+def size_pad(iface: Interface, material: str, restitution: float = 0.0, peak_factor: float | None = None
+             ) -> PadDesign:
     """The pad of ``material`` for ``iface`` (module docstring); ``restitution``: the interface's, which
     sets the share of the energy a pad turns into heat (an elastomer) or must absorb (a metal, which
-    returns the rest elastically)."""
+    returns the rest elastically); ``peak_factor``: an elastomer's peak stress in its run over the closed
+    form's (default ``PEAK_FACTOR``, measured; ``RunCache.measure_within_limits`` sets it from the runs)."""
     mat = pad_material(material)
     if mat.kind == "elastomer":
-        return _elastomer(iface, mat, restitution)
+        return _elastomer(iface, mat, restitution, PEAK_FACTOR if peak_factor is None else peak_factor)
     if mat.kind == "yielding metal":
         return _metal(iface, mat, restitution)
     return _steel_faces(iface, mat)
@@ -430,6 +451,61 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
                     note=f"about {work:.2g} cells x steps estimated")
 
 
+def pad_contact_stress(iface: Interface, pad: PadDesign, m: Measured) -> float:
+    """The pad's peak nominal stress in its run [Pa]: the run's peak contact force over the pad's free face
+    (nan where there was no run or no pad)."""
+    if not m.ran or pad.diameter <= 0:
+        return math.nan
+    return m.peak_interface_stress * iface.face_area / (math.pi * pad.diameter ** 2 / 4)
+
+
+def run_peak_factor(iface: Interface, pad: PadDesign, m: Measured) -> float:
+    """The run's peak stress over the closed form's (its quasi-static peak force over the same face)."""
+    return pad_contact_stress(iface, pad, m) / (pad.peak_force / (math.pi * pad.diameter ** 2 / 4))
+
+
+@dataclass
+class Resizing:
+    """An elastomer pad sized, run and resized until its run holds its working stress
+    (``RunCache.measure_within_limits``): each size's peak factor, geometry and run."""
+    steps: list = field(default_factory=list)     # of dict: peak_factor, diameter, thickness, restitution, ...
+    converged: bool = True
+    verdict: str = ""
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+def _step(iface: Interface, pad: PadDesign, m: Measured, working_stress: float) -> dict:
+    stress = pad_contact_stress(iface, pad, m)
+    return {"peak_factor": pad.peak_factor, "diameter": pad.diameter, "thickness": pad.thickness, "mass": pad.mass,
+            "restitution": m.restitution, "run": m.run, "cached": m.cached, "stress_ratio": stress / working_stress,
+            "run_peak_factor": run_peak_factor(iface, pad, m)}
+
+
+def _in_band(step: dict, pad: PadDesign) -> bool:
+    """The run's peak at most the working stress, and above RESIZE_BAND of it unless the strain binds."""
+    strain_binds = any(lim.quantity == "strain" and lim.sized for lim in pad.limits)
+    return step["stress_ratio"] <= 1.0 and (step["stress_ratio"] >= RESIZE_BAND or strain_binds)
+
+
+def _verdict(steps: list[dict], converged: bool) -> str:
+    first, last = steps[0], steps[-1]
+    times = "once" if len(steps) == 2 else f"{len(steps) - 1} times"
+    words = (f"pad resized {times} on its runs: its peak {first['stress_ratio']:.3g} -> "
+             f"{last['stress_ratio']:.3g} of its working stress, {first['thickness'] * 1e3:.4g} -> "
+             f"{last['thickness'] * 1e3:.4g} mm thick" if len(steps) > 1 else
+             f"pad's run at {last['stress_ratio']:.3g} of its working stress")
+    if not converged:
+        words += f" (NOT CONVERGED in {MAX_RESIZES} resizes: the last run's peak stands as its limit)"
+    lo, hi = PEAK_FACTOR_RANGE
+    outside = [s["run_peak_factor"] for s in steps if not lo <= s["run_peak_factor"] <= hi]
+    if outside:
+        words += (f"; the closed form's peak factor {outside[0]:.3g} is outside its range of validity "
+                  f"({lo:g} to {hi:g}): the first size was off by more, the runs corrected it")
+    return words
+
+
 class RunCache:
     """The interfaces run so far: (material, interface rounded, resolution) -> ``Measured``, kept in
     ``folder/pad_runs.json`` beside the runs' directories, so that a design meeting the same interface
@@ -451,13 +527,32 @@ class RunCache:
         geometry = {k: _round(getattr(pad, k)) for k in ("diameter", "thickness", "crown")}
         return json.dumps({"material": pad.material, "resolution": resolution, **d, **geometry}, sort_keys=True)
 
+    def measure_within_limits(self, iface: Interface, material: str, resolution: str = "coarse",
+                              peak_factor: float | None = None) -> tuple[Measured, PadDesign, Resizing]:
+        """``measure``, then an elastomer pad resized on its run while the run's peak stress is outside
+        RESIZE_BAND to 1 of its working stress: the next size at the peak factor the run measured, at most
+        MAX_RESIZES times; the restitution is the final size's run's.  ``peak_factor``: the first size's
+        (default ``PEAK_FACTOR``)."""
+        mat = pad_material(material)
+        m, pad = self.measure(iface, material, resolution, peak_factor=peak_factor)
+        if mat.kind != "elastomer" or not m.ran:
+            return m, pad, Resizing()
+        steps = [_step(iface.rounded(), pad, m, mat.working_stress)]
+        while not _in_band(steps[-1], pad) and len(steps) <= MAX_RESIZES:
+            m, pad = self.measure(iface, material, resolution, peak_factor=steps[-1]["run_peak_factor"])
+            if not m.ran:
+                return m, pad, Resizing(steps, False, f"the resized pad was not run: {m.note}")
+            steps.append(_step(iface.rounded(), pad, m, mat.working_stress))
+        converged = _in_band(steps[-1], pad)
+        return m, pad, Resizing(steps, converged, _verdict(steps, converged))
+
     def measure(self, iface: Interface, material: str, resolution: str = "coarse",
-                restitution: float | None = None) -> tuple[Measured, PadDesign]:
+                restitution: float | None = None, peak_factor: float | None = None) -> tuple[Measured, PadDesign]:
         """The interface's restitution with a pad of ``material`` sized on it at ``restitution`` (default
-        the material's estimate), from the table or from a new run."""
+        the material's estimate) and ``peak_factor`` (``size_pad``), from the table or from a new run."""
         iface = iface.rounded()
         e0 = estimated_restitution(material) if restitution is None else restitution
-        pad = size_pad(iface, material, e0)
+        pad = size_pad(iface, material, e0, peak_factor)
         k = self.key(iface, pad, resolution)
         if k in self.table:
             self.hits += 1
