@@ -59,7 +59,7 @@ GAP = 1e-3
 # mesh resolutions: steel cells across a body's diameter, pad cells through its thickness; ESTIMATE runs
 # nothing and keeps each material's estimate (a study's quickest size: its pads are sized and checked,
 # their restitutions not measured)
-RESOLUTIONS = {"smoke": (4, 2), "coarse": (8, 4), "default": (16, 8)}
+RESOLUTIONS = {"smoke": (4, 2), "coarse": (8, 4), "default": (16, 8), "fine": (32, 16)}
 ESTIMATE = "estimate"
 # an elastomer pad's least height over its diameter: its shape factor d / (4 t) at most 1, where a disc
 # whose faces slide is near uniaxial (the sizing's model); thinner, the faces' friction holds its rim and

@@ -28,6 +28,20 @@ def check(name, reference, result, tolerance, wall, elements, absolute=False):
             "elements": int(elements)}
 
 
+def richardson(coarse: float, medium: float, fine: float, ratio: float = 2.0) -> tuple[float, float]:
+    """The observed order p and Richardson's extrapolation of three results on meshes refined by ``ratio``:
+    p = ln((f1 - f2) / (f2 - f3)) / ln r, f = f3 + (f3 - f2) / (r^p - 1) (Roache, Verification and
+    Validation in Computational Science and Engineering, 1998, ch. 5); (nan, nan) where the differences
+    change sign (not in the asymptotic range: no estimate) or vanish."""
+    d1, d2 = coarse - medium, medium - fine
+    if d1 * d2 <= 0:
+        return float("nan"), float("nan")
+    p = float(np.log(d1 / d2) / np.log(ratio))
+    if p <= 0:                  # the differences do not shrink: diverging, no estimate
+        return p, float("nan")
+    return p, float(fine + (fine - medium) / (ratio ** p - 1))
+
+
 def element_count(solver) -> int:
     """Cells of the solver's mesh over all ranks."""
     return solver.model.num_cells_global
