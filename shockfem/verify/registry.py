@@ -19,7 +19,7 @@ from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .machine_cases import direct_striker, machine_energy, machine_geometry
 from .premise_cases import premise_boundary
-from .pad_cases import pad_bars, pad_johnson, pad_mesh, pad_rigid
+from .pad_cases import pad_1d, pad_bars, pad_johnson, pad_mesh, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
 from .split_cone_cases import cone_friction, cone_push, cone_rebound, shrink_fit
@@ -109,6 +109,7 @@ CASES = {
     "pad_rigid": pad_rigid,
     "pad_johnson": pad_johnson,
     "pad_mesh": pad_mesh,
+    "pad_1d": pad_1d,
     "lsdyna_decks": lsdyna_decks,
     **HARD,
 }
