@@ -8,7 +8,8 @@ limits (``pads.size_pad``); the pad chosen is the one with the highest restituti
 that keep every limit, or, when none does, the elastomer that breaks its limits least (a crushed metal
 disc or bare steel returns too little of the energy for any gain: at e = 0.3, five masses give 2.9 at
 most), carried with its broken limits.  Each chosen interface then runs in finite elements
-(``pads.RunCache``, cached), which gives its restitution (a run past ``pads.MAX_WORK`` is not made: its
+(``pads.RunCache.measure_within_limits``, cached: an elastomer resized on its run until the run's
+own peak stress is within its working stress), which gives its restitution (a run past ``pads.MAX_WORK`` is not made: its
 pad, many times past its slenderness, keeps its material's estimate, ``Stage.measured`` False); the rigid
 chain of those restitutions, every collision
 followed (``amplifier.rigid.run_chain``), gives the gain, the gain the effective e (the one e with
