@@ -81,3 +81,14 @@ def plastic_restitution(dv: float, m_star: float, radius: float, e_star: float, 
     p_m = 3.0 * yield_stress
     a = (4 * radius * 0.5 * m_star * dv * dv / (math.pi * p_m)) ** 0.25
     return math.sqrt(6 * math.pi / 5 * p_m / e_star * radius / a)
+
+
+def thornton_restitution(dv: float, m_star: float, radius: float, e_star: float, yield_stress: float) -> float:
+    """Thornton's restitution of the same impact (J. Appl. Mech. 64 (1997) 383-386): the contact pressure
+    capped at the Hertz onset's p_y = 1.6 Y on loading, a Hertzian unloading; with x = V_y / dv (V_y the
+    onset's speed, ``hertz_yield_speed``), e = (6 sqrt(3) / 5)^(1/2) (1 - x^2 / 6)^(1/2)
+    (x / (x + 2 (6/5 - x^2 / 5)^(1/2)))^(1/4).  Capping the pressure at the onset's, below the fully
+    plastic 2.8 to 3 Y, it lets the contact grow wider and so returns less than Johnson's estimate."""
+    x = hertz_yield_speed(m_star, radius, e_star, yield_stress) / dv
+    return math.sqrt(6 * math.sqrt(3) / 5) * math.sqrt(1 - x * x / 6) * (
+        x / (x + 2 * math.sqrt(6 / 5 - x * x / 5))) ** 0.25

@@ -25,7 +25,7 @@ from dataclasses import replace
 
 from ..amplifier import rigid
 from ..amplifier.bars import Bar, Interface as BarInterface, run_bars
-from ..amplifier.interfaces import plastic_restitution
+from ..amplifier.interfaces import plastic_restitution, thornton_restitution
 from ..machine.pad_materials import pad_material
 from ..machine.pads import (DAMPING_BAND, STRUCTURAL_DAMPING, Interface, RunCache, measure_restitution, parted,
                             size_pad)
@@ -137,6 +137,9 @@ def pad_johnson(size, workdir):
         # unloading of the truncated sphere.  A yield stress off by 2 moves e by 54%, no plasticity to about 1
         johnson = plastic_restitution(v, m, radius, e_star, material["yield_stress"])
         out.append(check(f"pad_johnson.V={v:g}.restitution [-]", johnson, e, 0.20, s["wall_time_s"], s["elements"]))
+        thornton = thornton_restitution(v, m, radius, e_star, material["yield_stress"])
+        out[-1]["note"] = (f"Johnson's fully plastic estimate {johnson:.4f} (an upper estimate: p_m = 3 Y throughout), "
+                           f"Thornton's model {thornton:.4f} (pressure capped at 1.6 Y: a lower one), the run {e:.4f}")
     slope = math.log(runs[10.0][0] / runs[5.0][0]) / math.log(2.0)
     # 0.05 on the exponent -1/4: between 5 and 10 m/s the elastic share of the loading (V_y / V)^(1/2) is
     # about 8%, which moves the local exponent by a few hundredths

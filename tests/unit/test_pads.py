@@ -148,3 +148,16 @@ def test_estimate_resolution_runs_nothing(tmp_path):
     m, pad = RunCache(str(tmp_path)).measure(SMALL, "pu_95a", "estimate")
     assert not m.ran and m.restitution == pytest.approx(math.sqrt(0.40), rel=1e-12)
     assert "estimate" in m.note and list(tmp_path.iterdir()) == [tmp_path / "pad_runs.json"]
+
+
+def test_thorntons_restitution_is_one_at_the_yield_onset_and_below_johnsons_above_it():
+    """Thornton's form at dv = V_y: (6 sqrt(3) / 5)^(1/2) (5/6)^(1/2) (1/3)^(1/4) = 1 exactly (an elastic
+    impact); far above it, below Johnson's estimate (pressure capped at 1.6 Y, not 3 Y) and going as
+    V^(-1/4) (x -> 0)."""
+    from shockfem.amplifier.interfaces import hertz_yield_speed, plastic_restitution, thornton_restitution
+    m, R, E_star, Y = 0.0329, 0.01, 2.3e11, 1e9
+    v_y = hertz_yield_speed(m, R, E_star, Y)
+    assert thornton_restitution(v_y, m, R, E_star, Y) == pytest.approx(1.0, rel=1e-12)
+    far = [thornton_restitution(k * v_y, m, R, E_star, Y) for k in (1e4, 2e4)]
+    assert far[1] / far[0] == pytest.approx(2 ** -0.25, rel=1e-4)
+    assert far[0] < plastic_restitution(1e4 * v_y, m, R, E_star, Y)
