@@ -47,6 +47,8 @@ def summary_lines(m: Machine) -> list[str]:
     lines.append("  stops: " + "; ".join(f"{st.body} {st.kind} {st.stroke:.3g} m stroke, {st.length:.3g} m long, "
                                          f"{st.force / 1e6:.3g} MN" for st in m.layout.stops))
     lines += [f"  binds: {b}" for b in m.binding]
+    # each pad's run, resizing and range of validity (``pads.Resizing.verdict``)
+    lines += [f"  pad {st.pair}: {st.note}" for st in a.stages if st.note]
     lines += [f"  PROBLEM: {p}" for p in m.problems]
     lines.append(f"  {verdict_line(m.limits)}")
     return lines
@@ -87,6 +89,7 @@ def markdown(m: Machine) -> str:
                        f"{st.run_wall_time_s:.3g}" if st.measured else "-",
                        "; ".join(f"{lim.quantity} {lim.ratio:.3g}x" for lim in st.limits if not lim.holds) or "none"]
                       for st, gap in zip(a.stages, a.gaps)])]
+    parts += [""] + [f"- {st.pair}: {st.note}" for st in a.stages if st.note]
     parts += ["", "Pad limits (each stage):", "",
               _table(["part", "quantity", "value", "limit", "unit", "ratio", "basis", "source"],
                      [[lim.component, lim.quantity, f"{lim.value:.4g}", f"{lim.limit:.4g}", lim.unit,

@@ -161,3 +161,15 @@ def test_thorntons_restitution_is_one_at_the_yield_onset_and_below_johnsons_abov
     far = [thornton_restitution(k * v_y, m, R, E_star, Y) for k in (1e4, 2e4)]
     assert far[1] / far[0] == pytest.approx(2 ** -0.25, rel=1e-4)
     assert far[0] < plastic_restitution(1e4 * v_y, m, R, E_star, Y)
+
+
+def test_the_sizing_says_where_it_leaves_its_range():
+    """A pad as wide as the face (the 12 lb machine's first interface) is past FACE_SHARE_RANGE, where the
+    runs read 1.4 to 5.6 times the closed form; the small interface's pad (a quarter as thick as it is wide,
+    narrower than the face) is inside it; a metal disc carries no such range."""
+    from shockfem.machine.pads import FACE_SHARE_RANGE, sizing_range
+    wide = size_pad(FIRST, "pu_95a", 0.6)
+    assert wide.diameter / FIRST.face_diameter > FACE_SHARE_RANGE and "outside its range" in sizing_range(FIRST, wide)
+    small = size_pad(SMALL, "pu_90a", 0.67)
+    assert small.diameter / SMALL.face_diameter <= FACE_SHARE_RANGE and sizing_range(SMALL, small) == ""
+    assert sizing_range(FIRST, size_pad(FIRST, "copper_annealed", 0.1)) == ""
