@@ -160,6 +160,19 @@ MESH_LEVELS = {"coarse": ("smoke", "coarse", "default"), "default": ("smoke", "c
                "fine": ("smoke", "coarse", "default", "fine")}
 
 
+def _mesh_study_pad():
+    """``MESH_STUDY``'s interface (rounded, as the pads module runs it) and its pad sized at its working point."""
+    from ..amplifier.gain import cylinder_size
+    from ..machine.pads import estimated_restitution
+    from ..scene.library import initial_yield_stress
+    rho = property_si(STEEL, "density", "density")
+    (m_a, m_b), v, name = MESH_STUDY["masses"], MESH_STUDY["speed"], MESH_STUDY["material"]
+    a, b = cylinder_size(m_a, rho, 1.0), cylinder_size(m_b, rho, 1.0)
+    iface = Interface("a_b", m_a, a["diameter"], a["length"], m_b, b["diameter"], b["length"], v, STEEL,
+                      initial_yield_stress(STEEL) / 1.5).rounded()
+    return iface, size_pad(iface, name, estimated_restitution(name))
+
+
 def _convergence(order: float, estimate: float) -> str:
     """Three meshes' convergence in words (``checks.richardson``)."""
     if math.isfinite(estimate):
@@ -174,17 +187,11 @@ def pad_mesh(size, workdir):
     smoke mesh): the restitution's observed order and Richardson estimate, the design's mesh against it,
     and the peak contact stress over the pad's face, whose spread over the meshes the resizing's band
     must hold."""
-    from ..amplifier.gain import cylinder_size
-    from ..machine.pads import RESIZE_BAND, estimated_restitution, pad_contact_stress
-    from ..scene.library import initial_yield_stress
+    from ..machine.pads import RESIZE_BAND, pad_contact_stress
     from .checks import richardson
-    rho = property_si(STEEL, "density", "density")
-    (m_a, m_b), v, name = MESH_STUDY["masses"], MESH_STUDY["speed"], MESH_STUDY["material"]
-    a, b = cylinder_size(m_a, rho, 1.0), cylinder_size(m_b, rho, 1.0)
-    iface = Interface("a_b", m_a, a["diameter"], a["length"], m_b, b["diameter"], b["length"], v, STEEL,
-                      initial_yield_stress(STEEL) / 1.5).rounded()
     # one pad at every mesh: the geometry fixed, only the cells change
-    pad = size_pad(iface, name, estimated_restitution(name))
+    iface, pad = _mesh_study_pad()
+    name = MESH_STUDY["material"]
     working = pad_material(name).working_stress
     runs = {r: measure_restitution(iface, pad, os.path.join(workdir, f"pad_mesh_{r}"), r) for r in MESH_LEVELS[size]}
     levels = MESH_LEVELS[size][-3:]
@@ -218,17 +225,11 @@ def pad_1d(size, workdir):
     mass and waves, linear elastic in uniaxial stress, its hysteresis a Kelvin-Voigt dashpot of its damping
     ratio at its contact's frequency; kinematic contact), against the axisymmetric run (Neo-Hookean, the
     hysteresis as a band of Maxwell terms, penalty contact, the pad free to bulge)."""
-    from ..amplifier.gain import cylinder_size
-    from ..machine.pads import estimated_restitution, interface_scene
-    from ..scene.library import initial_yield_stress
+    from ..machine.pads import interface_scene
     rho = property_si(STEEL, "density", "density")
     E = property_si(STEEL, "youngs_modulus", "pressure")
-    (m_a, m_b), v, name = MESH_STUDY["masses"], MESH_STUDY["speed"], MESH_STUDY["material"]
-    a, b = cylinder_size(m_a, rho, 1.0), cylinder_size(m_b, rho, 1.0)
-    iface = Interface("a_b", m_a, a["diameter"], a["length"], m_b, b["diameter"], b["length"], v, STEEL,
-                      initial_yield_stress(STEEL) / 1.5).rounded()
-    pad = size_pad(iface, name, estimated_restitution(name))
-    mat = pad_material(name)
+    iface, pad = _mesh_study_pad()
+    v, mat = iface.speed, pad_material(MESH_STUDY["material"])
     resolution = {"coarse": "coarse", "default": "default", "fine": "default"}[size]
     fe = measure_restitution(iface, pad, os.path.join(workdir, "pad_1d"), resolution)
     raw = interface_scene(iface, pad, resolution)
