@@ -19,8 +19,9 @@ Each loss is a switch, so a user sees what it costs:
   projectile moves as if its mass were m + C/3, C the barrel gas mass, and the gas carries
   kinetic energy C v^2 / 6), or ``"simple-wave"`` (an infinitely long chamber of the bore's
   section at the reservoir's initial state: base pressure
-  p0 [1 - (g - 1) v / (2 c0)]^(2g/(g-1)), the gas-dynamic bound of any gun with that gas,
-  whose limit speed is 2 c0 / (g - 1)).  Lagrange counts all the gas behind the projectile:
+  p0 [1 - (g - 1) v / (2 c0)]^(2g/(g-1)), the constant-area gun, whose limit speed is
+  2 c0 / (g - 1); not a bound on a gun whose chamber is wider than its bore: ``simple_wave``'s
+  infinitely chambered gun is).  Lagrange counts all the gas behind the projectile:
   the barrel's with a valve, the whole chamber's without one, so a chamber much longer than
   the barrel (or of a wider section) makes it too heavy; use a valve there.
 

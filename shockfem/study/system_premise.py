@@ -141,15 +141,18 @@ def damping(rep: Report, m, out_dir: str):
 
 ARRANGEMENT_HEADER = ["arrangement", "launched [kg]", "launch speed [m/s]", "launch energy [MJ]", "striker [kg]",
                       "striker speed [m/s]", "bore [in]", "barrel [ft]", "reservoir [psi]", "reservoir [m^3]",
-                      "gas stored, p0 V0 / (gamma - 1) from vacuum [MJ]", "gun [kg]", "machine [kg]", "length [m]",
-                      "gun reaches it", "notes"]
+                      "gas stored, p0 V0 / (gamma - 1) from vacuum [MJ]", "its TNT equivalent [t]", "tank [kg]",
+                      "gun [kg]", "machine [kg]", "length [m]", "gun reaches it", "notes"]
 ARRANGEMENT_FORMATS = ["{}", "{:,.4g}", "{:.1f}", "{:.4g}", "{:.4g}", "{:.1f}", "{:.3g}", "{:.3g}", "{:,.0f}",
-                       "{:.3g}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}"]
+                       "{:.3g}", "{:.4g}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}"]
+# the energy of a tonne of TNT by definition (4.184 GJ): the stored gas as a siting hazard's yardstick
+TNT_TONNE = 4.184e9
 
 
 def _arrangement_row(x) -> list:
     return [x.name, x.launched_mass, x.launch_speed, x.launch_energy / 1e6, x.striker_mass, x.striker_speed,
-            x.bore / IN, x.barrel / FT, x.reservoir_pressure / PSI, x.reservoir_volume, x.stored / 1e6, x.gun_mass,
+            x.bore / IN, x.barrel / FT, x.reservoir_pressure / PSI, x.reservoir_volume, x.stored / 1e6,
+            x.stored / TNT_TONNE, x.tank_mass, x.gun_mass,
             x.machine_mass, x.machine_length, "yes" if x.gun_feasible else "NO", "; ".join(x.notes)]
 
 

@@ -107,13 +107,21 @@ def test_verdict_wording():
     b0 = _arrangement("(b0) direct striker, massless sabot", 430.0, 430.0, True)
     c = _arrangement("(c) flying target", math.nan, math.nan, False)
     remedies = {"limits": {"barrel": 20 * FT, "bore": 36 * IN, "pressure": 5000 * PSI}, "launched": 500.0, "constant_pressure_barrel": 3.0, "constant_pressure_speed": 600.0,
-                "air": {"barrel": 12.0, "speed": 390.0}, "helium": {"barrel": 7.0, "speed": 460.0}}
+                "air": {"barrel": 12.0, "speed": 390.0, "chambered_barrel": 8.0, "chambered_speed": 415.0},
+                "helium": {"barrel": 7.0, "speed": 460.0, "chambered_barrel": 5.0, "chambered_speed": 520.0}}
     words = verdict(a, b, c, b0, None, remedies)
     assert "NEITHER arrangement is feasible within the limits (20 ft, 36 in, 5,000 psi)" in words
     assert "not a machine" in words
     assert "better machine" not in words and "does not pay" not in words
     assert f"{12.0 / FT:.3g} ft in air" in words and f"{7.0 / FT:.3g} ft in helium" in words
     assert "387 of the 430 m/s" in words
+    assert "infinitely chambered gun 415 m/s in air" in words
     # a feasible direct gun against an infeasible amplifier: amplification does not pay, on (b), not on (b0)
-    b.gun_feasible = True
+    b.gun_feasible = b.feasible = True
     assert "amplification does not pay" in verdict(a, b, c, b0)
+    # the fixture every arrangement carries, when it breaks its limits, is said to be common to them all
+    a.fixture_problems = ["its column's pulse is outside the band (worst excess 0.249 of the peak)"]
+    assert "every arrangement carries the same fixture" in verdict(a, b, c, b0)
+    # (b) whose sabot's stop breaks a limit is no feasible direct machine
+    b.feasible = False
+    assert "amplification does not pay" not in verdict(a, b, c, b0)
