@@ -78,16 +78,22 @@ def _integral(u: float, c0: float, gamma: float, chambered: bool = False) -> flo
 
 
 def _chambered_integral(u: float, c0: float, gamma: float) -> float:
-    """I(u) of the infinitely chambered gun by quadrature: in two pieces split at u*; inf past the escape
-    speed."""
+    """I(u) of the infinitely chambered gun: by quadrature up to u* (a smooth integrand there), then the
+    simple wave from the sonic state in closed form, int_u*^u s / pi ds = (I_c*(u - u*) + u* J(u - u*)) / p*,
+    I_c* the simple-wave integral with c0 = c* and J(x) = int_0^x w^(-k) ds = (w^(1 - k) - 1) / (a (k - 1)),
+    w = 1 - a x; inf past the escape speed."""
     star = sonic_speed(c0, gamma)
     if u >= escape_speed(c0, gamma, True):
         return math.inf
-
-    def f(s):
-        return s / chambered_pressure_ratio(s, c0, gamma)
-    low = quad(f, 0.0, min(u, star), epsabs=0.0, epsrel=1e-10, limit=200)[0]
-    return low + (quad(f, star, u, epsabs=0.0, epsrel=1e-10, limit=200)[0] if u > star else 0.0)
+    low = quad(lambda s: s / chambered_pressure_ratio(s, c0, gamma), 0.0, min(u, star), epsabs=0.0,
+               epsrel=1e-12)[0]
+    if u <= star:
+        return low
+    x = u - star
+    a, k = (gamma - 1) / (2 * star), 2 * gamma / (gamma - 1)
+    J = math.expm1((1 - k) * math.log1p(-a * x)) / (a * (k - 1))
+    p_star = (2 / (gamma + 1)) ** (gamma / (gamma - 1))
+    return low + (_integral(x, star, gamma) + star * J) / p_star
 
 
 def escape_speed(c0: float, gamma: float, chambered: bool = False) -> float:

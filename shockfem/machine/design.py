@@ -28,7 +28,7 @@ from .fixture import Fixture, design_fixture
 from ..launcher.vessel import max_pressure
 from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher
 from .layout import GUIDES_PER_BODY, Layout, frame_force, place, rail_section, shoe_length
-from .limits import Limit, broken
+from .limits import Limit, broken, model_range
 from .spec import REFERENCE_ARTICLE, MachineSpec
 from .stops import OIL_TEMPERATURE_RISE
 
@@ -190,7 +190,7 @@ def stored_gas_limits(launcher: Launcher) -> list[Limit]:
     material = LAUNCHER_SIZING.tank_material
     return [Limit("launcher tank", "reservoir pressure within the head rule's range",
                   launcher.design.gun.reservoir_pressure, max_pressure(material, LAUNCHER_SIZING.joint_efficiency),
-                  "Pa", f"the reservoir's pressure; {material} hemispherical heads", "ASME VIII-1 UG-32(f): "
+                  "Pa", f"the reservoir's pressure; {material} hemispherical heads", "ASME VIII-1 UG-32(f)'s range: "
                   "P <= 0.665 S E")]
 
 
@@ -309,7 +309,8 @@ def _binding(spec, fixture, amp, launcher, layout, limits: list[Limit]) -> tuple
         problems.append(f"amplifier: {amp.reason}")
     for lim in broken(limits):
         problems.append(f"{lim.component}: {lim.quantity} {lim.value:.4g} {lim.unit} against {lim.limit:.4g} "
-                        f"{lim.unit}, over by {100 * (lim.ratio - 1):.0f}% ({lim.source})")
+                        f"{lim.unit}, over by {100 * (lim.ratio - 1):.0f}% ({lim.source})"
+                        + (": a model outside its range, a finer model must check the part" if model_range(lim) else ""))
     longest = max((i for i in layout.items if i.kind not in ("frame", "rail")), key=lambda i: i.length)
     binding.append(f"length: the longest part is the {longest.name} ({longest.length:.3g} m of the "
                    f"{layout.overall_length:.3g} m)")

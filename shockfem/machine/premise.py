@@ -61,6 +61,7 @@ from .fixture import bore_radius, design_fixture
 from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import RING_CLEARANCE, Layout, place, ring_area
+from .pad_materials import PAD_MATERIALS
 from .limits import broken, cause
 from .stops import design_stop
 from .spec import MachineSpec
@@ -334,7 +335,61 @@ def closed_form(m: Machine) -> dict:
             "break_even_air_against_helium": break_even(V, "air", "helium"),
             # both guns as the infinitely chambered gun (the bound the simple-wave gun is not)
             "break_even_chambered": {"air": break_even(V, "air", chambered=True)},
-            "best_pad": pad, "best_pad_restitution": e_pad}
+            "best_pad": pad, "best_pad_restitution": e_pad, "scale_free": scale_free(m)}
+
+
+# the restitutions the pads' finite-element runs measured at the 12 lb chain's first interface (4,773 kg on
+# 1,600 kg closing at 99 m/s: `python scripts/pad-interface.py --run OUT 4772.5 0.914 0.926 1599.6 0.638 0.638
+# 99.06`, docs/machine.md's Pads): polyurethane's highest and lowest, and flat steel faces
+MEASURED_RESTITUTIONS = {"polyurethane, the best run": 0.49, "polyurethane, the worst run": 0.46,
+                         "flat steel faces": 0.29}
+
+
+def elastic_limit_speeds(spec: MachineSpec) -> dict:
+    """The closing speed v* = sigma / sqrt(rho E) [m/s] up to which a solid returns an interface's energy
+    elastically at its working (or yield) stress sigma, for the spec's steel at its allowable and every pad
+    material of the library: a pad that holds M* dv^2 / 2 at sigma stores sigma^2 / (2 E) per volume, so its
+    mass over the struck body's is (dv / v*)^2 m_a / (m_a + m_b), whatever the bodies' size (the pads' first
+    check, ``amplifier.pad_bound``, is this law for each material; v* is also the flat bar-on-bar impact's
+    yield particle velocity)."""
+    rho, E = property_si(spec.material, "density", "density"), property_si(spec.material, "youngs_modulus", "pressure")
+    out = {spec.material: initial_yield_stress(spec.material) / spec.safety_factor / math.sqrt(rho * E)}
+    for name, pm in PAD_MATERIALS.items():
+        sigma = max(pm.working_stress, pm.yield_stress)
+        if pm.density > 0 and pm.youngs_modulus > 0 and sigma > 0:
+            out[name] = sigma / math.sqrt(pm.density * pm.youngs_modulus)
+    return out
+
+
+def scale_free(m: Machine) -> dict:
+    """Why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last
+    interface closes at V_s / g >= V_s / 2 (g the stage gain), far above the speed v* to which any solid returns
+    the energy elastically (``elastic_limit_speeds``); and the first mass at the restitutions the pads' runs
+    measured (``MEASURED_RESTITUTIONS``; None where no chain of the spec's masses gains enough)."""
+    s, V = m.spec, m.fixture.striker_speed
+    g = (V / s.launch_speed) ** (1 / (s.masses - 1))
+    speeds = elastic_limit_speeds(s)
+    best = max(speeds, key=speeds.get)
+    first = {}
+    for label, e in MEASURED_RESTITUTIONS.items():
+        d = gain_design(s.architecture, m.fixture.striker_mass, V, s.launch_speed, e, s.masses)
+        first[label] = {"restitution": e, "first_mass": d.masses[0] if d.feasible else None}
+    return {"stage_gain": g, "last_closing_speed": V / g, "half_striker_speed": V / 2,
+            "elastic_limit_speeds": speeds, "best_solid": best, "best_elastic_limit_speed": speeds[best],
+            "first_mass_at_measured": first}
+
+
+def _scale_free_words(k: dict) -> str:
+    firsts = "; ".join(f"{label} ({x['restitution']:.2f}): " + (f"{x['first_mass'] / 1e3:,.3g} t" if x["first_mass"]
+                                                                 else "no chain of these masses gains enough")
+                       for label, x in k["first_mass_at_measured"].items())
+    return (f"why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last "
+            f"interface closes at V_s / g = {k['last_closing_speed']:.0f} m/s (at least V_s / 2 = "
+            f"{k['half_striker_speed']:.0f} m/s at any e and any number of masses), while the best solid of the "
+            f"library ({k['best_solid']}) returns an interface's energy elastically only up to v* = sigma / "
+            f"sqrt(rho E) = {k['best_elastic_limit_speed']:.0f} m/s, whatever the fixture, the striker's mass or "
+            f"the number of masses: every interface is past its elastic limit, and the chain's e is the estimate "
+            f"of a slow rebound test; at the restitutions the pads' runs measured the first mass would be: {firsts}")
 
 
 def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: float) -> dict:
@@ -443,6 +498,8 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
     sabot, the direct gun's lower bound, never a machine; ``closed``: ``closed_form``; ``remedies``:
     ``direct_remedies``)."""
     words = [_energies(a, b, bound)] + _feasibility(a, b, bound, remedies)
+    if closed and closed.get("scale_free"):
+        words.append(_scale_free_words(closed["scale_free"]))
     if a.fixture_problems:
         words.append("every arrangement carries the same fixture, and it is not within its own limits ("
                      + "; ".join(a.fixture_problems) + "): no arrangement is a feasible machine until the fixture "
