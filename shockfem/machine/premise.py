@@ -380,7 +380,7 @@ def scale_free(m: Machine) -> dict:
 
 
 def _scale_free_words(k: dict) -> str:
-    firsts = "; ".join(f"{label} ({x['restitution']:.2f}): " + (f"{x['first_mass'] / 1e3:,.3g} t" if x["first_mass"]
+    firsts = "; ".join(f"{label} ({x['restitution']:.2f}): " + (f"{x['first_mass'] / 1e3:,.0f} t" if x["first_mass"]
                                                                  else "no chain of these masses gains enough")
                        for label, x in k["first_mass_at_measured"].items())
     return (f"why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last "
