@@ -185,3 +185,19 @@ def test_elastic_limit_speeds_and_the_scale_free_bound():
     v = elastic_limit_speeds(read_spec({"article": "12 lb"}))
     assert v["high_strength_steel"] == pytest.approx(460e6 / math.sqrt(7850 * 200e9), rel=0.03)
     assert max(v.values()) < 100.0 and v["pu_60d"] == pytest.approx(59.4, rel=0.01)
+
+
+def test_sabot_stop_takes_the_sabots_energy():
+    """The sabot's stop absorbs its kinetic energy at the muzzle, m v^2 / 2 (to round-off), at a force within the
+    gun's thrust (the frame carries no more) and its inertia's rho L a at most the aluminium's allowable."""
+    from types import SimpleNamespace
+    from shockfem.machine.premise import SABOT_MATERIAL, SABOT_SAFETY, sabot_stop
+    from shockfem.machine.spec import read_spec
+    from shockfem.scene.library import initial_yield_stress
+    gun = SimpleNamespace(bore=0.9144)
+    launcher = SimpleNamespace(design=SimpleNamespace(gun=gun, muzzle_velocity=412.2, peak_acceleration=2e4),
+                               projectile_mass=726.4)
+    stop = sabot_stop(read_spec({"article": "12 lb"}), launcher, 227.7, 0.258)
+    assert stop.energy == pytest.approx(0.5 * 227.7 * 412.2 ** 2, rel=1e-12)
+    assert stop.force <= 726.4 * 2e4 * (1 + 1e-12)
+    assert stop.stress <= initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY * (1 + 1e-9)
