@@ -37,7 +37,8 @@ from .stops import OIL_TEMPERATURE_RISE
 # are sectioned and joined on site, and the tank's volume may be a bank of vessels piped together (the same
 # steel for the same p V), so none of them is a single part
 TRANSPORT = {"length": 13.6, "width": 2.55, "mass": 24e3}
-TRANSPORT_SOURCE = "Council Directive 96/53/EC; a 13.6 m semi-trailer deck, about 24 t payload"
+TRANSPORT_SOURCE = ("Council Directive 96/53/EC (2.55 m wide, 40 t gross); the 13.6 m deck and about 24 t of "
+                    "payload derived from a standard semi-trailer, not set by the Directive")
 SECTIONED = ("frame", "rail", "tank")
 # the launcher and the slug's chain are designed in turn until the gun fires the chain's first mass (to
 # this share of it)
