@@ -23,6 +23,7 @@ import math
 import time
 import warnings
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 from scipy.optimize import minimize
@@ -100,6 +101,13 @@ class LauncherDesign:
         return d
 
 
+class ShotFigures(NamedTuple):
+    """What the design reads of a shot (``gun.Shot``'s fields of the same names)."""
+    muzzle_velocity: float        # [m/s]
+    peak_acceleration: float      # [m/s^2]
+    efficiency: float             # [-]
+
+
 def weights(gun: Gun, sizing: Sizing) -> tuple[float, float]:
     """(barrel, tank) weight [kg] of a gun by the ASME rules at its reservoir pressure."""
     P = gun.reservoir_pressure
@@ -131,12 +139,16 @@ def lightest_launcher(template: Gun, velocity: float, limits: Limits, sizing: Si
     ratio = valve_ratio_of(template)
     lo = np.log([b[0] for b in limits.bounds()])
     hi = np.log([b[1] for b in limits.bounds()])
+    # a shot's two numbers the constraints read, by its design variables (SLSQP asks the same point for the
+    # objective and each constraint, and its finite differences again): the shot itself, with its sampled
+    # history, is not kept, so the cache holds about 100 bytes a point, not the 9 kB of a shot
     cache: dict = {}
 
     def shot(z):
         key = tuple(np.round(z, 12))
         if key not in cache:
-            cache[key] = fire(_with(template, ratio, np.exp(z)), rtol=1e-9, samples=120)
+            s = fire(_with(template, ratio, np.exp(z)), rtol=1e-9, samples=120)
+            cache[key] = ShotFigures(s.muzzle_velocity, s.peak_acceleration, s.efficiency)
         return cache[key]
 
     def weight(z):

@@ -19,8 +19,10 @@ Each loss is a switch, so a user sees what it costs:
   projectile moves as if its mass were m + C/3, C the barrel gas mass, and the gas carries
   kinetic energy C v^2 / 6), or ``"simple-wave"`` (an infinitely long chamber of the bore's
   section at the reservoir's initial state: base pressure
-  p0 [1 - (g - 1) v / (2 c0)]^(2g/(g-1)), the gas-dynamic bound of any gun with that gas,
-  whose limit speed is 2 c0 / (g - 1)).  Lagrange counts all the gas behind the projectile:
+  p0 [1 - (g - 1) v / (2 c0)]^(2g/(g-1)), the constant-area gun, whose limit speed is
+  2 c0 / (g - 1); not a bound on a gun whose chamber is wider than its bore: ``simple_wave``'s
+  infinitely chambered gun is), or ``"chambered"`` (that gun's base pressure: an infinitely large
+  chamber at the reservoir's initial state, ``simple_wave.chambered_pressure_ratio``).  Lagrange counts all the gas behind the projectile:
   the barrel's with a valve, the whole chamber's without one, so a chamber much longer than
   the barrel (or of a wider section) makes it too heavy; use a valve there.
 
@@ -38,9 +40,9 @@ from scipy.integrate import solve_ivp
 
 from ..units import FT, IN, PSI
 from .gas import GASES, Gas, orifice_flow
-from .simple_wave import base_pressure_ratio
+from .simple_wave import base_pressure_ratio, chambered_pressure_ratio
 
-GAS_INERTIA = ("none", "lagrange", "simple-wave")
+GAS_INERTIA = ("none", "lagrange", "simple-wave", "chambered")
 # LSODA: explicit (Adams) while the shot is non-stiff, implicit (BDF) where it turns stiff, which
 # is when a small reservoir equalises with a large barrel through a big valve: the linearised
 # orifice flow there has a time constant of microseconds, and DOP853 took 9.4 s (LSODA 0.13 s)
@@ -126,7 +128,8 @@ def describe(gun: Gun) -> str:
                  f"valve Cd A = {gun.discharge_coefficient:g} x {gun.valve_area:.4g} m^2 opening in "
                  f"{gun.opening_time:.3g} s")
     parts.append({"none": "massless gas", "lagrange": "Lagrange gas inertia",
-                  "simple-wave": "simple-wave base pressure (infinite chamber)"}[gun.gas_inertia])
+                  "simple-wave": "simple-wave base pressure (infinite chamber)",
+                  "chambered": "infinitely chambered base pressure"}[gun.gas_inertia])
     parts.append("evacuated barrel" if gun.air_ahead == "evacuated" else "shock in the air ahead")
     if gun.bore_friction or gun.seal_drag:
         parts.append(f"bore friction {gun.bore_friction:g} N, seal drag {gun.seal_drag:g} of the base force")
@@ -190,7 +193,9 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     # a valve that opens faster than the integrator can resolve on the shot's time scale opens at once: its
     # opening, a piece of its own, would leave the integrator a step with t + h = t, and no way out
     t_open = gun.opening_time if gun.opening_time > INSTANT_OPENING * max_time else 0.0
-    simple = gun.gas_inertia == "simple-wave"
+    # the ideal guns' base-pressure laws of the chamber's initial state (``simple_wave``)
+    simple = gun.gas_inertia in ("simple-wave", "chambered")
+    law = chambered_pressure_ratio if gun.gas_inertia == "chambered" else base_pressure_ratio
     lagrange = gun.gas_inertia == "lagrange"
 
     def state(y, t):
@@ -210,7 +215,7 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
                 mdot = -orifice_flow(gas, a_eff, p_b, T_b, p_r)
                 h = gas.cp * T_b
         if simple:
-            p_base = pr0 * base_pressure_ratio(v, c0, gas.gamma)
+            p_base = pr0 * law(v, c0, gas.gamma)
             p_mean, m_eff = p_base, gun.projectile_mass
         elif lagrange:
             m_eff = gun.projectile_mass + m_b / 3

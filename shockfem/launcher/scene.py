@@ -14,7 +14,7 @@
     air_ahead = "atmosphere"         # or evacuated
     bore_friction = "500 lbf"
     seal_drag = 0.01
-    gas_inertia = "lagrange"         # none | lagrange | simple-wave
+    gas_inertia = "lagrange"         # none | lagrange | simple-wave | chambered
     barrel_material = "SA-106-B"     # ASME sizing of the barrel and the tank
     tank_material = "SA-516-70"
     tank_diameter = "24 in"          # or tank_aspect = 3 (overall length / diameter)

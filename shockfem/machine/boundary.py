@@ -4,8 +4,10 @@ striker directly?
 Both machines give the same striker (mass M, speed V_s) its kinetic energy K = M V_s^2 / 2.
 
 * The direct gun fires the striker: its size at the reservoir pressure p0 is p0 A L = K / eta(V_s),
-  eta the simple-wave gun's efficiency at its muzzle speed (``launcher.simple_wave.efficiency``, an upper
-  bound on any gun of that gas: the ratio of two bounds, both guns at the same pressure).
+  eta an ideal gun's efficiency at its muzzle speed (``launcher.simple_wave.efficiency``): the
+  constant-area (unchambered, simple-wave) gun by default, or with ``chambered`` the infinitely chambered
+  gun, the upper bound on any gun of that gas; both guns of one comparison by the same law, at the same
+  pressure.
 * The amplifier's gun fires its first mass at V = V_s / G and the chain of n geometric masses keeps
   chi = G^2 m_n / m_1 of that energy (``amplifier.gain.chain_efficiency``): its gun is
   p0 A L = K / (chi(e, G, n) eta(V)).
@@ -63,25 +65,26 @@ class Chain:
         return asdict(self)
 
 
-def gun_efficiency(speed: float, gas: str) -> float:
-    """The simple-wave gun's kinetic energy over p0 A L at its muzzle ``speed`` [m/s], in ``gas``."""
+def gun_efficiency(speed: float, gas: str, chambered: bool = False) -> float:
+    """The ideal gun's kinetic energy over p0 A L at its muzzle ``speed`` [m/s], in ``gas`` (the simple-wave
+    gun, or the infinitely chambered one)."""
     g = GASES[gas]
-    return efficiency(speed, g.sound_speed(1e5, TEMPERATURE), g.gamma)
+    return efficiency(speed, g.sound_speed(1e5, TEMPERATURE), g.gamma, chambered)
 
 
 def gun_ratio(e: float, striker_speed: float, gain: float, masses: int, gas: str = "air",
-              direct_gas: str | None = None) -> float:
+              direct_gas: str | None = None, chambered: bool = False) -> float:
     """Q (module docstring): the amplifier's gun over the direct gun's; inf where no chain of ``masses``
     gains ``gain`` at ``e``."""
     chi = chain_efficiency(e, gain, masses)
     if chi <= 0:
         return math.inf
-    direct = gun_efficiency(striker_speed, direct_gas or gas)
-    return direct / (chi * gun_efficiency(striker_speed / gain, gas))
+    direct = gun_efficiency(striker_speed, direct_gas or gas, chambered)
+    return direct / (chi * gun_efficiency(striker_speed / gain, gas, chambered))
 
 
 def best_chain(e: float, striker_speed: float, gas: str = "air", direct_gas: str | None = None,
-               max_masses: int = MAX_MASSES) -> Chain:
+               max_masses: int = MAX_MASSES, chambered: bool = False) -> Chain:
     """The launch speed and mass count that minimise Q (a grid in log gain, refined by a bounded search
     between the grid's neighbours of its best)."""
     best = None
@@ -89,7 +92,7 @@ def best_chain(e: float, striker_speed: float, gas: str = "air", direct_gas: str
         top = math.log((1 + e) ** (n - 1)) * (1 - 1e-9)
 
         def q(x, n=n):
-            return gun_ratio(e, striker_speed, math.exp(x), n, gas, direct_gas)
+            return gun_ratio(e, striker_speed, math.exp(x), n, gas, direct_gas, chambered)
         xs = np.linspace(top / GRID, top, GRID)
         values = [q(x) for x in xs]
         i = int(np.argmin(values))
@@ -104,16 +107,16 @@ def best_chain(e: float, striker_speed: float, gas: str = "air", direct_gas: str
 
 
 def break_even(striker_speed: float, gas: str = "air", direct_gas: str | None = None,
-               max_masses: int = MAX_MASSES, masses: int | None = None, launch_speed: float | None = None
-               ) -> float:
+               max_masses: int = MAX_MASSES, masses: int | None = None, launch_speed: float | None = None,
+               chambered: bool = False) -> float:
     """The restitution above which the amplifier needs less gun than the direct gun (Q = 1); nan when even
     e = 1 does not pay.  ``masses`` and ``launch_speed`` given: that chain's, not the optimum's."""
     if launch_speed is not None:
         def excess(e):
-            return gun_ratio(e, striker_speed, striker_speed / launch_speed, masses, gas, direct_gas) - 1
+            return gun_ratio(e, striker_speed, striker_speed / launch_speed, masses, gas, direct_gas, chambered) - 1
     else:
         def excess(e):
-            return best_chain(e, striker_speed, gas, direct_gas, max_masses).gun_ratio - 1
+            return best_chain(e, striker_speed, gas, direct_gas, max_masses, chambered).gun_ratio - 1
     if excess(1.0) >= 0:
         return math.nan
     lo = 1e-3

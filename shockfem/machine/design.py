@@ -25,9 +25,10 @@ from ..units import G0, format_si
 from .amplifier import Amplifier, chain_run, check_with_first_mass, design_amplifier
 from .energy import EnergyTable, chain_record, energy_table
 from .fixture import Fixture, design_fixture
-from .launcher import Launcher, design_launcher
-from .layout import GUIDES_PER_BODY, Layout, place, rail_section, shoe_length
-from .limits import Limit, broken
+from ..launcher.vessel import max_pressure
+from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher
+from .layout import GUIDES_PER_BODY, Layout, frame_force, place, rail_section, shoe_length
+from .limits import Limit, broken, model_range
 from .spec import REFERENCE_ARTICLE, MachineSpec
 from .stops import OIL_TEMPERATURE_RISE
 
@@ -36,7 +37,8 @@ from .stops import OIL_TEMPERATURE_RISE
 # are sectioned and joined on site, and the tank's volume may be a bank of vessels piped together (the same
 # steel for the same p V), so none of them is a single part
 TRANSPORT = {"length": 13.6, "width": 2.55, "mass": 24e3}
-TRANSPORT_SOURCE = "Council Directive 96/53/EC; a 13.6 m semi-trailer deck, about 24 t payload"
+TRANSPORT_SOURCE = ("Council Directive 96/53/EC (2.55 m wide, 40 t gross); the 13.6 m deck and about 24 t of "
+                    "payload derived from a standard semi-trailer, not set by the Directive")
 SECTIONED = ("frame", "rail", "tank")
 # the launcher and the slug's chain are designed in turn until the gun fires the chain's first mass (to
 # this share of it)
@@ -129,7 +131,7 @@ def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, 
     layout = place(launcher, amp, fixture, rho, S, spec.catch, spec.material, speeds, spec.oil_pressure,
                    gun_thrust(launcher))
     loads = operating_loads(spec, fixture, amp, launcher, layout, S)
-    limits = part_limits(spec, fixture, amp, layout, loads)
+    limits = part_limits(spec, fixture, amp, layout, loads) + stored_gas_limits(launcher)
     energy = energy_table(launcher, amp, fixture, layout.stops, record)
     totals = _totals(fixture, amp, launcher, layout, energy)
     binding, problems = _binding(spec, fixture, amp, launcher, layout, limits)
@@ -179,6 +181,18 @@ def part_limits(spec: MachineSpec, fixture: Fixture, amp: Amplifier, layout: Lay
     # the amplifier's own limits (its pads', when the amplifier carries them)
     out += list(getattr(amp, "limits", []))
     return out
+
+
+def stored_gas_limits(launcher: Launcher) -> list[Limit]:
+    """The vessel that stores the gun's gas: its pressure within the range of the ASME VIII-1 rule its heads
+    are sized by (UG-32(f), P <= 0.665 S E: ``launcher.vessel.max_pressure``; the shell's rules reach
+    further); its walls and mass are ``launcher.vessel``'s (the loads' launcher tank).  The gas's stored
+    energy is reported (the premise's table gives its TNT equivalent); no code sets a limit on it."""
+    material = LAUNCHER_SIZING.tank_material
+    return [Limit("launcher tank", "reservoir pressure within the head rule's range",
+                  launcher.design.gun.reservoir_pressure, max_pressure(material, LAUNCHER_SIZING.joint_efficiency),
+                  "Pa", f"the reservoir's pressure; {material} hemispherical heads", "ASME VIII-1 UG-32(f)'s range: "
+                  "P <= 0.665 S E")]
 
 
 def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, layout: Layout, S: float) -> list[Load]:
@@ -234,10 +248,19 @@ def operating_loads(spec, fixture: Fixture, amp: Amplifier, launcher: Launcher, 
                             mass * G0 / (GUIDES_PER_BODY * area), S,
                             "bearing pressure on the rail (shoe and rail as drawn; a polymer wear strip's own limit "
                             "is lower and not modelled)"))
-    out.append(Load("frame side members", f"the largest stop force {max(s.force for s in layout.stops) / 1e6:.3g} MN",
-                    max(s.force for s in layout.stops) / (2 * layout.frame_section), S,
-                    "two ties at the allowable (set by the design; bending and buckling left out)", sized=True))
+    out.append(frame_load(launcher, layout, S))
     return out
+
+
+def frame_load(launcher: Launcher, layout: Layout, S: float) -> Load:
+    """The frame's side members under the larger of the largest stop force and the gun's recoil at firing
+    (``layout.frame_force``), two ties."""
+    stops, recoil = max(s.force for s in layout.stops), gun_thrust(launcher)
+    F = frame_force(layout.stops, recoil)
+    return Load("frame side members", f"the largest stop force {stops / 1e6:.3g} MN, the gun's recoil "
+                                      f"{recoil / 1e6:.3g} MN", F / (2 * layout.frame_section), S,
+                "two ties at the allowable under the larger (set by the design; bending and buckling left out)",
+                sized=True)
 
 
 def _totals(fixture, amp, launcher, layout, energy: EnergyTable) -> dict:
@@ -286,7 +309,8 @@ def _binding(spec, fixture, amp, launcher, layout, limits: list[Limit]) -> tuple
         problems.append(f"amplifier: {amp.reason}")
     for lim in broken(limits):
         problems.append(f"{lim.component}: {lim.quantity} {lim.value:.4g} {lim.unit} against {lim.limit:.4g} "
-                        f"{lim.unit}, over by {100 * (lim.ratio - 1):.0f}% ({lim.source})")
+                        f"{lim.unit}, over by {100 * (lim.ratio - 1):.0f}% ({lim.source})"
+                        + (": a model outside its range, a finer model must check the part" if model_range(lim) else ""))
     longest = max((i for i in layout.items if i.kind not in ("frame", "rail")), key=lambda i: i.length)
     binding.append(f"length: the longest part is the {longest.name} ({longest.length:.3g} m of the "
                    f"{layout.overall_length:.3g} m)")

@@ -14,8 +14,8 @@ catcher.
 * Guides: two rails under every body, sliding shoes under it (its weight their load): catalogue
   rolling carriages run at most ``ROLLING_CARRIAGE_SPEED`` (item Industrietechnik, PS 4 bearing carriages:
   v max 5 m/s), far below the bodies' speeds, so the shoes slide (wear strips on hardened rails).
-* Frame: two side members as ties that carry the largest stop force back to the gun at the allowable
-  stress (their bending and the foundation are left out).
+* Frame: two side members as ties that carry the largest stop force, or the gun's recoil at firing if that
+  is larger, at the allowable stress (``frame_force``; their bending and the foundation are left out).
 """
 from __future__ import annotations
 
@@ -88,6 +88,12 @@ def ring_area(outer: float, inner: float) -> float:
     """The face a stop ring meets [m^2]: the body's (``outer`` its diameter) less the bore ``inner`` that
     lets the next body pass."""
     return math.pi * (outer * outer - inner * inner) / 4
+
+
+def frame_force(stops: list[Stop], recoil: float) -> float:
+    """The largest force the frame's side members carry [N]: the largest stop force, or the gun's recoil at
+    firing (its thrust on the projectile, carried from the breech to the stops' end), whichever is larger."""
+    return max(max(st.force for st in stops), recoil if math.isfinite(recoil) else 0.0)
 
 
 def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, material: str,
@@ -188,11 +194,12 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         body = "payload" if it.kind == "piston" else it.name
         items.append(Item(f"rails_{body}", "rail", it.x0, stop_end[body] - it.x0, it.diameter, 0.0, 0.0, material,
                           f"two rails, sliding shoes under {it.name}"))
-    F = max(st.force for st in stops)
+    F = frame_force(stops, max_force)
     section = F / allowable / 2
     frame_mass = 2 * rho * section * length
     items.append(Item("frame", "frame", 0.0, length, width, 0.0, frame_mass, material,
-                      f"two side members of {section * 1e4:.3g} cm^2 each: the largest stop force at the allowable"))
+                      f"two side members of {section * 1e4:.3g} cm^2 each: the largest of the stop forces and the "
+                      "gun's recoil at the allowable"))
     fastest = max([launcher.design.muzzle_velocity, fixture.striker_speed, fixture.after_speed_payload])
     notes = [f"the guided bodies reach {fastest:.4g} m/s, {fastest / ROLLING_CARRIAGE_SPEED:.0f} times the "
              f"{ROLLING_CARRIAGE_SPEED:g} m/s of catalogue rolling carriages: the shoes slide on the rails"]

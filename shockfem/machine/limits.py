@@ -33,7 +33,7 @@ class Limit:
         return bool(self.ratio <= 1.0 + 1e-6)
 
     def as_dict(self) -> dict:
-        return {**asdict(self), "ratio": self.ratio, "holds": self.holds}
+        return {**asdict(self), "ratio": self.ratio, "holds": self.holds, "model_range": model_range(self)}
 
     def describe(self) -> str:
         state = "holds" if self.holds else f"BROKEN by {100 * (self.ratio - 1):.0f}%"
@@ -63,6 +63,19 @@ def cause(lim: Limit) -> str:
     return next((name for name, starts in CAUSES if lim.component.startswith(starts)), "other")
 
 
+# a limit that bounds a model's range of validity, not the part's strength or size: broken, it says that the
+# model which sized the part is outside the data or the assumptions it was checked on (a finer model, a
+# finite-element run, must check the part), not that the part fails.  Read from where the limit comes from:
+# a source or basis that names a range, the orifice law's area ratio, the column's linearised faces
+MODEL_RANGE_MARKERS = ("range", "iso 5167-2's area ratio", "linearised wall faces")
+
+
+def model_range(lim: Limit) -> bool:
+    """Whether ``lim`` bounds a model's range of validity (``MODEL_RANGE_MARKERS``) rather than a part."""
+    text = f"{lim.basis} {lim.source}".lower()
+    return any(marker in text for marker in MODEL_RANGE_MARKERS)
+
+
 def counted(limits: list[Limit]) -> list[Limit]:
     """The limits that could fail: those the design did not set to their limit (a sized one holds by
     construction)."""
@@ -82,5 +95,9 @@ def verdict_line(limits: list[Limit]) -> str:
     are broken and by which cause (each with its worst)."""
     causes = "; ".join(f"{c}: {n} (worst {w.component}, {w.quantity}, {w.ratio:.3g} times its limit)"
                        for c, n, w in by_cause(limits))
+    ranges = [lim for lim in broken(limits) if model_range(lim)]
+    apart = (f" ({len(broken(limits)) - len(ranges)} a part past its material's or its size's limit, {len(ranges)} a "
+             "model outside its range, where a finer model must check the part: "
+             + ", ".join(f"{lim.component} {lim.quantity}" for lim in ranges) + ")") if ranges else ""
     return (f"{len(counted(limits))} limits checked ({len(limits) - len(counted(limits))} more set by the design to "
-            f"their limit), {len(broken(limits))} broken" + (f", by cause: {causes}" if causes else ""))
+            f"their limit), {len(broken(limits))} broken" + apart + (f", by cause: {causes}" if causes else ""))

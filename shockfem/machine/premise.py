@@ -60,7 +60,10 @@ from .design import Machine, gun_thrust
 from .fixture import bore_radius, design_fixture
 from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
-from .layout import Layout, place
+from .layout import RING_CLEARANCE, Layout, place, ring_area
+from .pad_materials import PAD_MATERIALS
+from .limits import broken, cause
+from .stops import design_stop
 from .spec import MachineSpec
 
 # the white paper's flying target: 30 lb for a 12 lb article (section 1.2), as a ratio to the article
@@ -91,9 +94,16 @@ class Arrangement:
     # every limit of the whole design holds (only (a), the designed machine, has them all checked)
     feasible: bool = True
     required_energy: float = math.nan   # the launched mass at the speed it was designed for [J]
+    tank_mass: float = math.nan   # the gun's tank, the vessel that stores the gas [kg]
+    # the limits checked on this arrangement beyond its gun ((a): the whole machine's; (b): its sabot's stop)
+    limits: list = field(default_factory=list)
+    # what its fixture, the same dashpot for every arrangement, breaks (the band, its broken limits)
+    fixture_problems: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict:
-        return asdict(self)
+        d = asdict(self)
+        d["limits"] = [lim.as_dict() for lim in self.limits]
+        return d
 
 
 def sabot_mass(bore: float, pressure: float, striker_diameter: float) -> float:
@@ -137,7 +147,8 @@ def _arrangement(name: str, launcher: Launcher, fixture, layout: Layout, feasibl
                        g.reservoir_volume, launcher.stored_energy, launcher.design.weight,
                        sum(i.mass for i in layout.items) + extra if layout else math.nan,
                        layout.overall_length if layout else math.nan, feasible, notes,
-                       required_energy=0.5 * launcher.projectile_mass * launcher.design.required_velocity ** 2)
+                       required_energy=0.5 * launcher.projectile_mass * launcher.design.required_velocity ** 2,
+                       tank_mass=launcher.design.tank_weight)
 
 
 def amplifier_arrangement(m: Machine) -> Arrangement:
@@ -149,7 +160,18 @@ def amplifier_arrangement(m: Machine) -> Arrangement:
         notes.append(f"the machine is NOT FEASIBLE: {len(m.problems)} problems, the first: {m.problems[0]}")
     out = _arrangement("(a) amplifier", m.launcher, m.fixture, m.layout, m.launcher.design.feasible, notes)
     out.feasible = m.feasible
+    out.limits = list(m.limits)
+    out.fixture_problems = fixture_problems(m)
     return out
+
+
+def fixture_problems(m: Machine) -> list[str]:
+    """What the designed fixture breaks, in words: its pulse outside the band, and each broken limit of the
+    fixture's (``limits.cause``).  Every arrangement carries the same dashpot, so these are common to all."""
+    out = ([] if m.fixture.band_passed else
+           [f"its column's pulse is outside the band (worst excess {m.fixture.worst_excess:.3g} of the peak)"])
+    return out + [f"{lim.component}: {lim.quantity} {lim.ratio:.3g} times its limit" for lim in broken(m.limits)
+                  if cause(lim) == "the fixture"]
 
 
 def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float, bore: float, starts: int,
@@ -182,8 +204,9 @@ def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: f
     """The lightest gun within the spec's limits firing a striker of ``striker`` [kg] and ``diameter`` at
     ``speed`` in the sabot its bore needs: the gun's optimiser does not see that the sabot grows with the
     bore (as p R^3), so the bore is scanned (``bores`` bores from half the bare striker's gun's bore, or the
-    striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest gun and sabot kept.
-    ``diameter`` None: a massless sabot (the lower bound), one design (``bare_launcher``, shared with the
+    striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest feasible gun and
+    sabot kept; when no bore's gun reaches the speed, the one that comes closest (the highest muzzle speed),
+    not the lightest of those that fall short.  ``diameter`` None: a massless sabot (the lower bound), one design (``bare_launcher``, shared with the
     scan's start).  Returns the launcher and the sabot's mass."""
     bare = bare_launcher(spec, striker, speed, starts, report_binding)
     if diameter is None:
@@ -194,7 +217,8 @@ def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: f
     best = None
     for bore in np.geomspace(lo, hi, bores):
         L, sabot = _with_sabot(spec, striker, speed, diameter, float(bore), starts, False)
-        key = (not L.design.feasible, L.design.weight + sabot)
+        d = L.design
+        key = (False, d.weight + sabot) if d.feasible else (True, -d.muzzle_velocity / d.required_velocity)
         if best is None or key < best[0]:
             best = (key, L, sabot)
     return best[1], best[2]
@@ -207,12 +231,33 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     diameter = 2 * fixture.housing_outer_radius if with_sabot else None
     L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores)
     layout = _layout(spec, L, fixture)
-    notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine, its own stop not designed)" if sabot else
+    stop = sabot_stop(spec, L, sabot, diameter) if sabot else None
+    notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle by a "
+             f"{stop.kind} ({stop.absorber_mass:.3g} kg, {stop.stroke:.3g} m of stroke at {stop.force / 1e6:.3g} MN; "
+             "counted in the machine's mass, not laid on its axis)" if stop else
              ("no sabot: the striker fills the bore" if with_sabot else "the sabot's mass left out (a lower bound)")]
+    broken_stop = broken(stop.limits) if stop else []
+    notes += [f"the sabot's stop breaks its limit: {lim.describe()}" for lim in broken_stop]
     if not L.design.feasible:
         notes.append(L.design.note)
     name = "(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot"
-    return _arrangement(name, L, fixture, layout, L.design.feasible, notes, sabot)
+    out = _arrangement(name, L, fixture, layout, L.design.feasible, notes,
+                       sabot + (stop.absorber_mass if stop else 0.0))
+    out.limits = stop.limits if stop else []
+    out.feasible = L.design.feasible and not broken_stop
+    return out
+
+
+def sabot_stop(spec: MachineSpec, launcher: Launcher, sabot: float, diameter: float):
+    """The sabot's stop (``stops.design_stop``): the sabot leaves the muzzle at the striker's speed and is
+    stripped by a ring that lets the striker pass (from its diameter to the bore's), its absorber at the force
+    the sabot's inertia allows over its axial length (the 45 degree cone's, R - r), at most the gun's thrust."""
+    g = launcher.design.gun
+    rho = property_si(SABOT_MATERIAL, "density", "density")
+    S = initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY
+    ring = ring_area(g.bore, diameter + RING_CLEARANCE)
+    return design_stop("sabot", sabot, launcher.design.muzzle_velocity, (g.bore - diameter) / 2, rho, S, ring,
+                       spec.oil_pressure, max_force=gun_thrust(launcher))
 
 
 def white_paper_launcher(spec: MachineSpec, launched: float, speed: float) -> tuple[Launcher, bool]:
@@ -288,15 +333,71 @@ def closed_form(m: Machine) -> dict:
             "break_even_spec": {gas: break_even(V, gas, masses=s.masses, launch_speed=s.launch_speed)
                                 for gas in ("air", "helium")},
             "break_even_air_against_helium": break_even(V, "air", "helium"),
-            "best_pad": pad, "best_pad_restitution": e_pad}
+            # both guns as the infinitely chambered gun (the bound the simple-wave gun is not)
+            "break_even_chambered": {"air": break_even(V, "air", chambered=True)},
+            "best_pad": pad, "best_pad_restitution": e_pad, "scale_free": scale_free(m)}
+
+
+# the restitutions the pads' finite-element runs measured at the 12 lb chain's first interface (4,773 kg on
+# 1,600 kg closing at 99 m/s: `python scripts/pad-interface.py --run OUT 4772.5 0.914 0.926 1599.6 0.638 0.638
+# 99.06`, docs/machine.md's Pads): polyurethane's highest and lowest, and flat steel faces
+MEASURED_RESTITUTIONS = {"polyurethane, the best run": 0.49, "polyurethane, the worst run": 0.46,
+                         "flat steel faces": 0.29}
+
+
+def elastic_limit_speeds(spec: MachineSpec) -> dict:
+    """The closing speed v* = sigma / sqrt(rho E) [m/s] up to which a solid returns an interface's energy
+    elastically at its working (or yield) stress sigma, for the spec's steel at its allowable and every pad
+    material of the library: a pad that holds M* dv^2 / 2 at sigma stores sigma^2 / (2 E) per volume, so its
+    mass over the struck body's is (dv / v*)^2 m_a / (m_a + m_b), whatever the bodies' size (the pads' first
+    check, ``amplifier.pad_bound``, is this law for each material; v* is also the flat bar-on-bar impact's
+    yield particle velocity)."""
+    rho, E = property_si(spec.material, "density", "density"), property_si(spec.material, "youngs_modulus", "pressure")
+    out = {spec.material: initial_yield_stress(spec.material) / spec.safety_factor / math.sqrt(rho * E)}
+    for name, pm in PAD_MATERIALS.items():
+        sigma = max(pm.working_stress, pm.yield_stress)
+        if pm.density > 0 and pm.youngs_modulus > 0 and sigma > 0:
+            out[name] = sigma / math.sqrt(pm.density * pm.youngs_modulus)
+    return out
+
+
+def scale_free(m: Machine) -> dict:
+    """Why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last
+    interface closes at V_s / g >= V_s / 2 (g the stage gain), far above the speed v* to which any solid returns
+    the energy elastically (``elastic_limit_speeds``); and the first mass at the restitutions the pads' runs
+    measured (``MEASURED_RESTITUTIONS``; None where no chain of the spec's masses gains enough)."""
+    s, V = m.spec, m.fixture.striker_speed
+    g = (V / s.launch_speed) ** (1 / (s.masses - 1))
+    speeds = elastic_limit_speeds(s)
+    best = max(speeds, key=speeds.get)
+    first = {}
+    for label, e in MEASURED_RESTITUTIONS.items():
+        d = gain_design(s.architecture, m.fixture.striker_mass, V, s.launch_speed, e, s.masses)
+        first[label] = {"restitution": e, "first_mass": d.masses[0] if d.feasible else None}
+    return {"stage_gain": g, "last_closing_speed": V / g, "half_striker_speed": V / 2,
+            "elastic_limit_speeds": speeds, "best_solid": best, "best_elastic_limit_speed": speeds[best],
+            "first_mass_at_measured": first}
+
+
+def _scale_free_words(k: dict) -> str:
+    firsts = "; ".join(f"{label} ({x['restitution']:.2f}): " + (f"{x['first_mass'] / 1e3:,.0f} t" if x["first_mass"]
+                                                                 else "no chain of these masses gains enough")
+                       for label, x in k["first_mass_at_measured"].items())
+    return (f"why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last "
+            f"interface closes at V_s / g = {k['last_closing_speed']:.0f} m/s (at least V_s / 2 = "
+            f"{k['half_striker_speed']:.0f} m/s at any e and any number of masses), while the best solid of the "
+            f"library ({k['best_solid']}) returns an interface's energy elastically only up to v* = sigma / "
+            f"sqrt(rho E) = {k['best_elastic_limit_speed']:.0f} m/s, whatever the fixture, the striker's mass or "
+            f"the number of masses: every interface is past its elastic limit, and the chain's e is the estimate "
+            f"of a slow rebound test; at the restitutions the pads' runs measured the first mass would be: {firsts}")
 
 
 def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: float) -> dict:
     """What one gun at the spec's widest bore and highest pressure needs to fire the striker, in its sabot
     there, at ``speed``: the barrel, and the speed a barrel of the spec's limit gives, in air and in helium,
-    by the simple-wave gun (a straight infinite chamber of the bore's section, ``launcher.simple_wave``) and
-    the constant-pressure bound (an infinite reservoir behind the base, massless gas: p A L = M V^2 / 2, the
-    least barrel any chamber gives)."""
+    by the simple-wave gun (a straight infinite chamber of the bore's section, ``launcher.simple_wave``), the
+    infinitely chambered gun (the most any real chamber gives, ``chambered``) and the constant-pressure bound
+    (an infinite reservoir right behind the base, massless gas: p A L = M V^2 / 2, the least barrel of all)."""
     p, A, L = spec.max_pressure, math.pi * spec.max_bore ** 2 / 4, spec.max_barrel_length
     M = striker + sabot_mass(spec.max_bore, p, diameter)
     out = {"limits": {"barrel": L, "bore": spec.max_bore, "pressure": p}, "launched": M,
@@ -307,7 +408,9 @@ def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: f
         c0 = g.sound_speed(p, TEMPERATURE)
         top = 2 * c0 / (g.gamma - 1)
         out[gas] = {"barrel": travel(speed, M, p, A, c0, g.gamma) if speed < top else math.inf,
-                    "speed": muzzle_speed(L, M, p, A, c0, g.gamma)}
+                    "speed": muzzle_speed(L, M, p, A, c0, g.gamma),
+                    "chambered_barrel": travel(speed, M, p, A, c0, g.gamma, chambered=True),
+                    "chambered_speed": muzzle_speed(L, M, p, A, c0, g.gamma, chambered=True)}
     return out
 
 
@@ -328,7 +431,7 @@ def _energies(a: Arrangement, b: Arrangement, bound: Arrangement | None) -> str:
 
 
 def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, remedies: dict | None) -> list[str]:
-    a_ok, b_ok = a.gun_feasible and a.feasible, b.gun_feasible
+    a_ok, b_ok = a.gun_feasible and a.feasible, b.gun_feasible and b.feasible
     if a_ok and b_ok:
         better = b.machine_mass <= a.machine_mass and b.machine_length <= a.machine_length
         worse = b.machine_mass >= a.machine_mass and b.machine_length >= a.machine_length
@@ -337,8 +440,10 @@ def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, reme
                 + ("the direct gun is the better machine, amplification does not pay" if better else
                    "amplification pays" if worse else "neither is better on both mass and length")]
     if b_ok:
-        return [f"the amplifier (a) is not a feasible machine ({a.notes[-1]}); the direct gun (b) is within the limits "
-                f"({b.machine_mass / 1e3:.3g} t, {b.machine_length:.3g} m long): amplification does not pay"]
+        return [f"the amplifier (a) is not a feasible machine ({a.notes[-1]}); the direct gun (b), the striker in its "
+                f"sabot, is within the limits ({b.launch_speed:.4g} m/s from a {b.bore / IN:.3g} in x "
+                f"{b.barrel / FT:.3g} ft gun at {b.reservoir_pressure / PSI:,.0f} psi; {b.machine_mass / 1e3:.3g} t, "
+                f"{b.machine_length:.3g} m long): amplification does not pay"]
     if a_ok:
         return [f"the direct gun (b) has no gun within the limits and the amplifier (a) is feasible "
                 f"({a.machine_mass / 1e3:.3g} t, {a.machine_length:.3g} m long): amplification pays"]
@@ -359,7 +464,8 @@ def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, reme
                      f"widest bore and highest pressure: a barrel of at least {air['barrel'] / FT:.3g} ft in air "
                      f"(the simple-wave gun; {remedies['constant_pressure_barrel'] / FT:.3g} ft at the "
                      f"constant-pressure bound), or {he['barrel'] / FT:.3g} ft in helium; at the barrel limit the "
-                     f"simple-wave gun gives {air['speed']:.4g} m/s in air and {he['speed']:.4g} m/s in helium")
+                     f"simple-wave gun gives {air['speed']:.4g} m/s in air and {he['speed']:.4g} m/s in helium, the "
+                     f"infinitely chambered gun {air['chambered_speed']:.4g} m/s in air")
     return words
 
 
@@ -379,7 +485,8 @@ def _closed_form_words(k: dict) -> str:
             f"mass count; at the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses "
             f"{e_words(spec['air'])} and {e_words(spec['helium'])}), and an air amplifier against a helium direct "
             f"gun {'pays only above ' + e_words(air_he) if math.isfinite(air_he) else 'never pays'} (up to "
-            f"{MAX_MASSES} masses); "
+            f"{MAX_MASSES} masses); with both guns the infinitely chambered gun (a tank wider than the bore) the "
+            f"air break-even is e = {e_words(k['break_even_chambered']['air'])}; "
             f"the best pad material of the library is sized at e = {k['best_pad_restitution']:.3f} "
             f"({k['best_pad']}, its rebound on rigid masses), the design's chain runs at {k['restitution']:.3f}: "
             + ("amplification pays" if pays else "amplification does not pay"))
@@ -391,6 +498,12 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
     sabot, the direct gun's lower bound, never a machine; ``closed``: ``closed_form``; ``remedies``:
     ``direct_remedies``)."""
     words = [_energies(a, b, bound)] + _feasibility(a, b, bound, remedies)
+    if closed and closed.get("scale_free"):
+        words.append(_scale_free_words(closed["scale_free"]))
+    if a.fixture_problems:
+        words.append("every arrangement carries the same fixture, and it is not within its own limits ("
+                     + "; ".join(a.fixture_problems) + "): no arrangement is a feasible machine until the fixture "
+                     "is, and the comparison above is of the guns and moving masses that fixture asks")
     if closed:
         words.append(_closed_form_words(closed))
     if not math.isfinite(c.striker_speed):

@@ -12,10 +12,13 @@ gains by Eq. 2 (``amplifier.gain.stack_gain``, the stack on an anvil it describe
 (``chain_gain``), the guns by the lumped gun (``launcher.gun.fire``) and the barrel a speed needs
 (``barrel_length_for``).  The white paper gives its gun's bore, barrel and pressure only: the 20 ft^3 tank
 and the 8 in valve opening in 2 ms are this project's assumptions (``white_paper_gun``), so the lumped
-gun's speeds depend on them.  Beside them, two tank-free bounds at its bore, barrel and pressure: the
-simple-wave gun (a straight infinite chamber of the bore's section, ``launcher.simple_wave``) and the
-constant-pressure bound (an infinite reservoir right behind the base, massless gas: p A L = m v^2 / 2,
-the most any chamber gives).  Its "800 lb" counts the intermediate masses only; the masses it adds to the
+gun's speeds depend on them.  Beside them, three tank-free guns at its bore, barrel and pressure: the
+simple-wave gun (a straight infinite chamber of the bore's section, ``launcher.simple_wave``: the
+constant-area gun, no bound), the infinitely chambered gun (a chamber of unlimited size and section: the
+most any real chamber gives) and the constant-pressure bound (an infinite reservoir right behind the base,
+massless gas: p A L = m v^2 / 2).  Both of the white paper's guns are given by all three, its amplifier's
+(the barrel its first mass needs at the launch speed) and its flying target's, so that neither is read by
+a model that flatters it.  Its "800 lb" counts the intermediate masses only; the masses it adds to the
 article include its first mass too, so they are tabled as well.
 """
 from __future__ import annotations
@@ -40,6 +43,7 @@ def tank_free_speeds(mass: float) -> dict:
     gas = g.gas_model()
     c0 = gas.sound_speed(g.reservoir_pressure, g.reservoir_temperature)
     return {"simple_wave": muzzle_speed(g.length, mass, g.reservoir_pressure, g.area, c0, gas.gamma),
+            "chambered": muzzle_speed(g.length, mass, g.reservoir_pressure, g.area, c0, gas.gamma, chambered=True),
             "constant_pressure": math.sqrt(2 * g.reservoir_pressure * g.area * g.length / mass)}
 
 
@@ -50,6 +54,7 @@ def tank_free_barrels(mass: float, speed: float) -> dict:
     gas = g.gas_model()
     c0 = gas.sound_speed(g.reservoir_pressure, g.reservoir_temperature)
     return {"simple_wave": travel(speed, mass, g.reservoir_pressure, g.area, c0, gas.gamma),
+            "chambered": travel(speed, mass, g.reservoir_pressure, g.area, c0, gas.gamma, chambered=True),
             "constant_pressure": 0.5 * mass * speed ** 2 / (g.reservoir_pressure * g.area)}
 
 
@@ -57,7 +62,8 @@ def _chain(last: float, speed: float, launch: float, e: float, n: int, rho: floa
     d = design("launched-chain", last, speed, launch, e, n)
     if not d.feasible:
         return {k: math.nan for k in ("first", "intermediate", "added", "volume", "added_volume", "eq2_gain",
-                                      "chain_gain", "R", "wp_gun_muzzle", "simple_wave", "constant_pressure")}
+                                      "chain_gain", "R", "wp_gun_muzzle", "simple_wave", "chambered",
+                                      "constant_pressure")}
     mid = sum(d.masses[1:-1])
     R = d.masses[-1] / d.masses[0]
     return {"masses": d.masses, "first": d.masses[0], "intermediate": mid, "volume": mid / rho,
@@ -116,13 +122,28 @@ def claims(m) -> list[dict]:
          "wp_assumptions": wp.get("constant_pressure"), "design_at_0.9": at_09.get("constant_pressure"),
          "design": tank_free_speeds(m.amplifier.masses[0])["constant_pressure"],
          "note": "p A L = m v^2 / 2: the most any gun of that bore, barrel and pressure gives"},
+        {"claim": "the same gun without a tank: the infinitely chambered gun [m/s]", "white_paper": 325 * FT,
+         "wp_assumptions": wp.get("chambered"), "design_at_0.9": at_09.get("chambered"),
+         "design": tank_free_speeds(m.amplifier.masses[0])["chambered"],
+         "note": "a chamber of unlimited size and section: the most any real chamber gives"},
     ]
+    if math.isfinite(wp.get("first", math.nan)):
+        own = tank_free_barrels(wp["first"], launch)
+        rows.append({"claim": "barrel the white paper's 12 in gun at 2000 psi needs for its own first mass at the "
+                              "launch speed, the infinitely chambered gun [m]", "white_paper": 6 * FT,
+                     "wp_assumptions": own["chambered"], "design_at_0.9": math.nan, "design": math.nan, **own,
+                     "note": f"its first mass {wp['first']:.4g} kg at {launch / FT:.0f} ft/s: the simple-wave gun "
+                             f"needs {own['simple_wave'] / FT:.3g} ft, the chambered gun {own['chambered'] / FT:.3g} "
+                             f"ft, the constant-pressure bound {own['constant_pressure'] / FT:.3g} ft, against its "
+                             "6 ft"})
     g = white_paper_gun(CLAIM["target"])
     lumped = barrel_length_for(g, CLAIM["target_speed"])
     free = tank_free_barrels(CLAIM["target"], CLAIM["target_speed"])
     rows.append({"claim": "barrel for a 30 lb flying target at 1600 ft/s, 12 in at 2000 psi [m]",
                  "white_paper": CLAIM["target_gun"], "wp_assumptions": lumped, "design_at_0.9": math.nan,
                  "design": math.nan, "simple_wave": free["simple_wave"], "constant_pressure": free["constant_pressure"],
+                 "chambered": free["chambered"],
                  "note": f"the lumped gun with the assumed 20 ft^3 tank and valve; the simple-wave gun (no tank) needs "
-                         f"{free['simple_wave'] / FT:.3g} ft, the constant-pressure bound {free['constant_pressure'] / FT:.3g} ft"})
+                         f"{free['simple_wave'] / FT:.3g} ft, the infinitely chambered gun {free['chambered'] / FT:.3g} "
+                         f"ft, the constant-pressure bound {free['constant_pressure'] / FT:.3g} ft"})
     return rows

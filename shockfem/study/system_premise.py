@@ -141,15 +141,18 @@ def damping(rep: Report, m, out_dir: str):
 
 ARRANGEMENT_HEADER = ["arrangement", "launched [kg]", "launch speed [m/s]", "launch energy [MJ]", "striker [kg]",
                       "striker speed [m/s]", "bore [in]", "barrel [ft]", "reservoir [psi]", "reservoir [m^3]",
-                      "gas stored, p0 V0 / (gamma - 1) from vacuum [MJ]", "gun [kg]", "machine [kg]", "length [m]",
-                      "gun reaches it", "notes"]
+                      "gas stored, p0 V0 / (gamma - 1) from vacuum [MJ]", "its TNT equivalent [t]", "tank [kg]",
+                      "gun [kg]", "machine [kg]", "length [m]", "gun reaches it", "notes"]
 ARRANGEMENT_FORMATS = ["{}", "{:,.4g}", "{:.1f}", "{:.4g}", "{:.4g}", "{:.1f}", "{:.3g}", "{:.3g}", "{:,.0f}",
-                       "{:.3g}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}"]
+                       "{:.3g}", "{:.4g}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}"]
+# the energy of a tonne of TNT by definition (4.184 GJ): the stored gas as a siting hazard's yardstick
+TNT_TONNE = 4.184e9
 
 
 def _arrangement_row(x) -> list:
     return [x.name, x.launched_mass, x.launch_speed, x.launch_energy / 1e6, x.striker_mass, x.striker_speed,
-            x.bore / IN, x.barrel / FT, x.reservoir_pressure / PSI, x.reservoir_volume, x.stored / 1e6, x.gun_mass,
+            x.bore / IN, x.barrel / FT, x.reservoir_pressure / PSI, x.reservoir_volume, x.stored / 1e6,
+            x.stored / TNT_TONNE, x.tank_mass, x.gun_mass,
             x.machine_mass, x.machine_length, "yes" if x.gun_feasible else "NO", "; ".join(x.notes)]
 
 
@@ -336,7 +339,8 @@ def white_paper(rep: Report, m):
               [[r["claim"], r["white_paper"], r["wp_assumptions"], r["design_at_0.9"], r["design"], r["note"]]
                for r in rows], ["{}", "{:.4g}", "{:.4g}", "{:.4g}", "{:.4g}", "{}"])
     mid, added, gun, wave, bound, target = (rows[0], rows[2], rows[6], rows[7], rows[8], rows[-1])
-    over = [CLAIM["target_gun"] / target[k] for k in ("wp_assumptions", "simple_wave")]
+    own = next((r for r in rows if r["claim"].startswith("barrel the white paper's 12 in gun")), None)
+    over = [CLAIM["target_gun"] / target[k] for k in ("wp_assumptions", "simple_wave", "chambered")]
     rep.text(f"At its own assumptions (the 12 lb article the last mass, e = 0.9) the white paper's amplifier holds: "
              f"{mid['wp_assumptions'] / LB:,.0f} lb of intermediate masses against its 800 lb; but that figure leaves "
              f"out its own first mass: the masses it adds to the article weigh {added['wp_assumptions'] / LB:,.0f} lb. "
@@ -349,6 +353,11 @@ def white_paper(rep: Report, m):
              f"{mid['design'] / LB:,.0f} lb ({mid['design'] / mid['white_paper']:.3g} times the claim), and the white "
              f"paper's gun fires the design's first mass at {gun['design']:.3g} m/s. Its 90 ft gun for a 30 lb "
              f"target at 1600 ft/s: the lumped gun needs {target['wp_assumptions'] / FT:.3g} ft, the simple-wave gun "
-             f"{target['simple_wave'] / FT:.3g} ft (the constant-pressure bound {target['constant_pressure'] / FT:.3g} "
-             f"ft), so the white paper overstates the flying target's gun {min(over):.2g}-{max(over):.2g} times, which "
-             "cuts against its own premise.")
+             f"{target['simple_wave'] / FT:.3g} ft, the infinitely chambered gun {target['chambered'] / FT:.3g} ft "
+             f"(the constant-pressure bound {target['constant_pressure'] / FT:.3g} ft), so the white paper overstates "
+             f"the flying target's gun {min(over):.2g}-{max(over):.2g} times, which cuts against its own premise"
+             + (f"; and it understates its amplifier's: its 6 ft barrel would need {own['simple_wave'] / FT:.3g} ft "
+                f"(simple-wave), {own['chambered'] / FT:.3g} ft (chambered) or {own['constant_pressure'] / FT:.3g} "
+                "ft (constant pressure) for its own first mass, so by the chambered gun its amplifier needs the "
+                + ("longer" if own["chambered"] > target["chambered"] else "shorter") + " barrel of the two"
+                if own else "") + ".")

@@ -21,9 +21,14 @@ pressures and its force on the payload), sum to the gas work within 0.5%; and th
 equals the isentropic expansion work p0 V0 (1 - (V0 / V1)^(gamma - 1)) / (gamma - 1) where the gun is that
 closed form (no valve, massless gas, an evacuated barrel), and the gas stored is p0 V0 / (gamma - 1).
 
-``direct_striker``: the direct-striker gun (a 12 lb fixture's striker, 60.2 kg at 441.4 m/s, alone, within the
-machine's limits: the premise's (b0)) against the launcher model's own verification, the brute-force
-grid of ``launcher_design`` (no grid gun lighter), and its launch energy M V^2 / 2.
+``direct_striker``: the direct-striker gun (the 12 lb design's striker, 498.8 kg at 412.2 m/s, alone, within
+the machine's limits, from the machine's full-bore-valve gun: the premise's (b0)) against the launcher
+model's own verification, the brute-force grid of ``launcher_design`` (no grid gun lighter), and its
+launch energy M V^2 / 2.  The striker is a representative point, fixed: it is the one the premise
+reports (``shockfem design-machine --article "12 lb"``), not derived on each run because the fixture's
+design that gives it takes about 8 min.  The check is of the gun's optimiser against a brute-force search
+of the same model within the same limits, which holds for any striker the gun can fire; this one is
+chosen because its gun is the premise's, at the limits where the verdict is read.
 """
 from __future__ import annotations
 
@@ -139,24 +144,26 @@ def machine_energy(size: str, workdir: str) -> list[dict]:
     return out
 
 
-# the 12 lb fixture's striker (``shockfem design-machine --article "12 lb"``, rounded): the housing and its oil
-STRIKER = {"mass": 60.2, "speed": 441.4}
+# the 12 lb design's striker (``shockfem design-machine --article "12 lb"``, rounded): the housing, its pin and
+# its oil, at the fixture's closing speed; a representative point (the module's docstring)
+STRIKER = {"mass": 498.8, "speed": 412.2}
 
 
 def direct_striker(size: str, workdir: str) -> list[dict]:
     """The direct-striker gun against the launcher design's brute-force grid; its launch energy."""
-    from ..machine.launcher import SIZING
+    from ..machine.launcher import SIZING, machine_gun
     from ..machine.premise import direct_launcher
     from ..machine.spec import read_spec
-    # the 12 lb striker: a 7x7x7 grid's lightest gun is 20% heavier than the optimiser's, 3x3x3's 3.6 times
     n = {"coarse": 5, "default": 7, "fine": 9}[size]
     spec = read_spec({"article": "12 lb"})
     t0 = time.perf_counter()
     L, _ = direct_launcher(spec, STRIKER["mass"], STRIKER["speed"], None, starts=3, report_binding=False)
     wall = time.perf_counter() - t0
     limits = Limits(max_length=spec.max_barrel_length, max_bore=spec.max_bore, max_pressure=spec.max_pressure)
-    out = against_grid("direct_striker", L.design, white_paper_gun(STRIKER["mass"], spec.gas), STRIKER["speed"], limits,
+    out = against_grid("direct_striker", L.design, machine_gun(STRIKER["mass"], spec.gas), STRIKER["speed"], limits,
                        SIZING, n, wall)
+    out[0]["note"] += ("; the 12 lb design's striker, a representative point: the optimiser against a brute-force "
+                       "search of the same gun model, which holds for any striker it can fire")
     # the muzzle speed within 2e-4 of the asked (the optimiser's constraint): twice that on its square
     out.append(check("direct_striker.launch_energy M V^2 / 2 [J]", 0.5 * STRIKER["mass"] * STRIKER["speed"] ** 2,
                      L.launch_energy, 4e-4, 0.0, 0))

@@ -92,6 +92,8 @@ def test_verdict_follows_from_the_limits(machine):
     assert len(listed) == len(broken)
     for lim, words in zip(broken, listed):
         assert words.startswith(f"{lim['component']}: {lim['quantity']}") and "over by" in words
+        # a model outside its range is said apart from a part past its limit
+        assert words.endswith("a finer model must check the part") == lim["model_range"]
     report = (machine_dir.parent / "report.md").read_text()
     assert ("**10 lb, NOT FEASIBLE**" in report) == (not m["feasible"])
     assert all(p in report for p in m["problems"])

@@ -107,13 +107,97 @@ def test_verdict_wording():
     b0 = _arrangement("(b0) direct striker, massless sabot", 430.0, 430.0, True)
     c = _arrangement("(c) flying target", math.nan, math.nan, False)
     remedies = {"limits": {"barrel": 20 * FT, "bore": 36 * IN, "pressure": 5000 * PSI}, "launched": 500.0, "constant_pressure_barrel": 3.0, "constant_pressure_speed": 600.0,
-                "air": {"barrel": 12.0, "speed": 390.0}, "helium": {"barrel": 7.0, "speed": 460.0}}
+                "air": {"barrel": 12.0, "speed": 390.0, "chambered_barrel": 8.0, "chambered_speed": 415.0},
+                "helium": {"barrel": 7.0, "speed": 460.0, "chambered_barrel": 5.0, "chambered_speed": 520.0}}
     words = verdict(a, b, c, b0, None, remedies)
     assert "NEITHER arrangement is feasible within the limits (20 ft, 36 in, 5,000 psi)" in words
     assert "not a machine" in words
     assert "better machine" not in words and "does not pay" not in words
     assert f"{12.0 / FT:.3g} ft in air" in words and f"{7.0 / FT:.3g} ft in helium" in words
     assert "387 of the 430 m/s" in words
+    assert "infinitely chambered gun 415 m/s in air" in words
     # a feasible direct gun against an infeasible amplifier: amplification does not pay, on (b), not on (b0)
-    b.gun_feasible = True
+    b.gun_feasible = b.feasible = True
     assert "amplification does not pay" in verdict(a, b, c, b0)
+    # the fixture every arrangement carries, when it breaks its limits, is said to be common to them all
+    a.fixture_problems = ["its column's pulse is outside the band (worst excess 0.249 of the peak)"]
+    assert "every arrangement carries the same fixture" in verdict(a, b, c, b0)
+    # (b) whose sabot's stop breaks a limit is no feasible direct machine
+    b.feasible = False
+    assert "amplification does not pay" not in verdict(a, b, c, b0)
+
+
+def test_chambered_gun_hand_values():
+    """The infinitely chambered gun: its base pressure continuous at the choking speed u* = c0 sqrt(2 / (gamma +
+    1)) (0.9129 c0 in air) with p* = p0 (2 / (gamma + 1))^(gamma / (gamma - 1)) (0.5283 p0), its escape speed u* (1 +
+    2 / (gamma - 1)) = 6 u* in air; above the simple-wave gun everywhere (the simple-wave gun is no bound on a
+    chambered gun); its travel's quadrature against a trapezoid sum of the same integrand."""
+    from shockfem.launcher.simple_wave import (base_pressure_ratio, chambered_pressure_ratio, escape_speed,
+                                               sonic_speed)
+    gas = GASES["air"]
+    c0, g = gas.sound_speed(1e5, B.TEMPERATURE), gas.gamma
+    star = sonic_speed(c0, g)
+    assert star / c0 == pytest.approx(math.sqrt(2 / 2.4), rel=1e-14)        # closed form, round-off
+    below, above = chambered_pressure_ratio(star * (1 - 1e-9), c0, g), chambered_pressure_ratio(star * (1 + 1e-9), c0, g)
+    assert below == pytest.approx((2 / 2.4) ** 3.5, rel=1e-8) and above == pytest.approx(below, rel=1e-8)
+    assert escape_speed(c0, g, chambered=True) == pytest.approx(6 * star, rel=1e-14)
+    for u in (10.0, 100.0, 300.0, 412.2, 800.0):
+        assert chambered_pressure_ratio(u, c0, g) > base_pressure_ratio(u, c0, g)
+        assert efficiency(u, c0, g, chambered=True) > efficiency(u, c0, g)
+    # the same I(u) by a 200,001-point trapezoid sum of s / pi(s): its error ~ h^2 f'' / 12, below 1e-8 here
+    import numpy as np
+    u = 412.2
+    s = np.linspace(0.0, u, 200_001)
+    f = s / np.array([chambered_pressure_ratio(x, c0, g) for x in s])
+    I = float(np.sum((f[1:] + f[:-1]) / 2 * np.diff(s)))
+    assert travel(u, 1.0, 1.0, 1.0, c0, g, chambered=True) == pytest.approx(I, rel=1e-8)
+    # the chambered break-even lies above the simple-wave one: the direct gun gains more from its chamber
+    assert B.break_even(412.2, "air", chambered=True) > B.break_even(412.2, "air")
+
+
+def test_model_range_limits_are_told_apart():
+    """A limit whose source or basis names a model's range is a model-range flag, said apart in the verdict's
+    line; a material's allowable is not."""
+    from shockfem.machine.limits import Limit, model_range, verdict_line
+    strength = Limit("piston", "stress", 495e6, 460e6, "Pa", "the oil's pressure", "4340 yield / 1.5")
+    flag = Limit("dashpot housing floor", "thickness over diameter", 0.43, 0.25, "-", "VIII-2 4.6",
+                 "the flat-head formula's thin-plate range")
+    assert not model_range(strength) and model_range(flag)
+    line = verdict_line([strength, flag])
+    assert "2 broken (1 a part past its material's or its size's limit, 1 a model outside its range" in line
+    assert "dashpot housing floor thickness over diameter" in line
+
+
+def test_frame_carries_the_larger_of_the_stops_and_the_recoil():
+    """The frame's force is the largest stop force or the gun's recoil, whichever is larger."""
+    from types import SimpleNamespace
+    from shockfem.machine.layout import frame_force
+    stops = [SimpleNamespace(force=2e6), SimpleNamespace(force=5e6)]
+    assert frame_force(stops, 7e6) == 7e6 and frame_force(stops, 3e6) == 5e6 and frame_force(stops, math.inf) == 5e6
+
+
+def test_elastic_limit_speeds_and_the_scale_free_bound():
+    """v* = sigma / sqrt(rho E): high-strength steel at its 460 MPa allowable, 7850 kg/m^3 and 200 GPa gives
+    460e6 / sqrt(7850 x 200e9) = 11.6 m/s (the library's own modulus and density within 3%); PU 60D at 25 MPa,
+    150 MPa and its density, about 59 m/s."""
+    from shockfem.machine.premise import elastic_limit_speeds
+    from shockfem.machine.spec import read_spec
+    v = elastic_limit_speeds(read_spec({"article": "12 lb"}))
+    assert v["high_strength_steel"] == pytest.approx(460e6 / math.sqrt(7850 * 200e9), rel=0.03)
+    assert max(v.values()) < 100.0 and v["pu_60d"] == pytest.approx(59.4, rel=0.01)
+
+
+def test_sabot_stop_takes_the_sabots_energy():
+    """The sabot's stop absorbs its kinetic energy at the muzzle, m v^2 / 2 (to round-off), at a force within the
+    gun's thrust (the frame carries no more) and its inertia's rho L a at most the aluminium's allowable."""
+    from types import SimpleNamespace
+    from shockfem.machine.premise import SABOT_MATERIAL, SABOT_SAFETY, sabot_stop
+    from shockfem.machine.spec import read_spec
+    from shockfem.scene.library import initial_yield_stress
+    gun = SimpleNamespace(bore=0.9144)
+    launcher = SimpleNamespace(design=SimpleNamespace(gun=gun, muzzle_velocity=412.2, peak_acceleration=2e4),
+                               projectile_mass=726.4)
+    stop = sabot_stop(read_spec({"article": "12 lb"}), launcher, 227.7, 0.258)
+    assert stop.energy == pytest.approx(0.5 * 227.7 * 412.2 ** 2, rel=1e-12)
+    assert stop.force <= 726.4 * 2e4 * (1 + 1e-12)
+    assert stop.stress <= initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY * (1 + 1e-9)
