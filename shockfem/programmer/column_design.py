@@ -25,6 +25,11 @@ holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log rat
 checks do not all hold is reported outside, not chosen: the search's penalty pushes it in where it can,
 and where it cannot, the checks say why.
 
+The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
+the striker and the force, and the pin's area table is iterated against the column's own force at the
+design grid, from the quasi-steady pin the handles were searched with; the best table found is the
+design's (its first iteration is that quasi-steady pin, so the cut never makes the force's match worse).
+
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
 below ``STRIKER_RATIO``; the confirmed design reports its striker against what carries its own housing
@@ -55,6 +60,7 @@ from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE,
                       step_factor)
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
+from .pin_cut import ITERATIONS as PIN_ITERATIONS, cut_pin
 from .requirement import requirement
 
 HANDLES = ("bore_scale", "column_over_stroke", "force_factor", "speed_factor")
@@ -167,7 +173,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                      liquid: DesignLiquid = MINERAL_OIL, striker_ratio: float = STRIKER_RATIO,
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
                      steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None,
-                     largest_ratio: float = VALID_AREA_RATIO) -> dict:
+                     largest_ratio: float = VALID_AREA_RATIO, pin_iterations: int = PIN_ITERATIONS) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
@@ -179,7 +185,9 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
     pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
     "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
-    the law is extrapolated, which the checks flag)."""
+    the law is extrapolated, which the checks flag).  ``pin_iterations``: the column runs the pin's cut
+    on the column may take after the search (``pin_cut.cut_pin``, at ``cells``; 0: the quasi-steady pin);
+    the design's ``pin_cut`` holds its convergence."""
     end, law = pulse.record_end(), OrificeLaw(largest_ratio=largest_ratio)
     striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule,
                                   law)
@@ -203,6 +211,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                    options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
     search_wall = time.perf_counter() - t0
     d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
+    t0 = time.perf_counter()
+    d = cut_pin(d, pulse, liquid, cells, pin_iterations)[0] if pin_iterations else d
     out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
         if out["striker"] is None or out["striker"]["carries"]:
@@ -210,11 +220,15 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
         striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
         base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
         d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
+        d = cut_pin(d, pulse, liquid, cells, pin_iterations)[0] if pin_iterations else d
         out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
-               objective=float(res.fun))
+               objective=float(res.fun), pin_cut_wall=time.perf_counter() - t0)
     if echo:
         echo(f"  dashpot on the column ({liquid.name}): {res.nfev} runs, {search_wall:.0f} s, {out['verdict']}")
+        if "pin_cut" in d:
+            echo("  pin cut on the column, peak overshoot by iteration: "
+                 + " ".join(f"{s['overshoot']:+.2f}" for s in d["pin_cut"]["steps"]) + f" ({d['pin_cut']['stop']})")
     return out
 
 
