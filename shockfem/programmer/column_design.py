@@ -27,8 +27,9 @@ and where it cannot, the checks say why.
 
 The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
 the striker and the force, and the pin's area table is iterated against the column's own force at the
-design grid, from the quasi-steady pin the handles were searched with; the best table found is the
-design's (its first iteration is that quasi-steady pin, so the cut never makes the force's match worse).
+design grid, from the quasi-steady pin the handles were searched with; of its iterates the design keeps
+the one of the least objective (the search's: band, checks, housing), so the cut never makes the design
+worse by that objective (its first iterate is the quasi-steady pin).
 
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
@@ -202,9 +203,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
             run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
         except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
             return 50.0
-        _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
-        return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
-                + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
+        return design_objective(d, run, pulse, liquid, steel, rule)
 
     t0 = time.perf_counter()
     res = minimize(objective, np.array(START), method="Nelder-Mead",
@@ -212,7 +211,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     search_wall = time.perf_counter() - t0
     d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
     t0 = time.perf_counter()
-    d = cut_pin(d, pulse, liquid, cells, pin_iterations)[0] if pin_iterations else d
+    d = _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
     out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
         if out["striker"] is None or out["striker"]["carries"]:
@@ -220,7 +219,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
         striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
         base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
         d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
-        d = cut_pin(d, pulse, liquid, cells, pin_iterations)[0] if pin_iterations else d
+        d = _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
         out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
                objective=float(res.fun), pin_cut_wall=time.perf_counter() - t0)
@@ -230,6 +229,27 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
             echo("  pin cut on the column, peak overshoot by iteration: "
                  + " ".join(f"{s['overshoot']:+.2f}" for s in d["pin_cut"]["steps"]) + f" ({d['pin_cut']['stop']})")
     return out
+
+
+def design_objective(d: dict, run, pulse: PulseSpec, liquid: DesignLiquid, steel: str = HOUSING_STEEL,
+                     rule: str = WALL_RULE) -> float:
+    """The search's objective of a design ``d`` on its column ``run``: the band's (narrowed by the design
+    margin), every vetoing check of the column's that fails, and the housing beyond the practical wall
+    ratio, each by its log ratio times ``PENALTY``."""
+    _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
+    return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
+            + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
+
+
+def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations: int, steel: str, rule: str) -> dict:
+    """The design with its pin cut on the column (``pin_cut.cut_pin``) at ``cells``, the best iterate by
+    the search's own objective (``design_objective``: the band, the checks and the housing, not the
+    force's match alone: a pin that flattens the force by raising the floor's pressure beyond what a
+    housing holds is no better design); ``d`` itself with no ``iterations``."""
+    if not iterations:
+        return d
+    return cut_pin(d, pulse, liquid, cells, iterations,
+                   score=lambda trial, run: design_objective(trial, run, pulse, liquid, steel, rule))[0]
 
 
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,

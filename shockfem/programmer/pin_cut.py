@@ -19,8 +19,8 @@ What the fixed point assumes, and how it is made to hold:
 - the force at a stroke answers the area there (locally, as the quasi-steady law says), and the waves
   couple it only to what happened before (causality: the force at x does not depend on a beyond x),
   no sooner than the waves an area sends return from the floor.  So the iteration marches: each step
-  leaves alone the prefix of the stroke already within tolerance (or held at a bound) and updates the
-  table from the first point that is not, over the strokes the run reaches within one transit of the
+  leaves alone the prefix of the stroke already within tolerance (held at a bound, or passed: below)
+  and updates the table from the first point that is not, over the strokes the run reaches within one transit of the
   column left, (L0 - x) / c, after it (a wave's round trip is longer: the window is a lower bound);
 - the run's stroke rises monotonically to its end (the payload does not rebound inside the body read);
 - the body read is the stroke from the first pin point to where the relative speed falls below
@@ -33,10 +33,13 @@ gap of ``LEAST_GAP`` in the piston's hole.  Where the force is over its target w
 a_max (or under it at a_min), no pin in the law's range does better there: the point is held, and the
 iteration goes on past it.
 
-Convergence: the largest |F_col / F_target - 1| over the body past the rise within ``TOLERANCE``, or
-every point outside it held at a bound, or for ``STALL`` iterations neither an improvement on the best
-nor an advance of the march's first free point, or ``ITERATIONS`` runs.  The best table found (the least largest deviation) is the one returned, with each iteration's
-peak overshoot (the largest F_col / F_target - 1) and largest deviation.  The cut pin is then checked by
+Convergence: the largest |F_col / F_target - 1| over the body past the rise within ``TOLERANCE``
+("converged"), or no point left outside it that is neither held at a bound nor passed, or
+``ITERATIONS`` runs.  The march never goes back; a point it has worked on for ``STALL`` iterations
+without bringing it inside (its bin holds the arrival of a returning wave, which moves along the stroke
+as the table changes) is passed, its residual left.  The best table found (the least largest deviation,
+or the least of a designer's ``score``) is the one returned, with each iteration's peak overshoot (the
+largest F_col / F_target - 1 past the rise) and largest deviation.  The cut pin is then checked by
 every validity check of ``dashpot_validity`` (``column_design.confirm``), as any design is.
 """
 from __future__ import annotations
@@ -54,9 +57,9 @@ from .liquids import DesignLiquid
 RELAXATION = 1.0            # omega: the quasi-steady exponent whole (the waves make the force answer less)
 STEP_CAP = 0.2              # at most a factor exp(0.2) = 1.22 on an area in one iteration
 SMOOTHING = 2               # the log ratio averaged over this many pin points either side
-TOLERANCE = 0.05            # the force within 5% of its target: the band's 20% less its design margin, and room
+TOLERANCE = 0.05            # the force within 5% of its target: well inside the band's 20% less its 3% design margin
 ITERATIONS = 40
-STALL = 8
+STALL = 3
 BODY_SPEED = 0.1            # the body read ends where the relative speed falls below this share of V
 LEAST_GAP = 1.0e-4          # [m] the pin's least radial gap in the piston's hole: a turned pin's clearance
 
@@ -112,17 +115,18 @@ def _smoothed(y: np.ndarray, width: int) -> np.ndarray:
 
 
 def cut_pin(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int = CELLS, iterations: int = ITERATIONS,
-            tolerance: float = TOLERANCE, echo=None) -> dict:
+            tolerance: float = TOLERANCE, echo=None, score=None) -> tuple:
     """The design ``d`` (``dashpot_design``) with its pin cut on the column at ``cells`` (the module's
     fixed point): (a copy of ``d`` with the best pin found and, under ``"pin_cut"``, each iteration's
     ``CutStep``, the best iteration, whether it converged (within ``tolerance``) and why it stopped;
-    the best pin's column run, or None if no run completed)."""
+    the best pin's column run, or None if no run completed).  ``score(design, run)``: what "best" means
+    among the iterates (the least; a designer's own objective); by default the largest deviation."""
     pin = np.array(d["pin"], dtype=float)
     x, a = pin[:, 0], pin[:, 1].copy()
     a_max, a_min = d["orifice_law"]["largest_ratio"] * d["piston_area"], least_area(d)
     a = np.clip(a, a_min, a_max)
     steps, best, best_run, stop = [], None, None, f"{iterations} iterations"
-    front, advanced = -math.inf, 0
+    front, stuck, scores = 0, 0, []
     trial = dict(d)
     rise = shapes.specified(pulse.checked_shape, pulse.peak, pulse.duration).rise
     c = liquid.sound_speed()
@@ -137,36 +141,42 @@ def cut_pin(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int = CELLS,
         ratio = np.where(body, force / np.where(body, target, 1.0), 1.0)
         off = body & (np.abs(ratio - 1.0) > tolerance)
         held = ((ratio > 1.0) & (a >= a_max * (1 - 1e-9))) | ((ratio < 1.0) & (a <= a_min * (1 + 1e-9)))
-        free = np.flatnonzero(off & ~held)
+        free = np.flatnonzero(off & ~held & (np.arange(len(x)) >= front))
         topped = body & (t >= rise)         # the convergence is read past the rise (the front's step is the law's)
         deviation = float(np.max(np.abs(ratio[topped] - 1.0), initial=0.0))
         steps.append(CutStep(float(np.max(force[topped], initial=0.0)) / d["force"] - 1.0, deviation,
                              float(np.max(np.abs(run.acceleration))), float(x[free[0]]) if len(free) else math.nan))
         if echo:
             echo(f"    pin cut {k}: overshoot {steps[-1].overshoot:+.3f}, deviation {deviation:.3f}")
-        if best is None or deviation < steps[best].deviation:
+        value = deviation if score is None else score(trial, run)
+        scores.append(float(value))
+        if best is None or value < scores[best]:
             best, best_pin, best_run = k, a.copy(), run
         if deviation <= tolerance:
             stop = "converged"
             break
         if not len(free):
-            stop = "every point outside the tolerance held at a bound"
+            stop = "every point outside the tolerance held at a bound or passed"
             break
-        if x[free[0]] > front:            # the march advanced: its progress, as the best's is the match's
-            front, advanced = x[free[0]], k
-        if k - max(best, advanced) >= STALL:
-            stop = f"no improvement in {STALL} iterations"
-            break
+        # the march never goes back; a point it has worked on for ``STALL`` iterations without bringing
+        # it inside (its bin holds a returning wave's arrival, which moves with the stroke) is passed
+        front, stuck = (free[0], 0) if free[0] > front else (front, stuck + 1)
+        if stuck >= STALL:
+            later = free[free > front]
+            if not len(later):
+                stop = "every point outside the tolerance held at a bound or passed"
+                break
+            front, stuck = later[0], 0
         change = np.clip(0.5 * RELAXATION * _smoothed(np.log(ratio), SMOOTHING), -STEP_CAP, STEP_CAP)
-        change[:free[0]] = 0.0           # the prefix already within tolerance (or held) stays as it is
-        # later than one transit of the column left from the first free point, the force answers this
+        change[:front] = 0.0             # the prefix already within tolerance (held, or passed) stays as it is
+        # later than one transit of the column left from the march's front, the force answers this
         # step's change too (its waves return from the floor): that part waits for the next iterations
-        change[t > t[free[0]] + (d["column"] - x[free[0]]) / c] = 0.0
+        change[t > t[front] + (d["column"] - x[front]) / c] = 0.0
         a = np.clip(a * np.exp(change), a_min, a_max)
     out = dict(d)
     if best is not None:
         out["pin"] = [[float(u), float(v)] for u, v in zip(x, best_pin)]
-    out["pin_cut"] = {"steps": [s.as_dict() for s in steps], "best": best, "stop": stop,
+    out["pin_cut"] = {"steps": [{**s.as_dict(), "score": v} for s, v in zip(steps, scores)], "best": best, "stop": stop,
                       "converged": stop == "converged", "cells": cells, "tolerance": tolerance,
                       "least_area": a_min, "largest_area": a_max}
     return out, best_run

@@ -9,7 +9,7 @@ from shockfem.programmer.pin_cut import cut_pin, least_area
 from shockfem.units import G0
 
 # a mild dashpot (2,000 g for 10 ms on 5.44 kg, the column's transit 0.9 ms against a 1 ms rise) on 60
-# cells: each column run takes about 0.1 s
+# cells: each column run takes about 0.1 s, the test about 6 s
 PULSE = PulseSpec("rectangle", 2000 * G0, 0.01)
 ARTICLE = 5.44
 
@@ -23,16 +23,17 @@ def _wrong_design():
 
 def test_cut_reduces_a_wrong_pins_overshoot():
     d = _wrong_design()
-    cut, run = cut_pin(d, PULSE, MINERAL_OIL, cells=60, iterations=12)
+    cut, run = cut_pin(d, PULSE, MINERAL_OIL, cells=60, iterations=40)
     steps = cut["pin_cut"]["steps"]
     first, best = steps[0], steps[cut["pin_cut"]["best"]]
     assert run is not None
     # the first iteration is the wrong pin itself (the quasi-steady law's 1.56 less what the column's
     # first transit takes): an overshoot of at least 1.0
     assert first["overshoot"] > 1.0
-    # the cut takes at least a tenth off it (measured: 1.45 to 1.17 in 12 runs); a cut that did not
-    # move the pin, or moved it the wrong way, keeps the first overshoot and fails here
-    assert best["overshoot"] < 0.9 * first["overshoot"]
+    # the cut takes at least 30% off it (measured: 1.45 to 0.79 in 40 runs, the march passing the
+    # first returned wave's arrival at 0.17 m after its third try); a cut that did not move the pin, or
+    # moved it the wrong way, keeps the first overshoot and fails here
+    assert best["overshoot"] < 0.7 * first["overshoot"]
     assert best["deviation"] <= first["deviation"]
 
 
