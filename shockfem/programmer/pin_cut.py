@@ -66,17 +66,19 @@ LEAST_GAP = 1.0e-4          # [m] the pin's least radial gap in the piston's hol
 
 @dataclass(frozen=True)
 class CutStep:
-    """One iteration: its peak overshoot (largest F_col / F_target - 1 over the body), its largest
-    deviation |F_col / F_target - 1|, the payload's peak [m/s^2] and the stroke's first point outside
-    the tolerance that could still move [m] (nan: none)."""
+    """One iteration: its peak overshoot (largest F_col / F_target - 1 over the body past the rise), its
+    largest deviation |F_col / F_target - 1|, the payload's peak [m/s^2], the stroke's first point outside
+    the tolerance that could still move [m] (nan: none), and the largest overshoot where the pin is held
+    at the law's largest opening (what no pin in the law's range takes off there; 0: none)."""
     overshoot: float
     deviation: float
     peak: float
     first_free: float
+    held_overshoot: float
 
     def as_dict(self) -> dict:
         return {"overshoot": self.overshoot, "deviation": self.deviation, "peak": self.peak,
-                "first_free": self.first_free}
+                "first_free": self.first_free, "held_overshoot": self.held_overshoot}
 
 
 def least_area(d: dict) -> float:
@@ -145,7 +147,8 @@ def cut_pin(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int = CELLS,
         topped = body & (t >= rise)         # the convergence is read past the rise (the front's step is the law's)
         deviation = float(np.max(np.abs(ratio[topped] - 1.0), initial=0.0))
         steps.append(CutStep(float(np.max(force[topped], initial=0.0)) / d["force"] - 1.0, deviation,
-                             float(np.max(np.abs(run.acceleration))), float(x[free[0]]) if len(free) else math.nan))
+                             float(np.max(np.abs(run.acceleration))), float(x[free[0]]) if len(free) else math.nan,
+                             float(np.max(ratio[topped & held & (ratio > 1.0)] - 1.0, initial=0.0))))
         if echo:
             echo(f"    pin cut {k}: overshoot {steps[-1].overshoot:+.3f}, deviation {deviation:.3f}")
         value = deviation if score is None else score(trial, run)
