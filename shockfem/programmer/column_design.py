@@ -28,8 +28,9 @@ and where it cannot, the checks say why.
 The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
 the striker and the force, and the pin's area table is iterated against the column's own force at the
 design grid, from the quasi-steady pin the handles were searched with; of its iterates the design keeps
-the one of the least objective (the search's: band, checks, housing), so the cut never makes the design
-worse by that objective (its first iterate is the quasi-steady pin).
+the one of the least objective (the search's: band, checks, housing) among those inside every vetoing
+check of the column's, so the cut never makes the design worse by that objective nor takes it out of the
+laws' ranges (its first iterate is the quasi-steady pin).
 
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
@@ -70,6 +71,8 @@ SEARCH_CELLS = 100                      # the column's cells in the search (the 
 # a check outside its limit by a ratio r adds PENALTY ln(r) to the objective (the band's own excess
 # weighs 10): a log, since a check can be outside by orders of magnitude (a cavity against 1e-6)
 PENALTY = 10.0
+# the pin's cut: an iterate outside a vetoing check of the column's scores this much over its objective
+OUTSIDE_SCORE = 1.0e6
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
@@ -245,11 +248,17 @@ def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations
     """The design with its pin cut on the column (``pin_cut.cut_pin``) at ``cells``, the best iterate by
     the search's own objective (``design_objective``: the band, the checks and the housing, not the
     force's match alone: a pin that flattens the force by raising the floor's pressure beyond what a
-    housing holds is no better design); ``d`` itself with no ``iterations``."""
+    housing holds is no better design), among the iterates inside every vetoing check of the column's if
+    any is (the designer does not cut a pin into a region where its model is invalid); ``d`` itself with
+    no ``iterations``."""
     if not iterations:
         return d
-    return cut_pin(d, pulse, liquid, cells, iterations,
-                   score=lambda trial, run: design_objective(trial, run, pulse, liquid, steel, rule))[0]
+
+    def score(trial, run):
+        # an iterate outside a vetoing check of the column's is never kept over one inside them all
+        inside = column_holds(dashpot_limits(dashpot_lumped(trial), run, liquid))
+        return design_objective(trial, run, pulse, liquid, steel, rule) + (0.0 if inside else OUTSIDE_SCORE)
+    return cut_pin(d, pulse, liquid, cells, iterations, score=score)[0]
 
 
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,
