@@ -50,7 +50,9 @@ def main():
         "velocity_change_m_s": col and col["velocity_change"], "band_passed": col and col["band_passed"],
         "worst_excess": col and col["worst_excess"], "peak_pressure_MPa": col and col["peak_pressure"] / 1e6,
         "wall_ratio": w and w["wall_ratio"], "housing_kg": w and w["housing"], "fixture_kg": w and w["fixture"],
-        "flagged": flagged, "search_wall_s": out["search_wall"], "verdict": out["verdict"]}))
+        "flagged": flagged, "search_wall_s": out["search_wall"], "verdict": out["verdict"],
+        "pin_cut_overshoots": [s["overshoot"] for s in d.get("pin_cut", {}).get("steps", [])],
+        "pin_cut_kept": d.get("pin_cut", {}).get("best"), "pin_cut_stop": d.get("pin_cut", {}).get("stop")}))
 
 
 if __name__ == "__main__":
