@@ -10,7 +10,8 @@ The study's own objects (its pulse, article, liquids and its default size's desi
 the one change (and ``--pin-iterations``, the runs of the pin's cut on the column, the designer's own by
 default; 0 keeps the quasi-steady pin).  ``--seated`` designs the dashpot with section 3's nose seat
 (``study.fixture.nose_seat.nose_seat_design``) riding with the article.  One JSON line a design: bore, striker, the column's
-pulse and peak pressure, the housing's wall ratio and mass, the verdict.
+pulse and peak pressure, the housing's wall ratio and mass, the verdict, and the pin's cut on the column
+(its peak overshoot by iteration, the iterate kept, why it stopped).
 """
 from __future__ import annotations
 
