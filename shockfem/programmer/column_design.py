@@ -30,7 +30,7 @@ the striker and the force, and the pin's area table is iterated against the colu
 design grid, from the quasi-steady pin the handles were searched with; of its iterates the design keeps
 the one of the least objective (the search's: band, checks, housing) among those inside every vetoing
 check of the column's, so the cut never makes the design worse by that objective nor takes it out of the
-laws' ranges (its first iterate is the quasi-steady pin).
+laws' ranges (its first iterate is the quasi-steady pin, its closing end held at the machinable least gap).
 
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
