@@ -60,6 +60,7 @@ from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RAT
 from .dashpot_validity import Limit, column_holds, dashpot_limits, lumped_holds
 from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE, fixture_mass, held_pressure,
                       step_factor)
+from .jet_load import jet_load
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
 from .pin_cut import ITERATIONS as PIN_ITERATIONS, cut_pin
@@ -264,8 +265,9 @@ def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,
             cells: int = CELLS, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
     """A design on the column at ``cells`` and ``search_cells`` and on the lumped model, each with its
-    pulse, band check and validity checks, the fixture weighed on the column's pressures, and the
-    striker against what carries that housing (``striker_report``)."""
+    pulse, band check and validity checks, the fixture weighed on the column's pressures, the striker
+    against what carries that housing (``striker_report``), and the jet's load per shot on its receiver
+    (``jet_load``, on the column at ``cells``; reported, not a verdict's)."""
     end, lumped_design = pulse.record_end(), dashpot_lumped(d)
     runs, walls = {}, {}
     for name, fn in (("column", lambda: simulate_column(lumped_design, end, LUMPED_SAMPLES, cells, liquid.column())),
@@ -299,6 +301,7 @@ def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int =
                else "fails the band" if not col["band_passed"] else "inside")
     return {"design": d, "runs": runs, "models": models, "fixture": weight, "walls": walls, "verdict": verdict,
             "lumped_agrees": _lumped_agrees(models),
+            "jet": jet_load(lumped_design, column, liquid.column()) if column is not None else None,
             "striker": striker_report(d, pulse, weight) if weight is not None else None}
 
 
