@@ -25,6 +25,13 @@ holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log rat
 checks do not all hold is reported outside, not chosen: the search's penalty pushes it in where it can,
 and where it cannot, the checks say why.
 
+The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
+the striker and the force, and the pin's area table is iterated against the column's own force at the
+design grid, from the quasi-steady pin the handles were searched with; of its iterates the design keeps
+the one of the least objective (the search's: band, checks, housing) among those inside every vetoing
+check of the column's, so the cut never makes the design worse by that objective nor takes it out of the
+laws' ranges (its first iterate is the quasi-steady pin, its closing end held at the machinable least gap).
+
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
 below ``STRIKER_RATIO``; the confirmed design reports its striker against what carries its own housing
@@ -53,8 +60,10 @@ from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RAT
 from .dashpot_validity import Limit, column_holds, dashpot_limits, lumped_holds
 from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE, fixture_mass, held_pressure,
                       step_factor)
+from .jet_load import jet_load
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
+from .pin_cut import ITERATIONS as PIN_ITERATIONS, cut_pin
 from .requirement import requirement
 
 HANDLES = ("bore_scale", "column_over_stroke", "force_factor", "speed_factor")
@@ -63,6 +72,8 @@ SEARCH_CELLS = 100                      # the column's cells in the search (the 
 # a check outside its limit by a ratio r adds PENALTY ln(r) to the objective (the band's own excess
 # weighs 10): a log, since a check can be outside by orders of magnitude (a cavity against 1e-6)
 PENALTY = 10.0
+# the pin's cut: an iterate outside a vetoing check of the column's scores this much over its objective
+OUTSIDE_SCORE = 1.0e6
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
@@ -167,7 +178,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                      liquid: DesignLiquid = MINERAL_OIL, striker_ratio: float = STRIKER_RATIO,
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
                      steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None,
-                     largest_ratio: float = VALID_AREA_RATIO) -> dict:
+                     largest_ratio: float = VALID_AREA_RATIO, pin_iterations: int = PIN_ITERATIONS) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
@@ -179,7 +190,9 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
     pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
     "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
-    the law is extrapolated, which the checks flag)."""
+    the law is extrapolated, which the checks flag).  ``pin_iterations``: the column runs the pin's cut
+    on the column may take after the search (``pin_cut.cut_pin``, at ``cells``; 0: the quasi-steady pin);
+    the design's ``pin_cut`` holds its convergence."""
     end, law = pulse.record_end(), OrificeLaw(largest_ratio=largest_ratio)
     striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule,
                                   law)
@@ -194,15 +207,15 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
             run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
         except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
             return 50.0
-        _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
-        return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
-                + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
+        return design_objective(d, run, pulse, liquid, steel, rule)
 
     t0 = time.perf_counter()
     res = minimize(objective, np.array(START), method="Nelder-Mead",
                    options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
     search_wall = time.perf_counter() - t0
     d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
+    t0 = time.perf_counter()
+    d = _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
     out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
         if out["striker"] is None or out["striker"]["carries"]:
@@ -210,19 +223,51 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
         striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
         base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
         d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
+        d = _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
         out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
-               objective=float(res.fun))
+               objective=float(res.fun), pin_cut_wall=time.perf_counter() - t0)
     if echo:
         echo(f"  dashpot on the column ({liquid.name}): {res.nfev} runs, {search_wall:.0f} s, {out['verdict']}")
+        if "pin_cut" in d:
+            echo("  pin cut on the column, peak overshoot by iteration: "
+                 + " ".join(f"{s['overshoot']:+.2f}" for s in d["pin_cut"]["steps"]) + f" ({d['pin_cut']['stop']})")
     return out
+
+
+def design_objective(d: dict, run, pulse: PulseSpec, liquid: DesignLiquid, steel: str = HOUSING_STEEL,
+                     rule: str = WALL_RULE) -> float:
+    """The search's objective of a design ``d`` on its column ``run``: the band's (narrowed by the design
+    margin), every vetoing check of the column's that fails, and the housing beyond the practical wall
+    ratio, each by its log ratio times ``PENALTY``."""
+    _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
+    return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
+            + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
+
+
+def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations: int, steel: str, rule: str) -> dict:
+    """The design with its pin cut on the column (``pin_cut.cut_pin``) at ``cells``, the best iterate by
+    the search's own objective (``design_objective``: the band, the checks and the housing, not the
+    force's match alone: a pin that flattens the force by raising the floor's pressure beyond what a
+    housing holds is no better design), among the iterates inside every vetoing check of the column's if
+    any is (the designer does not cut a pin into a region where its model is invalid); ``d`` itself with
+    no ``iterations``."""
+    if not iterations:
+        return d
+
+    def score(trial, run):
+        # an iterate outside a vetoing check of the column's is never kept over one inside them all
+        inside = column_holds(dashpot_limits(dashpot_lumped(trial), run, liquid))
+        return design_objective(trial, run, pulse, liquid, steel, rule) + (0.0 if inside else OUTSIDE_SCORE)
+    return cut_pin(d, pulse, liquid, cells, iterations, score=score)[0]
 
 
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,
             cells: int = CELLS, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
     """A design on the column at ``cells`` and ``search_cells`` and on the lumped model, each with its
-    pulse, band check and validity checks, the fixture weighed on the column's pressures, and the
-    striker against what carries that housing (``striker_report``)."""
+    pulse, band check and validity checks, the fixture weighed on the column's pressures, the striker
+    against what carries that housing (``striker_report``), and the jet's load per shot on its receiver
+    (``jet_load``, on the column at ``cells``; reported, not a verdict's)."""
     end, lumped_design = pulse.record_end(), dashpot_lumped(d)
     runs, walls = {}, {}
     for name, fn in (("column", lambda: simulate_column(lumped_design, end, LUMPED_SAMPLES, cells, liquid.column())),
@@ -256,6 +301,7 @@ def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int =
                else "fails the band" if not col["band_passed"] else "inside")
     return {"design": d, "runs": runs, "models": models, "fixture": weight, "walls": walls, "verdict": verdict,
             "lumped_agrees": _lumped_agrees(models),
+            "jet": jet_load(lumped_design, column, liquid.column()) if column is not None else None,
             "striker": striker_report(d, pulse, weight) if weight is not None else None}
 
 
