@@ -341,7 +341,7 @@ def closed_form(m: Machine) -> dict:
 # the restitutions the pads' finite-element runs measured at the 12 lb chain's first interface (4,773 kg on
 # 1,600 kg closing at 99 m/s: `python scripts/pad-interface.py --run OUT 4772.5 0.914 0.926 1599.6 0.638 0.638
 # 99.06`, docs/machine.md's Pads): polyurethane's highest and lowest, and flat steel faces
-MEASURED_RESTITUTIONS = {"polyurethane, the best run": 0.49, "polyurethane, the worst run": 0.46,
+MEASURED_RESTITUTIONS = {"polyurethane, the best run": 0.457, "polyurethane, the worst run": 0.374,
                          "flat steel faces": 0.29}
 
 
@@ -380,7 +380,7 @@ def scale_free(m: Machine) -> dict:
 
 
 def _scale_free_words(k: dict) -> str:
-    firsts = "; ".join(f"{label} ({x['restitution']:.2f}): " + (f"{x['first_mass'] / 1e3:,.0f} t" if x["first_mass"]
+    firsts = "; ".join(f"{label} ({x['restitution']:.3g}): " + (f"{x['first_mass'] / 1e3:,.0f} t" if x["first_mass"]
                                                                  else "no chain of these masses gains enough")
                        for label, x in k["first_mass_at_measured"].items())
     return (f"why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last "
