@@ -14,10 +14,6 @@ import pytest
 from shockfem.machine.premise import WINNERS
 from shockfem.units import G0, LB
 
-# the module's tests share one system study (minutes): under ``make test``'s ``--dist loadgroup`` one worker
-# takes them all, so that the study runs once, and ``long`` starts them first (tests/conftest.py)
-pytestmark = [pytest.mark.xdist_group("system_study"), pytest.mark.long]
-
 
 def shockfem(*args):
     return subprocess.run([sys.executable, "-m", "shockfem", *args], capture_output=True, text=True, timeout=900)

@@ -15,12 +15,7 @@ DEFAULT_SIZE = {"rod_on_rod", "rod_on_wall", "unequal_rods", "rod_impact_metrics
                 "penetration_yaw"}
 
 
-# the cases that take minutes (the machine's energy designs a machine; the yawed nose runs 3D at its default
-# size), marked ``long`` so that the suite's workers start them first (tests/conftest.py)
-LONG = {"machine_energy", "penetration_yaw"}
-
-
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.long) if n in LONG else n for n in CASES])
+@pytest.mark.parametrize("name", list(CASES))
 def test_case_passes(name, tmp_path):
     size = "default" if name in DEFAULT_SIZE else "coarse"
     checks = run_cases([name], size, str(tmp_path), echo=lambda *a: None)
