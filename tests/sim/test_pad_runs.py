@@ -106,11 +106,12 @@ def test_a_pad_over_its_limit_on_its_run_is_resized_into_it_and_measured_again(c
 
 
 def test_a_resizing_that_runs_out_of_resizes_says_so(chain, monkeypatch):
-    """No resize allowed: the over-limit pad is kept, not converged, and the verdict says so (its run cached
-    by the test above, so nothing runs)."""
+    """No resize allowed: the over-limit pad is kept, not converged, and the verdict says so (its run in the
+    module's cache, made here if the test above ran on another worker, so that the resizing runs nothing)."""
     spec, masses, bodies, _, folder, _ = chain
     monkeypatch.setattr(pads, "MAX_RESIZES", 0)
     first = interfaces(spec, masses, bodies, 0.6)[0]
+    RunCache(folder).measure(first, "pu_90a", "smoke", peak_factor=1.0)
     cache = RunCache(folder)
     m, pad, resizing = cache.measure_within_limits(first, "pu_90a", "smoke", peak_factor=1.0)
     assert cache.misses == 0 and not resizing.converged and len(resizing.steps) == 1
