@@ -54,13 +54,17 @@ def sonic_speed(c0: float, gamma: float) -> float:
     return c0 * math.sqrt(2 / (gamma + 1))
 
 
+def sonic_pressure_ratio(gamma: float) -> float:
+    """p* / p0 = (2 / (gamma + 1))^(gamma / (gamma - 1)): the chambered gun's pressure at its choked bore entry."""
+    return (2 / (gamma + 1)) ** (gamma / (gamma - 1))
+
+
 def chambered_pressure_ratio(u: float, c0: float, gamma: float) -> float:
     """p / p0 behind a projectile at ``u`` [m/s] in the infinitely chambered gun (module docstring)."""
     star = sonic_speed(c0, gamma)
     if u <= star:
         return max(1 - (gamma - 1) * u * u / (2 * c0 * c0), 0.0) ** (gamma / (gamma - 1))
-    p_star = (2 / (gamma + 1)) ** (gamma / (gamma - 1))
-    return p_star * base_pressure_ratio(u - star, star, gamma)
+    return sonic_pressure_ratio(gamma) * base_pressure_ratio(u - star, star, gamma)
 
 
 def _integral(u: float, c0: float, gamma: float, chambered: bool = False) -> float:
@@ -92,8 +96,7 @@ def _chambered_integral(u: float, c0: float, gamma: float) -> float:
     x = u - star
     a, k = (gamma - 1) / (2 * star), 2 * gamma / (gamma - 1)
     J = math.expm1((1 - k) * math.log1p(-a * x)) / (a * (k - 1))
-    p_star = (2 / (gamma + 1)) ** (gamma / (gamma - 1))
-    return low + (_integral(x, star, gamma) + star * J) / p_star
+    return low + (_integral(x, star, gamma) + star * J) / sonic_pressure_ratio(gamma)
 
 
 def escape_speed(c0: float, gamma: float, chambered: bool = False) -> float:

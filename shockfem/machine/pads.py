@@ -562,23 +562,23 @@ class RunCache:
         RESIZE_BAND to 1 of its working stress: the next size at the peak factor the run measured, at most
         MAX_RESIZES times; the restitution is the final size's run's.  ``peak_factor``: the first size's
         (default ``PEAK_FACTOR``)."""
-        mat = pad_material(material)
+        mat, rounded = pad_material(material), iface.rounded()
         m, pad = self.measure(iface, material, resolution, peak_factor=peak_factor)
         if mat.kind != "elastomer" or not m.ran:
             # not run: its stress rests on the closed form and PEAK_FACTOR alone, which the verdict says is
             # outside its range where it is
-            return m, pad, Resizing(verdict=sizing_range(iface.rounded(), pad))
-        steps = [_step(iface.rounded(), pad, m, mat.working_stress)]
+            return m, pad, Resizing(verdict=sizing_range(rounded, pad))
+        steps = [_step(rounded, pad, m, mat.working_stress)]
         while not _in_band(steps[-1], pad) and len(steps) <= MAX_RESIZES:
             m, pad = self.measure(iface, material, resolution, peak_factor=steps[-1]["run_peak_factor"])
             if not m.ran:
                 return m, pad, Resizing(steps, False, f"the resized pad was not run: {m.note}")
-            steps.append(_step(iface.rounded(), pad, m, mat.working_stress))
+            steps.append(_step(rounded, pad, m, mat.working_stress))
         converged = _in_band(steps[-1], pad)
         # its limits at the restitution its run measured: an elastomer's geometry does not depend on it, its
         # heat a shot does
-        pad = size_pad(iface.rounded(), material, m.restitution, pad.peak_factor)
-        return m, pad, Resizing(steps, converged, _verdict(steps, converged, sizing_range(iface.rounded(), pad)))
+        pad = size_pad(rounded, material, m.restitution, pad.peak_factor)
+        return m, pad, Resizing(steps, converged, _verdict(steps, converged, sizing_range(rounded, pad)))
 
     def measure(self, iface: Interface, material: str, resolution: str = "coarse",
                 restitution: float | None = None, peak_factor: float | None = None) -> tuple[Measured, PadDesign]:
