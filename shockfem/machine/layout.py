@@ -90,6 +90,18 @@ def ring_area(outer: float, inner: float) -> float:
     return math.pi * (outer * outer - inner * inner) / 4
 
 
+def tank_length(volume: float, diameter: float, head_thickness: float) -> float:
+    """A tank's overall length [m]: its ``volume`` as a cylinder of inside ``diameter`` between hemispherical
+    heads, then the heads."""
+    L_cyl = max(volume - math.pi * diameter ** 3 / 6, 0.0) / (math.pi * diameter * diameter / 4)
+    return L_cyl + diameter + 2 * head_thickness
+
+
+def frame_section(force: float, allowable: float) -> float:
+    """Each of the frame's two side members [m^2]: half ``force`` at the allowable."""
+    return force / allowable / 2
+
+
 def frame_force(stops: list[Stop], recoil: float) -> float:
     """The largest force the frame's side members carry [N]: the largest stop force, or the gun's recoil at
     firing (its thrust on the projectile, carried from the breech to the stops' end), whichever is larger."""
@@ -106,9 +118,7 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
     items: list[Item] = []
     tank = size["tank"]
     D_t = tank["diameter"]
-    # the tank's overall length: its volume as a cylinder between hemispherical heads, then the heads
-    L_cyl = max(g.reservoir_volume - math.pi * D_t ** 3 / 6, 0.0) / (math.pi * D_t * D_t / 4)
-    L_tank = L_cyl + D_t + 2 * tank["head_thickness"]
+    L_tank = tank_length(g.reservoir_volume, D_t, tank["head_thickness"])
     items.append(Item("tank", "tank", 0.0, L_tank, D_t + 2 * tank["shell_thickness"], D_t, tank["weight"],
                       tank["material"], f"{g.reservoir_volume:.3g} m^3 of {g.gas} at {g.reservoir_pressure / 1e6:.3g} MPa"))
     bodies = amp.bodies
@@ -195,7 +205,7 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         items.append(Item(f"rails_{body}", "rail", it.x0, stop_end[body] - it.x0, it.diameter, 0.0, 0.0, material,
                           f"two rails, sliding shoes under {it.name}"))
     F = frame_force(stops, max_force)
-    section = F / allowable / 2
+    section = frame_section(F, allowable)
     frame_mass = 2 * rho * section * length
     items.append(Item("frame", "frame", 0.0, length, width, 0.0, frame_mass, material,
                       f"two side members of {section * 1e4:.3g} cm^2 each: the largest of the stop forces and the "

@@ -8,6 +8,7 @@ import os
 
 from ..amplifier import rigid
 from ..amplifier.chain import run_chain_scene
+from ..machine import gas_drive as D
 from ..machine import premise as P
 from ..machine.amplifier import chain_scene
 from ..machine.limits import broken, by_cause, counted, verdict_line
@@ -166,25 +167,61 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
     c, target = P.flying_target_arrangement(m.spec, m.fixture)
-    rep.table("arrangements", ARRANGEMENT_HEADER, [_arrangement_row(x) for x in (a, b, b0, c)], ARRANGEMENT_FORMATS)
+    echo("  (d) the closed-breech gas drive")
+    drives = D.gas_drives(m.spec, m.fixture)
+    d_rows = [D.arrangement(x) for x in drives]
+    rep.table("arrangements", ARRANGEMENT_HEADER, [_arrangement_row(x) for x in (a, b, b0, c, *d_rows)],
+              ARRANGEMENT_FORMATS)
     rep.text("Every arrangement delivers the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
              "psi) with the striker in an aluminium sabot (its mass grows with the bore, so the bore is scanned); "
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
              "target (30 lb for a 12 lb article, the fixture designed for it) fired by the white paper's own gun "
-             "(12 in, 2,000 psi, 20 ft^3) with as long a barrel as it needs.")
+             "(12 in, 2,000 psi, 20 ft^3) with as long a barrel as it needs; (d) the closed-breech gas drive "
+             "(`machine/gas_drive.py`, the HYGE-type actuator: the gas drives piston, carriage and article itself, "
+             "no striker and no dashpot; its 'launched' column is the moving mass, its 'barrel' the stroke) in air "
+             "and in helium at the spec's 5,000 psi, its pulse by the infinitely chambered gun's base pressure "
+             "with the valve's onset ramp and the fall as the piston leaves the cylinder, caught at "
+             f"{D.CATCH_RATIO:.0%} of the peak after the band's window (the model leaves out the valve's dynamics "
+             "beyond that ramp, gas friction and heat loss, the seal, the piston's elastic waves).")
+    gas_drive_table(rep, drives)
     closed = P.closed_form(m)
     remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
                                  2 * m.fixture.housing_outer_radius)
     boundary_table(rep, closed)
-    words = P.verdict(a, b, c, b0, closed, remedies)
+    words = P.verdict(a, b, c, b0, closed, remedies)[:-1] + "; " + D.verdict_words(drives, a, b) + "."
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
     for x in (a, b, b0, c):
         rep.value(f"launch_energy_{x.name.split(')')[0].strip('(')}", x.launch_energy)
     rep.value("premise_closed_form", closed)
     rep.value("direct_remedies", remedies)
+    rep.value("gas_drives", [{"gas": x.gas, "feasible": x.feasible, "in_band": x.in_band,
+                              "worst_excess": x.band.worst_excess if x.band else None,
+                              "machine_mass": x.machine_mass, "machine_length": x.machine_length,
+                              "moving_mass": x.moving.total if x.moving else None,
+                              "bore": x.gun.bore if x.gun else None, "stored": y.stored,
+                              "broken": [lim.describe() for lim in broken(x.limits)]}
+                             for x, y in zip(drives, d_rows)])
     return a, b, b0, c, target
+
+
+def gas_drive_table(rep: Report, drives: list):
+    """(d)'s pulse and parts, gas by gas."""
+    rows = []
+    for x in drives:
+        p, mv, lu = x.pulse, x.moving, x.lumped
+        rows.append([x.gas, x.sound_speed, p.specific_force / G0 if p else float("nan"), p.peak / G0 if p else
+                     float("nan"), x.band.worst_excess if x.band else float("nan"),
+                     "yes" if x.in_band else "NO", mv.material if mv else "none", mv.piston_mass if mv else
+                     float("nan"), x.stop.kind if x.stop else "-", x.stop.stroke if x.stop else float("nan"),
+                     lu["speed_error"] if lu else float("nan"), ("yes" if lu["band"].passed else "NO") if lu else "-",
+                     "FEASIBLE" if x.feasible else "NOT FEASIBLE"])
+    rep.table("gas_drive", ["gas", "c0 [m/s]", "k = p0 A / m [g]", "peak [g]", "band: worst excess [of peak]",
+                            "in the band", "piston", "piston [kg]", "catch", "catch stroke [m]",
+                            "lumped gun: end speed error [-]", "lumped gun: in the band", "verdict"], rows,
+              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}", "{:.3g}", "{}", "{:.3g}", "{:+.2%}", "{}",
+               "{}"])
 
 
 def boundary_table(rep: Report, k: dict):

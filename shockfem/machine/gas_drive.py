@@ -1,0 +1,419 @@
+"""Arrangement (d) of the premise: the closed-breech gas drive, the pulse made by the gas pressure itself (the
+HYGE-type pneumatic shock actuator, the standard non-pyrotechnic shock tester), with no striker, no amplifier
+and no dashpot.
+
+The article stands on its nose seat (the carriage, a steel cylinder of its diameter and one diameter deep) on
+a thrust piston in a closed cylinder; a chamber (the tank) at p0 opens on the piston's back through a
+full-bore valve (a HYGE's seal lifting off its seat) and the gas drives piston, carriage and article over the
+stroke until the piston leaves the cylinder's open end, where the gas escapes around it and the drive ends;
+the moving mass then runs free past the pulse's monitoring window and is caught by an absorber
+(``stops.design_stop``).
+
+The drive's pressure (``drive_pulse``): the infinitely chambered gun's base pressure
+(``launcher.simple_wave.chambered_pressure_ratio``, Seigel 1965 ch. 3), so the specific force
+k = p0 A / m falls as the piston speeds up, a(t) = k s(t) pi(u) with
+
+* s(t) = t / t_r over the valve's opening, t_r the trapezoid's rise (10% of D, ``metrics.shapes.specified``),
+  then 1: the onset ramp the valve must give (the chamber's pressure let in in proportion to its opening);
+* once the piston's back passes the open end (at t_p = D - t_f) the force falls linearly to zero over the
+  trapezoid's fall t_f (the gas escaping round the piston); u_end = u_p + a_p t_f / 2.
+
+The design (``design_gas_drive``) holds the trapezoid's velocity change (its band centre, 441 m/s for
+10,000 g and 5 ms) and its duration D foot to foot: one specific force k does both (``specific_force_for``),
+so the plateau's mean is the peak; sizing the bore instead for m P at the pressure left at the end of the
+stroke (a plateau that starts at P / pi(u_end)) would make the pulse shorter than D.  Then the parts, at the
+spec's highest pressure p0 (the smallest bore and the lightest piston: the piston's own inertia takes
+rho h a of the pressure):
+
+* the piston, a flat disc of the bore, the carriage's load W = (m_article + m_carriage) a_peak entering at its
+  centre over the carriage's radius r0: its thickness from a simply supported plate under a central load,
+  sigma = 3 W [(1 + nu) ln(R / r0) + 1] / (2 pi h^2) = S (Roark, 7th ed., Table 11.2 case 16; Timoshenko and
+  Woinowsky-Krieger, Plates and Shells, sec. 19), an upper bound: the real piston is held by its own inertia
+  spread over its face, not at its rim; of the library's metals the lightest piston is kept;
+* the bore A = m k / p0 with m = article + carriage + piston, solved as a fixed point (the piston grows with
+  the bore); when the piston's own inertia needs more pressure than p0 gives, no drive exists (``None``);
+* the cylinder (travel + piston + carriage + article long) and the tank by the launcher's ASME rules
+  (``launcher.design.weights``), the tank's volume V0 such that its pressure holds within ``CHAMBER_HOLD``
+  while the swept volume fills: p_c / p0 >= (V0 / (V0 + A x))^gamma (the cylinder's gas is less dense than
+  the chamber's at the same entropy), so V0 = A x / ((1 - CHAMBER_HOLD)^(-1/gamma) - 1);
+* the catch at ``CATCH_RATIO`` of the peak (below), after a free run of the band's monitoring window after
+  the pulse (1.5 D at u_end), so that the catch is no part of the record the band checks; the frame carries
+  the larger of the drive's thrust p0 A and the catch's force at the allowable (``layout.frame_force``).
+
+The catch's deceleration: at most ``CATCH_RATIO`` = half the band's limit on |a| outside the pulse (20% of P,
+``metrics.shapes.TOLERANCE["outside"]``), i.e. 10% of the peak: the article's second shock is then a tenth of
+its test, and the other half of that limit is left for the absorber's onset and ringing.
+
+Range of the model (each checked on every design where it can be): a perfect gas at rest in the chamber at
+293 K; the chamber's pressure held within ``CHAMBER_HOLD`` (by the tank's size); the valve's opening is the
+stated linear ramp of pressure, not its flow dynamics; the drive's end is the stated linear fall, not the
+gas's escape round the piston; no gas friction or heat loss, no seal drag, no air ahead; the piston and
+carriage rigid (their elastic waves left out: the radial wave transit R / c_bar over the rise is checked
+against ``WAVE_RANGE``).  ``lumped_check`` fires the same cylinder and tank with the lumped gun
+(``launcher.gun.fire``: the finite tank, the valve's flow through its opening area, the Lagrange gas inertia,
+the air ahead), the independent model the chambered law leaves those out of.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+from ..launcher.design import LauncherDesign, weights
+from ..launcher.gas import GASES
+from ..launcher.gun import Gun, fire
+from ..launcher.simple_wave import chambered_pressure_ratio, escape_speed
+from ..metrics import shapes
+from ..scene.library import LIBRARY, initial_yield_stress, property_si
+from ..units import G0, IN, PSI
+from .boundary import TEMPERATURE
+from .launcher import SIZING, launcher_of
+from .layout import RING_CLEARANCE, frame_force, frame_section, ring_area, tank_length
+from .limits import Limit, broken
+from .premise import Arrangement
+from .spec import MachineSpec
+from .stops import design_stop
+
+# the catch's deceleration over the pulse's peak (module docstring): half the band's |a| limit outside the pulse
+CATCH_RATIO = 0.5 * shapes.TOLERANCE["outside"]
+# the chamber's pressure may fall by this share while the swept volume fills: a quarter of the band's +/- 20%
+CHAMBER_HOLD = 0.05
+# the piston's metals, the lightest piston kept (each with its yield and source in the scene library)
+PISTON_MATERIALS = ("aluminium_6061_t6", "titanium_50a", "high_strength_steel")
+# the rigid piston's range: its radial bar-wave transit R / sqrt(E / rho) at most this share of the rise
+WAVE_RANGE = 0.1
+SEAT_DEPTH = 1.0              # the carriage's length over the article's diameter
+GASES_TRIED = ("air", "helium")
+RTOL = 1e-10
+FIXED_POINT_TOL, FIXED_POINT_PASSES = 1e-10, 200
+
+
+@dataclass
+class DrivePulse:
+    """The drive's acceleration history and where it ends."""
+    time: np.ndarray             # [s]
+    acceleration: np.ndarray     # [m/s^2]
+    specific_force: float        # k = p0 A / m [m/s^2]
+    port_time: float             # the piston's back at the open end [s]
+    port_speed: float            # [m/s]
+    stroke: float                # the travel to the open end [m]
+    end_speed: float             # after the fall [m/s]
+    fall_travel: float           # travelled during the fall [m]
+    peak: float                  # [m/s^2]
+
+
+def _ramp(t: float, rise: float) -> float:
+    return min(t / rise, 1.0) if rise > 0 else 1.0
+
+
+def _drive(k: float, c0: float, gamma: float, rise: float, port_time: float, dense: bool = False):
+    """Integrate u' = k s(t) pi(u), x' = u from rest to ``port_time`` (two pieces: the ramp's kink)."""
+    def rhs(t, y):
+        return [k * _ramp(t, rise) * chambered_pressure_ratio(y[0], c0, gamma), y[0]]
+    pieces, y = [], [0.0, 0.0]
+    for t0, t1 in ((0.0, min(rise, port_time)), (min(rise, port_time), port_time)):
+        if t1 > t0:
+            sol = solve_ivp(rhs, (t0, t1), y, method="DOP853", rtol=RTOL, atol=[RTOL * k * port_time,
+                            RTOL * k * port_time ** 2], dense_output=dense)
+            pieces.append(sol)
+            y = sol.y[:, -1]
+    return y[0], y[1], pieces
+
+
+def drive_pulse(k: float, c0: float, gamma: float, rise: float, fall: float, port_time: float,
+                record: float = 0.0, samples: int = 2000) -> DrivePulse:
+    """The drive at specific force ``k`` [m/s^2] (module docstring), its record sampled to ``record`` [s]
+    (free flight after the fall)."""
+    u_p, x_p, pieces = _drive(k, c0, gamma, rise, port_time, dense=True)
+    a_p = k * _ramp(port_time, rise) * chambered_pressure_ratio(u_p, c0, gamma)
+    t = np.linspace(0.0, max(record, port_time + fall), samples)
+    a = np.zeros_like(t)
+    for k_t, s in enumerate(t):
+        if s <= port_time:
+            piece = next(p for p in pieces if s <= p.t[-1] * (1 + 1e-12))
+            a[k_t] = k * _ramp(s, rise) * chambered_pressure_ratio(float(piece.sol(s)[0]), c0, gamma)
+        elif s <= port_time + fall:
+            a[k_t] = a_p * (1 - (s - port_time) / fall)
+    return DrivePulse(t, a, k, port_time, u_p, x_p, u_p + 0.5 * a_p * fall, u_p * fall + a_p * fall ** 2 / 3,
+                      float(max(a.max(), a_p)))
+
+
+def specific_force_for(dv: float, duration: float, rise: float, fall: float, c0: float, gamma: float) -> float:
+    """The specific force k [m/s^2] that gives the velocity change ``dv`` at the end of a pulse of ``duration``
+    (the fall starting at duration - fall); inf past what the gas can give (the escape speed)."""
+    if dv >= escape_speed(c0, gamma, chambered=True) * (1 - 1e-6):
+        return math.inf
+    port = duration - fall
+
+    def short(k):
+        u_p, _, _ = _drive(k, c0, gamma, rise, port)
+        return u_p + 0.5 * k * chambered_pressure_ratio(u_p, c0, gamma) * fall - dv
+    lo = dv / duration
+    hi = lo
+    while short(hi) < 0:
+        hi *= 2
+        if hi > 1e6 * lo:
+            return math.inf
+    return float(brentq(short, lo, hi, xtol=1e-12 * hi, rtol=1e-13))
+
+
+def piston_thickness(load: float, R: float, r0: float, S: float, nu: float) -> float:
+    """The flat piston's thickness [m] (module docstring: Roark Table 11.2 case 16, simply supported, a central
+    load ``load`` [N] over radius ``r0``, at the allowable ``S``)."""
+    return math.sqrt(3 * load * ((1 + nu) * math.log(max(R / r0, 1.0)) + 1) / (2 * math.pi * S))
+
+
+@dataclass
+class Moving:
+    """What the gas drives: the piston (its metal, size and stress), the carriage and the article."""
+    material: str
+    bore: float                  # [m]
+    piston_thickness: float      # [m]
+    piston_mass: float           # [kg]
+    carriage_mass: float         # [kg]
+    total: float                 # article, carriage and piston [kg]
+    allowable: float             # the piston's, its plate stress set to it [Pa]
+    wave_speed: float            # the piston's bar-wave speed sqrt(E / rho) [m/s]
+
+
+def moving_mass(material: str, safety: float, article: float, carriage: float, seat_radius: float, k: float,
+                peak: float, p0: float) -> Moving | None:
+    """The piston of ``material`` and the bore the drive's specific force ``k`` [m/s^2] needs at ``p0`` [Pa]
+    for it, ``carriage`` and ``article`` [kg] at the pulse's ``peak`` [m/s^2] (a fixed point: the piston grows
+    with the bore); None where the piston's own inertia needs more than p0."""
+    rho = property_si(material, "density", "density")
+    S = initial_yield_stress(material) / safety
+    nu = float(LIBRARY[material]["poisson_ratio"])
+    W = (article + carriage) * peak
+    m = article + carriage
+    for _ in range(FIXED_POINT_PASSES):
+        R = math.sqrt(m * k / (p0 * math.pi))
+        h = piston_thickness(W, R, seat_radius, S, nu)
+        # the piston's share of the pressure, rho h k / p0, must stay below 1, or no bore carries it
+        if rho * h * k >= p0:
+            return None
+        new = article + carriage + rho * math.pi * R * R * h
+        if abs(new - m) <= FIXED_POINT_TOL * new:
+            E = property_si(material, "youngs_modulus", "pressure")
+            return Moving(material, 2 * R, h, new - article - carriage, carriage, new, S, math.sqrt(E / rho))
+        m = new
+    return None
+
+
+def tank_volume(swept: float, gamma: float) -> float:
+    """The chamber's volume [m^3] that holds its pressure within ``CHAMBER_HOLD`` while ``swept`` fills
+    (module docstring)."""
+    return swept / ((1 - CHAMBER_HOLD) ** (-1 / gamma) - 1)
+
+
+@dataclass
+class GasDrive:
+    """Arrangement (d) designed for one gas (module docstring)."""
+    gas: str
+    pressure: float              # the chamber's p0 [Pa]
+    sound_speed: float           # c0 [m/s]
+    velocity_change: float       # asked [m/s]
+    pulse: DrivePulse | None
+    moving: Moving | None
+    gun: Gun | None              # the cylinder (bore, stroke) and the tank, as the launcher's rules size them
+    launcher: object = None      # ``machine.launcher.Launcher``: walls, weights, stored gas
+    cylinder_length: float = math.nan   # stroke, piston, carriage and article [m]
+    cylinder_mass: float = math.nan   # its ASME wall over its length [kg]
+    tank_length: float = math.nan     # [m]
+    free_run: float = math.nan   # from the open end to the catch: the fall and the band's window after it [m]
+    stop: object = None          # ``stops.Stop``
+    frame_mass: float = math.nan
+    machine_mass: float = math.nan
+    machine_length: float = math.nan
+    band: object = None          # ``metrics.shapes.BandCheck``
+    limits: list = field(default_factory=list)
+    lumped: dict = field(default_factory=dict)   # ``lumped_check``
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def in_band(self) -> bool:
+        return bool(self.band is not None and self.band.passed)
+
+    @property
+    def feasible(self) -> bool:
+        return self.moving is not None and not broken(self.limits) and self.in_band
+
+
+def _no_drive(spec: MachineSpec, gas: str, c0: float, dv: float, why: str) -> GasDrive:
+    return GasDrive(gas, spec.max_pressure, c0, dv, None, None, None, notes=[why])
+
+
+def design_gas_drive(spec: MachineSpec, gas: str, article: float, article_diameter: float,
+                     article_length: float) -> GasDrive:
+    """(d) for ``gas`` at the spec's highest pressure: the pulse, the parts, the catch, the limits and the band
+    (module docstring); the article [kg], its diameter and length [m]."""
+    g = GASES[gas]
+    p0 = spec.max_pressure
+    c0 = g.sound_speed(p0, TEMPERATURE)
+    ideal = shapes.specified(spec.pulse.checked_shape, spec.pulse.peak, spec.pulse.duration)
+    dv = ideal.velocity_change
+    k = specific_force_for(dv, ideal.duration, ideal.rise, ideal.fall, c0, g.gamma)
+    if not math.isfinite(k):
+        return _no_drive(spec, gas, c0, dv, f"{gas} cannot give {dv:.4g} m/s in {ideal.duration * 1e3:.3g} ms at any "
+                         f"pressure: its escape speed is {escape_speed(c0, g.gamma, True):.4g} m/s")
+    pulse = drive_pulse(k, c0, g.gamma, ideal.rise, ideal.fall, ideal.duration - ideal.fall,
+                        spec.pulse.record_end())
+    band = spec.pulse.band(pulse.time, pulse.acceleration)[1]
+    r0 = article_diameter / 2
+    rho_c = property_si(spec.material, "density", "density")
+    carriage = rho_c * math.pi * r0 * r0 * SEAT_DEPTH * article_diameter
+    options = [mv for mv in (moving_mass(mat, spec.safety_factor, article, carriage, r0, k, pulse.peak, p0)
+                             for mat in PISTON_MATERIALS) if mv]
+    if not options:
+        d = _no_drive(spec, gas, c0, dv, f"no piston of {', '.join(PISTON_MATERIALS)} carries its own inertia at "
+                      f"{p0 / PSI:,.0f} psi and {pulse.peak / G0:,.0f} g (its share of the pressure rho h a over "
+                      f"p0 reaches 1); {_band_words(band)}")
+        d.pulse, d.band = pulse, band
+        return d
+    mv = min(options, key=lambda o: o.total)
+    d = GasDrive(gas, p0, c0, dv, pulse, mv, None, band=band)
+    _size_machine(d, spec, article, article_diameter, article_length, ideal)
+    d.lumped = lumped_check(d, spec, ideal.fall)
+    d.notes = _notes(d, spec)
+    return d
+
+
+def _band_words(band) -> str:
+    return ("its pulse is in the band" if band.passed else f"its pulse is OUTSIDE the band (worst excess "
+            f"{band.worst_excess:.3g} of the peak, velocity change {band.velocity_change_error:+.2%})")
+
+
+def _size_machine(d: GasDrive, spec: MachineSpec, article: float, diameter: float, length: float, ideal):
+    """The cylinder, tank, catch and frame of ``d``, its mass, length and limits."""
+    mv, pulse, g = d.moving, d.pulse, GASES[d.gas]
+    area = math.pi * mv.bore ** 2 / 4
+    V0 = tank_volume(area * pulse.stroke, g.gamma)
+    gun = Gun(V0, d.pressure, mv.bore, pulse.stroke, mv.total, TEMPERATURE, d.gas, valve_area=area,
+              opening_time=ideal.rise)
+    wb, wt = weights(gun, SIZING)
+    L = launcher_of(LauncherDesign(gun, wb + wt, wb, wt, pulse.end_speed, d.velocity_change, pulse.peak, math.nan,
+                                   True), mv.total)
+    size = L.sizing
+    seat = SEAT_DEPTH * diameter
+    d.gun, d.launcher = gun, L
+    d.cylinder_length = pulse.stroke + mv.piston_thickness + seat + length
+    d.cylinder_mass = size["barrel"]["weight"] * d.cylinder_length / pulse.stroke
+    d.tank_length = tank_length(V0, size["tank"]["diameter"], size["tank"]["head_thickness"])
+    d.free_run = pulse.fall_travel + shapes.TOLERANCE["after"] * ideal.duration * pulse.end_speed
+    rho = property_si(spec.material, "density", "density")
+    S = initial_yield_stress(spec.material) / spec.safety_factor
+    d.stop = design_stop("gas drive's piston, carriage and article", mv.total, pulse.end_speed, mv.piston_thickness,
+                         rho, S, ring_area(mv.bore, diameter + RING_CLEARANCE), spec.oil_pressure,
+                         deceleration=CATCH_RATIO * spec.pulse.peak)
+    thrust = d.pressure * area
+    d.machine_length = d.tank_length + d.cylinder_length + d.free_run + d.stop.length
+    d.frame_mass = 2 * rho * frame_section(frame_force([d.stop], thrust), S) * d.machine_length
+    d.machine_mass = wt + d.cylinder_mass + mv.total + d.stop.absorber_mass + d.frame_mass
+    seat_stress = (article + mv.carriage_mass) * pulse.peak / (math.pi * diameter ** 2 / 4)
+    d.limits = [
+        Limit("gas drive cylinder", "bore", mv.bore, spec.max_bore, "m", "the bore A = m k / p0", "the spec's limit"),
+        Limit("gas drive cylinder", "length", d.cylinder_length, spec.max_barrel_length, "m",
+              "stroke, piston, carriage and article", "the spec's barrel limit"),
+        Limit("gas drive cylinder", "wall hoop stress (Lame, inner wall)", size["barrel"]["hoop_stress"],
+              size["barrel"]["hoop_stress"] * (1 + size["barrel"]["margin"]), "Pa", size["barrel"]["rule"],
+              f"ASME II-D allowable of {size['barrel']['material']}"),
+        Limit("gas drive piston", "plate stress", mv.allowable, mv.allowable, "Pa",
+              "Roark Table 11.2 case 16, simply supported, central load", f"{mv.material} yield / "
+              f"{spec.safety_factor:g}", sized=True),
+        Limit("gas drive carriage", "seat stress", seat_stress, S, "Pa", "(article + carriage) a_peak over the seat",
+              f"{spec.material} yield / {spec.safety_factor:g}"),
+        Limit("gas drive piston", "radial wave transit over the valve's rise", mv.bore / 2 / mv.wave_speed / ideal.rise,
+              WAVE_RANGE, "-", "R / sqrt(E / rho) over t_r", "the rigid piston's range"),
+        Limit("gas drive chamber", "pressure fall while the stroke fills", CHAMBER_HOLD, CHAMBER_HOLD, "-",
+              "(V0 / (V0 + A x))^gamma bound", "the chambered law's range (a chamber at p0)", sized=True),
+    ] + list(d.stop.limits)
+
+
+def lumped_check(d: GasDrive, spec: MachineSpec, fall: float) -> dict:
+    """The same cylinder and tank fired by the lumped gun (``launcher.gun.fire``: the finite tank, the valve's
+    flow through its opening area, Lagrange gas inertia, the air ahead) to the open end, then the same fall:
+    its speed there, its peak and its pulse against the band, beside the chambered law's."""
+    shot = fire(d.gun, samples=400)
+    h = shot.history
+    t_p, a_p = float(h["time"][-1]), float(h["acceleration"][-1])
+    t = np.linspace(0.0, max(spec.pulse.record_end(), t_p + fall), 2000)
+    a = np.where(t <= t_p, np.interp(t, h["time"], h["acceleration"]), a_p * np.clip(1 - (t - t_p) / fall, 0.0, 1.0))
+    band = spec.pulse.band(t, a)[1]
+    end = shot.muzzle_velocity + 0.5 * a_p * fall
+    return {"port_speed": shot.muzzle_velocity, "end_speed": end, "peak": shot.peak_acceleration, "band": band,
+            "speed_error": end / d.pulse.end_speed - 1, "peak_error": shot.peak_acceleration / d.pulse.peak - 1}
+
+
+def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
+    mv, p, s, lu = d.moving, d.pulse, d.stop, d.lumped
+    a_end = p.specific_force * chambered_pressure_ratio(p.port_speed, d.sound_speed, GASES[d.gas].gamma)
+    band = d.band
+    out = [f"{d.gas} at {d.pressure / PSI:,.0f} psi: the acceleration {p.peak / G0:,.0f} g after the valve's ramp, "
+           f"{a_end / G0:,.0f} g at the open end ({a_end / spec.pulse.peak:.3g} of the peak); the pulse "
+           + _band_words(band)[10:],
+           f"piston {mv.material} {mv.piston_thickness * 1e3:.0f} mm x {mv.bore / IN:.3g} in ({mv.piston_mass:.3g} kg), "
+           f"carriage {mv.carriage_mass:.3g} kg: {mv.total:.4g} kg driven over {p.stroke:.3g} m to {p.end_speed:.4g} m/s",
+           f"tank {d.gun.reservoir_volume:.3g} m^3 ({CHAMBER_HOLD:.0%} fall at most); caught at {CATCH_RATIO:.0%} of "
+           f"the peak after {d.free_run:.3g} m of free run by a {s.kind} ({s.stroke:.3g} m of stroke, "
+           f"{s.length:.3g} m long, {s.absorber_mass:,.0f} kg)",
+           f"the lumped gun on the same cylinder and tank (finite tank, valve flow, Lagrange gas, air ahead): "
+           f"{lu['end_speed']:.4g} m/s after the fall ({lu['speed_error']:+.2%} of the chambered law's), peak "
+           f"{lu['peak'] / G0:,.0f} g ({lu['peak_error']:+.2%}); {_band_words(lu['band'])}",
+           f"machine {d.machine_mass:,.0f} kg: tank {d.launcher.design.tank_weight:,.0f}, cylinder "
+           f"{d.cylinder_mass:,.0f}, moving {mv.total:.3g}, catch {s.absorber_mass:,.0f}, frame {d.frame_mass:,.0f}; "
+           f"length {d.machine_length:.3g} m: tank {d.tank_length:.3g}, cylinder {d.cylinder_length:.3g}, free run "
+           f"{d.free_run:.3g}, catch {s.length:.3g}"]
+    out += [f"limit broken: {lim.describe()}" for lim in broken(d.limits)]
+    return out
+
+
+def arrangement(d: GasDrive) -> Arrangement:
+    """(d) as a row of the premise's table (its moving mass in the 'launched' column, no striker)."""
+    nan = math.nan
+    name = f"(d) gas drive, {d.gas}"
+    if d.moving is None:
+        return Arrangement(name, nan, nan, nan, nan, nan, nan, nan, d.pressure, nan, nan, nan, nan, nan, False,
+                           list(d.notes), feasible=False)
+    L, p = d.launcher, d.pulse
+    return Arrangement(name, d.moving.total, p.end_speed, 0.5 * d.moving.total * p.end_speed ** 2, 0.0, nan,
+                       d.gun.bore, p.stroke, d.pressure, d.gun.reservoir_volume, L.stored_energy, L.design.weight,
+                       d.machine_mass, d.machine_length, True, list(d.notes), feasible=d.feasible,
+                       required_energy=0.5 * d.moving.total * d.velocity_change ** 2, tank_mass=L.design.tank_weight,
+                       limits=list(d.limits))
+
+
+def gas_drives(spec: MachineSpec, fixture) -> list[GasDrive]:
+    """(d) in air and in helium for the fixture's article (its mass, diameter and length)."""
+    return [design_gas_drive(spec, gas, fixture.article_mass, fixture.article_diameter, fixture.article_length)
+            for gas in GASES_TRIED]
+
+
+def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str:
+    """(d)'s line in the premise's verdict, from its numbers."""
+    parts = []
+    for d in drives:
+        if d.moving is None:
+            parts.append(f"(d) in {d.gas} has no design: {d.notes[0]}")
+            continue
+        why = [f"{lim.component} {lim.quantity} {lim.ratio:.3g} times its limit" for lim in broken(d.limits)]
+        if not d.in_band:
+            why.insert(0, f"its pulse is outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
+        parts.append(f"(d), the closed-breech gas drive in {d.gas} ({d.moving.total:.3g} kg driven over "
+                     f"{d.pulse.stroke:.3g} m from a {d.gun.bore / IN:.3g} in bore at {d.pressure / PSI:,.0f} psi; "
+                     f"{d.machine_mass / 1e3:.3g} t, {d.machine_length:.3g} m long), is "
+                     + ("FEASIBLE: within every limit and its pulse in the band" if d.feasible else
+                        "NOT feasible: " + "; ".join(why)))
+    ok = [d for d in drives if d.feasible]
+    a_ok, b_ok = a.gun_feasible and a.feasible, b.gun_feasible and b.feasible
+    if ok and not (a_ok or b_ok):
+        best = min(ok, key=lambda d: d.machine_mass)
+        parts.append(f"so the gas drive in {best.gas} gives the pulse within the limits where neither the amplifier "
+                     "nor the direct gun does (it needs no striker and no dashpot fixture): on these numbers the "
+                     "premise's answer is the gas drive, not velocity amplification")
+    elif ok:
+        parts.append("the gas drive is feasible beside a feasible (a) or (b): compare their masses and lengths above")
+    return "; ".join(parts)
