@@ -14,7 +14,8 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
   with as long a barrel as the speed needs.
 
 Each is laid out with its stops designed as absorbers (``layout.place``) and weighed the same way.  (b0),
-(b) with a massless sabot, is the direct gun's lower bound and never a machine.  ``verdict`` says, from the
+(b) with a massless sabot, is the direct gun's lower bound and never a machine.  (d), the closed-breech gas drive
+(no striker, no amplifier, no dashpot: the gas pressure makes the pulse), is ``gas_drive``'s.  ``verdict`` says, from the
 arrangements' numbers, which holds within the limits; when neither does, by how much and what would
 change it for the direct gun (``direct_remedies``: the barrel in air and in helium); and what the closed
 form (``closed_form``, ``boundary``) says: the restitution above which any chain needs less gun than the
@@ -501,8 +502,8 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
     if closed and closed.get("scale_free"):
         words.append(_scale_free_words(closed["scale_free"]))
     if a.fixture_problems:
-        words.append("every arrangement carries the same fixture, and it is not within its own limits ("
-                     + "; ".join(a.fixture_problems) + "): no arrangement is a feasible machine until the fixture "
+        words.append("every arrangement (a) to (c) carries the same fixture, and it is not within its own limits ("
+                     + "; ".join(a.fixture_problems) + "): none of them is a feasible machine until the fixture "
                      "is, and the comparison above is of the guns and moving masses that fixture asks")
     if closed:
         words.append(_closed_form_words(closed))

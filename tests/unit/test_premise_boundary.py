@@ -119,9 +119,9 @@ def test_verdict_wording():
     # a feasible direct gun against an infeasible amplifier: amplification does not pay, on (b), not on (b0)
     b.gun_feasible = b.feasible = True
     assert "amplification does not pay" in verdict(a, b, c, b0)
-    # the fixture every arrangement carries, when it breaks its limits, is said to be common to them all
+    # the fixture (a) to (c) carry, when it breaks its limits, is said to be common to them (not to (d), which has none)
     a.fixture_problems = ["its column's pulse is outside the band (worst excess 0.249 of the peak)"]
-    assert "every arrangement carries the same fixture" in verdict(a, b, c, b0)
+    assert "every arrangement (a) to (c) carries the same fixture" in verdict(a, b, c, b0)
     # (b) whose sabot's stop breaks a limit is no feasible direct machine
     b.feasible = False
     assert "amplification does not pay" not in verdict(a, b, c, b0)

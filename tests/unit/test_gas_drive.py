@@ -1,0 +1,106 @@
+"""Arrangement (d), the closed-breech gas drive (``machine.gas_drive``): its pulse against closed forms, its
+sizing rules against their formulas, and the design's verdict where it must follow from its numbers."""
+import math
+
+import pytest
+
+from shockfem.launcher.gas import GASES
+from shockfem.launcher.simple_wave import chambered_pressure_ratio
+from shockfem.machine import gas_drive as D
+from shockfem.machine.boundary import TEMPERATURE
+from shockfem.machine.spec import read_spec
+from shockfem.units import G0, LB
+
+P = 10000 * G0
+DURATION, RAMP = 5e-3, 5e-4          # the spec's 5 ms trapezoid, 10% ramps
+DV = P * (DURATION - RAMP)           # the trapezoid's velocity change P (D - (t_r + t_f) / 2)
+
+
+@pytest.fixture(scope="module")
+def spec():
+    return read_spec({"article": "12 lb"})
+
+
+@pytest.fixture(scope="module")
+def helium(spec):
+    # the fixture study's article: 12 lb, its spec diameter, 0.25 m long
+    return D.design_gas_drive(spec, "helium", 12 * LB, spec.diameter, 0.25)
+
+
+def test_constant_force_limit_holds_the_velocity_change_with_the_peak():
+    # c0 -> inf: pi = 1, so the trapezoid's own k = P gives its velocity change (exact; the brentq's 1e-12)
+    k = D.specific_force_for(DV, DURATION, RAMP, RAMP, 1e9, 1.4)
+    assert k == pytest.approx(P, rel=1e-9)
+
+
+def test_the_specific_force_gives_the_asked_velocity_change_at_the_pulses_end():
+    g = GASES["helium"]
+    c0 = g.sound_speed(34.47e6, TEMPERATURE)
+    k = D.specific_force_for(DV, DURATION, RAMP, RAMP, c0, g.gamma)
+    p = D.drive_pulse(k, c0, g.gamma, RAMP, RAMP, DURATION - RAMP, samples=2)
+    assert p.end_speed == pytest.approx(DV, rel=1e-9)
+    # the falling base pressure asks more than the peak of a constant force, by less than 1 / pi(dv)
+    assert P < k < P / chambered_pressure_ratio(DV, c0, g.gamma)
+
+
+def test_beyond_the_escape_speed_no_drive():
+    g = GASES["air"]
+    c0 = 343.0
+    assert math.isinf(D.specific_force_for(3 * c0 * 2 / (g.gamma - 1), DURATION, RAMP, RAMP, c0, g.gamma))
+
+
+def test_piston_thickness_is_roarks_central_load_formula():
+    # sigma = 3 W [(1 + nu) ln(R / r0) + 1] / (2 pi h^2) back from the thickness it gives
+    W, R, r0, S, nu = 7e5, 0.15, 0.03, 160e6, 0.33
+    h = D.piston_thickness(W, R, r0, S, nu)
+    assert 3 * W * ((1 + nu) * math.log(R / r0) + 1) / (2 * math.pi * h * h) == pytest.approx(S, rel=1e-12)
+
+
+def test_tank_holds_its_pressure_within_the_stated_fall():
+    swept, gamma = 0.05, 5 / 3
+    V0 = D.tank_volume(swept, gamma)
+    assert (V0 / (V0 + swept)) ** gamma == pytest.approx(1 - D.CHAMBER_HOLD, rel=1e-12)
+
+
+def test_the_bore_carries_the_moving_mass_at_the_specific_force(helium):
+    mv, p = helium.moving, helium.pulse
+    area = math.pi * mv.bore ** 2 / 4
+    # A = m k / p0 (the fixed point closes), and the piston is the part its metal and plate rule give
+    assert helium.pressure * area == pytest.approx(mv.total * p.specific_force, rel=1e-8)
+    assert mv.total == pytest.approx(12 * LB + mv.carriage_mass + mv.piston_mass, rel=1e-12)
+
+
+def test_helium_drive_pulse_is_in_the_band_and_its_catch_below_the_stated_ratio(helium, spec):
+    assert helium.band.passed and helium.band.window_complete
+    assert helium.stop.deceleration <= D.CATCH_RATIO * spec.pulse.peak * (1 + 1e-9)
+    # the verdict follows the limits and the band: feasible exactly when nothing is broken and it is in the band
+    from shockfem.machine.limits import broken
+    assert helium.feasible == (not broken(helium.limits) and helium.band.passed)
+
+
+def test_air_cannot_hold_the_band(spec):
+    # at 441 m/s air's chambered base pressure has fallen to about a quarter of p0: the plateau cannot stay
+    # within +/- 20% of the peak, whatever the parts
+    d = D.design_gas_drive(spec, "air", 12 * LB, spec.diameter, 0.25)
+    assert not d.band.passed and d.band.worst_excess > 0.2
+    assert not d.feasible
+
+
+def test_arrangement_row_counts_the_drive(helium):
+    row = D.arrangement(helium)
+    assert row.machine_mass == pytest.approx(helium.machine_mass)
+    assert row.stored == pytest.approx(helium.pressure * helium.gun.reservoir_volume / (GASES["helium"].gamma - 1))
+    assert row.feasible == helium.feasible
+
+
+def test_verdict_names_the_gas_drive_only_where_its_numbers_make_it_the_answer(helium, spec):
+    from shockfem.machine.premise import Arrangement
+
+    def row(ok):
+        return Arrangement("x", 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, ok, [], feasible=ok)
+    air = D.design_gas_drive(spec, "air", 12 * LB, spec.diameter, 0.25)
+    words = D.verdict_words([air, helium], row(False), row(False))
+    assert ("the premise's answer is the gas drive" in words) == helium.feasible
+    assert "(d) in air has no design" in words
+    # beside a feasible direct gun the gas drive is compared, not declared the answer
+    assert "the premise's answer is the gas drive" not in D.verdict_words([helium], row(False), row(True))
