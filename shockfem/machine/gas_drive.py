@@ -138,8 +138,11 @@ def drive_pulse(k: float, c0: float, gamma: float, rise: float, fall: float, por
             a[k_t] = k * _ramp(s, rise) * chambered_pressure_ratio(float(piece.sol(s)[0]), c0, gamma)
         elif s <= port_time + fall:
             a[k_t] = a_p * (1 - (s - port_time) / fall)
+    # the peak is where the ramp ends (pi falls after it), whatever the sampling
+    u_r = pieces[0].y[0, -1] if rise > 0 else 0.0
+    peak = k * chambered_pressure_ratio(u_r, c0, gamma)
     return DrivePulse(t, a, k, port_time, u_p, x_p, u_p + 0.5 * a_p * fall, u_p * fall + a_p * fall ** 2 / 3,
-                      float(max(a.max(), a_p)))
+                      float(max(a.max(), a_p, peak)))
 
 
 def specific_force_for(dv: float, duration: float, rise: float, fall: float, c0: float, gamma: float) -> float:
@@ -152,11 +155,11 @@ def specific_force_for(dv: float, duration: float, rise: float, fall: float, c0:
     def short(k):
         u_p, _, _ = _drive(k, c0, gamma, rise, port)
         return u_p + 0.5 * k * chambered_pressure_ratio(u_p, c0, gamma) * fall - dv
-    lo = dv / duration
-    hi = lo
+    # k D >= u_end, so half of dv / D falls short; double until the speed is passed
+    lo = hi = 0.5 * dv / duration
     while short(hi) < 0:
-        hi *= 2
-        if hi > 1e6 * lo:
+        lo, hi = hi, 2 * hi
+        if hi > 1e6 * dv / duration:
             return math.inf
     return float(brentq(short, lo, hi, xtol=1e-12 * hi, rtol=1e-13))
 
