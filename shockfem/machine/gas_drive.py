@@ -411,12 +411,20 @@ def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str
                      + ("FEASIBLE: within every limit and its pulse in the band" if d.feasible else
                         "NOT feasible: " + "; ".join(why)))
     ok = [d for d in drives if d.feasible]
-    a_ok, b_ok = a.gun_feasible and a.feasible, b.gun_feasible and b.feasible
-    if ok and not (a_ok or b_ok):
-        best = min(ok, key=lambda d: d.machine_mass)
+    # (a) and (b) carry the same fixture: a machine only where it, too, holds its limits
+    fixture = not a.fixture_problems
+    a_ok, b_ok = a.gun_feasible and a.feasible and fixture, b.gun_feasible and b.feasible and fixture
+    if not ok:
+        return "; ".join(parts)
+    best = min(ok, key=lambda d: d.machine_mass)
+    if not (a_ok or b_ok):
+        why = "their common fixture breaks its own limits" if not fixture else "neither is within its limits"
         parts.append(f"so the gas drive in {best.gas} gives the pulse within the limits where neither the amplifier "
-                     "nor the direct gun does (it needs no striker and no dashpot fixture): on these numbers the "
-                     "premise's answer is the gas drive, not velocity amplification")
-    elif ok:
-        parts.append("the gas drive is feasible beside a feasible (a) or (b): compare their masses and lengths above")
+                     f"nor the direct gun does ({why}; the gas drive needs no striker and no dashpot): on these "
+                     "numbers the premise's answer is the gas drive, not velocity amplification")
+    else:
+        other = b if b_ok else a
+        parts.append(f"the gas drive in {best.gas} weighs {best.machine_mass / 1e3:.3g} t and is "
+                     f"{best.machine_length:.3g} m long against {other.name}'s {other.machine_mass / 1e3:.3g} t and "
+                     f"{other.machine_length:.3g} m")
     return "; ".join(parts)

@@ -172,7 +172,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     d_rows = [D.arrangement(x) for x in drives]
     rep.table("arrangements", ARRANGEMENT_HEADER, [_arrangement_row(x) for x in (a, b, b0, c, *d_rows)],
               ARRANGEMENT_FORMATS)
-    rep.text("Every arrangement delivers the striker the fixture designer chose to the payload at rest, the same "
+    rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
              "psi) with the striker in an aluminium sabot (its mass grows with the bore, so the bore is scanned); "
@@ -215,13 +215,20 @@ def gas_drive_table(rep: Report, drives: list):
                      float("nan"), x.band.worst_excess if x.band else float("nan"),
                      "yes" if x.in_band else "NO", mv.material if mv else "none", mv.piston_mass if mv else
                      float("nan"), x.stop.kind if x.stop else "-", x.stop.stroke if x.stop else float("nan"),
-                     lu["speed_error"] if lu else float("nan"), ("yes" if lu["band"].passed else "NO") if lu else "-",
+                     f"{lu['speed_error']:+.2%}" if lu else "-", ("yes" if lu["band"].passed else "NO") if lu else "-",
                      "FEASIBLE" if x.feasible else "NOT FEASIBLE"])
     rep.table("gas_drive", ["gas", "c0 [m/s]", "k = p0 A / m [g]", "peak [g]", "band: worst excess [of peak]",
                             "in the band", "piston", "piston [kg]", "catch", "catch stroke [m]",
                             "lumped gun: end speed error [-]", "lumped gun: in the band", "verdict"], rows,
-              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}", "{:.3g}", "{}", "{:.3g}", "{:+.2%}", "{}",
-               "{}"])
+              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}", "{:.3g}", "{}", "{:.3g}", "{}", "{}", "{}"])
+    rep.text("(d)'s pulse and parts (`machine/gas_drive.py`): k = p0 A / m is the one specific force that gives the "
+             "trapezoid's velocity change over its duration; the peak is where the valve's ramp ends (the chambered "
+             "base pressure falls after it); the band is the fixture study's (`metrics.shapes`); the piston the "
+             "lightest of " + ", ".join(D.PISTON_MATERIALS) + " (a flat disc, Roark's simply supported plate under "
+             f"the carriage's central load); the catch at {D.CATCH_RATIO:.0%} of the peak; the lumped gun "
+             "(`launcher.gun.fire`: the finite tank, the valve's flow, Lagrange gas, the air ahead) fires the same "
+             "cylinder and tank as the independent check. `shockfem verify gas_drive` checks the drive against the "
+             "chambered closed form and the constant-force limit.")
 
 
 def boundary_table(rep: Report, k: dict):

@@ -104,3 +104,7 @@ def test_verdict_names_the_gas_drive_only_where_its_numbers_make_it_the_answer(h
     assert "(d) in air has no design" in words
     # beside a feasible direct gun the gas drive is compared, not declared the answer
     assert "the premise's answer is the gas drive" not in D.verdict_words([helium], row(False), row(True))
+    # a direct gun within its own limits carrying a fixture that breaks its own is no feasible machine either
+    a, b = row(False), row(True)
+    a.fixture_problems = ["its column's pulse is outside the band"]
+    assert ("the premise's answer is the gas drive" in D.verdict_words([helium], a, b)) == helium.feasible
