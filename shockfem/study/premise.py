@@ -1,6 +1,6 @@
 """The white paper's premise on its own: the 12 lb machine designed (``shockfem design-machine --article
-"12 lb"``), then the system study's premise sections on it: the amplifier against a direct striker and a
-flying target with the closed form's boundary and the verdict, the map of where each arrangement wins, and
+"12 lb"``), then the system study's premise sections on it: the amplifier against a direct striker, a
+flying target and a closed-breech gas drive with the closed form's boundary and the verdict, the map of where each arrangement wins, and
 the white paper side by side (``study/system_premise.py``).  ``shockfem study premise`` runs it; the
 smoke size runs no pad (their restitutions the materials' estimates), one start per gun and a 4-point map;
 the default runs the pads at the spec's meshes and the system study's 27-point map."""

@@ -1,5 +1,5 @@
 """The system study's sections on a shot's energy, the verdict's limits, the structural damping, the
-premise (amplifier, direct striker, flying target, and the map of where each wins) and the white paper
+premise (amplifier, direct striker, flying target, gas drive, and the map of where each wins) and the white paper
 side by side (``study/system.py`` runs them after the machines are designed)."""
 from __future__ import annotations
 
