@@ -39,8 +39,7 @@ from scipy.optimize import brentq, minimize_scalar
 from ..amplifier.gain import chain_efficiency
 from ..launcher.gas import GASES
 from ..launcher.simple_wave import efficiency
-from .pad_materials import PAD_MATERIALS
-from .pads import estimated_restitution
+from .pads import estimated_restitution, solid_pads
 
 # the most masses the optimum may use (the design's alternatives go to 7; more than 10 gains little)
 MAX_MASSES = 10
@@ -144,5 +143,6 @@ def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES) -
 def best_pad_restitution() -> tuple[str, float]:
     """The highest restitution any pad material of the library is sized with (``pads.estimated_restitution``:
     an elastomer's sqrt(R) on rigid masses, R its ASTM D2632 rebound; the chain's finite-element runs give
-    lower): (material, e)."""
-    return max(((m, estimated_restitution(m)) for m in PAD_MATERIALS), key=lambda me: me[1])
+    lower; the gas spring, whose restitution depends on its interface, is ``machine.gas_spring``'s): (material,
+    e)."""
+    return max(((m, estimated_restitution(m)) for m in solid_pads()), key=lambda me: me[1])

@@ -19,6 +19,7 @@ from .amplifier_cases import amplifier_1d, amplifier_pads, amplifier_rigid
 from .launcher_cases import launcher_design, launcher_model
 from .machine_cases import direct_striker, machine_energy, machine_geometry
 from .premise_cases import premise_boundary
+from .gas_spring_cases import gas_spring
 from .pad_cases import pad_1d, pad_bars, pad_johnson, pad_mesh, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
@@ -105,6 +106,7 @@ CASES = {
     "machine_energy": machine_energy,
     "direct_striker": direct_striker,
     "premise_boundary": premise_boundary,
+    "gas_spring": gas_spring,
     "pad_bars": pad_bars,
     "pad_rigid": pad_rigid,
     "pad_johnson": pad_johnson,
