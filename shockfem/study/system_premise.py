@@ -10,6 +10,7 @@ from ..amplifier import rigid
 from ..amplifier.chain import run_chain_scene
 from ..machine import premise as P
 from ..machine.amplifier import chain_scene
+from ..machine.gas_spring_chain import gas_spring_chain
 from ..machine.limits import broken, by_cause, counted, verdict_line
 from ..machine.white_paper import CLAIM, claims
 from ..units import FT, G0, IN, LB, PSI
@@ -178,6 +179,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
                                  2 * m.fixture.housing_outer_radius)
     boundary_table(rep, closed)
+    gas_spring_section(rep, m)
     words = P.verdict(a, b, c, b0, closed, remedies)
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
     for x in (a, b, b0, c):
@@ -214,6 +216,61 @@ def boundary_table(rep: Report, k: dict):
              f"{best.get('gun_ratio', float('nan')):.3g}; the design's {k['masses']} masses at "
              f"{k['launch_speed']:.4g} m/s keep {k['chain_efficiency']:.3g} of the launch energy "
              f"({k['chain_efficiency_elastic']:.3g} at e = 1).")
+
+
+def _chain_row(label: str, c: dict) -> list:
+    if not c.get("feasible", True) or c.get("guns") is None:
+        return [label, c.get("restitution"), None, None, None, None, None, None, None, None, c.get("reason", "")]
+    sw, ch = c["guns"]["simple_wave"], c["guns"]["chambered"]
+    sleeves = sum(i["sleeve_mass"] for i in c.get("interfaces", []))
+    return [label, c["restitution"], c.get("masses"), c.get("launch_speed"), c["first_mass"], sleeves,
+            0.5 * c["first_mass"] * c.get("launch_speed", 0.0) ** 2 / 1e6, sw["amplifier"] / 1e6, sw["Q"],
+            ch["amplifier"] / 1e6, ch["Q"]]
+
+
+def gas_spring_section(rep: Report, m):
+    """What the design's chain gains with a gas spring at every interface (``machine.gas_spring_chain``)."""
+    k = gas_spring_chain(m, CLAIM["e"])
+    sc, best, wp = k["spec_chain"], k.get("best_chain", {}), k["at_white_paper_e"]
+    wp_row = {**wp, "masses": m.spec.masses, "launch_speed": m.spec.launch_speed, "feasible": True}
+    rows = [_chain_row("the design's masses and launch speed, a gas spring at every interface", sc),
+            _chain_row("the best chain (its launch speed and masses at the settled e), gas springs", best),
+            _chain_row(f"the design's masses and launch speed at the white paper's e {CLAIM['e']:g}", wp_row)]
+    rep.table("gas_spring_chain", ["chain", "e [-]", "masses", "launch [m/s]", "first mass [kg]",
+                                   "gas springs' sleeves [kg]", "launch energy [MJ]", "gun p0 A L, simple-wave [MJ]",
+                                   "Q simple-wave [-]", "gun p0 A L, chambered [MJ]", "Q chambered [-]"], rows,
+              ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.4g}", "{:.3g}", "{:.4g}", "{:.3g}"])
+    direct = (sc.get("guns") or wp["guns"])
+    iface = [[i["name"], i["closing_speed"], i["restitution"], i["bore"] * 1e3, i["column"], i["peak_pressure"] / 1e6,
+              i["sleeve_mass"], i["mass_share"], "; ".join(i["broken"]) or "all hold"] for i in sc.get("interfaces", [])]
+    rep.table("gas_spring_interfaces", ["interface", "closing [m/s]", "e [-]", "bore [mm]", "gas column [m]",
+                                        "peak [MPa]", "sleeve [kg]", "sleeve over struck body [-]", "broken limits"],
+              iface, ["{}", "{:.4g}", "{:.4f}", "{:.0f}", "{:.3g}", "{:.3g}", "{:,.0f}", "{:.3g}", "{}"])
+    rep.value("gas_spring_chain", k)
+    rep.text(_gas_spring_words(k, direct, rows))
+
+
+def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
+    sc = k["spec_chain"]
+    shares = [i["mass_share"] for i in sc.get("interfaces", [])]
+    held = all(not i["broken"] for i in sc.get("interfaces", []))
+    words = (f"A gas spring (`machine/gas_spring.py`: nitrogen, its peak temperature 50 K below the seal oil's "
+             f"auto-ignition, its restitution from the shocks' entropy rise, heat and seal friction, an upper bound) "
+             f"is the one interface not bound by a solid's v*. The direct gun fires the striker's "
+             f"{k['striker_energy'] / 1e6:.4g} MJ from p0 A L = {direct['simple_wave']['direct'] / 1e6:.4g} MJ "
+             f"(simple-wave) or {direct['chambered']['direct'] / 1e6:.4g} MJ (chambered).")
+    if sc["feasible"]:
+        words += (f" With gas springs the design's chain settles at e {sc['restitution']:.4f}, its first mass "
+                  f"{sc['first_mass']:,.0f} kg launching {rows[0][6]:.4g} MJ from a gun of {rows[0][7]:.4g} MJ "
+                  f"(Q {rows[0][8]:.3g}) or {rows[0][9]:.4g} MJ chambered (Q {rows[0][10]:.3g}); its sleeves weigh "
+                  f"{min(shares):.3g} to {max(shares):.3g} times their struck bodies, and its springs "
+                  + ("hold every limit." if held else "do not hold their limits (the table above)."))
+    wp = k["at_white_paper_e"]
+    if wp["guns"]:
+        words += (f" At the white paper's e {wp['restitution']:g} the design's chain launches {rows[2][6]:.4g} MJ "
+                  f"(its first mass {wp['first_mass']:,.0f} kg) from a gun of {rows[2][7]:.4g} MJ against the direct "
+                  f"gun's {direct['simple_wave']['direct'] / 1e6:.4g} MJ (simple-wave; Q {rows[2][8]:.3g}).")
+    return words
 
 
 def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
