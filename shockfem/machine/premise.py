@@ -21,21 +21,24 @@ form (``closed_form``, ``boundary``) says: the restitution above which any chain
 direct one, against the chain's and the best pad's.
 
 ``premise_map`` then asks where each wins over pulse durations, peaks and payloads, cheaply: the striker
-from the rigid collision law (``programmer.dashpot_design.striker_speed``) at the designed fixture's
-striker ratio and its measured restitution; the amplifier as the launched chain at its launch speed and
-mass count of least gun (``boundary.best_chain``), its masses by the closed form (``amplifier.gain
-.design``), designed only where it needs less gun than the direct one (elsewhere the point is 'nothing to
-amplify', not a direct win); each gun by the lightest-launcher design (one start) or, for (c), the white
-paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
+scaled from the designed one by what its housing's mass scales with (``StrikerLaw``: the bore squared
+times the bore's depth), its speed from the rigid collision law (``programmer.dashpot_design
+.striker_speed``) at the fixture's measured restitution; the amplifier as the launched chain at its launch
+speed and mass count of least gun (``boundary.best_chain``, by the simple-wave and the infinitely
+chambered gun, the lower Q kept), its masses by the closed form (``amplifier.gain.design``), designed only
+where it needs less gun than the direct one (elsewhere the direct gun, where it is feasible and lightest,
+wins the point, its note 'nothing to amplify'); each gun by the lightest-launcher design (one start) or,
+for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
 striker in a massless sabot (its lower bound); the sabot its bore and pressure would need (``sabot_mass``)
 is reported beside it, and a point the direct gun wins only without it is marked so.  (c) counts only
 where its barrel is within the spec's barrel limit.  The restitution the map's amplifier runs at is the
 caller's (the system study passes the designed amplifier's effective e, carried over to every point: a pad
 sized and run at another point would restitute otherwise).  A machine's figure of merit there is its gun
 (barrel and tank) and its moving masses; the stops and frame, which the full design adds, are left out.
-Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its ratio
-and restitution are carried over, the flying target's dashpot is not designed, and the amplifier's pads
-and stresses are not checked (only its gain).
+Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its striker
+is the law's and its restitution carried over (``premise_map``'s ``fixed_ratio`` runs the designed ratio
+at every point instead, the verdict's sensitivity to the law), the flying target's dashpot is not
+designed, and the amplifier's pads and stresses are not checked (only its gain).
 """
 from __future__ import annotations
 
@@ -57,7 +60,7 @@ from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, gun_thrust
-from .fixture import bore_radius, design_fixture
+from .fixture import article_length, bore_radius, design_fixture
 from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import RING_CLEARANCE, Layout, place, ring_area
@@ -518,8 +521,11 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
 
 # --- the map -------------------------------------------------------------------------------------------
 
-# what a point can come to: the lightest feasible arrangement, or why the amplifier was not designed there
-WINNERS = ("amplifier", "direct", "direct, if its sabot is light", "flying target", "nothing to amplify", "none")
+# what a point can come to: the lightest feasible arrangement, or none
+WINNERS = ("amplifier", "direct", "direct, if its sabot is light", "flying target", "none")
+# the gun laws of the map's closed form (``boundary``): the simple-wave (constant-area) gun, and the
+# infinitely chambered gun, the bound on any gun of the gas
+LAWS = {"simple-wave": False, "chambered": True}
 
 
 @dataclass
@@ -531,12 +537,15 @@ class MapPoint:
     velocity_change: float        # [m/s]
     striker_mass: float
     striker_speed: float
-    chain: dict                   # the closed form's best chain (``boundary.best_chain``)
-    eligible: bool                # that chain needs less gun than the direct one (Q < 1): the amplifier designed
+    chain: dict                   # the closed form's best chain, simple-wave guns (``boundary.best_chain``)
+    eligible: bool                # a chain needs less gun than the direct one (Q < 1 by either law): designed
     amplifier: dict               # launch energy, first mass, gun mass, machine mass, feasible, note
     direct: dict
     flying: dict
     winner: str                   # WINNERS
+    chain_chambered: dict = field(default_factory=dict)   # the same with both guns the infinitely chambered one
+    striker_ratio: float = math.nan     # the striker over the payload at this point (``StrikerLaw``)
+    note: str = ""                # why the amplifier was not designed, where it was not
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -566,94 +575,169 @@ def _amplifier_entry(s: MachineSpec, M: float, V: float, chain: Chain) -> dict:
                       f"{chain.masses} masses launched at {chain.launch_speed:.0f} m/s, first mass {d.masses[0]:,.0f} kg")
 
 
-def _winner(amp: dict, direct: dict, flying: dict, eligible: bool) -> str:
-    """The lightest feasible arrangement (WINNERS); where the amplifier was not designed (no chain needs
-    less gun than the direct one), the direct gun's point is 'nothing to amplify', not a direct win."""
+def _winner(amp: dict, direct: dict, flying: dict) -> str:
+    """The lightest feasible arrangement (WINNERS); an amplifier not designed (no chain needs less gun than
+    the direct one) is not feasible, so the direct gun wins there wherever it is feasible and lightest."""
     options = {"amplifier": amp, "direct": direct, "flying target": flying}
     feasible = {k: v for k, v in options.items() if v["feasible"]}
     if not feasible:
         return "none"
     winner = min(feasible, key=lambda k: feasible[k]["machine_mass"])
-    if winner == "direct" and not eligible:
-        return "nothing to amplify"
     if winner == "direct" and amp["feasible"] and direct["machine_mass"] + direct["sabot_estimate"] > amp["machine_mass"]:
         return "direct, if its sabot is light"
     return winner
 
 
-def map_point(spec: MachineSpec, duration: float, peak: float, article: float, ratio: float, ratio_c: float,
-              fixture_e: float, amp_e: float, wall: float) -> MapPoint:
+@dataclass(frozen=True)
+class StrikerLaw:
+    """The fixture's striker at a map point, scaled from the designed one by what its housing's mass scales
+    with: the housing over the whole bore (``fixture.striker_housing``, which sets the designed striker where
+    ``housing_binds``) weighs rho pi ((R^2 - r^2) depth + R^2 t), so at the design's wall ratio R / r and
+    floor over bore it goes as r^2 depth: r the bore the design oil pressure asks (``fixture.bore_radius``),
+    depth the liquid column, which goes with the relative stroke (as dv T for one pulse shape), plus the
+    piston and headroom and the article (``fixture.article_length``).  Never lighter than the striker asked
+    (the spec's striker ratio, or the white paper's target).  Range: the design's wall ratio, floor, column
+    over stroke and oil pressure carried over; exact at the design's point only (the designed striker)."""
+    striker_mass: float           # the designed striker (or target) [kg]
+    bore: float                   # the design oil pressure's bore at the design's point [m]
+    column: float                 # the designed liquid column [m]
+    rest: float                   # the bore's depth less the column and the article [m]
+    article: float                # the designed fixture's article length [m]
+    stroke_scale: float           # the design's velocity change times its duration [m]
+
+    @classmethod
+    def of(cls, spec: MachineSpec, fixture, striker_mass: float) -> "StrikerLaw":
+        rho = property_si(spec.material, "density", "density")
+        return cls(striker_mass, bore_radius(spec, rho), fixture.column,
+                   fixture.bore_depth - fixture.column - fixture.article_length, fixture.article_length,
+                   fixture.velocity_change * fixture.duration)
+
+    def striker(self, s: MachineSpec, r: float, dv: float, least: float) -> float:
+        """The striker [kg] at the point of spec ``s``, bore ``r`` [m] and velocity change ``dv`` [m/s], at
+        least ``least`` [kg]."""
+        column = self.column * dv * s.pulse.duration / self.stroke_scale
+        depth = (column + self.rest + article_length(s)) / (self.column + self.rest + self.article)
+        return max(least, self.striker_mass * (r / self.bore) ** 2 * depth)
+
+
+def striker_laws(spec: MachineSpec, fixture, target) -> tuple[StrikerLaw, StrikerLaw]:
+    """The striker's law (``StrikerLaw``) and the flying target's (its designed target in the striker's
+    place; where the designer found none, the target ratio asked times the payload)."""
+    t_mass = getattr(target, "striker_mass", target.striker_ratio * fixture.payload_mass)
+    return StrikerLaw.of(spec, fixture, fixture.striker_mass), StrikerLaw.of(spec, fixture, t_mass)
+
+
+def _chains(amp_e: float, V: float, gas: str) -> dict:
+    """The best chain by each gun law (``LAWS``)."""
+    return {law: best_chain(amp_e, V, gas, chambered=chambered) for law, chambered in LAWS.items()}
+
+
+def map_point(spec: MachineSpec, duration: float, peak: float, article: float, strikers: tuple, fixture_e: float,
+              amp_e: float, wall: float) -> MapPoint:
     """One point of the map: the three arrangements by closed forms and the lightest-launcher design;
-    ``ratio`` and ``ratio_c`` the strikers of (b) and (c) over the payload, ``fixture_e`` the fixture's
+    ``strikers`` the striker's and the flying target's laws (``striker_laws``), ``fixture_e`` the fixture's
     restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius.  The
-    amplifier's launch speed and mass count are the closed form's best (``boundary.best_chain``), and it is
-    designed only where that chain needs less gun than the direct one."""
+    amplifier's launch speed and mass count are the closed form's best (``boundary.best_chain``) by the gun
+    law whose Q is lower, and it is designed only where that Q is below 1."""
     s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, peak, duration))
     rho = property_si(s.material, "density", "density")
     r = bore_radius(s, rho)
     payload = article + rho * math.pi * r * r * DASHPOT["piston_thickness"]
     dv = requirement(s.pulse.shape, peak, duration, payload).velocity_change
-    M = ratio * payload
+    M = strikers[0].striker(s, r, dv, spec.striker_ratio * payload)
     V = striker_speed(payload, M, dv, fixture_e)
     Lb, _ = direct_launcher(s, M, V, None, starts=1, report_binding=False)
     gb = Lb.design.gun
     sabot = sabot_mass(gb.bore, gb.reservoir_pressure, 2 * r * wall)
     direct = _gun_entry(Lb, M, Lb.design.feasible, f"massless sabot; its sabot would weigh {sabot:.3g} kg")
     direct["sabot_estimate"] = sabot
-    chain = best_chain(amp_e, V, s.gas)
+    chains = _chains(amp_e, V, s.gas)
+    law = min(chains, key=lambda k: chains[k].gun_ratio)
+    chain = chains[law]
     eligible = chain.gun_ratio < 1
-    amp = (_amplifier_entry(s, M, V, chain) if eligible else
-           _no_gun(f"nothing to amplify: the best chain ({chain.masses} masses launched at {chain.launch_speed:.0f} "
-                   f"m/s) needs {chain.gun_ratio:.3g} times the direct gun's p0 A L"))
-    Mc = ratio_c * payload
+    note = "" if eligible else (f"nothing to amplify: the best chain ({chain.masses} masses launched at "
+                                f"{chain.launch_speed:.0f} m/s) needs {chain.gun_ratio:.3g} times the direct gun's "
+                                f"p0 A L ({law} guns, the lower Q of the two laws)")
+    amp = _amplifier_entry(s, M, V, chain) if eligible else _no_gun(note)
+    Mc = strikers[1].striker(s, r, dv, WHITE_PAPER_TARGET * article)
     Vc = striker_speed(payload, Mc, dv, fixture_e)
     Lc, ok = white_paper_launcher(s, Mc, Vc)
     flying = _gun_entry(Lc, Mc, ok and Lc.design.gun.length <= s.max_barrel_length,
                         f"barrel {Lc.design.gun.length / FT:.3g} ft" if ok else "never reaches the speed")
-    return MapPoint(duration, peak, article, payload, dv, M, V, chain.as_dict(), eligible, amp, direct, flying,
-                    _winner(amp, direct, flying, eligible))
+    return MapPoint(duration, peak, article, payload, dv, M, V, chains["simple-wave"].as_dict(), eligible, amp,
+                    direct, flying, _winner(amp, direct, flying), chains["chambered"].as_dict(), M / payload, note)
 
 
-def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durations, peaks, payloads, echo=None
-                ) -> list[MapPoint]:
-    """The map over ``durations`` [s], ``peaks`` [m/s^2] and ``payloads`` (article masses) [kg]."""
+def premise_map(spec: MachineSpec, fixture, amp_e: float, target, durations, peaks, payloads, echo=None,
+                fixed_ratio: bool = False) -> list[MapPoint]:
+    """The map over ``durations`` [s], ``peaks`` [m/s^2] and ``payloads`` (article masses) [kg]; the striker
+    and the flying target scaled to each point (``StrikerLaw``), or, ``fixed_ratio``, at the designed
+    fixture's ratios to the payload at every point (the sensitivity of the verdict to the law)."""
+    strikers = striker_laws(spec, fixture, target)
     out = []
     for a in payloads:
         for T in durations:
             for A in peaks:
-                p = map_point(spec, T, A, a, fixture.striker_ratio, ratio_c, max(fixture.restitution, 0.0), amp_e,
+                laws = strikers if not fixed_ratio else _fixed(spec, fixture, target, a, T, A)
+                p = map_point(spec, T, A, a, laws, max(fixture.restitution, 0.0), amp_e,
                               fixture.housing_outer_radius / fixture.bore_radius)
                 out.append(p)
                 if echo:
                     echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "
-                         f"Q {p.chain['gun_ratio']:.3g}, winner {p.winner}")
+                         f"striker {p.striker_ratio:.3g} x payload, Q {p.chain['gun_ratio']:.3g} (simple-wave) "
+                         f"{p.chain_chambered['gun_ratio']:.3g} (chambered), winner {p.winner}")
     return out
 
 
+@dataclass(frozen=True)
+class _Ratio:
+    """A striker at a fixed ratio to the payload (``premise_map``'s ``fixed_ratio``)."""
+    ratio: float
+    payload: float
+
+    def striker(self, s, r, dv, least) -> float:
+        return self.ratio * self.payload
+
+
+def _fixed(spec: MachineSpec, fixture, target, article: float, T: float, A: float) -> tuple:
+    s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, A, T))
+    rho = property_si(s.material, "density", "density")
+    r = bore_radius(s, rho)
+    payload = article + rho * math.pi * r * r * DASHPOT["piston_thickness"]
+    return _Ratio(fixture.striker_ratio, payload), _Ratio(target.striker_ratio, payload)
+
+
 def boundary(points: list[MapPoint]) -> dict:
-    """The map's counts: each outcome's points, the points where the amplifier was eligible (designed), each
-    arrangement's points within the limits, and the smallest velocity change the amplifier wins at against
-    the largest the direct gun wins at."""
+    """The map's counts: each outcome's points, the direct wins where no chain needs less gun (the amplifier
+    not designed), the points where the amplifier was eligible (designed), each arrangement's points within
+    the limits, and the smallest velocity change the amplifier wins at against the largest the direct gun
+    wins at."""
     amp = [p for p in points if p.winner == "amplifier"]
     direct = [p for p in points if p.winner == "direct"]
     counts = {w: sum(p.winner == w for p in points) for w in WINNERS}
     within = {k: sum(getattr(p, k)["feasible"] for p in points) for k in ("amplifier", "direct", "flying")}
     return {"counts": counts, "eligible": sum(p.eligible for p in points), "points": len(points), "within": within,
             "amplifier_wins": counts["amplifier"], "direct_wins": counts["direct"],
+            "direct_wins_nothing_to_amplify": sum(not p.eligible for p in direct),
+            "eligible_chambered": sum(p.chain_chambered["gun_ratio"] < 1 for p in points),
+            "eligible_simple_wave": sum(p.chain["gun_ratio"] < 1 for p in points),
+            "striker_ratios": [min(p.striker_ratio for p in points), max(p.striker_ratio for p in points)],
             "smallest_dv_amplifier_wins": min((p.velocity_change for p in amp), default=math.nan),
             "largest_dv_direct_wins": max((p.velocity_change for p in direct), default=math.nan)}
 
 
-def boundary_velocity_change(points: list[MapPoint], e: float, gas: str) -> float:
+def boundary_velocity_change(points: list[MapPoint], e: float, gas: str, chambered: bool = False,
+                             at: MapPoint | None = None) -> float:
     """The velocity change [m/s] above which an amplifier of restitution ``e`` needs less gun than the direct
-    gun: the closed form's striker speed (``boundary.break_even_speed``) over the map's striker speed per
-    velocity change (one ratio: every point has the designed fixture's striker ratio and restitution)."""
-    p = points[0]
-    return break_even_speed(e, gas) * p.velocity_change / p.striker_speed
+    gun: the closed form's striker speed (``boundary.break_even_speed``) over the striker speed per velocity
+    change at the point ``at`` (default the first; the striker's ratio, so this speed per velocity change,
+    moves a little from point to point: a striker many times the payload closes at about dv / (1 + e))."""
+    p = at or points[0]
+    return break_even_speed(e, gas, chambered=chambered) * p.velocity_change / p.striker_speed
 
 
 MARKS = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "direct, if its sabot is light": ("D", "#a6d854"),
-         "flying target": ("^", "#7570b3"), "nothing to amplify": ("s", "#bbbbbb"), "none": ("x", "#444444")}
+         "flying target": ("^", "#7570b3"), "none": ("x", "#444444")}
 
 
 def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
@@ -671,12 +755,13 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
     # the pulse's velocity change over peak x duration (one shape on the map)
     per = points[0].velocity_change / (points[0].peak * points[0].duration)
     ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
-    styles = iter(["-", "--", ":", "-."])
+    styles = {False: iter(["-", "--", ":", "-."]), True: iter(["-", "--", ":", "-."])}
     for ax, a in zip(axes[0], payloads):
         for p in (q for q in points if q.article == a):
             m, c = MARKS[p.winner]
             ax.scatter(p.duration * 1e3, p.peak / G0, marker=m, color=c, s=70)
-            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio']:.2g}", (p.duration * 1e3, p.peak / G0),
+            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio']:.2g} / {p.chain_chambered['gun_ratio']:.2g}"
+                        + ("" if p.eligible else "\n(no chain)"), (p.duration * 1e3, p.peak / G0),
                         fontsize=6, xytext=(4, 4), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -691,12 +776,15 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
     for label, dv in (lines or {}).items():
         if not math.isfinite(dv):
             continue
-        style = next(styles, "-")
+        # a line's gun law by its colour (a label ending 'chambered': the chambered gun's), its e by its style
+        chambered = label.endswith("chambered")
+        style, colour = next(styles[chambered], "-"), "#7570b3" if chambered else "#d95f02"
         for ax in axes[0]:
-            ax.plot(T, dv / (per * T * 1e-3) / G0, style, color="#d95f02", lw=1)
-        handles.append(key.plot([], [], style, color="#d95f02", lw=1, label=f"{label}: {dv:.3g} m/s")[0])
+            ax.plot(T, dv / (per * T * 1e-3) / G0, linestyle=style, color=colour, lw=1)
+        handles.append(key.plot([], [], linestyle=style, color=colour, lw=1, label=f"{label}: {dv:.3g} m/s")[0])
     key.legend(handles=handles, fontsize=7, loc="center", ncol=4, frameon=False)
-    fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's\n"
-                 "gun (p0 A L) over the direct gun's, closed form; the amplifier designed only where Q < 1", fontsize=9)
+    fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's gun\n"
+                 "(p0 A L) over the direct gun's, closed form, simple-wave / infinitely chambered guns; the amplifier "
+                 "designed only where the lower Q < 1 ('no chain': a direct win with nothing to amplify)", fontsize=9)
     save(fig, path)
     return path
