@@ -203,27 +203,33 @@ def bare_launcher(spec: MachineSpec, striker: float, speed: float, starts: int, 
 
 
 def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: float | None, starts: int = 3,
-                    report_binding: bool = True, bores: int = SABOT_BORES) -> tuple[Launcher, float]:
+                    report_binding: bool = True, bores: int = SABOT_BORES, lightest_short: list | None = None
+                    ) -> tuple[Launcher, float]:
     """The lightest gun within the spec's limits firing a striker of ``striker`` [kg] and ``diameter`` at
     ``speed`` in the sabot its bore needs: the gun's optimiser does not see that the sabot grows with the
     bore (as p R^3), so the bore is scanned (``bores`` bores from half the bare striker's gun's bore, or the
     striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest feasible gun and
     sabot kept; when no bore's gun reaches the speed, the one that comes closest (the highest muzzle speed),
-    not the lightest of those that fall short.  ``diameter`` None: a massless sabot (the lower bound), one design (``bare_launcher``, shared with the
-    scan's start).  Returns the launcher and the sabot's mass."""
+    not the lightest of those that fall short (that one, as (launcher, sabot), is put in ``lightest_short``
+    when given, for a reader to see both).  ``diameter`` None: a massless sabot (the lower bound), one design
+    (``bare_launcher``, shared with the scan's start).  Returns the launcher and the sabot's mass."""
     bare = bare_launcher(spec, striker, speed, starts, report_binding)
     if diameter is None:
         return bare, 0.0
     # the sabot favours a narrower bore than the bare striker's gun; scan from half of that bore up
     lo = max(diameter, 0.5 * bare.design.gun.bore)
     hi = max(lo, min(spec.max_bore, 1.25 * bare.design.gun.bore))
-    best = None
+    best = light = None
     for bore in np.geomspace(lo, hi, bores):
         L, sabot = _with_sabot(spec, striker, speed, diameter, float(bore), starts, False)
         d = L.design
         key = (False, d.weight + sabot) if d.feasible else (True, -d.muzzle_velocity / d.required_velocity)
         if best is None or key < best[0]:
             best = (key, L, sabot)
+        if not d.feasible and (light is None or d.weight + sabot < light[0]):
+            light = (d.weight + sabot, L, sabot)
+    if lightest_short is not None and not best[1].design.feasible and light[1] is not best[1]:
+        lightest_short[:] = [light[1], light[2]]
     return best[1], best[2]
 
 
@@ -232,7 +238,9 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     """(b): the same striker fired directly by the lightest gun within the same limits, in its sabot;
     ``with_sabot`` False: in a massless sabot (the direct gun's lower bound, (b0))."""
     diameter = 2 * fixture.housing_outer_radius if with_sabot else None
-    L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores)
+    short = []
+    L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores,
+                               lightest_short=short)
     layout = _layout(spec, L, fixture)
     stop = sabot_stop(spec, L, sabot, diameter) if sabot else None
     notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle by a "
@@ -243,12 +251,25 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     notes += [f"the sabot's stop breaks its limit: {lim.describe()}" for lim in broken_stop]
     if not L.design.feasible:
         notes.append(L.design.note)
+    if short:
+        notes.append(_short_words(L, sabot, *short))
     name = "(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot"
     out = _arrangement(name, L, fixture, layout, L.design.feasible, notes,
                        sabot + (stop.absorber_mass if stop else 0.0))
     out.limits = stop.limits if stop else []
     out.feasible = L.design.feasible and not broken_stop
     return out
+
+
+def _short_words(closest: Launcher, sabot: float, light: Launcher, light_sabot: float) -> str:
+    """The bore scan's closest gun beside its lightest, when no bore's gun reaches the speed."""
+    def gun(L, s):
+        d, g = L.design, L.design.gun
+        return (f"{g.bore / IN:.3g} in x {g.length / FT:.3g} ft at {g.reservoir_pressure / PSI:,.0f} psi, "
+                f"{(d.weight + s) / 1e3:.3g} t with its {s:.3g} kg sabot, {d.muzzle_velocity:.4g} m/s, "
+                f"{d.required_velocity - d.muzzle_velocity:.3g} m/s short")
+    return (f"no bore's gun reaches {closest.design.required_velocity:.4g} m/s: kept the closest ({gun(closest, sabot)}); "
+            f"the lightest that falls short: {gun(light, light_sabot)}")
 
 
 def sabot_stop(spec: MachineSpec, launcher: Launcher, sabot: float, diameter: float):

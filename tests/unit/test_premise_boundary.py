@@ -223,3 +223,20 @@ def test_sabot_stop_takes_the_sabots_energy():
     assert stop.energy == pytest.approx(0.5 * 227.7 * 412.2 ** 2, rel=1e-12)
     assert stop.force <= 726.4 * 2e4 * (1 + 1e-12)
     assert stop.stress <= initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY * (1 + 1e-9)
+
+
+def test_direct_gun_that_falls_short_shows_the_lightest_beside_the_closest():
+    """A 2 m barrel limit: no bore's gun brings the 12 lb design's striker (498.8 kg, 258 mm, 412.2 m/s) to
+    its speed; the scan keeps the closest and reports the lightest that falls short beside it."""
+    import dataclasses
+    from shockfem.machine import premise as P
+    spec = dataclasses.replace(read_spec({"article": "12 lb"}), max_barrel_length=2.0)
+    short = []
+    L, sabot = P.direct_launcher(spec, 498.8, 412.2, 0.258, starts=1, report_binding=False, bores=3,
+                                 lightest_short=short)
+    light, light_sabot = short
+    assert not L.design.feasible and not light.design.feasible
+    assert light.design.weight + light_sabot < L.design.weight + sabot
+    assert light.design.muzzle_velocity < L.design.muzzle_velocity < 412.2
+    words = P._short_words(L, sabot, light, light_sabot)
+    assert "kept the closest" in words and "the lightest that falls short" in words
