@@ -201,6 +201,11 @@ def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], all
                       "the interface's finite-element run: the body's peak von Mises stress",
                       f"{iface.steel}: yield / safety factor") for body, over in m.peak_stress_over_yield.items()]
     mat = PAD_MATERIALS[pad.material]
+    if m.ran and mat.kind == "gas spring":
+        # the sleeve is sized at the isentrope's peak; the column's shocks raise it at the closed end
+        measured.append(Limit(f"pad {iface.name}", "sleeve pressure (gas column run)", m.peak_interface_stress,
+                              pad.peak_force / iface.face_area, "Pa", "the gas column's run: its peak at the closed end",
+                              "the sleeve's design pressure, p1 = gas_spring.PEAK_SHARE of the allowable"))
     if m.ran and pad.diameter > 0 and mat.working_stress > 0:
         # the pad's own stress in its run (the final size's: ``pads.RunCache.measure_within_limits``)
         measured.append(Limit(f"pad {iface.name}", "stress (FE contact)", pad_contact_stress(iface, pad, m),

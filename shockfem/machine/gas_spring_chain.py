@@ -3,7 +3,9 @@ one interface that is not a solid, so not bound by v* = sigma / sqrt(rho E) (``p
 
 The chain is the design's (its striker, its launch speed and mass count, ``amplifier.gain.design``'s
 geometric masses), its bodies as ``machine.amplifier`` makes them, a gas spring sized on each interface
-(``pads.size_pad``) and its restitution at that interface's closing speed; the rigid chain of those
+(``pads.size_pad``) and its restitution at that interface's closing speed from its gas column's run
+(``gas_spring.resolved``: the shocks and their reverberations, with the heat and the seal's friction); the
+rigid chain of those
 restitutions, every collision followed, gives the gain and the effective e, and the masses are designed
 again at that e until it settles.  The same is done for the best chain of the closed form
 (``boundary.best_chain``: its launch speed and mass count at the settled e, then settled again at those).
@@ -24,7 +26,8 @@ from ..scene.library import property_si
 from .amplifier import _bodies, _chain_gain, interfaces
 from .boundary import best_chain, gun_efficiency
 from .limits import broken
-from .pads import estimated_restitution, size_pad
+from .gas_spring import resolved, size_gas_spring
+from .pads import size_pad
 
 MATERIAL = "nitrogen_gas_spring"
 SETTLE_TOL, SETTLE_PASSES = 1e-5, 12
@@ -42,7 +45,8 @@ def settle(spec, fixture, e: float = 0.95) -> dict:
             return {"feasible": False, "restitution": e, "reason": d.reason}
         bodies = _bodies(d.masses, fixture, rho, None)
         faces = interfaces(spec, d.masses, bodies, e)
-        es = [estimated_restitution(MATERIAL, f) for f in faces]
+        runs = [_run(f, rho) for f in faces]
+        es = [r["restitution"] for r in runs]
         gain = _chain_gain(spec, d.masses, bodies, es)
         new = rigid.effective_restitution(d.masses, spec.launch_speed, gain, spec.architecture)
         done = abs(new - e) <= SETTLE_TOL
@@ -52,11 +56,25 @@ def settle(spec, fixture, e: float = 0.95) -> dict:
     pads = [size_pad(f, MATERIAL) for f in faces]
     return {"feasible": True, "restitution": e, "masses": spec.masses, "launch_speed": spec.launch_speed,
             "first_mass": d.masses[0], "mass_list": d.masses, "launch_energy": 0.5 * d.masses[0] * spec.launch_speed ** 2,
-            "interfaces": [{"name": f.name, "closing_speed": f.speed, "restitution": x, "sleeve_mass": p.mass,
-                            "mass_share": p.mass / f.struck_mass, "column": p.thickness, "bore": p.diameter,
-                            "peak_pressure": p.peak_force / (math.pi * p.diameter ** 2 / 4),
-                            "broken": [f"{lim.quantity} {lim.ratio:.3g}x" for lim in broken(list(p.limits))]}
-                           for f, x, p in zip(faces, es, pads)]}
+            "interfaces": [_interface(f, r, p) for f, r, p in zip(faces, runs, pads)]}
+
+
+def _run(iface, rho: float) -> dict:
+    spring = size_gas_spring(iface.m_star, iface.speed, iface.face_diameter, iface.allowable, rho)
+    return {**resolved(iface.m_star, iface.speed, spring), "closed_form": spring.restitution}
+
+
+def _interface(f, run: dict, pad) -> dict:
+    """One interface's spring: its run's e beside the closed form's, its size, and its limits (the sizing's and
+    the sleeve's pressure in the run against its design pressure)."""
+    p1 = pad.peak_force / (math.pi * pad.diameter ** 2 / 4)
+    over = [f"{lim.quantity} {lim.ratio:.3g}x" for lim in broken(list(pad.limits))]
+    if run["peak_pressure"] > p1 * (1 + 1e-6):
+        over.append(f"sleeve pressure (gas column run) {run['peak_pressure'] / p1:.3g}x")
+    return {"name": f.name, "closing_speed": f.speed, "restitution": run["restitution"],
+            "closed_form_restitution": run["closed_form"], "sleeve_mass": pad.mass, "mass_share": pad.mass / f.struck_mass,
+            "column": pad.thickness, "bore": pad.diameter, "peak_pressure": p1, "run_peak_pressure": run["peak_pressure"],
+            "broken": over}
 
 
 def guns(striker: float, speed: float, launched: float, launch_speed: float, gas: str) -> dict:

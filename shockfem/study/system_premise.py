@@ -241,11 +241,15 @@ def gas_spring_section(rep: Report, m):
                                    "Q simple-wave [-]", "gun p0 A L, chambered [MJ]", "Q chambered [-]"], rows,
               ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.4g}", "{:.3g}", "{:.4g}", "{:.3g}"])
     direct = (sc.get("guns") or wp["guns"])
-    iface = [[i["name"], i["closing_speed"], i["restitution"], i["bore"] * 1e3, i["column"], i["peak_pressure"] / 1e6,
-              i["sleeve_mass"], i["mass_share"], "; ".join(i["broken"]) or "all hold"] for i in sc.get("interfaces", [])]
-    rep.table("gas_spring_interfaces", ["interface", "closing [m/s]", "e [-]", "bore [mm]", "gas column [m]",
-                                        "peak [MPa]", "sleeve [kg]", "sleeve over struck body [-]", "broken limits"],
-              iface, ["{}", "{:.4g}", "{:.4f}", "{:.0f}", "{:.3g}", "{:.3g}", "{:,.0f}", "{:.3g}", "{}"])
+    iface = [[i["name"], i["closing_speed"], i["restitution"], i["closed_form_restitution"], i["bore"] * 1e3,
+              i["column"], i["peak_pressure"] / 1e6, i["run_peak_pressure"] / 1e6, i["sleeve_mass"], i["mass_share"],
+              "; ".join(i["broken"]) or "all hold"] for i in sc.get("interfaces", [])]
+    rep.table("gas_spring_interfaces", ["interface", "closing [m/s]", "e, its gas column's run [-]",
+                                        "e, closed form (an upper bound) [-]", "bore [mm]", "gas column [m]",
+                                        "sleeve's design pressure [MPa]", "peak in the run [MPa]", "sleeve [kg]",
+                                        "sleeve over struck body [-]", "broken limits"],
+              iface, ["{}", "{:.4g}", "{:.4f}", "{:.4f}", "{:.0f}", "{:.3g}", "{:.3g}", "{:.3g}", "{:,.0f}", "{:.3g}",
+                      "{}"])
     rep.value("gas_spring_chain", k)
     rep.text(_gas_spring_words(k, direct, rows))
 
@@ -255,7 +259,8 @@ def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
     shares = [i["mass_share"] for i in sc.get("interfaces", [])]
     held = all(not i["broken"] for i in sc.get("interfaces", []))
     words = (f"A gas spring (`machine/gas_spring.py`: nitrogen, its peak temperature 50 K below the seal oil's "
-             f"auto-ignition, its restitution from the shocks' entropy rise, heat and seal friction, an upper bound) "
+             f"auto-ignition, its restitution from its gas column's run, the shocks and their reverberations "
+             f"resolved, with the heat and seal friction) "
              f"is the one interface not bound by a solid's v*. The direct gun fires the striker's "
              f"{k['striker_energy'] / 1e6:.4g} MJ from p0 A L = {direct['simple_wave']['direct'] / 1e6:.4g} MJ "
              f"(simple-wave) or {direct['chambered']['direct'] / 1e6:.4g} MJ (chambered).")
@@ -265,6 +270,13 @@ def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
                   f"(Q {rows[0][8]:.3g}) or {rows[0][9]:.4g} MJ chambered (Q {rows[0][10]:.3g}); its sleeves weigh "
                   f"{min(shares):.3g} to {max(shares):.3g} times their struck bodies, and its springs "
                   + ("hold every limit." if held else "do not hold their limits (the table above)."))
+    best = k.get("best_chain") or {}
+    if best.get("feasible"):
+        words += (f" The best chain at that e, settled again with its own springs, is {best['masses']} masses launched "
+                  f"at {best['launch_speed']:.4g} m/s at e {best['restitution']:.4f}: its first mass "
+                  f"{best['first_mass']:,.0f} kg launches {rows[1][6]:.4g} MJ from a gun of {rows[1][7]:.4g} MJ "
+                  f"(Q {rows[1][8]:.3g}) or {rows[1][9]:.4g} MJ chambered (Q {rows[1][10]:.3g}), with "
+                  f"{rows[1][5]:,.0f} kg of sleeves the chain's masses leave out.")
     wp = k["at_white_paper_e"]
     if wp["guns"]:
         words += (f" At the white paper's e {wp['restitution']:g} the design's chain launches {rows[2][6]:.4g} MJ "
