@@ -346,7 +346,8 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
              ["direct wins with nothing to amplify (no chain needs less gun)", "direct_wins_nothing_to_amplify"]]
     rows = ([[k, v, fixed["counts"][k]] for k, v in bd["counts"].items()] + [[w, bd[k], fixed[k]] for w, k in extra]
             + [[f"{name} within the limits", bd["within"][k], fixed["within"][k]] for k, name in
-               (("amplifier", "the amplifier"), ("direct", "the direct gun (b0)"), ("flying", "the flying target"))]
+               (("amplifier", "the amplifier"), ("direct", "the direct gun's lower bound (b0, a massless sabot)"),
+                ("flying", "the flying target"))]
             + [["all", bd["points"], fixed["points"]]])
     rep.table("map_counts", ["outcome", "points (the striker scaled to each point)",
                              f"points (the designed ratio, {m.fixture.striker_ratio:.3g}, at every point)"], rows,
@@ -431,7 +432,9 @@ def _map_reading(bd: dict, e: float) -> str:
             f"designed, at {bd['eligible']} ({bd['eligible_simple_wave']} by the simple-wave gun, "
             f"{bd['eligible_chambered']} by the chambered gun; the closed form near the design's point: "
             f"{where(sw)} simple-wave, {where(ch)} chambered). The lightest feasible machine: the amplifier at "
-            f"{n['amplifier']}, the direct gun at {n['direct']} ({bd['direct_wins_nothing_to_amplify']} of them where "
+            f"{n['amplifier']}, the direct gun's lower bound (b0, a massless sabot: with the sabot its bore needs, "
+            f"the table's column, it weighs more and may fall short) at {n['direct']} "
+            f"({bd['direct_wins_nothing_to_amplify']} of them where "
             f"no chain needs less gun, so nothing to amplify; {n['direct, if its sabot is light']} more only if its "
             f"sabot is light), the flying target at {n['flying target']}, and at {n['none']} no arrangement is "
             f"feasible within the limits. At the designed striker ratio at every point instead: the amplifier at "
