@@ -8,7 +8,8 @@ geometric masses), its bodies as ``machine.amplifier`` makes them, a gas spring 
 rigid chain of those
 restitutions, every collision followed, gives the gain and the effective e, and the masses are designed
 again at that e until it settles.  The same is done for the best chain of the closed form
-(``boundary.best_chain``: its launch speed and mass count at the settled e, then settled again at those).
+(``boundary.best_chain``: its launch speed and mass count at the settled e, then settled again at those), by
+the simple-wave gun and by the infinitely chambered gun (the bound on any gun).
 What it gains is then read as the premise reads it: the first mass and the launch energy against the
 direct gun's (the striker alone, (b0)), and each gun's p0 A L = KE / eta (``boundary.gun_efficiency``,
 simple-wave and infinitely chambered) and Q.  Range: the gas spring's (its e an upper bound, its limits
@@ -105,6 +106,13 @@ def gas_spring_chain(m, white_paper_e: float = 0.9) -> dict:
             best["best_chain_Q"] = best_chain(best["restitution"], V, s.gas).gun_ratio
             best["best_chain_Q_chambered"] = best_chain(best["restitution"], V, s.gas, chambered=True).gun_ratio
         out["best_chain"] = best
+        # the chambered gun's own best chain at the settled e, settled again on its own closing speeds
+        cc = best_chain(spec_chain["restitution"], V, s.gas, chambered=True)
+        chambered = settle(dataclasses.replace(s, masses=cc.masses, launch_speed=cc.launch_speed), f,
+                           spec_chain["restitution"])
+        if chambered["feasible"]:
+            chambered["guns"] = guns(M, V, chambered["first_mass"], cc.launch_speed, s.gas)
+        out["best_chain_chambered"] = chambered
     d = design(s.architecture, M, V, s.launch_speed, white_paper_e, s.masses)
     out["at_white_paper_e"] = {"restitution": white_paper_e, "first_mass": d.masses[0] if d.feasible else math.nan,
                                "guns": guns(M, V, d.masses[0], s.launch_speed, s.gas) if d.feasible else None}

@@ -235,6 +235,8 @@ def gas_spring_section(rep: Report, m):
     wp_row = {**wp, "masses": m.spec.masses, "launch_speed": m.spec.launch_speed, "feasible": True}
     rows = [_chain_row("the design's masses and launch speed, a gas spring at every interface", sc),
             _chain_row("the best chain (its launch speed and masses at the settled e), gas springs", best),
+            _chain_row("the chambered gun's best chain at the settled e, settled again, gas springs",
+                       k.get("best_chain_chambered", {})),
             _chain_row(f"the design's masses and launch speed at the white paper's e {CLAIM['e']:g}", wp_row)]
     rep.table("gas_spring_chain", ["chain", "e [-]", "masses", "launch [m/s]", "first mass [kg]",
                                    "gas springs' sleeves [kg]", "launch energy [MJ]", "gun p0 A L, simple-wave [MJ]",
@@ -277,11 +279,16 @@ def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
                   f"{best['first_mass']:,.0f} kg launches {rows[1][6]:.4g} MJ from a gun of {rows[1][7]:.4g} MJ "
                   f"(Q {rows[1][8]:.3g}) or {rows[1][9]:.4g} MJ chambered (Q {rows[1][10]:.3g}), with "
                   f"{rows[1][5]:,.0f} kg of sleeves the chain's masses leave out.")
+    ch = k.get("best_chain_chambered") or {}
+    if ch.get("feasible"):
+        words += (f" The chambered gun's own best chain, settled: {ch['masses']} masses launched at "
+                  f"{ch['launch_speed']:.4g} m/s at e {ch['restitution']:.4f}, {rows[2][9]:.4g} MJ of chambered gun "
+                  f"(Q {rows[2][10]:.3g}).")
     wp = k["at_white_paper_e"]
     if wp["guns"]:
-        words += (f" At the white paper's e {wp['restitution']:g} the design's chain launches {rows[2][6]:.4g} MJ "
-                  f"(its first mass {wp['first_mass']:,.0f} kg) from a gun of {rows[2][7]:.4g} MJ against the direct "
-                  f"gun's {direct['simple_wave']['direct'] / 1e6:.4g} MJ (simple-wave; Q {rows[2][8]:.3g}).")
+        words += (f" At the white paper's e {wp['restitution']:g} the design's chain launches {rows[3][6]:.4g} MJ "
+                  f"(its first mass {wp['first_mass']:,.0f} kg) from a gun of {rows[3][7]:.4g} MJ against the direct "
+                  f"gun's {direct['simple_wave']['direct'] / 1e6:.4g} MJ (simple-wave; Q {rows[3][8]:.3g}).")
     return words
 
 
