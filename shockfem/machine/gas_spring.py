@@ -17,7 +17,7 @@ sets p0 and L0.  The bore is the smaller face's diameter, the cylinder's ends th
 by the bodies); its mass is the sleeve's wall, at each station as thick as the largest pressure it sees
 (the gas behind the piston when the piston passes it) asks by ``programmer.housing.wall_ratio``.
 
-**Restitution**, in closed form (``size_gas_spring``'s estimate): e^2 = 1 - (the energy the cycle loses) / W,
+**Restitution**, in closed form (``size_gas_spring``'s estimate, ``GasSpring.restitution``): e^2 = 1 - (the energy the cycle loses) / W,
 the losses
 
 * the **shock**: the piston closing at dv on the gas at rest drives a shock of Mach number
@@ -205,11 +205,6 @@ def _losses(entropy: float, p0: float, volume: float, W: float, bore: float, L1:
     heat = 2 * depth / (bore / 2) + 2 * depth / L1
     friction = 8 * SEAL_FRICTION * SEAL_WIDTH / bore
     return {"shock": shock, "heat": heat, "friction": friction}
-
-
-def restitution(m_star: float, speed: float, bore: float, allowable: float, rho_steel: float) -> float:
-    """The gas spring's restitution on the interface (``size_gas_spring``)."""
-    return size_gas_spring(m_star, speed, bore, allowable, rho_steel).restitution
 
 
 # the Lagrangian column's artificial viscosity: quadratic and linear coefficients (von Neumann and Richtmyer,
