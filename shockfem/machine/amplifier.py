@@ -41,7 +41,7 @@ from .fixture import Fixture
 from .limits import Limit, broken
 from .pad_materials import PAD_MATERIALS
 from .pads import (PAD_MASS_SHARE, Interface, Measured, PadDesign, Resizing, RunCache, estimated_restitution,
-                   pad_contact_stress, size_pad)
+                   pad_contact_stress, size_pad, solid_pads)
 from .spec import MachineSpec
 
 ASPECT = 1.0                # the intermediate masses' length over diameter
@@ -162,7 +162,7 @@ def interfaces(spec: MachineSpec, masses, bodies, e: float) -> list[Interface]:
 def choose_pad(iface: Interface, materials=tuple(PAD_MATERIALS)) -> tuple[PadDesign, list[dict]]:
     """The pad for ``iface`` (module docstring) and every material's sized pad as (material, worst limit
     ratio, estimated restitution)."""
-    sized = [(size_pad(iface, m, estimated_restitution(m)), estimated_restitution(m)) for m in materials]
+    sized = [(size_pad(iface, m, estimated_restitution(m, iface)), estimated_restitution(m, iface)) for m in materials]
     table = [{"material": p.material, "worst": p.worst, "estimated_restitution": e,
               "broken": [f"{lim.quantity} {lim.ratio:.3g}x" for lim in broken(list(p.limits))]} for p, e in sized]
     holding = [(p, e) for p, e in sized if p.feasible]
@@ -201,6 +201,11 @@ def _stage(iface: Interface, pad: PadDesign, m: Measured, table: list[dict], all
                       "the interface's finite-element run: the body's peak von Mises stress",
                       f"{iface.steel}: yield / safety factor") for body, over in m.peak_stress_over_yield.items()]
     mat = PAD_MATERIALS[pad.material]
+    if m.ran and mat.kind == "gas spring":
+        # the sleeve is sized at the isentrope's peak; the column's shocks raise it at the closed end
+        measured.append(Limit(f"pad {iface.name}", "sleeve pressure (gas column run)", m.peak_interface_stress,
+                              pad.peak_force / iface.face_area, "Pa", "the gas column's run: its peak at the closed end",
+                              "the sleeve's design pressure, p1 = gas_spring.PEAK_SHARE of the allowable"))
     if m.ran and pad.diameter > 0 and mat.working_stress > 0:
         # the pad's own stress in its run (the final size's: ``pads.RunCache.measure_within_limits``)
         measured.append(Limit(f"pad {iface.name}", "stress (FE contact)", pad_contact_stress(iface, pad, m),
@@ -220,7 +225,7 @@ def pad_bound(iface: Interface) -> str:
     weighs rho dv^2 / (2 w) m_a / (m_a + m_b) times the struck body whatever the bodies' size, so its mass
     share goes as dv^2 and stays within ``PAD_MASS_SHARE`` only below a speed (``share_speed``); bare
     steel faces stay at the allowable only below dv S / stress (the 1D impedance stress goes as dv)."""
-    sized = {m: size_pad(iface, m, estimated_restitution(m)) for m in PAD_MATERIALS}
+    sized = {m: size_pad(iface, m, estimated_restitution(m, iface)) for m in PAD_MATERIALS}
     if any(p.feasible for p in sized.values()):
         return ""
     words = []
@@ -286,7 +291,8 @@ def design_amplifier(spec: MachineSpec, fixture: Fixture, out_dir: str, echo=Non
     Y = initial_yield_stress(spec.material)
     V, M = fixture.striker_speed, fixture.striker_mass
     cache = RunCache(cache_dir or os.path.join(out_dir, "pad_runs"))
-    e = start or max(estimated_restitution(m) for m in PAD_MATERIALS)
+    # a gas spring's estimate depends on its interface: the start is the solid pads' best
+    e = start or max(estimated_restitution(m) for m in solid_pads())
     iterations, last, t0, bounds = list(iterations or []), None, time.perf_counter(), []
     for it in range(MAX_ITERATIONS):
         d = design(spec.architecture, M, V, spec.launch_speed, e, spec.masses)

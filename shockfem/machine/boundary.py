@@ -39,8 +39,7 @@ from scipy.optimize import brentq, minimize_scalar
 from ..amplifier.gain import chain_efficiency
 from ..launcher.gas import GASES
 from ..launcher.simple_wave import efficiency
-from .pad_materials import PAD_MATERIALS
-from .pads import estimated_restitution
+from .pads import estimated_restitution, solid_pads
 
 # the most masses the optimum may use (the design's alternatives go to 7; more than 10 gains little)
 MAX_MASSES = 10
@@ -125,14 +124,15 @@ def break_even(striker_speed: float, gas: str = "air", direct_gas: str | None = 
     return float(brentq(excess, lo, 1.0, xtol=1e-7))
 
 
-def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES) -> float:
+def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES, chambered: bool = False) -> float:
     """The striker speed [m/s] above which an amplifier of restitution ``e`` needs less gun than the
-    direct gun (both in ``gas``); nan when none below 0.99 of the escape speed does."""
+    direct gun (both in ``gas``, both simple-wave or both ``chambered``); nan when none below 0.99 of the
+    (simple-wave) escape speed does."""
     g = GASES[gas]
     top = 0.99 * 2 * g.sound_speed(1e5, TEMPERATURE) / (g.gamma - 1)
 
     def excess(v):
-        return best_chain(e, v, gas, None, max_masses).gun_ratio - 1
+        return best_chain(e, v, gas, None, max_masses, chambered).gun_ratio - 1
     if excess(top) >= 0:
         return math.nan
     lo = 1.0
@@ -144,5 +144,6 @@ def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES) -
 def best_pad_restitution() -> tuple[str, float]:
     """The highest restitution any pad material of the library is sized with (``pads.estimated_restitution``:
     an elastomer's sqrt(R) on rigid masses, R its ASTM D2632 rebound; the chain's finite-element runs give
-    lower): (material, e)."""
-    return max(((m, estimated_restitution(m)) for m in PAD_MATERIALS), key=lambda me: me[1])
+    lower; the gas spring, whose restitution depends on its interface, is ``machine.gas_spring``'s): (material,
+    e)."""
+    return max(((m, estimated_restitution(m)) for m in solid_pads()), key=lambda me: me[1])

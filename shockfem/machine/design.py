@@ -30,7 +30,7 @@ from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher
 from .layout import GUIDES_PER_BODY, Layout, frame_force, place, rail_section, shoe_length
 from .limits import Limit, broken, model_range
 from .spec import REFERENCE_ARTICLE, MachineSpec
-from .stops import OIL_TEMPERATURE_RISE
+from .stops import OIL_TEMPERATURE_RISE, OIL_TEMPERATURE_SOURCE
 
 # the largest single part a road carries without a special permit: Council Directive 96/53/EC (2.55 m wide,
 # 40 t gross), on a standard semi-trailer's 13.6 m deck with about 24 t of payload; the frame and the rails
@@ -166,8 +166,7 @@ def part_limits(spec: MachineSpec, fixture: Fixture, amp: Amplifier, layout: Lay
         out += st.limits
     out += list(fixture.limits)
     out.append(Limit("dashpot oil", "temperature rise a shot", fixture.oil_heating, OIL_TEMPERATURE_RISE, "K",
-                     "the energy the orifice throttles kept by the oil", "mineral oil to 80 C from 20 C; nitrile "
-                     "seals (Parker ORD 5700)"))
+                     "the energy the orifice throttles kept by the oil", OIL_TEMPERATURE_SOURCE))
     parts = [i for i in layout.items if i.kind not in SECTIONED]
     longest = max(parts, key=lambda i: i.length)
     widest = max(parts, key=lambda i: i.diameter)

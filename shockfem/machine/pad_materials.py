@@ -1,7 +1,7 @@
 """What an amplifier's pads can be made of: each material with the limits a pad of it must keep, and their
 sources.
 
-Four kinds, as a shock machine's struck faces are built:
+Five kinds, as a shock machine's struck faces are built:
 
 * ``elastomer``: cast polyurethane discs (90A, 95A, 60D).  Hyperelastic (Neo-Hookean, nearly
   incompressible) with hysteresis: the rebound resilience R of ASTM D2632 (a plunger dropped on the
@@ -19,6 +19,10 @@ Four kinds, as a shock machine's struck faces are built:
 * ``crowned steel``: the struck body's own face crowned to a sphere (no pad): elastic while the closing
   speed is below the Hertz yield onset (``amplifier.interfaces.hertz_yield_speed``).
 * ``none``: flat steel on flat steel: the 1D impedance stress must stay below the steel's allowable.
+* ``gas spring``: a closed cylinder of nitrogen on the struck body, the striking body's face its piston
+  (``machine.gas_spring``): the energy in compressed gas, not a solid's strain.  Its limits: the peak gas
+  temperature (below the seal oil's auto-ignition), the column's length over its bore, the face's stress
+  and the sleeve's mass over the struck body's; its restitution is its model's (shock, heat, seal friction).
 
 Figures from a handbook recalled rather than read from a retrieved copy say "check" in their source,
 as the references do; use certified data for a real pad.
@@ -31,8 +35,9 @@ from dataclasses import dataclass
 from scipy.optimize import brentq
 
 from ..amplifier.rigid import pad_restitution
+from . import gas_spring
 
-KINDS = ("elastomer", "yielding metal", "crowned steel", "none")
+KINDS = ("elastomer", "yielding metal", "crowned steel", "none", "gas spring")
 # the room a machine's pads start a shot at [K above 0 C]
 AMBIENT = 20.0
 
@@ -139,6 +144,11 @@ PAD_MATERIALS: dict[str, PadMaterial] = {m.name: m for m in [
     PadMaterial("none", "none", 0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0,
                 "flat steel on flat steel: the 1D impedance stress dv Z_a Z_b / (Z_a + Z_b) over the smaller face "
                 "against the steel's allowable"),
+    PadMaterial("nitrogen_gas_spring", "gas spring", 0.0, 0.0, 0.3, 0.0, 0.0, 0.0,
+                gas_spring.OIL_AUTOIGNITION - gas_spring.IGNITION_MARGIN - 273.15, gas_spring.MAX_SLENDERNESS,
+                "a nitrogen gas spring (machine.gas_spring): the charge inert (accumulators are charged with "
+                "nitrogen only); its peak temperature 50 K below the seal oil's auto-ignition (Shell Tellus S2 M 32 "
+                "SDS, > 320 C by DIN 51794; check); its sleeve by ASME VIII-2 4.3.3 at the chain steel's allowable"),
 ]}
 
 

@@ -20,7 +20,9 @@ MIN_HEIGHT of its diameter):
   volume absorbs W as plastic work, V = W / w_p(strain);
 * crowned steel face: the crown whose contact radius at the Hertz yield onset is half the face's radius
   (the largest that keeps the yielding inside the face), and the closing speed against that onset;
-* no pad: the flat faces' 1D impedance stress against the allowable.
+* no pad: the flat faces' 1D impedance stress against the allowable;
+* gas spring: a nitrogen cylinder on the struck body as wide as the smaller face, the striking face its
+  piston, sized by ``gas_spring.size_gas_spring`` (its restitution its model's: no run is made).
 
 Each check is a ``Limit`` (stress, strain, stored energy per volume, temperature rise a shot, slenderness,
 the face stress on the steel, and the pad's mass over its struck body's, the range in which the chain's
@@ -51,13 +53,15 @@ from __future__ import annotations
 import json
 import math
 import os
+import time
 from dataclasses import asdict, dataclass, field, replace
 
 from ..amplifier.interfaces import HERTZ_YIELD_PRESSURE, flat_face_stress, hertz_yield_speed, reduced_mass
 from ..scene import resolve
 from ..scene.library import LIBRARY, initial_yield_stress, property_si
+from .gas_spring import resolved, size_gas_spring
 from .limits import Limit
-from .pad_materials import (PadMaterial, neo_hookean_energy, neo_hookean_stress, pad_material, plastic_work)
+from .pad_materials import (PAD_MATERIALS, PadMaterial, neo_hookean_energy, neo_hookean_stress, pad_material, plastic_work)
 
 # the chain's structural damping (``amplifier.chain``): a band from each body's first mode up
 STRUCTURAL_DAMPING, DAMPING_BAND = 0.02, 20.0
@@ -295,6 +299,20 @@ def _steel_faces(iface: Interface, mat: PadMaterial) -> PadDesign:
     return PadDesign(iface.name, mat.name, mat.kind, energy=iface.energy, contact_time=transit, limits=limits)
 
 
+def _gas_spring(iface: Interface, mat: PadMaterial) -> PadDesign:
+    rho = _steel(iface)[0]
+    g = size_gas_spring(iface.m_star, iface.speed, iface.face_diameter, iface.allowable, rho)
+    part = f"pad {iface.name}"
+    force = g.peak_pressure * math.pi * g.bore ** 2 / 4
+    limits = [Limit(part, "peak gas temperature", g.peak_temperature - 273.15, mat.temperature_limit, "C",
+                    "T0 r^(gamma - 1), the adiabatic compression", mat.source, sized=True),
+              Limit(part, "slenderness", g.column / g.bore, mat.slenderness, "-", "the gas column over its bore",
+                    "a sleeve longer than this is a slender tube (gas_spring.MAX_SLENDERNESS)"),
+              *_common_limits(iface, mat, g.sleeve_mass, force)]
+    return PadDesign(iface.name, mat.name, mat.kind, g.bore, g.column, g.sleeve_mass, g.stroke, force, g.energy,
+                     0.0, g.contact_time, tuple(limits))
+
+
 def size_pad(iface: Interface, material: str, restitution: float = 0.0, peak_factor: float | None = None
              ) -> PadDesign:
     """The pad of ``material`` for ``iface`` (module docstring); ``restitution``: the interface's, which
@@ -306,14 +324,25 @@ def size_pad(iface: Interface, material: str, restitution: float = 0.0, peak_fac
         return _elastomer(iface, mat, restitution, PEAK_FACTOR if peak_factor is None else peak_factor)
     if mat.kind == "yielding metal":
         return _metal(iface, mat, restitution)
+    if mat.kind == "gas spring":
+        return _gas_spring(iface, mat)
     return _steel_faces(iface, mat)
 
 
-def estimated_restitution(material: str) -> float:
+def estimated_restitution(material: str, iface: Interface | None = None) -> float:
     """The restitution to size a pad with before its run: an elastomer's on rigid masses, sqrt(R); a
-    crushed metal's or steel's 0.3 (a first guess only: the run replaces it)."""
+    crushed metal's or steel's 0.3 (a first guess only: the run replaces it); a gas spring's, its model's on
+    ``iface`` (it depends on the closing speed; nan without one: no estimate for every interface)."""
     mat = pad_material(material)
+    if mat.kind == "gas spring":
+        return (size_gas_spring(iface.m_star, iface.speed, iface.face_diameter, iface.allowable, _steel(iface)[0])
+                .restitution if iface is not None else math.nan)
     return math.sqrt(mat.resilience) if mat.kind == "elastomer" else 0.3
+
+
+def solid_pads() -> list[str]:
+    """The pad materials whose restitution is one number for every interface (all but the gas spring's)."""
+    return [m for m, pm in PAD_MATERIALS.items() if pm.kind != "gas spring"]
 
 
 # ---------------------------------------------------------------------------------------------- the runs
@@ -435,10 +464,12 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
     from ..output.history_file import read_history_csv
     from ..runner import run_scene
     def estimate(note: str) -> Measured:
-        return Measured(estimated_restitution(pad.material), "", 0.0, 0, 0, 0.0, math.nan, {}, 0.0, False,
+        return Measured(estimated_restitution(pad.material, iface), "", 0.0, 0, 0, 0.0, math.nan, {}, 0.0, False,
                         {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution}, note=note)
     if resolution == ESTIMATE:
         return estimate("not run (pad resolution 'estimate'): the material's estimate")
+    if pad.kind == "gas spring":
+        return _gas_column_run(iface, pad, estimate)
     raw = interface_scene(iface, pad, resolution)
     work = run_work(raw)
     if work > MAX_WORK:
@@ -467,6 +498,19 @@ def measure_restitution(iface: Interface, pad: PadDesign, out_dir: str, resoluti
                     bodies["pad"]["plastic_work"] if "pad" in bodies else 0.0, parted(h, names),
                     {"interface": asdict(iface), "pad": pad.as_dict(), "resolution": resolution},
                     note=f"about {work:.2g} cells x steps estimated")
+
+
+def _gas_column_run(iface: Interface, pad: PadDesign, estimate) -> Measured:
+    """A gas spring's run: its gas column resolved (``gas_spring.resolved``); the peak pressure at its closed end
+    as the interface's peak stress (the bore is the face)."""
+    t0 = time.perf_counter()
+    spring = size_gas_spring(iface.m_star, iface.speed, iface.face_diameter, iface.allowable, _steel(iface)[0])
+    r = resolved(iface.m_star, iface.speed, spring)
+    m = estimate(f"the gas column's run ({r['cells']} cells, energy balance {r['energy_error']:.1e} of W): e "
+                 f"{r['column_restitution']:.4f} from its gas, {r['restitution']:.4f} with its heat and seal friction")
+    return replace(m, restitution=r["restitution"], run=f"gas column ({r['cells']} cells)",
+                   wall_time_s=time.perf_counter() - t0, elements=r["cells"], energy_balance_error=r["energy_error"],
+                   peak_interface_stress=r["peak_pressure"], parted=True)
 
 
 def pad_contact_stress(iface: Interface, pad: PadDesign, m: Measured) -> float:

@@ -22,21 +22,24 @@ form (``closed_form``, ``boundary``) says: the restitution above which any chain
 direct one, against the chain's and the best pad's.
 
 ``premise_map`` then asks where each wins over pulse durations, peaks and payloads, cheaply: the striker
-from the rigid collision law (``programmer.dashpot_design.striker_speed``) at the designed fixture's
-striker ratio and its measured restitution; the amplifier as the launched chain at its launch speed and
-mass count of least gun (``boundary.best_chain``), its masses by the closed form (``amplifier.gain
-.design``), designed only where it needs less gun than the direct one (elsewhere the point is 'nothing to
-amplify', not a direct win); each gun by the lightest-launcher design (one start) or, for (c), the white
-paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
+scaled from the designed one by what its housing's mass scales with (``StrikerLaw``: the bore squared
+times the bore's depth), its speed from the rigid collision law (``programmer.dashpot_design
+.striker_speed``) at the fixture's measured restitution; the amplifier as the launched chain at its launch
+speed and mass count of least gun (``boundary.best_chain``, by the simple-wave and the infinitely
+chambered gun, the lower Q kept), its masses by the closed form (``amplifier.gain.design``), designed only
+where it needs less gun than the direct one (elsewhere the direct gun, where it is feasible and lightest,
+wins the point, its note 'nothing to amplify'); each gun by the lightest-launcher design (one start) or,
+for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
 striker in a massless sabot (its lower bound); the sabot its bore and pressure would need (``sabot_mass``)
 is reported beside it, and a point the direct gun wins only without it is marked so.  (c) counts only
 where its barrel is within the spec's barrel limit.  The restitution the map's amplifier runs at is the
 caller's (the system study passes the designed amplifier's effective e, carried over to every point: a pad
 sized and run at another point would restitute otherwise).  A machine's figure of merit there is its gun
 (barrel and tank) and its moving masses; the stops and frame, which the full design adds, are left out.
-Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its ratio
-and restitution are carried over, the flying target's dashpot is not designed, and the amplifier's pads
-and stresses are not checked (only its gain).
+Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its striker
+is the law's and its restitution carried over (``premise_map``'s ``fixed_ratio`` runs the designed ratio
+at every point instead, the verdict's sensitivity to the law), the flying target's dashpot is not
+designed, and the amplifier's pads and stresses are not checked (only its gain).
 """
 from __future__ import annotations
 
@@ -58,7 +61,7 @@ from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, gun_thrust
-from .fixture import bore_radius, design_fixture
+from .fixture import article_length, bore_radius, design_fixture
 from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import RING_CLEARANCE, Layout, place, ring_area
@@ -201,27 +204,33 @@ def bare_launcher(spec: MachineSpec, striker: float, speed: float, starts: int, 
 
 
 def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: float | None, starts: int = 3,
-                    report_binding: bool = True, bores: int = SABOT_BORES) -> tuple[Launcher, float]:
+                    report_binding: bool = True, bores: int = SABOT_BORES, lightest_short: list | None = None
+                    ) -> tuple[Launcher, float]:
     """The lightest gun within the spec's limits firing a striker of ``striker`` [kg] and ``diameter`` at
     ``speed`` in the sabot its bore needs: the gun's optimiser does not see that the sabot grows with the
     bore (as p R^3), so the bore is scanned (``bores`` bores from half the bare striker's gun's bore, or the
     striker's diameter, to 1.25 times it, each gun designed with its sabot), the lightest feasible gun and
     sabot kept; when no bore's gun reaches the speed, the one that comes closest (the highest muzzle speed),
-    not the lightest of those that fall short.  ``diameter`` None: a massless sabot (the lower bound), one design (``bare_launcher``, shared with the
-    scan's start).  Returns the launcher and the sabot's mass."""
+    not the lightest of those that fall short (that one, as (launcher, sabot), is put in ``lightest_short``
+    when given, for a reader to see both).  ``diameter`` None: a massless sabot (the lower bound), one design
+    (``bare_launcher``, shared with the scan's start).  Returns the launcher and the sabot's mass."""
     bare = bare_launcher(spec, striker, speed, starts, report_binding)
     if diameter is None:
         return bare, 0.0
     # the sabot favours a narrower bore than the bare striker's gun; scan from half of that bore up
     lo = max(diameter, 0.5 * bare.design.gun.bore)
     hi = max(lo, min(spec.max_bore, 1.25 * bare.design.gun.bore))
-    best = None
+    best = light = None
     for bore in np.geomspace(lo, hi, bores):
         L, sabot = _with_sabot(spec, striker, speed, diameter, float(bore), starts, False)
         d = L.design
         key = (False, d.weight + sabot) if d.feasible else (True, -d.muzzle_velocity / d.required_velocity)
         if best is None or key < best[0]:
             best = (key, L, sabot)
+        if not d.feasible and (light is None or d.weight + sabot < light[0]):
+            light = (d.weight + sabot, L, sabot)
+    if lightest_short is not None and not best[1].design.feasible and light[1] is not best[1]:
+        lightest_short[:] = [light[1], light[2]]
     return best[1], best[2]
 
 
@@ -230,7 +239,9 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     """(b): the same striker fired directly by the lightest gun within the same limits, in its sabot;
     ``with_sabot`` False: in a massless sabot (the direct gun's lower bound, (b0))."""
     diameter = 2 * fixture.housing_outer_radius if with_sabot else None
-    L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores)
+    short = []
+    L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores,
+                               lightest_short=short)
     layout = _layout(spec, L, fixture)
     stop = sabot_stop(spec, L, sabot, diameter) if sabot else None
     notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle by a "
@@ -241,12 +252,25 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     notes += [f"the sabot's stop breaks its limit: {lim.describe()}" for lim in broken_stop]
     if not L.design.feasible:
         notes.append(L.design.note)
+    if short:
+        notes.append(_short_words(L, sabot, *short))
     name = "(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot"
     out = _arrangement(name, L, fixture, layout, L.design.feasible, notes,
                        sabot + (stop.absorber_mass if stop else 0.0))
     out.limits = stop.limits if stop else []
     out.feasible = L.design.feasible and not broken_stop
     return out
+
+
+def _short_words(closest: Launcher, sabot: float, light: Launcher, light_sabot: float) -> str:
+    """The bore scan's closest gun beside its lightest, when no bore's gun reaches the speed."""
+    def gun(L, s):
+        d, g = L.design, L.design.gun
+        return (f"{g.bore / IN:.3g} in x {g.length / FT:.3g} ft at {g.reservoir_pressure / PSI:,.0f} psi, "
+                f"{(d.weight + s) / 1e3:.3g} t with its {s:.3g} kg sabot, {d.muzzle_velocity:.4g} m/s, "
+                f"{d.required_velocity - d.muzzle_velocity:.3g} m/s short")
+    return (f"no bore's gun reaches {closest.design.required_velocity:.4g} m/s: kept the closest ({gun(closest, sabot)}); "
+            f"the lightest that falls short: {gun(light, light_sabot)}")
 
 
 def sabot_stop(spec: MachineSpec, launcher: Launcher, sabot: float, diameter: float):
@@ -362,11 +386,26 @@ def elastic_limit_speeds(spec: MachineSpec) -> dict:
     return out
 
 
+# a spring outside the library that stores more per mass than its solids: a unidirectional CFRP strap in
+# tension (T700-class fibre in epoxy: tensile strength about 2 GPa, E 140 GPa, 1600 kg/m^3; typical data-sheet
+# values, check), w = sigma^2 / (2 E) = 14 MJ/m^3
+FIBRE_SPRING = {"name": "a CFRP strap in tension", "stress": 2.0e9, "modulus": 140e9, "density": 1600.0}
+
+
+def fibre_spring_speed() -> float:
+    """v* = sigma / sqrt(rho E) [m/s] of ``FIBRE_SPRING``."""
+    f = FIBRE_SPRING
+    return f["stress"] / math.sqrt(f["density"] * f["modulus"])
+
+
 def scale_free(m: Machine) -> dict:
-    """Why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last
-    interface closes at V_s / g >= V_s / 2 (g the stage gain), far above the speed v* to which any solid returns
-    the energy elastically (``elastic_limit_speeds``); and the first mass at the restitutions the pads' runs
-    measured (``MEASURED_RESTITUTIONS``; None where no chain of the spec's masses gains enough)."""
+    """Why the amplifier fails whatever its size, for interfaces of the library's solids: a stage gains at
+    most 1 + e <= 2, so the chain's last interface closes at V_s / g >= V_s / 2 (g the stage gain), above the
+    speed v* to which the library's solids return the energy elastically (``elastic_limit_speeds``); how far
+    above for the best spring outside the library (``FIBRE_SPRING``, a fibre strap in tension); and the first
+    mass at the restitutions the pads' runs measured (``MEASURED_RESTITUTIONS``; None where no chain of the
+    spec's masses gains enough).  Gas and liquid springs are not solids and fall outside the argument (the gas
+    spring's chain: ``gas_spring_chain``)."""
     s, V = m.spec, m.fixture.striker_speed
     g = (V / s.launch_speed) ** (1 / (s.masses - 1))
     speeds = elastic_limit_speeds(s)
@@ -377,6 +416,7 @@ def scale_free(m: Machine) -> dict:
         first[label] = {"restitution": e, "first_mass": d.masses[0] if d.feasible else None}
     return {"stage_gain": g, "last_closing_speed": V / g, "half_striker_speed": V / 2,
             "elastic_limit_speeds": speeds, "best_solid": best, "best_elastic_limit_speed": speeds[best],
+            "fibre_spring_speed": fibre_spring_speed(), "first_closing_speed": s.launch_speed,
             "first_mass_at_measured": first}
 
 
@@ -384,13 +424,18 @@ def _scale_free_words(k: dict) -> str:
     firsts = "; ".join(f"{label} ({x['restitution']:.3g}): " + (f"{x['first_mass'] / 1e3:,.0f} t" if x["first_mass"]
                                                                  else "no chain of these masses gains enough")
                        for label, x in k["first_mass_at_measured"].items())
-    return (f"why the amplifier fails whatever its size: a stage gains at most 1 + e <= 2, so the chain's last "
-            f"interface closes at V_s / g = {k['last_closing_speed']:.0f} m/s (at least V_s / 2 = "
-            f"{k['half_striker_speed']:.0f} m/s at any e and any number of masses), while the best solid of the "
+    fibre = k["fibre_spring_speed"]
+    return (f"why the amplifier fails whatever its size, on the library's solids: a stage gains at most 1 + e <= 2, "
+            f"so the chain's last interface closes at V_s / g = {k['last_closing_speed']:.0f} m/s (at least V_s / 2 "
+            f"= {k['half_striker_speed']:.0f} m/s at any e and any number of masses), while the best solid of the "
             f"library ({k['best_solid']}) returns an interface's energy elastically only up to v* = sigma / "
             f"sqrt(rho E) = {k['best_elastic_limit_speed']:.0f} m/s, whatever the fixture, the striker's mass or "
-            f"the number of masses: every interface is past its elastic limit, and the chain's e is the estimate "
-            f"of a slow rebound test; at the restitutions the pads' runs measured the first mass would be: {firsts}")
+            f"the number of masses: every interface of those solids is past its elastic limit, and the chain's e is "
+            f"the estimate of a slow rebound test; {FIBRE_SPRING['name']} (2 GPa) would reach v* = {fibre:.0f} m/s, "
+            f"{k['half_striker_speed'] / fibre:.2f} times below V_s / 2 and {k['last_closing_speed'] / fibre:.2f} "
+            f"times below the last interface (within reach of the first, at {k['first_closing_speed']:.0f} m/s); gas "
+            f"and liquid springs are not solids and fall outside this argument (the gas spring's chain is its own "
+            f"table); at the restitutions the pads' runs measured the first mass would be: {firsts}")
 
 
 def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: float) -> dict:
@@ -519,8 +564,11 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
 
 # --- the map -------------------------------------------------------------------------------------------
 
-# what a point can come to: the lightest feasible arrangement, or why the amplifier was not designed there
-WINNERS = ("amplifier", "direct", "direct, if its sabot is light", "flying target", "nothing to amplify", "none")
+# what a point can come to: the lightest feasible arrangement, or none
+WINNERS = ("amplifier", "direct", "direct, if its sabot is light", "flying target", "none")
+# the gun laws of the map's closed form (``boundary``): the simple-wave (constant-area) gun, and the
+# infinitely chambered gun, the bound on any gun of the gas
+LAWS = {"simple-wave": False, "chambered": True}
 
 
 @dataclass
@@ -532,12 +580,15 @@ class MapPoint:
     velocity_change: float        # [m/s]
     striker_mass: float
     striker_speed: float
-    chain: dict                   # the closed form's best chain (``boundary.best_chain``)
-    eligible: bool                # that chain needs less gun than the direct one (Q < 1): the amplifier designed
+    chain: dict                   # the closed form's best chain, simple-wave guns (``boundary.best_chain``)
+    eligible: bool                # a chain needs less gun than the direct one (Q < 1 by either law): designed
     amplifier: dict               # launch energy, first mass, gun mass, machine mass, feasible, note
     direct: dict
     flying: dict
     winner: str                   # WINNERS
+    chain_chambered: dict = field(default_factory=dict)   # the same with both guns the infinitely chambered one
+    striker_ratio: float = math.nan     # the striker over the payload at this point (``StrikerLaw``)
+    note: str = ""                # why the amplifier was not designed, where it was not
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -567,94 +618,169 @@ def _amplifier_entry(s: MachineSpec, M: float, V: float, chain: Chain) -> dict:
                       f"{chain.masses} masses launched at {chain.launch_speed:.0f} m/s, first mass {d.masses[0]:,.0f} kg")
 
 
-def _winner(amp: dict, direct: dict, flying: dict, eligible: bool) -> str:
-    """The lightest feasible arrangement (WINNERS); where the amplifier was not designed (no chain needs
-    less gun than the direct one), the direct gun's point is 'nothing to amplify', not a direct win."""
+def _winner(amp: dict, direct: dict, flying: dict) -> str:
+    """The lightest feasible arrangement (WINNERS); an amplifier not designed (no chain needs less gun than
+    the direct one) is not feasible, so the direct gun wins there wherever it is feasible and lightest."""
     options = {"amplifier": amp, "direct": direct, "flying target": flying}
     feasible = {k: v for k, v in options.items() if v["feasible"]}
     if not feasible:
         return "none"
     winner = min(feasible, key=lambda k: feasible[k]["machine_mass"])
-    if winner == "direct" and not eligible:
-        return "nothing to amplify"
     if winner == "direct" and amp["feasible"] and direct["machine_mass"] + direct["sabot_estimate"] > amp["machine_mass"]:
         return "direct, if its sabot is light"
     return winner
 
 
-def map_point(spec: MachineSpec, duration: float, peak: float, article: float, ratio: float, ratio_c: float,
-              fixture_e: float, amp_e: float, wall: float) -> MapPoint:
+@dataclass(frozen=True)
+class StrikerLaw:
+    """The fixture's striker at a map point, scaled from the designed one by what its housing's mass scales
+    with: the housing over the whole bore (``fixture.striker_housing``, which sets the designed striker where
+    ``housing_binds``) weighs rho pi ((R^2 - r^2) depth + R^2 t), so at the design's wall ratio R / r and
+    floor over bore it goes as r^2 depth: r the bore the design oil pressure asks (``fixture.bore_radius``),
+    depth the liquid column, which goes with the relative stroke (as dv T for one pulse shape), plus the
+    piston and headroom and the article (``fixture.article_length``).  Never lighter than the striker asked
+    (the spec's striker ratio, or the white paper's target).  Range: the design's wall ratio, floor, column
+    over stroke and oil pressure carried over; exact at the design's point only (the designed striker)."""
+    striker_mass: float           # the designed striker (or target) [kg]
+    bore: float                   # the design oil pressure's bore at the design's point [m]
+    column: float                 # the designed liquid column [m]
+    rest: float                   # the bore's depth less the column and the article [m]
+    article: float                # the designed fixture's article length [m]
+    stroke_scale: float           # the design's velocity change times its duration [m]
+
+    @classmethod
+    def of(cls, spec: MachineSpec, fixture, striker_mass: float) -> "StrikerLaw":
+        rho = property_si(spec.material, "density", "density")
+        return cls(striker_mass, bore_radius(spec, rho), fixture.column,
+                   fixture.bore_depth - fixture.column - fixture.article_length, fixture.article_length,
+                   fixture.velocity_change * fixture.duration)
+
+    def striker(self, s: MachineSpec, r: float, dv: float, least: float) -> float:
+        """The striker [kg] at the point of spec ``s``, bore ``r`` [m] and velocity change ``dv`` [m/s], at
+        least ``least`` [kg]."""
+        column = self.column * dv * s.pulse.duration / self.stroke_scale
+        depth = (column + self.rest + article_length(s)) / (self.column + self.rest + self.article)
+        return max(least, self.striker_mass * (r / self.bore) ** 2 * depth)
+
+
+def striker_laws(spec: MachineSpec, fixture, target) -> tuple[StrikerLaw, StrikerLaw]:
+    """The striker's law (``StrikerLaw``) and the flying target's (its designed target in the striker's
+    place; where the designer found none, the target ratio asked times the payload)."""
+    t_mass = getattr(target, "striker_mass", target.striker_ratio * fixture.payload_mass)
+    return StrikerLaw.of(spec, fixture, fixture.striker_mass), StrikerLaw.of(spec, fixture, t_mass)
+
+
+def _chains(amp_e: float, V: float, gas: str) -> dict:
+    """The best chain by each gun law (``LAWS``)."""
+    return {law: best_chain(amp_e, V, gas, chambered=chambered) for law, chambered in LAWS.items()}
+
+
+def map_point(spec: MachineSpec, duration: float, peak: float, article: float, strikers: tuple, fixture_e: float,
+              amp_e: float, wall: float) -> MapPoint:
     """One point of the map: the three arrangements by closed forms and the lightest-launcher design;
-    ``ratio`` and ``ratio_c`` the strikers of (b) and (c) over the payload, ``fixture_e`` the fixture's
+    ``strikers`` the striker's and the flying target's laws (``striker_laws``), ``fixture_e`` the fixture's
     restitution, ``amp_e`` the amplifier's, ``wall`` the housing's outer over its bore radius.  The
-    amplifier's launch speed and mass count are the closed form's best (``boundary.best_chain``), and it is
-    designed only where that chain needs less gun than the direct one."""
+    amplifier's launch speed and mass count are the closed form's best (``boundary.best_chain``) by the gun
+    law whose Q is lower, and it is designed only where that Q is below 1."""
     s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, peak, duration))
     rho = property_si(s.material, "density", "density")
     r = bore_radius(s, rho)
     payload = article + rho * math.pi * r * r * DASHPOT["piston_thickness"]
     dv = requirement(s.pulse.shape, peak, duration, payload).velocity_change
-    M = ratio * payload
+    M = strikers[0].striker(s, r, dv, spec.striker_ratio * payload)
     V = striker_speed(payload, M, dv, fixture_e)
     Lb, _ = direct_launcher(s, M, V, None, starts=1, report_binding=False)
     gb = Lb.design.gun
     sabot = sabot_mass(gb.bore, gb.reservoir_pressure, 2 * r * wall)
     direct = _gun_entry(Lb, M, Lb.design.feasible, f"massless sabot; its sabot would weigh {sabot:.3g} kg")
     direct["sabot_estimate"] = sabot
-    chain = best_chain(amp_e, V, s.gas)
+    chains = _chains(amp_e, V, s.gas)
+    law = min(chains, key=lambda k: chains[k].gun_ratio)
+    chain = chains[law]
     eligible = chain.gun_ratio < 1
-    amp = (_amplifier_entry(s, M, V, chain) if eligible else
-           _no_gun(f"nothing to amplify: the best chain ({chain.masses} masses launched at {chain.launch_speed:.0f} "
-                   f"m/s) needs {chain.gun_ratio:.3g} times the direct gun's p0 A L"))
-    Mc = ratio_c * payload
+    note = "" if eligible else (f"nothing to amplify: the best chain ({chain.masses} masses launched at "
+                                f"{chain.launch_speed:.0f} m/s) needs {chain.gun_ratio:.3g} times the direct gun's "
+                                f"p0 A L ({law} guns, the lower Q of the two laws)")
+    amp = _amplifier_entry(s, M, V, chain) if eligible else _no_gun(note)
+    Mc = strikers[1].striker(s, r, dv, WHITE_PAPER_TARGET * article)
     Vc = striker_speed(payload, Mc, dv, fixture_e)
     Lc, ok = white_paper_launcher(s, Mc, Vc)
     flying = _gun_entry(Lc, Mc, ok and Lc.design.gun.length <= s.max_barrel_length,
                         f"barrel {Lc.design.gun.length / FT:.3g} ft" if ok else "never reaches the speed")
-    return MapPoint(duration, peak, article, payload, dv, M, V, chain.as_dict(), eligible, amp, direct, flying,
-                    _winner(amp, direct, flying, eligible))
+    return MapPoint(duration, peak, article, payload, dv, M, V, chains["simple-wave"].as_dict(), eligible, amp,
+                    direct, flying, _winner(amp, direct, flying), chains["chambered"].as_dict(), M / payload, note)
 
 
-def premise_map(spec: MachineSpec, fixture, amp_e: float, ratio_c: float, durations, peaks, payloads, echo=None
-                ) -> list[MapPoint]:
-    """The map over ``durations`` [s], ``peaks`` [m/s^2] and ``payloads`` (article masses) [kg]."""
+def premise_map(spec: MachineSpec, fixture, amp_e: float, target, durations, peaks, payloads, echo=None,
+                fixed_ratio: bool = False) -> list[MapPoint]:
+    """The map over ``durations`` [s], ``peaks`` [m/s^2] and ``payloads`` (article masses) [kg]; the striker
+    and the flying target scaled to each point (``StrikerLaw``), or, ``fixed_ratio``, at the designed
+    fixture's ratios to the payload at every point (the sensitivity of the verdict to the law)."""
+    strikers = striker_laws(spec, fixture, target)
     out = []
     for a in payloads:
         for T in durations:
             for A in peaks:
-                p = map_point(spec, T, A, a, fixture.striker_ratio, ratio_c, max(fixture.restitution, 0.0), amp_e,
+                laws = strikers if not fixed_ratio else _fixed(spec, fixture, target, a, T, A)
+                p = map_point(spec, T, A, a, laws, max(fixture.restitution, 0.0), amp_e,
                               fixture.housing_outer_radius / fixture.bore_radius)
                 out.append(p)
                 if echo:
                     echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "
-                         f"Q {p.chain['gun_ratio']:.3g}, winner {p.winner}")
+                         f"striker {p.striker_ratio:.3g} x payload, Q {p.chain['gun_ratio']:.3g} (simple-wave) "
+                         f"{p.chain_chambered['gun_ratio']:.3g} (chambered), winner {p.winner}")
     return out
 
 
+@dataclass(frozen=True)
+class _Ratio:
+    """A striker at a fixed ratio to the payload (``premise_map``'s ``fixed_ratio``)."""
+    ratio: float
+    payload: float
+
+    def striker(self, s, r, dv, least) -> float:
+        return self.ratio * self.payload
+
+
+def _fixed(spec: MachineSpec, fixture, target, article: float, T: float, A: float) -> tuple:
+    s = dataclasses.replace(spec, article_mass=article, pulse=PulseSpec(spec.pulse.shape, A, T))
+    rho = property_si(s.material, "density", "density")
+    r = bore_radius(s, rho)
+    payload = article + rho * math.pi * r * r * DASHPOT["piston_thickness"]
+    return _Ratio(fixture.striker_ratio, payload), _Ratio(target.striker_ratio, payload)
+
+
 def boundary(points: list[MapPoint]) -> dict:
-    """The map's counts: each outcome's points, the points where the amplifier was eligible (designed), each
-    arrangement's points within the limits, and the smallest velocity change the amplifier wins at against
-    the largest the direct gun wins at."""
+    """The map's counts: each outcome's points, the direct wins where no chain needs less gun (the amplifier
+    not designed), the points where the amplifier was eligible (designed), each arrangement's points within
+    the limits, and the smallest velocity change the amplifier wins at against the largest the direct gun
+    wins at."""
     amp = [p for p in points if p.winner == "amplifier"]
     direct = [p for p in points if p.winner == "direct"]
     counts = {w: sum(p.winner == w for p in points) for w in WINNERS}
     within = {k: sum(getattr(p, k)["feasible"] for p in points) for k in ("amplifier", "direct", "flying")}
     return {"counts": counts, "eligible": sum(p.eligible for p in points), "points": len(points), "within": within,
             "amplifier_wins": counts["amplifier"], "direct_wins": counts["direct"],
+            "direct_wins_nothing_to_amplify": sum(not p.eligible for p in direct),
+            "eligible_chambered": sum(p.chain_chambered["gun_ratio"] < 1 for p in points),
+            "eligible_simple_wave": sum(p.chain["gun_ratio"] < 1 for p in points),
+            "striker_ratios": [min(p.striker_ratio for p in points), max(p.striker_ratio for p in points)],
             "smallest_dv_amplifier_wins": min((p.velocity_change for p in amp), default=math.nan),
             "largest_dv_direct_wins": max((p.velocity_change for p in direct), default=math.nan)}
 
 
-def boundary_velocity_change(points: list[MapPoint], e: float, gas: str) -> float:
+def boundary_velocity_change(points: list[MapPoint], e: float, gas: str, chambered: bool = False,
+                             at: MapPoint | None = None) -> float:
     """The velocity change [m/s] above which an amplifier of restitution ``e`` needs less gun than the direct
-    gun: the closed form's striker speed (``boundary.break_even_speed``) over the map's striker speed per
-    velocity change (one ratio: every point has the designed fixture's striker ratio and restitution)."""
-    p = points[0]
-    return break_even_speed(e, gas) * p.velocity_change / p.striker_speed
+    gun: the closed form's striker speed (``boundary.break_even_speed``) over the striker speed per velocity
+    change at the point ``at`` (default the first; the striker's ratio, so this speed per velocity change,
+    moves a little from point to point: a striker many times the payload closes at about dv / (1 + e))."""
+    p = at or points[0]
+    return break_even_speed(e, gas, chambered=chambered) * p.velocity_change / p.striker_speed
 
 
 MARKS = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "direct, if its sabot is light": ("D", "#a6d854"),
-         "flying target": ("^", "#7570b3"), "nothing to amplify": ("s", "#bbbbbb"), "none": ("x", "#444444")}
+         "flying target": ("^", "#7570b3"), "none": ("x", "#444444")}
 
 
 def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
@@ -672,12 +798,13 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
     # the pulse's velocity change over peak x duration (one shape on the map)
     per = points[0].velocity_change / (points[0].peak * points[0].duration)
     ds, ps = [q.duration * 1e3 for q in points], [q.peak / G0 for q in points]
-    styles = iter(["-", "--", ":", "-."])
+    styles = {False: iter(["-", "--", ":", "-."]), True: iter(["-", "--", ":", "-."])}
     for ax, a in zip(axes[0], payloads):
         for p in (q for q in points if q.article == a):
             m, c = MARKS[p.winner]
             ax.scatter(p.duration * 1e3, p.peak / G0, marker=m, color=c, s=70)
-            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio']:.2g}", (p.duration * 1e3, p.peak / G0),
+            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio']:.2g} / {p.chain_chambered['gun_ratio']:.2g}"
+                        + ("" if p.eligible else "\n(no chain)"), (p.duration * 1e3, p.peak / G0),
                         fontsize=6, xytext=(4, 4), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -692,12 +819,15 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
     for label, dv in (lines or {}).items():
         if not math.isfinite(dv):
             continue
-        style = next(styles, "-")
+        # a line's gun law by its colour (a label ending 'chambered': the chambered gun's), its e by its style
+        chambered = label.endswith("chambered")
+        style, colour = next(styles[chambered], "-"), "#7570b3" if chambered else "#d95f02"
         for ax in axes[0]:
-            ax.plot(T, dv / (per * T * 1e-3) / G0, style, color="#d95f02", lw=1)
-        handles.append(key.plot([], [], style, color="#d95f02", lw=1, label=f"{label}: {dv:.3g} m/s")[0])
+            ax.plot(T, dv / (per * T * 1e-3) / G0, linestyle=style, color=colour, lw=1)
+        handles.append(key.plot([], [], linestyle=style, color=colour, lw=1, label=f"{label}: {dv:.3g} m/s")[0])
     key.legend(handles=handles, fontsize=7, loc="center", ncol=4, frameon=False)
-    fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's\n"
-                 "gun (p0 A L) over the direct gun's, closed form; the amplifier designed only where Q < 1", fontsize=9)
+    fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's gun\n"
+                 "(p0 A L) over the direct gun's, closed form, simple-wave / infinitely chambered guns; the amplifier "
+                 "designed only where the lower Q < 1 ('no chain': a direct win with nothing to amplify)", fontsize=9)
     save(fig, path)
     return path

@@ -10,13 +10,15 @@ with its broken limits in the machine's verdict):
   the stopped body's inertia or the catcher's deceleration allows, or less where the buffer's bore at its
   pressure would not fit the stop ring).  Stroke x = E / F.  The oil swept by the piston keeps the
   energy, so it warms by p / (rho c_p) whatever the size: the cylinder runs at the pressure at which that
-  is the allowed rise (99 MPa for 60 K), or the dashpot's design pressure if lower; bore area F / p, the
+  is the allowed rise (132 MPa for 80 K), or the dashpot's design pressure if lower; bore area F / p, the
   wall by ASME VIII-2 4.3.3 at the allowable (``programmer.housing.wall_ratio``: P = S ln Y), length 2.2 x
   (cylinder and rod retracted).
   Limits: the pressure a sudden impact raises in the oil, Joukowsky rho c v (Wylie and Streeter, Fluid
   Transients in Systems, ch. 1), at most p; the piston's Mach number in the oil v / c at most 0.1 (the
   lumped orifice law's range, ``programmer.dashpot_validity``); the oil's temperature rise a shot when
-  the swept oil keeps the energy, E / (rho A x c_p) = p / (rho c_p), within ``OIL_TEMPERATURE_RISE``.
+  the swept oil keeps the energy, E / (rho A x c_p) = p / (rho c_p), within ``OIL_TEMPERATURE_RISE``: one
+  shot's rise from the ambient to the lower of the oil's flash point less a margin and its seals' service
+  temperature (the constants' comment gives the sources; the seals bind, 80 K).
 * **crushable**: an aluminium honeycomb block (``HONEYCOMB`` grades) crushed through; its force at
   speed v is the steady-shock crush stress A (sigma_c + rho0 v^2 / eps_D) (Reid and Peng, Int. J.
   Impact Eng. 19 (1997) 531: a cellular solid crushed at v carries the shock's momentum flux), so the
@@ -55,15 +57,25 @@ from ..units import G0
 from ..programmer.housing import wall_ratio
 from .fixture import OIL_HEAT_CAPACITY
 from .limits import Limit
+from .pad_materials import AMBIENT
 
 # the oil's speed of sound sqrt(K / rho) [m/s]
 OIL_SOUND_SPEED = math.sqrt(OIL["bulk_modulus"] / OIL["density"])
 # the lumped orifice law's range: piston speed over the oil's sound speed (``programmer.dashpot_validity``)
 BUFFER_MACH = 0.1
 WATER_DENSITY = 1000.0       # [kg/m^3]
-# a mineral hydraulic oil from 20 C to 80 C, its usual highest working temperature (nitrile seals are rated
-# to about 100 C: Parker O-Ring Handbook ORD 5700, nitrile compounds)
-OIL_TEMPERATURE_RISE = 60.0
+# The oil's temperature rise a shot (the buffers' and the dashpot's): one shot heats the oil it throttles,
+# which must stay below its flash point with a margin (the jet's shear layer runs hotter than the mean) and
+# within its seals' service temperature; the lower of the two, less the ambient, is the rise.  Flash point:
+# 200 C, the low end of mineral hydraulic oils' Cleveland open cup flash points (ISO 2592 / ASTM D92: 200 to
+# 240 C for mineral base oils, an ISO VG 32 oil typically 220 C; data-sheet values, check), less 50 K;
+# seals: nitrile (NBR) in mineral oil to 100 C (Parker O-Ring Handbook ORD 5700, nitrile compounds; check).
+# The seals bind: 80 K from the 20 C ambient.
+OIL_FLASH_POINT, FLASH_MARGIN, SEAL_TEMPERATURE = 200.0, 50.0, 100.0     # [C], [K], [C]
+OIL_TEMPERATURE_RISE = min(OIL_FLASH_POINT - FLASH_MARGIN, SEAL_TEMPERATURE) - AMBIENT
+OIL_TEMPERATURE_SOURCE = (f"a shot's rise from {AMBIENT:g} C to the lower of the oil's flash point less "
+                          f"{FLASH_MARGIN:g} K ({OIL_FLASH_POINT:g} C, ISO 2592 Cleveland open cup, mineral "
+                          f"hydraulic oil; check) and its nitrile seals' {SEAL_TEMPERATURE:g} C (Parker ORD 5700; check)")
 BUFFER_LENGTH = 2.2           # a buffer's length over its stroke (the cylinder and its rod retracted)
 # aluminium honeycomb (5052 alloy): density [kg/m^3], stabilised crush strength [Pa]; densification strain.
 # Hexcel, "HexWeb Honeycomb Attributes and Properties" (TSB 120), 5052 hexagonal grades 3.1 to 12 pcf (check)
@@ -150,8 +162,8 @@ def hydraulic_buffer(body: str, mass: float, speed: float, force: float, ring_ar
         Limit(f"stop of {body} (hydraulic buffer)", "piston Mach number in the oil", speed / OIL_SOUND_SPEED,
               BUFFER_MACH, "-", "v / sqrt(K / rho)", "the lumped orifice law's range (programmer.dashpot_validity)"),
         Limit(f"stop of {body} (hydraulic buffer)", "oil temperature rise a shot", heating, OIL_TEMPERATURE_RISE, "K",
-              "E / (rho A x c_p): the swept oil keeps the energy", "mineral oil to 80 C from 20 C; nitrile seals "
-              "(Parker ORD 5700)", sized=heating >= OIL_TEMPERATURE_RISE * (1 - 1e-9)),
+              "E / (rho A x c_p): the swept oil keeps the energy", OIL_TEMPERATURE_SOURCE,
+              sized=heating >= OIL_TEMPERATURE_RISE * (1 - 1e-9)),
     ]
     return {"kind": "hydraulic buffer", "stroke": stroke, "force": force, "length": length,
             "absorber_mass": steel + oil, "consumed": 0.0, "limits": limits,

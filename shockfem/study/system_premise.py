@@ -11,6 +11,7 @@ from ..amplifier.chain import run_chain_scene
 from ..machine import gas_drive as D
 from ..machine import premise as P
 from ..machine.amplifier import chain_scene
+from ..machine.gas_spring_chain import gas_spring_chain
 from ..machine.limits import broken, by_cause, counted, verdict_line
 from ..machine.white_paper import CLAIM, claims
 from ..units import FT, G0, IN, LB, PSI
@@ -190,6 +191,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
                                  2 * m.fixture.housing_outer_radius)
     boundary_table(rep, closed)
+    gas_spring_section(rep, m)
     words = P.verdict(a, b, c, b0, closed, remedies)[:-1] + "; " + D.verdict_words(drives, a, b) + "."
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
     for x in (a, b, b0, c):
@@ -260,68 +262,178 @@ def boundary_table(rep: Report, k: dict):
              f"({k['chain_efficiency_elastic']:.3g} at e = 1).")
 
 
-def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
-    """Where each arrangement wins over durations, peaks and payloads."""
-    rep.heading("9. Where each arrangement wins")
-    grid = cfg["map"]
-    echo(f"  the map: {len(grid['durations']) * len(grid['peaks']) * len(grid['payloads'])} points")
-    e = m.amplifier.restitution
-    points = P.premise_map(m.spec, m.fixture, e, target.striker_ratio,
-                           [d * 1e-3 for d in grid["durations"]], [p * G0 for p in grid["peaks"]],
-                           [w * LB for w in grid["payloads"]], echo)
+def _chain_row(label: str, c: dict) -> list:
+    if not c.get("feasible", True) or c.get("guns") is None:
+        return [label, c.get("restitution"), None, None, None, None, None, None, None, None, c.get("reason", "")]
+    sw, ch = c["guns"]["simple_wave"], c["guns"]["chambered"]
+    sleeves = sum(i["sleeve_mass"] for i in c.get("interfaces", []))
+    return [label, c["restitution"], c.get("masses"), c.get("launch_speed"), c["first_mass"], sleeves,
+            0.5 * c["first_mass"] * c.get("launch_speed", 0.0) ** 2 / 1e6, sw["amplifier"] / 1e6, sw["Q"],
+            ch["amplifier"] / 1e6, ch["Q"]]
+
+
+def gas_spring_section(rep: Report, m):
+    """What the design's chain gains with a gas spring at every interface (``machine.gas_spring_chain``)."""
+    k = gas_spring_chain(m, CLAIM["e"])
+    sc, best, wp = k["spec_chain"], k.get("best_chain", {}), k["at_white_paper_e"]
+    wp_row = {**wp, "masses": m.spec.masses, "launch_speed": m.spec.launch_speed, "feasible": True}
+    rows = [_chain_row("the design's masses and launch speed, a gas spring at every interface", sc),
+            _chain_row("the best chain (its launch speed and masses at the settled e), gas springs", best),
+            _chain_row("the chambered gun's best chain at the settled e, settled again, gas springs",
+                       k.get("best_chain_chambered", {})),
+            _chain_row(f"the design's masses and launch speed at the white paper's e {CLAIM['e']:g}", wp_row)]
+    rep.table("gas_spring_chain", ["chain", "e [-]", "masses", "launch [m/s]", "first mass [kg]",
+                                   "gas springs' sleeves [kg]", "launch energy [MJ]", "gun p0 A L, simple-wave [MJ]",
+                                   "Q simple-wave [-]", "gun p0 A L, chambered [MJ]", "Q chambered [-]"], rows,
+              ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.4g}", "{:.3g}", "{:.4g}", "{:.3g}"])
+    direct = (sc.get("guns") or wp["guns"])
+    iface = [[i["name"], i["closing_speed"], i["restitution"], i["closed_form_restitution"], i["bore"] * 1e3,
+              i["column"], i["peak_pressure"] / 1e6, i["run_peak_pressure"] / 1e6, i["sleeve_mass"], i["mass_share"],
+              "; ".join(i["broken"]) or "all hold"] for i in sc.get("interfaces", [])]
+    rep.table("gas_spring_interfaces", ["interface", "closing [m/s]", "e, its gas column's run [-]",
+                                        "e, closed form (an upper bound) [-]", "bore [mm]", "gas column [m]",
+                                        "sleeve's design pressure [MPa]", "peak in the run [MPa]", "sleeve [kg]",
+                                        "sleeve over struck body [-]", "broken limits"],
+              iface, ["{}", "{:.4g}", "{:.4f}", "{:.4f}", "{:.0f}", "{:.3g}", "{:.3g}", "{:.3g}", "{:,.0f}", "{:.3g}",
+                      "{}"])
+    rep.value("gas_spring_chain", k)
+    rep.text(_gas_spring_words(k, direct, rows))
+
+
+def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
+    sc = k["spec_chain"]
+    shares = [i["mass_share"] for i in sc.get("interfaces", [])]
+    held = all(not i["broken"] for i in sc.get("interfaces", []))
+    words = (f"A gas spring (`machine/gas_spring.py`: nitrogen, its peak temperature 50 K below the seal oil's "
+             f"auto-ignition, its restitution from its gas column's run, the shocks and their reverberations "
+             f"resolved, with the heat and seal friction) "
+             f"is the one interface not bound by a solid's v*. The direct gun fires the striker's "
+             f"{k['striker_energy'] / 1e6:.4g} MJ from p0 A L = {direct['simple_wave']['direct'] / 1e6:.4g} MJ "
+             f"(simple-wave) or {direct['chambered']['direct'] / 1e6:.4g} MJ (chambered).")
+    if sc["feasible"]:
+        words += (f" With gas springs the design's chain settles at e {sc['restitution']:.4f}, its first mass "
+                  f"{sc['first_mass']:,.0f} kg launching {rows[0][6]:.4g} MJ from a gun of {rows[0][7]:.4g} MJ "
+                  f"(Q {rows[0][8]:.3g}) or {rows[0][9]:.4g} MJ chambered (Q {rows[0][10]:.3g}); its sleeves weigh "
+                  f"{min(shares):.3g} to {max(shares):.3g} times their struck bodies, and its springs "
+                  + ("hold every limit." if held else "do not hold their limits (the table above)."))
+    best = k.get("best_chain") or {}
+    if best.get("feasible"):
+        words += (f" The best chain at that e, settled again with its own springs, is {best['masses']} masses launched "
+                  f"at {best['launch_speed']:.4g} m/s at e {best['restitution']:.4f}: its first mass "
+                  f"{best['first_mass']:,.0f} kg launches {rows[1][6]:.4g} MJ from a gun of {rows[1][7]:.4g} MJ "
+                  f"(Q {rows[1][8]:.3g}) or {rows[1][9]:.4g} MJ chambered (Q {rows[1][10]:.3g}), with "
+                  f"{rows[1][5]:,.0f} kg of sleeves the chain's masses leave out.")
+    ch = k.get("best_chain_chambered") or {}
+    if ch.get("feasible"):
+        words += (f" The chambered gun's own best chain, settled: {ch['masses']} masses launched at "
+                  f"{ch['launch_speed']:.4g} m/s at e {ch['restitution']:.4f}, {rows[2][9]:.4g} MJ of chambered gun "
+                  f"(Q {rows[2][10]:.3g}).")
+    wp = k["at_white_paper_e"]
+    if wp["guns"]:
+        words += (f" At the white paper's e {wp['restitution']:g} the design's chain launches {rows[3][6]:.4g} MJ "
+                  f"(its first mass {wp['first_mass']:,.0f} kg) from a gun of {rows[3][7]:.4g} MJ against the direct "
+                  f"gun's {direct['simple_wave']['direct'] / 1e6:.4g} MJ (simple-wave; Q {rows[3][8]:.3g}).")
+    return words
+
+
+def _map_rows(points) -> list:
     rows = []
     for p in points:
-        c = p.chain
-        rows.append([p.article / LB, p.duration * 1e3, p.peak / G0, p.velocity_change, p.striker_speed,
-                     c["masses"], c["launch_speed"], c["gun_ratio"], "yes" if p.eligible else "no",
-                     p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"], p.direct["launch_energy"] / 1e6,
-                     p.direct["machine_mass"], p.direct["sabot_estimate"], p.flying["barrel"] / FT,
-                     p.flying["machine_mass"], p.winner, p.amplifier["note"]])
-    rep.table("map", ["payload [lb]", "duration [ms]", "peak [g]", "velocity change [m/s]", "striker speed [m/s]",
-                      "best chain: masses", "best chain: launch [m/s]", "Q [-]", "amplifier designed",
-                      "(a) launch [MJ]", "(a) gun and masses [kg]", "(b0) launch [MJ]", "(b0) gun and striker [kg]",
-                      "(b) its sabot [kg]", "(c) barrel [ft]", "(c) gun and target [kg]", "lightest", "(a) note"],
-              rows, ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{:.0f}", "{}", "{:.0f}", "{:.3g}", "{}", "{:.3g}",
-                     "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{}", "{}"])
+        c, ch = p.chain, p.chain_chambered
+        rows.append([p.article / LB, p.duration * 1e3, p.peak / G0, p.velocity_change, p.striker_ratio,
+                     p.striker_speed, c["masses"], c["launch_speed"], c["gun_ratio"], ch["gun_ratio"],
+                     "yes" if p.eligible else "no", p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"],
+                     p.direct["launch_energy"] / 1e6, p.direct["machine_mass"], p.direct["sabot_estimate"],
+                     p.flying["barrel"] / FT, p.flying["machine_mass"], p.winner, p.note or p.amplifier["note"]])
+    return rows
+
+
+MAP_HEADER = ["payload [lb]", "duration [ms]", "peak [g]", "velocity change [m/s]", "striker over payload [-]",
+              "striker speed [m/s]", "best chain: masses", "best chain: launch [m/s]", "Q simple-wave [-]",
+              "Q chambered [-]", "amplifier designed", "(a) launch [MJ]", "(a) gun and masses [kg]", "(b0) launch [MJ]",
+              "(b0) gun and striker [kg]", "(b) its sabot [kg]", "(c) barrel [ft]", "(c) gun and target [kg]",
+              "lightest", "note"]
+MAP_FORMATS = ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{:.3g}", "{:.0f}", "{}", "{:.0f}", "{:.3g}", "{:.3g}", "{}",
+               "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{}", "{}"]
+
+
+def _map_lines(points, e: float, gas: str, at) -> dict:
+    """The closed form's boundary lines: the velocity change above which Q < 1, by each gun law."""
     _, e_pad = P.best_pad_restitution()
     lines = {}
     for label, x in ((f"Q = 1 at the design's e {e:.3f}", e), (f"at the best pad's e {e_pad:.3f}", e_pad),
                      ("at the white paper's e 0.9", CLAIM["e"]), ("at e = 1", 1.0)):
-        lines[label] = P.boundary_velocity_change(points, x, m.spec.gas)
+        lines[label + ", simple-wave"] = P.boundary_velocity_change(points, x, gas, at=at)
+        lines[label + ", chambered"] = P.boundary_velocity_change(points, x, gas, chambered=True, at=at)
+    return lines
+
+
+def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
+    """Where each arrangement wins over durations, peaks and payloads (the striker scaled to each point), and
+    the counts again at the designed striker ratio at every point (the verdict's sensitivity to that law)."""
+    rep.heading("9. Where each arrangement wins")
+    grid = cfg["map"]
+    echo(f"  the map: {len(grid['durations']) * len(grid['peaks']) * len(grid['payloads'])} points")
+    e = m.amplifier.restitution
+    axes = ([d * 1e-3 for d in grid["durations"]], [p * G0 for p in grid["peaks"]], [w * LB for w in grid["payloads"]])
+    points = P.premise_map(m.spec, m.fixture, e, target, *axes, echo=echo)
+    rep.table("map", MAP_HEADER, _map_rows(points), MAP_FORMATS)
+    at = min(points, key=lambda p: abs(p.article - m.spec.article_mass) + abs(p.duration - m.spec.pulse.duration)
+             * 1e3 + abs(p.peak - m.spec.pulse.peak) / G0 * 1e-3)
+    lines = _map_lines(points, e, m.spec.gas, at)
     P.map_figure(points, rep.path("premise_map.png"), lines)
     rep.figure("premise_map.png", "Where each arrangement gives the lightest feasible machine (gun and moving "
-               "masses), each point's velocity change and Q; the lines: the velocity change above which the best "
-               "chain needs less gun than the direct one (Q < 1), at four restitutions")
+               "masses), each point's velocity change and Q (simple-wave / chambered guns); the lines: the velocity "
+               "change above which the best chain needs less gun than the direct one, at four restitutions by each "
+               "gun law, at the striker speed per velocity change of the point nearest the design's")
     bd = P.boundary(points)
     bd["lines"] = lines
+    echo("  the map again at the designed striker ratio at every point")
+    fixed = P.boundary(P.premise_map(m.spec, m.fixture, e, target, *axes, fixed_ratio=True))
+    bd["fixed_ratio"] = fixed
     rep.value("map_boundary", bd)
-    rep.table("map_counts", ["outcome", "points"], [[k, v] for k, v in bd["counts"].items()]
-              + [["the amplifier designed (Q < 1)", bd["eligible"]],
-                 ["the amplifier within the limits", bd["within"]["amplifier"]],
-                 ["the direct gun (b0) within the limits", bd["within"]["direct"]],
-                 ["the flying target within the limits", bd["within"]["flying"]], ["all", bd["points"]]], ["{}", "{}"])
+    extra = [["the amplifier designed (the lower Q < 1)", "eligible"],
+             ["Q < 1 with simple-wave guns", "eligible_simple_wave"], ["Q < 1 with chambered guns", "eligible_chambered"],
+             ["direct wins with nothing to amplify (no chain needs less gun)", "direct_wins_nothing_to_amplify"]]
+    rows = ([[k, v, fixed["counts"][k]] for k, v in bd["counts"].items()] + [[w, bd[k], fixed[k]] for w, k in extra]
+            + [[f"{name} within the limits", bd["within"][k], fixed["within"][k]] for k, name in
+               (("amplifier", "the amplifier"), ("direct", "the direct gun's lower bound (b0, a massless sabot)"),
+                ("flying", "the flying target"))]
+            + [["all", bd["points"], fixed["points"]]])
+    rep.table("map_counts", ["outcome", "points (the striker scaled to each point)",
+                             f"points (the designed ratio, {m.fixture.striker_ratio:.3g}, at every point)"], rows,
+              ["{}", "{}", "{}"])
     rep.text(_map_reading(bd, e))
-    rep.text("The map's models (closed forms and lumped models per point, no finite elements): the striker is the "
-             f"designed fixture's ratio ({m.fixture.striker_ratio:.3g} times the payload) at its measured "
-             f"restitution ({max(m.fixture.restitution, 0.0):.3f}) by the rigid collision law; the amplifier is the "
-             f"launched chain at one restitution for every point, the design's effective e ({e:.4f}: the rigid "
-             "chain at its pads' restitutions " + ", ".join(f"{x:.3f}" for x in m.amplifier.restitutions)
-             + f", {_pads_source(m)}), its launch speed and mass count "
-             "(2 to 10) at each point those that need the least gun (`boundary.best_chain`, closed form), its masses "
-             "by the closed form, its gun by the lightest-launcher design (one start), designed only where that "
-             "chain needs less gun than the direct one (Q < 1): elsewhere amplification has nothing to do and the "
-             "point says so ('nothing to amplify'), whichever gun wins there. The direct gun fires the striker in a "
-             "massless sabot (its lower bound; the sabot its bore would need is the column beside it). The map "
-             "leaves the models' checked range everywhere but the design's point: the dashpot is designed and its "
-             "validity checked only there, the amplifier's pads are not sized or run at the other points (their "
-             "restitution is carried over), its stresses and stops are not checked; the flying target is the "
-             "fixture designer's target ratio carried over, its dashpot not designed at the map's points"
-             + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
-                "its oil outweighs it; the oil's mass over the payload grows with the stroke, so at shorter, lower "
-                "pulses one may exist)") + ". A point where no arrangement reaches the speed within the limits is "
-             "'none'.")
+    rep.text(_map_models(m, e, target, bd))
     _restitution_effect(rep, m, target)
     return points
+
+
+def _map_models(m, e: float, target, bd: dict) -> str:
+    lo, hi = bd["striker_ratios"]
+    return ("The map's models (closed forms and lumped models per point, no finite elements): the striker is the "
+            f"designed one ({m.fixture.striker_ratio:.3g} times the payload) scaled to each point as its housing's mass "
+            "scales (`premise.StrikerLaw`: the bore squared times its depth, the column with the relative stroke; at "
+            f"least the spec's {m.spec.striker_ratio:g} times the payload), {lo:.3g} to {hi:.3g} times the payload on "
+            f"this map, at the fixture's measured restitution ({max(m.fixture.restitution, 0.0):.3f}) by the rigid "
+            f"collision law; the amplifier is the launched chain at one restitution for every point, the design's "
+            f"effective e ({e:.4f}: the rigid chain at its pads' restitutions "
+            + ", ".join(f"{x:.3f}" for x in m.amplifier.restitutions) + f", {_pads_source(m)}), its launch speed and "
+            "mass count (2 to 10) at each point those that need the least gun (`boundary.best_chain`, closed form) by "
+            "the simple-wave gun and by the infinitely chambered gun (the bound on any gun), the lower Q kept, its "
+            "masses by the closed form, its gun by the lightest-launcher design (one start), designed only where "
+            "that Q is below 1: elsewhere no chain needs less gun, and the direct gun, where it is feasible and the "
+            "lightest, wins the point (its note says 'nothing to amplify'). The figure draws both Qs and both laws' "
+            "lines. The direct gun fires the striker in a massless sabot (its lower bound; the sabot its bore would "
+            "need is the column beside it). The map leaves the models' checked range everywhere but the design's "
+            "point: the dashpot is designed and its validity checked only there (the striker's law carries its wall "
+            "ratio, floor and column over stroke), the amplifier's pads are not sized or run at the other points "
+            "(their restitution is carried over), its stresses and stops are not checked; the flying target is the "
+            "fixture designer's target scaled by the same law, its dashpot not designed at the map's points"
+            + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
+               "its oil outweighs it; the oil's mass over the payload grows with the stroke, so at shorter, lower "
+               "pulses one may exist)") + ". A point where no arrangement reaches the speed within the limits is "
+            "'none'.")
 
 
 def _pads_source(m) -> str:
@@ -341,11 +453,12 @@ def _restitution_effect(rep: Report, m, target):
     e: what the measured pads do to the amplifier's side of the premise."""
     s, f = m.spec, m.fixture
     rows = []
+    strikers = P.striker_laws(s, f, target)
     for label, e in ((f"the design's effective e ({_pads_source(m)})", m.amplifier.restitution),
                      ("the white paper's assumed e", CLAIM["e"])):
-        p = P.map_point(s, s.pulse.duration, s.pulse.peak, s.article_mass, f.striker_ratio, target.striker_ratio,
-                        max(f.restitution, 0.0), e, f.housing_outer_radius / f.bore_radius)
-        rows.append([label, e, p.amplifier["note"], p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"],
+        p = P.map_point(s, s.pulse.duration, s.pulse.peak, s.article_mass, strikers, max(f.restitution, 0.0), e,
+                        f.housing_outer_radius / f.bore_radius)
+        rows.append([label, e, p.note or p.amplifier["note"], p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"],
                      "yes" if p.amplifier["feasible"] else "NO", p.direct["machine_mass"], p.winner])
     lb = round(s.article_mass / LB)
     rep.table("map_restitution", ["amplifier's e", "e [-]", "(a)", "(a) launch [MJ]", "(a) gun and masses [kg]",
@@ -361,17 +474,24 @@ def _restitution_effect(rep: Report, m, target):
 
 
 def _map_reading(bd: dict, e: float) -> str:
-    n = bd["counts"]
-    lines = bd["lines"]
-    first = next(iter(lines.values()))
-    where = (f"above {first:.0f} m/s of velocity change" if first == first else "nowhere below the gas's escape speed")
+    n, f = bd["counts"], bd["fixed_ratio"]
+    sw, ch = next(iter(bd["lines"].values())), list(bd["lines"].values())[1]
+
+    def where(x):
+        return f"above {x:.0f} m/s of velocity change" if x == x else "nowhere below the gas's escape speed"
     return (f"Of the {bd['points']} points the amplifier at e {e:.3f} needs less gun than the direct one, and so was "
-            f"designed, at {bd['eligible']} (the closed form: {where}). The lightest feasible machine: the amplifier "
-            f"at {n['amplifier']}, the direct gun at {n['direct']} where the amplifier was designed "
-            f"({n['direct, if its sabot is light']} more only if its sabot is light), the flying target at "
-            f"{n['flying target']}; at {n['nothing to amplify']} amplification has nothing to do (the direct gun "
-            f"is feasible there and no chain needs less gun), and at {n['none']} no arrangement is feasible within "
-            "the limits.")
+            f"designed, at {bd['eligible']} ({bd['eligible_simple_wave']} by the simple-wave gun, "
+            f"{bd['eligible_chambered']} by the chambered gun; the closed form near the design's point: "
+            f"{where(sw)} simple-wave, {where(ch)} chambered). The lightest feasible machine: the amplifier at "
+            f"{n['amplifier']}, the direct gun's lower bound (b0, a massless sabot: with the sabot its bore needs, "
+            f"the table's column, it weighs more and may fall short) at {n['direct']} "
+            f"({bd['direct_wins_nothing_to_amplify']} of them where "
+            f"no chain needs less gun, so nothing to amplify; {n['direct, if its sabot is light']} more only if its "
+            f"sabot is light), the flying target at {n['flying target']}, and at {n['none']} no arrangement is "
+            f"feasible within the limits. At the designed striker ratio at every point instead: the amplifier at "
+            f"{f['counts']['amplifier']}, the direct gun at {f['counts']['direct']}, the flying target at "
+            f"{f['counts']['flying target']}, none at {f['counts']['none']} (the amplifier designed at "
+            f"{f['eligible']}).")
 
 
 def white_paper(rep: Report, m):

@@ -20,6 +20,7 @@ from .launcher_cases import launcher_design, launcher_model
 from .machine_cases import direct_striker, machine_energy, machine_geometry
 from .premise_cases import premise_boundary
 from .gas_drive_cases import gas_drive
+from .gas_spring_cases import gas_spring
 from .pad_cases import pad_1d, pad_bars, pad_johnson, pad_mesh, pad_rigid
 from .slotted_cases import slotted_ring
 from .programmer_cases import crushable_pad, programmer_sizing, rubber_pad
@@ -107,6 +108,7 @@ CASES = {
     "direct_striker": direct_striker,
     "premise_boundary": premise_boundary,
     "gas_drive": gas_drive,
+    "gas_spring": gas_spring,
     "pad_bars": pad_bars,
     "pad_rigid": pad_rigid,
     "pad_johnson": pad_johnson,

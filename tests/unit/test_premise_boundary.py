@@ -2,6 +2,7 @@
 ``launcher.simple_wave``) against hand values, the map's outcome labels and the premise verdict's wording.
 Each tolerance says where its reference comes from."""
 import math
+import types
 
 import pytest
 
@@ -9,7 +10,9 @@ from shockfem.amplifier.gain import chain_efficiency
 from shockfem.launcher.gas import GASES
 from shockfem.launcher.simple_wave import efficiency, muzzle_speed, travel
 from shockfem.machine import boundary as B
-from shockfem.machine.premise import Arrangement, _winner, verdict
+from shockfem.machine.fixture import article_length, bore_radius
+from shockfem.machine.premise import Arrangement, StrikerLaw, _winner, verdict
+from shockfem.machine.spec import read_spec
 from shockfem.machine.white_paper import CLAIM, tank_free_barrels, tank_free_speeds
 from shockfem.units import FT, IN, PSI
 
@@ -84,13 +87,32 @@ def _entry(mass, feasible, sabot=0.0):
 
 
 def test_map_outcomes():
-    # the amplifier not designed (Q >= 1): a direct gun's point is 'nothing to amplify', never a direct win
-    assert _winner(_entry(math.nan, False), _entry(10.0, True), _entry(math.nan, False), False) == "nothing to amplify"
-    assert _winner(_entry(20.0, True), _entry(10.0, True), _entry(math.nan, False), True) == "direct"
-    assert _winner(_entry(12.0, True), _entry(10.0, True, 5.0), _entry(math.nan, False), True) == \
+    # the amplifier not designed (no chain needs less gun): the feasible direct gun wins the point
+    assert _winner(_entry(math.nan, False), _entry(10.0, True), _entry(math.nan, False)) == "direct"
+    assert _winner(_entry(20.0, True), _entry(10.0, True), _entry(math.nan, False)) == "direct"
+    assert _winner(_entry(12.0, True), _entry(10.0, True, 5.0), _entry(math.nan, False)) == \
         "direct, if its sabot is light"
-    assert _winner(_entry(9.0, True), _entry(10.0, True), _entry(math.nan, False), True) == "amplifier"
-    assert _winner(_entry(math.nan, False), _entry(math.nan, False), _entry(math.nan, False), False) == "none"
+    assert _winner(_entry(9.0, True), _entry(10.0, True), _entry(math.nan, False)) == "amplifier"
+    assert _winner(_entry(math.nan, False), _entry(math.nan, False), _entry(math.nan, False)) == "none"
+
+
+def test_striker_law_gives_the_designed_striker_at_the_design_and_scales_as_bore_squared_times_depth():
+    spec = read_spec({"article": "12 lb"})
+    rho = 7850.0
+    r0 = bore_radius(spec, rho)
+    # a fixture of the 12 lb design's figures (docs/machine.md, The 12 lb machine): 498.8 kg, its column and
+    # depth any, its pulse the spec's
+    L = article_length(spec)
+    fixture = types.SimpleNamespace(striker_mass=498.8, column=0.5, bore_depth=0.7 + L, article_length=L,
+                                    velocity_change=411.0, duration=spec.pulse.duration, payload_mass=5.89)
+    law = StrikerLaw.of(spec, fixture, fixture.striker_mass)
+    # at the design's point (its bore and its velocity change) the law gives the designed striker, round-off
+    assert law.striker(spec, r0, 411.0, 0.0) == pytest.approx(498.8, rel=1e-12)
+    # twice the bore at the same depth: four times the striker; twice the stroke: the column doubles
+    assert law.striker(spec, 2 * r0, 411.0, 0.0) == pytest.approx(4 * 498.8, rel=1e-12)
+    assert law.striker(spec, r0, 822.0, 0.0) == pytest.approx(498.8 * (1.2 + L) / (0.7 + L), rel=1e-12)
+    # never lighter than the striker asked
+    assert law.striker(spec, 0.1 * r0, 411.0, 100.0) == 100.0
 
 
 def _arrangement(name, speed, launched_speed, feasible, mass=1e4):
@@ -201,3 +223,20 @@ def test_sabot_stop_takes_the_sabots_energy():
     assert stop.energy == pytest.approx(0.5 * 227.7 * 412.2 ** 2, rel=1e-12)
     assert stop.force <= 726.4 * 2e4 * (1 + 1e-12)
     assert stop.stress <= initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY * (1 + 1e-9)
+
+
+def test_direct_gun_that_falls_short_shows_the_lightest_beside_the_closest():
+    """A 2 m barrel limit: no bore's gun brings the 12 lb design's striker (498.8 kg, 258 mm, 412.2 m/s) to
+    its speed; the scan keeps the closest and reports the lightest that falls short beside it."""
+    import dataclasses
+    from shockfem.machine import premise as P
+    spec = dataclasses.replace(read_spec({"article": "12 lb"}), max_barrel_length=2.0)
+    short = []
+    L, sabot = P.direct_launcher(spec, 498.8, 412.2, 0.258, starts=1, report_binding=False, bores=3,
+                                 lightest_short=short)
+    light, light_sabot = short
+    assert not L.design.feasible and not light.design.feasible
+    assert light.design.weight + light_sabot < L.design.weight + sabot
+    assert light.design.muzzle_velocity < L.design.muzzle_velocity < 412.2
+    words = P._short_words(L, sabot, light, light_sabot)
+    assert "kept the closest" in words and "the lightest that falls short" in words
