@@ -148,12 +148,13 @@ def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, ref
     return speed, front, factor, holds
 
 
-def upstream_pressure_limit(liquid: DesignLiquid, held: float) -> float:
+def upstream_pressure_limit(liquid: DesignLiquid, held: float, law: OrificeLaw = AREA_RATIO) -> float:
     """The closing speed [m/s] at which the quasi-steady pressure upstream of the law's largest opening
     (``dashpot_design.upstream_pressure``; it varies over the stroke's time, not a wall's period:
     dynamic factor 1) reaches ``held`` [Pa]: what the wall (``wall_holds``) or the pin (the steel's S:
-    von Mises of a pin in the liquid is its pressure, ``housing``) bounds the closing speed to."""
-    return brentq(lambda V: upstream_pressure(AREA_RATIO.largest_ratio, V, liquid.density) - held, 1.0, 3000.0)
+    von Mises of a pin in the liquid is its pressure, ``housing``) bounds the closing speed to;
+    ``law``: the orifice law with the design's largest area ratio (n_max)."""
+    return brentq(lambda V: upstream_pressure(law.largest_ratio, V, liquid.density, law) - held, 1.0, 3000.0)
 
 
 def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio, law=AREA_RATIO):
