@@ -4,6 +4,7 @@ checked range (``fluid.orifice.VALID_AREA_RATIO``): the law's extrapolation, whi
     python scripts/fixture-nmax.py 0.8 --liquid oil
     python scripts/fixture-nmax.py 0.9 --liquid water --seated
     python scripts/fixture-nmax.py 0.8 --liquid oil --pin-iterations 0     # the quasi-steady pin, not cut
+    python scripts/fixture-nmax.py 0.5625 --liquid water --confirm results/confirm   # and section 4.7's runs
 
 The study's own objects (its pulse, article, liquids and its default size's designer settings) go to
 ``programmer.column_design.design_on_column`` exactly as section 4 passes them, with ``largest_ratio``
@@ -18,7 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from shockfem.programmer.column_design import design_on_column
+from shockfem.programmer.column_design import PIN_ROUNDS, design_on_column
 from shockfem.programmer.liquids import LIQUIDS
 from shockfem.programmer.pin_cut import ITERATIONS as PIN_ITERATIONS
 from shockfem.study.fixture.common import ARTICLE_LB, SIZES
@@ -33,6 +34,10 @@ def main():
     ap.add_argument("--liquid", choices=sorted(LIQUIDS), default="oil")
     ap.add_argument("--shape", default="rectangle", help="the pulse shape section 1 chooses")
     ap.add_argument("--seated", action="store_true", help="the dashpot with the nose seat")
+    ap.add_argument("--confirm", metavar="OUT_DIR", help="and confirm the plain design in finite elements as "
+                    "section 4.7 does (the column and the control volume), its report in OUT_DIR")
+    ap.add_argument("--pin-rounds", type=int, default=PIN_ROUNDS,
+                    help="handle searches, each after the first on the last one's cut pin (1: the quasi-steady pin's) [-]")
     ap.add_argument("--pin-iterations", type=int, default=PIN_ITERATIONS,
                     help="column runs of the pin's cut on the column (0: the quasi-steady pin) [-]")
     a = ap.parse_args()
@@ -40,7 +45,7 @@ def main():
     out = design_on_column(SPEC_PULSE[a.shape], ARTICLE_LB * LB, nose_seat_design()["mass"] if a.seated else 0.0,
                            LIQUIDS[a.liquid], evaluations=cfg["design_evaluations"],
                            search_cells=cfg["design_cells"], largest_ratio=a.largest_ratio,
-                           pin_iterations=a.pin_iterations)
+                           pin_iterations=a.pin_iterations, pin_rounds=a.pin_rounds)
     d, col, w = out["design"], out["models"].get("column"), out["fixture"]
     flagged = [lim["name"] for lim in col["limits"] if not lim["holds"] and not lim["vetoes"]] if col else []
     print(json.dumps({
@@ -53,7 +58,36 @@ def main():
         "wall_ratio": w and w["wall_ratio"], "housing_kg": w and w["housing"], "fixture_kg": w and w["fixture"],
         "flagged": flagged, "search_wall_s": out["search_wall"], "verdict": out["verdict"],
         "pin_cut_overshoots": [s["overshoot"] for s in d.get("pin_cut", {}).get("steps", [])],
-        "pin_cut_kept": d.get("pin_cut", {}).get("best"), "pin_cut_stop": d.get("pin_cut", {}).get("stop")}))
+        "pin_cut_kept": d.get("pin_cut", {}).get("best"), "pin_cut_stop": d.get("pin_cut", {}).get("stop"),
+        "kept_overshoot": (d["pin_cut"]["steps"][d["pin_cut"]["best"]]["overshoot"]
+                           if d.get("pin_cut", {}).get("best") is not None else None),
+        "kept_held_overshoot": (d["pin_cut"]["steps"][d["pin_cut"]["best"]]["held_overshoot"]
+                                if d.get("pin_cut", {}).get("best") is not None else None),
+        "search_rounds": out["search_rounds"], "objective": out["objective"], "confirm_wall_s": out["confirm_wall"],
+        "column_holds": col and col["holds"], "pin_holds": w and w["pin_holds"],
+        "housing_holds": w and w["housing_holds"], "striker_carrying_kg": out["striker"]["carrying"],
+        "wall_pressure_MPa": w and w["peak_pressure"] / 1e6, "dynamic_factor": w and w["dynamic_factor"],
+        "liquid_kg": d["liquid_mass"], "column_m": d["column"],
+        "lumped_peak_g": out["models"].get("lumped", {}).get("peak", float("nan")) / G0,
+        "limits": col and col["limits"], "lumped_limits": out["models"].get("lumped", {}).get("limits"),
+        "fixture": w, "jet": out["jet"], "striker": out["striker"], "handles": d["handles"],
+        "pin_cut_steps": d.get("pin_cut", {}).get("steps")}, default=float), flush=True)
+    if a.confirm:
+        _confirm_in_finite_elements(out, a, cfg)
+
+
+def _confirm_in_finite_elements(out: dict, a, cfg: dict):
+    """Section 4.7's two finite-element runs of the plain design (``study.fixture.design``), its report in
+    ``a.confirm``."""
+    from shockfem.study.fixture.common import Context
+    from shockfem.study.fixture.dashpot import dashpot_scene
+    from shockfem.study.fixture.design import Variant, _confirm
+    from shockfem.study.report import Report
+    if a.seated:
+        raise SystemExit("--confirm: the plain dashpot only (the seated one needs section 3's seat run); drop --seated")
+    rep = Report(a.confirm, "The dashpot's finite-element confirmation (section 4.7)")
+    _confirm(rep, Context(cfg, a.confirm, print, a.shape), (Variant("dashpot", "the dashpot", None, "piston",
+                                                                    dashpot_scene), a.liquid, out), False)
 
 
 if __name__ == "__main__":

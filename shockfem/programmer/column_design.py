@@ -27,10 +27,14 @@ and where it cannot, the checks say why.
 
 The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
 the striker and the force, and the pin's area table is iterated against the column's own force at the
-design grid, from the quasi-steady pin the handles were searched with; of its iterates the design keeps
-the one of the least objective (the search's: band, checks, housing) among those inside every vetoing
-check of the column's, so the cut never makes the design worse by that objective nor takes it out of the
-laws' ranges (its first iterate is the quasi-steady pin, its closing end held at the machinable least gap).
+design grid, from the pin the handles were searched with; of its iterates the design keeps the one of
+the least objective (the search's: band, checks, housing) among those inside every vetoing check of the
+column's, so the cut never makes the design worse by that objective nor takes it out of the laws' ranges
+(its first iterate is the searched pin, its closing end held at the machinable least gap).  And the
+handles are searched with the pin they get (``search_rounds``): the first search on the quasi-steady
+pin, each next one on the last one's cut pin (its shape carried to the trial handles as a factor a pin
+point, ``carried_pin``), the pin cut again after each, until the handles settle; the round of the least
+score at the design grid is kept, never worse than the quasi-steady handles cut after.
 
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
@@ -63,7 +67,7 @@ from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE,
 from .jet_load import jet_load
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
-from .pin_cut import ITERATIONS as PIN_ITERATIONS, cut_pin
+from .pin_cut import ITERATIONS as PIN_ITERATIONS, cut_pin, pin_bounds
 from .requirement import requirement
 
 HANDLES = ("bore_scale", "column_over_stroke", "force_factor", "speed_factor")
@@ -74,6 +78,9 @@ SEARCH_CELLS = 100                      # the column's cells in the search (the 
 PENALTY = 10.0
 # the pin's cut: an iterate outside a vetoing check of the column's scores this much over its objective
 OUTSIDE_SCORE = 1.0e6
+# the handle searches (``search_rounds``): the first on the quasi-steady pin, each next on the last one's
+# pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself
+PIN_ROUNDS, HANDLES_SETTLED = 3, 0.02
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
@@ -148,12 +155,13 @@ def contact_pressure_limit(liquid: DesignLiquid, steel: str = HOUSING_STEEL, ref
     return speed, front, factor, holds
 
 
-def upstream_pressure_limit(liquid: DesignLiquid, held: float) -> float:
+def upstream_pressure_limit(liquid: DesignLiquid, held: float, law: OrificeLaw = AREA_RATIO) -> float:
     """The closing speed [m/s] at which the quasi-steady pressure upstream of the law's largest opening
     (``dashpot_design.upstream_pressure``; it varies over the stroke's time, not a wall's period:
     dynamic factor 1) reaches ``held`` [Pa]: what the wall (``wall_holds``) or the pin (the steel's S:
-    von Mises of a pin in the liquid is its pressure, ``housing``) bounds the closing speed to."""
-    return brentq(lambda V: upstream_pressure(AREA_RATIO.largest_ratio, V, liquid.density) - held, 1.0, 3000.0)
+    von Mises of a pin in the liquid is its pressure, ``housing``) bounds the closing speed to;
+    ``law``: the orifice law with the design's largest area ratio (n_max)."""
+    return brentq(lambda V: upstream_pressure(law.largest_ratio, V, liquid.density, law) - held, 1.0, 3000.0)
 
 
 def _design(pulse, article_mass, seat_mass, liquid, base_radius, h, striker_ratio, law=AREA_RATIO):
@@ -178,7 +186,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                      liquid: DesignLiquid = MINERAL_OIL, striker_ratio: float = STRIKER_RATIO,
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
                      steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None,
-                     largest_ratio: float = VALID_AREA_RATIO, pin_iterations: int = PIN_ITERATIONS) -> dict:
+                     largest_ratio: float = VALID_AREA_RATIO, pin_iterations: int = PIN_ITERATIONS,
+                     pin_rounds: int = PIN_ROUNDS) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
@@ -192,47 +201,109 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
     the law is extrapolated, which the checks flag).  ``pin_iterations``: the column runs the pin's cut
     on the column may take after the search (``pin_cut.cut_pin``, at ``cells``; 0: the quasi-steady pin);
-    the design's ``pin_cut`` holds its convergence."""
+    the design's ``pin_cut`` holds its convergence.  ``pin_rounds``: the handle searches, each after the
+    first on the last one's pin cut at ``cells`` (``search_rounds``; 1: the handles searched on the
+    quasi-steady pin alone, the pin cut after); ``search_rounds`` in the result holds each round's record,
+    ``objective`` the kept design's score."""
     end, law = pulse.record_end(), OrificeLaw(largest_ratio=largest_ratio)
     striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule,
                                   law)
     base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
-    liquid_column = liquid.column()
 
-    def objective(h):
-        if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
-            return 100.0
-        d = _design(pulse, article_mass, seat_mass, liquid, base, h, striker_ratio, law)
-        try:
-            run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
-        except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
-            return 50.0
-        return design_objective(d, run, pulse, liquid, steel, rule)
+    def design(h, correction, ratio=striker_ratio, bore=base):
+        return carried_pin(_design(pulse, article_mass, seat_mass, liquid, bore, h, ratio, law), correction)
+
+    def search(correction, start):
+        liquid_column = liquid.column()
+
+        def objective(h):
+            if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
+                return 100.0
+            d = design(h, correction)
+            try:
+                run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
+            except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
+                return 50.0
+            return design_objective(d, run, pulse, liquid, steel, rule)
+        return minimize(objective, np.array(start), method="Nelder-Mead",
+                        options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
+
+    def cut_on_design_grid(d):
+        return _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
 
     t0 = time.perf_counter()
-    res = minimize(objective, np.array(START), method="Nelder-Mead",
-                   options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
+    d, handles, correction, fun, rounds = search_rounds(search, design, cut_on_design_grid,
+                                                        pin_rounds if pin_iterations else 1)
     search_wall = time.perf_counter() - t0
-    d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
     t0 = time.perf_counter()
-    d = _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
     out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
     for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
         if out["striker"] is None or out["striker"]["carries"]:
             break
         striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
         base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
-        d = _design(pulse, article_mass, seat_mass, liquid, base, tuple(res.x), striker_ratio, law)
-        d = _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
+        d = cut_on_design_grid(design(handles, correction, striker_ratio, base))
         out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
-    out.update(closed_form_bore=base, evaluations=int(res.nfev), search_wall=search_wall,
-               objective=float(res.fun), pin_cut_wall=time.perf_counter() - t0)
+    out.update(closed_form_bore=base, evaluations=sum(r["evaluations"] for r in rounds), search_wall=search_wall,
+               objective=fun, search_rounds=rounds, confirm_wall=time.perf_counter() - t0)
     if echo:
-        echo(f"  dashpot on the column ({liquid.name}): {res.nfev} runs, {search_wall:.0f} s, {out['verdict']}")
+        echo(f"  dashpot on the column ({liquid.name}): {out['evaluations']} runs in {len(rounds)} rounds, "
+             f"{search_wall:.0f} s, {out['verdict']}")
         if "pin_cut" in d:
             echo("  pin cut on the column, peak overshoot by iteration: "
                  + " ".join(f"{s['overshoot']:+.2f}" for s in d["pin_cut"]["steps"]) + f" ({d['pin_cut']['stop']})")
     return out
+
+
+def search_rounds(search, design, cut, rounds: int) -> tuple:
+    """The handles searched with the pin they get: round 0 searches (``search(correction, start)``, a
+    Nelder-Mead result) on the quasi-steady pin, and its design's pin is cut (``cut(design)``, at the
+    design grid); each next round searches from the last one's handles on the quasi-steady pin times the
+    correction that cut found (``pin_correction``), and cuts its own design's pin from there.  At most
+    ``rounds``; they stop once no handle moved by more than ``HANDLES_SETTLED`` of itself.  Of the
+    rounds' cut designs the one of the least score (the cut's, the search's objective at the design grid)
+    is kept: round 0 is the handles searched on the quasi-steady pin and cut after, so the kept design
+    is never worse than that.  Returns the kept cut design, its handles, the correction that reproduces
+    its cut pin on them, its score, and each round's record (handles, search objective, runs, the cut's
+    score and why it stopped)."""
+    correction, start, kept, history = None, START, None, []
+    for k in range(rounds):
+        res = search(correction, start)
+        h = tuple(res.x)
+        cut_d = cut(design(h, correction))
+        steps, best = cut_d.get("pin_cut", {}).get("steps", []), cut_d.get("pin_cut", {}).get("best")
+        score = steps[best]["score"] if best is not None else float(res.fun)
+        history.append({"handles": dict(zip(HANDLES, map(float, h))), "objective": float(res.fun),
+                        "evaluations": int(res.nfev), "carried": correction is not None, "cut_score": score,
+                        "cut_stop": cut_d.get("pin_cut", {}).get("stop")})
+        if "pin_cut" in cut_d:             # no cut (no pin iterations): the quasi-steady pin as it is
+            correction = pin_correction(cut_d, design(h, None))
+        if kept is None or score < kept[3]:
+            kept = (cut_d, h, correction, score)
+        if k > 0 and np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED):
+            break
+        start = h
+    return (*kept, history)
+
+
+def carried_pin(d: dict, correction) -> dict:
+    """The design ``d`` with its quasi-steady pin times ``correction`` (``pin_correction``, one factor a
+    pin point: the points are at the same shares of every design's stroke), within the cut's bounds
+    (``pin_cut.pin_bounds``); ``d`` itself with None.  The correction carries a cut pin's shape to nearby
+    handles: an approximation the search's next round and the final cut at the chosen handles correct."""
+    if correction is None:
+        return d
+    a_min, a_max = pin_bounds(d)
+    pin = np.array(d["pin"], dtype=float)
+    a = np.clip(np.clip(pin[:, 1], a_min, a_max) * correction, a_min, a_max)
+    return {**d, "pin": [[float(x), float(v)] for x, v in zip(pin[:, 0], a)]}
+
+
+def pin_correction(cut_d: dict, d: dict) -> np.ndarray:
+    """The cut pin of ``cut_d`` over the quasi-steady pin of ``d`` (the same handles, within the cut's
+    bounds), point by point."""
+    a_min, a_max = pin_bounds(d)
+    return np.array(cut_d["pin"])[:, 1] / np.clip(np.array(d["pin"])[:, 1], a_min, a_max)
 
 
 def design_objective(d: dict, run, pulse: PulseSpec, liquid: DesignLiquid, steel: str = HOUSING_STEEL,

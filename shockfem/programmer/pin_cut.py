@@ -88,6 +88,11 @@ def least_area(d: dict) -> float:
     return math.pi * (r_hole ** 2 - max(r_hole - LEAST_GAP, 0.0) ** 2)
 
 
+def pin_bounds(d: dict) -> tuple[float, float]:
+    """The cut pin's bounds [m^2]: (``least_area``, the law's largest area ratio times the bore)."""
+    return least_area(d), d["orifice_law"]["largest_ratio"] * d["piston_area"]
+
+
 def target_force(d: dict, pulse: PulseSpec, t: np.ndarray) -> np.ndarray:
     """F_target at the times ``t`` [s] from contact: the design force, reached over the checked shape's
     rise (a rectangle's checked trapezoid: 10% of the duration; none for a shape without one)."""
@@ -125,7 +130,7 @@ def cut_pin(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int = CELLS,
     among the iterates (the least; a designer's own objective); by default the largest deviation."""
     pin = np.array(d["pin"], dtype=float)
     x, a = pin[:, 0], pin[:, 1].copy()
-    a_max, a_min = d["orifice_law"]["largest_ratio"] * d["piston_area"], least_area(d)
+    a_min, a_max = pin_bounds(d)
     a = np.clip(a, a_min, a_max)
     steps, best, best_run, stop = [], None, None, f"{iterations} iterations"
     front, stuck, scores = 0, 0, []

@@ -203,6 +203,22 @@ def test_a_wider_largest_opening_lowers_the_least_force_and_raises_the_speed_the
     assert contact_pressure_limit(MINERAL_OIL, law=law)[0] > contact_pressure_limit(MINERAL_OIL)[0]
 
 
+def test_the_upstream_pressure_limit_follows_the_designs_largest_opening():
+    """``upstream_pressure_limit`` at n_max = 0.8: the speed at which the pressure upstream of n = 0.8 (not
+    the checked 0.5625) is the bound.  The pressure the flow needs falls as the opening widens (the
+    jet's speed is V / (Cc n)), so the speed the wall holds is higher; a bound read at 0.5625 whatever
+    the design's n_max (the pressure there 3.4 times that at 0.8, by ``upstream_pressure``: 549 against
+    1013 m/s in oil at S = 762.5 MPa) fails both."""
+    from shockfem.fluid.orifice import OrificeLaw
+    from shockfem.programmer.column_design import upstream_pressure_limit
+    from shockfem.programmer.dashpot_design import upstream_pressure
+    from shockfem.programmer.liquids import MINERAL_OIL
+    held, law = 762.5e6, OrificeLaw(largest_ratio=0.8)
+    v = upstream_pressure_limit(MINERAL_OIL, held, law)
+    assert upstream_pressure(0.8, v, MINERAL_OIL.density, law) == pytest.approx(held, rel=1e-9)
+    assert v > 1.5 * upstream_pressure_limit(MINERAL_OIL, held)
+
+
 def test_the_contact_front_is_the_hugoniot_shock_with_the_orifice_passing_its_flow():
     """``column_design.contact_shock`` closed orifice: no flow, so the liquid moves with the piston and
     the pressure is the Hugoniot's rho0 s V, s = V / 2 + sqrt(V^2 / 4 + c^2) for Tait's n = 1; with an
