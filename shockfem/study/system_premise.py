@@ -166,7 +166,10 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
     c, target = P.flying_target_arrangement(m.spec, m.fixture)
-    rep.table("arrangements", ARRANGEMENT_HEADER, [_arrangement_row(x) for x in (a, b, b0, c)], ARRANGEMENT_FORMATS)
+    header = ARRANGEMENT_HEADER[:-2] + [f"gun reaches it (at the fixture's {m.fixture.striker_speed:.4g} m/s"
+                                        + ("" if m.fixture.band_passed else ", a pulse that fails the band") + ")",
+                                        "notes"]
+    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, b, b0, c)], ARRANGEMENT_FORMATS)
     rep.text("Every arrangement delivers the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
@@ -174,16 +177,23 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
              "target (30 lb for a 12 lb article, the fixture designed for it) fired by the white paper's own gun "
              "(12 in, 2,000 psi, 20 ft^3) with as long a barrel as it needs.")
-    closed = P.closed_form(m)
-    remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
-                                 2 * m.fixture.housing_outer_radius)
+    f = m.fixture
+    closed = P.closed_form(m, sabot=b.launched_mass - b.striker_mass)
+    remedies = P.direct_remedies(m.spec, f.striker_mass, f.striker_speed, 2 * f.housing_outer_radius)
+    # the premise at the speed the specification asks (the map's law at the spec's point), its direct
+    # machine the striker in the sabot the limits' bore and pressure need
+    V_spec = P.specified_striker_speed(m)
+    remedies_spec = P.direct_remedies(m.spec, f.striker_mass, V_spec, 2 * f.housing_outer_radius)
+    closed_spec = P.closed_form(m, sabot=remedies_spec["launched"] - f.striker_mass, speed=V_spec)
     boundary_table(rep, closed)
-    words = P.verdict(a, b, c, b0, closed, remedies)
+    words = P.verdict(a, b, c, b0, closed, remedies, (closed_spec, remedies_spec, f.band_passed))
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
     for x in (a, b, b0, c):
         rep.value(f"launch_energy_{x.name.split(')')[0].strip('(')}", x.launch_energy)
     rep.value("premise_closed_form", closed)
     rep.value("direct_remedies", remedies)
+    rep.value("premise_closed_form_at_spec", closed_spec)
+    rep.value("direct_remedies_at_spec", remedies_spec)
     return a, b, b0, c, target
 
 
@@ -198,6 +208,9 @@ def boundary_table(rep: Report, k: dict):
              k["break_even_air_against_helium"]],
             [f"the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses, air", spec["air"]],
             [f"the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses, helium", spec["helium"]],
+            [f"the best launch speed and mass count, air, against the direct gun firing the striker in its "
+             f"{k['with_sabot']['sabot']:.4g} kg sabot", k["with_sabot"]["break_even"]["air"]],
+            ["the same, both guns the infinitely chambered gun", k["with_sabot"]["break_even"]["chambered"]],
             [f"the best pad material of the library ({k['best_pad']}, sized at its rebound's sqrt(R))",
              k["best_pad_restitution"]],
             ["the design's chain (its effective e)", k["restitution"]]]
