@@ -641,7 +641,8 @@ def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement |
     if closed and closed.get("scale_free"):
         words.append(_scale_free_words(closed["scale_free"]))
     if a.fixture_problems:
-        words.append("every arrangement carries the same fixture, and it is not within its own limits ("
+        words.append("every arrangement carries the same fixture (its metering pin the closed form's quasi-steady "
+                     "one, not cut on the column: `fixture.PIN_ITERATIONS`), and it is not within its own limits ("
                      + "; ".join(a.fixture_problems) + "): no arrangement is a feasible machine until the fixture "
                      "is, and the comparison above is of the guns and moving masses that fixture asks")
     if closed:

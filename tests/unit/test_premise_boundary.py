@@ -102,6 +102,24 @@ def test_gun_ratio_counts_the_direct_guns_sabot():
     assert face["pad_over_struck"] == pytest.approx(26.0, rel=0.03)
 
 
+def test_verdict_rests_on_the_interfaces_where_q_is_at_parity():
+    """With the sabot counted Q near 1 does not decide the premise: the words then rest on the best chain's
+    interface against the solids' elastic limit, and say 'does not pay' only when it is past it."""
+    from shockfem.machine.premise import PARITY, _sabot_words
+    face = {"closing_speed": 360.9, "best_solid": "pu_60d", "elastic_limit_speed": 59.0, "pad_over_struck": 26.0,
+            "past_elastic_limit": True}
+    k = {"best": {"masses": 2, "launch_speed": 360.9, "gun_ratio": 1.47}, "interface": face,
+         "with_sabot": {"sabot": 227.7, "best": {"gun_ratio": 1.01}, "break_even": {"air": 0.637, "chambered": 0.658}}}
+    words = _sabot_words(k)
+    assert "Q = 1.47" in words and "Q = 1.01" in words and "227.7 kg sabot" in words
+    assert "Q alone does not decide it" in words and "closes at 361 m/s" in words
+    assert words.endswith("amplification does not pay")
+    face["past_elastic_limit"] = False
+    assert _sabot_words(k).endswith("amplification may pay")
+    k["with_sabot"]["best"]["gun_ratio"] = 1.01 * PARITY / 1.0 + 0.01
+    assert "Q alone" not in _sabot_words(k) and _sabot_words(k).endswith("amplification does not pay")
+
+
 def _entry(mass, feasible, sabot=0.0):
     return {"machine_mass": mass, "feasible": feasible, "sabot_estimate": sabot}
 
