@@ -187,24 +187,24 @@ class FixedPoint:
 def striker_fixed_point(needed_at, least: float, tol: float = RATIO_TOL, most: int = MAX_REDESIGNS) -> FixedPoint:
     """The striker ratio r at which the housing at its own wall's radius (pin and oil with it) weighs r times
     the payload, never below ``least``.  ``needed_at(r)`` designs at r and returns (the ratio that housing
-    needs, the design).  A heavier striker closes slower, so the pressure and the wall fall: needed(r) - r
-    decreases, and the fixed point is bracketed by ``least`` (where it is positive) and needed(least) (where
-    it is not), then found by false position (Illinois) both ways within the bracket, to ``tol`` of r.  At
-    ``most`` redesigns unconverged, the heavier end of the bracket (a striker that carries its housing)."""
-    need, state = needed_at(least)
-    if need <= least * (1 + tol):
-        return FixedPoint(least, need, state, 0, False)
-    lo, g_lo = least, need - least
-    hi = need
-    need_hi, state_hi = needed_at(hi)
+    needs, the ratio the design's striker has: at least r, more where the design's own rule asks it, the
+    design).  A heavier striker closes slower, so the pressure and the wall fall: needed - ratio decreases
+    with the ratio, and the fixed point is bracketed by a design where it is positive and needed there
+    (where it is not), then found by false position (Illinois) both ways within the bracket, to ``tol`` of
+    the ratio.  A first design whose striker already carries its housing ends the search (the wall does not
+    set it); at ``most`` redesigns unconverged, the heavier end of the bracket (a striker that carries it)."""
+    need, lo, state = needed_at(least)
+    if need <= lo * (1 + tol):
+        return FixedPoint(lo, need, state, 0, lo > least and need >= lo * (1 - tol))
+    g_lo, hi = need - lo, need
+    need_hi, hi, state_hi = needed_at(hi)
     g_hi, k, side = need_hi - hi, 1, 0
     if abs(g_hi) <= tol * hi:
         return FixedPoint(hi, need_hi, state_hi, k, True)
     if g_hi > 0:                     # not decreasing here after all: the heavier striker is the answer
         return FixedPoint(hi, need_hi, state_hi, k, False)
     while k < most:
-        x = lo - g_lo * (hi - lo) / (g_hi - g_lo)
-        need_x, state_x = needed_at(x)
+        need_x, x, state_x = needed_at(lo - g_lo * (hi - lo) / (g_hi - g_lo))
         k, g = k + 1, need_x - x
         if abs(g) <= tol * x:
             return FixedPoint(x, need_x, state_x, k, True)
@@ -240,9 +240,13 @@ def design_fixture(spec: MachineSpec, echo=None, evaluations: int = DESIGN_EVALU
         depth = d["column"] + DASHPOT["piston_thickness"] + L_article + BORE_HEADROOM
         housing = striker_housing(d, weight, depth, steel)
         if echo:
-            echo(f"  striker ratio {ratio:.4g}: its housing at the wall's radius asks "
-                 f"{housing.wall_mass / d['payload_mass']:.4g}")
-        return housing.wall_mass / d["payload_mass"], (out, housing)
+            echo(f"  striker ratio {ratio:.4g} asked (the column designer's {d['striker_mass'] / d['payload_mass']:.4g}): "
+                 f"its housing at the wall's radius asks {housing.wall_mass / d['payload_mass']:.4g}")
+        return housing.wall_mass / d["payload_mass"], max(ratio, d["striker_mass"] / d["payload_mass"]), (out, housing)
+    # the column designer's striker is at least the ratio asked of it and at least what carries its own
+    # pressurised housing (``column_design.carried_ratio``, iterated on the closed-form design at the search's
+    # start handles, before its search): where that is heavier than the housing at the found design's wall
+    # needs, the striker is the designer's and the wall does not set it
     fp = striker_fixed_point(needed_at, spec.striker_ratio)
     out, housing = fp.state
     return _fixture(spec, out, housing, fp, runs, L_article, steel)
@@ -266,8 +270,8 @@ def _fixture(spec, out: dict, housing: Housing, fp: FixedPoint, runs: int, L_art
                                   "lumped_agrees", "objective")}
     record["housing"] = weight
     fixture = Fixture(
-        spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"], fp.ratio,
-        housing.striker_mass, d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()),
+        spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"],
+        housing.striker_mass / d["payload_mass"], housing.striker_mass, d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()),
         weight["peak_pressure"], R, housing.floor + housing.depth, housing.floor, housing.depth, housing.steel_mass,
         fp.binds, wall_stress, floor_stress, allowed, pulse.peak, pulse.duration,
         pulse.velocity_change, bool(band.passed), float(band.worst_excess), payload_after, striker_after,

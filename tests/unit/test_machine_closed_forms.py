@@ -178,15 +178,19 @@ def test_striker_fixed_point_searches_both_ways():
 
     def needed_at(r):
         calls.append(r)
-        return needed(r), ("design at", r)
+        return needed(r), r, ("design at", r)
     root = brentq(lambda r: needed(r) - r, 10.0, 84.7)
     fp = striker_fixed_point(needed_at, 10.0)
     assert fp.binds and abs(fp.needed / fp.ratio - 1) <= RATIO_TOL
     assert fp.ratio == pytest.approx(root, rel=RATIO_TOL) and fp.ratio < 0.5 * 84.7
     assert fp.state == ("design at", fp.ratio) and fp.redesigns == len(calls) - 1
     # a housing lighter than the asked striker: the asked ratio stands and the wall does not set it
-    fp = striker_fixed_point(lambda r: (5.0, r), 10.0)
+    fp = striker_fixed_point(lambda r: (5.0, r, r), 10.0)
     assert fp.ratio == 10.0 and not fp.binds and fp.redesigns == 0
+    # a design whose own rule gives a heavier striker than its housing at the wall needs (the column
+    # designer's carried ratio): that striker stands, the wall does not set it, and no design is made again
+    fp = striker_fixed_point(lambda r: (needed(84.7), 84.7, r), 10.0)
+    assert fp.ratio == 84.7 and not fp.binds and fp.redesigns == 0
 
 
 @pytest.mark.parametrize("architecture", ["launched-chain", "stack-on-anvil"])
