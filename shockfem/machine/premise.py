@@ -626,8 +626,10 @@ def _specified_words(k: dict, remedies: dict, band_passed: bool, fixture_speed: 
              f"{air['chambered_speed']:.4g} m/s" + (f" and the bare striker {bare['chambered_speed']:.4g} m/s"
                                                     if bare else "")
              + (": an air gun within the limits could fire it" if fits else
-                f": no air gun within the limits fires it; helium (the simple-wave gun "
-                f"{he['speed']:.4g} m/s) or a barrel of {air['chambered_barrel'] / FT:.3g} ft (chambered) would"))
+                f": no air gun within the limits fires it; in helium the infinitely chambered gun gives "
+                f"{he['chambered_speed']:.4g} m/s (the simple-wave gun {he['speed']:.4g}), "
+                + ("enough" if he["chambered_speed"] >= k["striker_speed"] else "short of it too")
+                + f", and in air a barrel of {air['chambered_barrel'] / FT:.3g} ft (chambered) would fire it"))
     return words + "; there " + _sabot_words(k)
 
 
