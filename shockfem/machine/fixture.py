@@ -21,7 +21,10 @@ at the same outer radius, with the metering pin and the oil.  The column designe
 carries its pressurised housing; if the machine's longer housing, at the outer radius its wall needs,
 outweighs the asked ratio, the striker is the ratio where that housing (pin and oil with it) weighs it,
 found both ways from the asked ratio (``striker_fixed_point``: a heavier striker closes slower and needs a
-thinner wall), each trial a new dashpot design.  Beyond Y_max the housing is drawn at
+thinner wall), each trial a new dashpot design.  The column designer's own striker may be heavier (it
+weighs its pressurised housing on the closed-form design before its search, ``column_design
+.carried_ratio``): that striker then stands, the housing drawn at the radius that weighs it, and the wall
+does not set it.  Beyond Y_max the housing is drawn at
 Y_max and its limit is broken by how far its wall ratio is past it.
 
 What it leaves out: the bodies' elasticity (the fixture study's finite-element runs), the column's own
