@@ -16,7 +16,10 @@ So the amplifier's gun over the direct gun's is
 
     Q = eta(V_s) / (chi(e, G, n) eta(V_s / G)),
 
-independent of the striker's mass, the bore and the pressure.  p0 A L is what a gun costs: its
+independent of the striker's mass, the bore and the pressure, against a direct gun that fires the bare
+striker.  A direct gun whose bore is wider than the striker fires it in a sabot, launching (M + m_sabot)
+V_s^2 / 2 where the amplifier's chain, each mass filling the bore, needs none: with ``direct_load`` =
+(M + m_sabot) / M, Q = eta(V_s) / (chi eta(V_s / G) direct_load).  p0 A L is what a gun costs: its
 barrel's steel at a thin wall's allowable S is 2 rho p0 A L / S, the gas it draws from a tank much larger
 than its barrel is p0 A L, and the spec's limits (bore, barrel, pressure) cap it.  The chain keeps at most
 e per stage, the gun loses efficiency with speed: amplification pays (Q < 1) only above a restitution
@@ -43,8 +46,10 @@ from .pads import estimated_restitution, solid_pads
 
 # the most masses the optimum may use (the design's alternatives go to 7; more than 10 gains little)
 MAX_MASSES = 10
-# the chamber's temperature [K] (the lumped gun's default reservoir temperature)
+# the chamber's temperature [K] (the lumped gun's default reservoir temperature), and the pressure its
+# sound speed is read at [Pa] (a perfect gas's does not depend on it)
 TEMPERATURE = 293.15
+REFERENCE_PRESSURE = 1e5
 # the launch speed's search: this many gains on a log grid per mass count, then a bounded refinement
 GRID = 200
 
@@ -64,26 +69,33 @@ class Chain:
         return asdict(self)
 
 
+def sound_speed(gas: str) -> float:
+    """The chamber gas's sound speed c0 [m/s] every closed form of the premise takes: ``gas`` at
+    ``TEMPERATURE`` (a perfect gas, so at any pressure; the lumped gun's real gas is not these closed
+    forms')."""
+    return GASES[gas].sound_speed(REFERENCE_PRESSURE, TEMPERATURE)
+
+
 def gun_efficiency(speed: float, gas: str, chambered: bool = False) -> float:
     """The ideal gun's kinetic energy over p0 A L at its muzzle ``speed`` [m/s], in ``gas`` (the simple-wave
     gun, or the infinitely chambered one)."""
-    g = GASES[gas]
-    return efficiency(speed, g.sound_speed(1e5, TEMPERATURE), g.gamma, chambered)
+    return efficiency(speed, sound_speed(gas), GASES[gas].gamma, chambered)
 
 
 def gun_ratio(e: float, striker_speed: float, gain: float, masses: int, gas: str = "air",
-              direct_gas: str | None = None, chambered: bool = False) -> float:
-    """Q (module docstring): the amplifier's gun over the direct gun's; inf where no chain of ``masses``
-    gains ``gain`` at ``e``."""
+              direct_gas: str | None = None, chambered: bool = False, direct_load: float = 1.0) -> float:
+    """Q (module docstring): the amplifier's gun over the direct gun's, the direct gun launching
+    ``direct_load`` times the striker's mass (its sabot); inf where no chain of ``masses`` gains ``gain``
+    at ``e``."""
     chi = chain_efficiency(e, gain, masses)
     if chi <= 0:
         return math.inf
     direct = gun_efficiency(striker_speed, direct_gas or gas, chambered)
-    return direct / (chi * gun_efficiency(striker_speed / gain, gas, chambered))
+    return direct / (chi * gun_efficiency(striker_speed / gain, gas, chambered) * direct_load)
 
 
 def best_chain(e: float, striker_speed: float, gas: str = "air", direct_gas: str | None = None,
-               max_masses: int = MAX_MASSES, chambered: bool = False) -> Chain:
+               max_masses: int = MAX_MASSES, chambered: bool = False, direct_load: float = 1.0) -> Chain:
     """The launch speed and mass count that minimise Q (a grid in log gain, refined by a bounded search
     between the grid's neighbours of its best)."""
     best = None
@@ -91,7 +103,7 @@ def best_chain(e: float, striker_speed: float, gas: str = "air", direct_gas: str
         top = math.log((1 + e) ** (n - 1)) * (1 - 1e-9)
 
         def q(x, n=n):
-            return gun_ratio(e, striker_speed, math.exp(x), n, gas, direct_gas, chambered)
+            return gun_ratio(e, striker_speed, math.exp(x), n, gas, direct_gas, chambered, direct_load)
         xs = np.linspace(top / GRID, top, GRID)
         values = [q(x) for x in xs]
         i = int(np.argmin(values))
@@ -107,15 +119,17 @@ def best_chain(e: float, striker_speed: float, gas: str = "air", direct_gas: str
 
 def break_even(striker_speed: float, gas: str = "air", direct_gas: str | None = None,
                max_masses: int = MAX_MASSES, masses: int | None = None, launch_speed: float | None = None,
-               chambered: bool = False) -> float:
+               chambered: bool = False, direct_load: float = 1.0) -> float:
     """The restitution above which the amplifier needs less gun than the direct gun (Q = 1); nan when even
-    e = 1 does not pay.  ``masses`` and ``launch_speed`` given: that chain's, not the optimum's."""
+    e = 1 does not pay.  ``masses`` and ``launch_speed`` given: that chain's, not the optimum's;
+    ``direct_load``: the direct gun's launched mass over the striker's (``gun_ratio``)."""
     if launch_speed is not None:
         def excess(e):
-            return gun_ratio(e, striker_speed, striker_speed / launch_speed, masses, gas, direct_gas, chambered) - 1
+            return gun_ratio(e, striker_speed, striker_speed / launch_speed, masses, gas, direct_gas, chambered,
+                             direct_load) - 1
     else:
         def excess(e):
-            return best_chain(e, striker_speed, gas, direct_gas, max_masses, chambered).gun_ratio - 1
+            return best_chain(e, striker_speed, gas, direct_gas, max_masses, chambered, direct_load).gun_ratio - 1
     if excess(1.0) >= 0:
         return math.nan
     lo = 1e-3
@@ -128,8 +142,7 @@ def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES, c
     """The striker speed [m/s] above which an amplifier of restitution ``e`` needs less gun than the
     direct gun (both in ``gas``, both simple-wave or both ``chambered``); nan when none below 0.99 of the
     (simple-wave) escape speed does."""
-    g = GASES[gas]
-    top = 0.99 * 2 * g.sound_speed(1e5, TEMPERATURE) / (g.gamma - 1)
+    top = 0.99 * 2 * sound_speed(gas) / (GASES[gas].gamma - 1)
 
     def excess(v):
         return best_chain(e, v, gas, None, max_masses, chambered).gun_ratio - 1

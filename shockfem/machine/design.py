@@ -300,7 +300,9 @@ def _binding(spec, fixture, amp, launcher, layout, limits: list[Limit]) -> tuple
     if fixture.housing_binds:
         binding.append(f"fixture: the housing (ASME VIII-2 at the column's {fixture.peak_pressure / 1e6:.0f} MPa peak, "
                        "over the whole bore) sets the striker "
-                       f"at {fixture.striker_ratio:.2f} times the payload, above the {spec.striker_ratio:g} asked")
+                       f"at {fixture.striker_ratio:.2f} times the payload, above the {spec.striker_ratio:g} asked "
+                       f"(wall outer radius {fixture.housing_wall_radius * 1e3:.1f} mm, b / a "
+                       f"{fixture.housing_wall_radius / fixture.bore_radius:.3g})")
     if not fixture.band_passed:
         problems.append(f"fixture: the column's pulse is outside the specification's band (worst excess "
                         f"{fixture.worst_excess:.3g} of the peak)")

@@ -28,6 +28,10 @@ def summary_lines(m: Machine) -> list[str]:
         f"{f.striker_mass:.4g} kg at {f.striker_speed:.4g} m/s ({f.striker_speed / FT:.0f} ft/s); column pulse "
         f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band "
         f"{'pass' if f.band_passed else 'FAIL'}, {f.verdict}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
+        f"  striker: {f.striker_ratio:.4g} times the payload ({'the wall sets it' if f.housing_binds else 'the wall does not set it'}"
+        f"; {f.redesigns} redesigns); housing outer radius {f.housing_outer_radius * 1e3:.1f} mm, the wall rule's "
+        f"{f.housing_wall_radius * 1e3:.1f} mm (b / a {f.housing_wall_radius / f.bore_radius:.3g}), the striker's "
+        f"mass's {f.housing_mass_radius * 1e3:.1f} mm; the column designer's striker {f.design_striker_mass:.4g} kg",
         f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; pads "
         + ", ".join(f"{st.pad_material} (e {st.restitution:.3f}{'' if st.measured else ', estimate'})"
                     for st in a.stages) + (" (finite elements); " if any(st.measured for st in a.stages) else

@@ -62,7 +62,8 @@ from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, gun_thrust
 from .fixture import article_length, bore_radius, design_fixture
-from .boundary import MAX_MASSES, TEMPERATURE, Chain, best_chain, best_pad_restitution, break_even, break_even_speed
+from .boundary import (MAX_MASSES, Chain, best_chain, best_pad_restitution, break_even,
+                       break_even_speed, sound_speed)
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
 from .layout import RING_CLEARANCE, Layout, place, ring_area
 from .pad_materials import PAD_MATERIALS
@@ -110,21 +111,70 @@ class Arrangement:
         return d
 
 
-def sabot_mass(bore: float, pressure: float, striker_diameter: float) -> float:
-    """The sabot that carries a striker narrower than the bore [kg]: an aluminium (6061-T6) cone at 45
-    degrees from the bore's rim to the striker's base, the gas pressing on its back.  A conical shell of
-    half-angle alpha under the pressure p carries the hoop stress p rho / (t cos alpha) at radius rho
-    (Roark, 7th ed., Table 13.3 case 4, membrane), so at the allowable its thickness grows with the radius,
-    t = p rho / (S cos alpha), and its mass is rho_al 2 pi p (R^3 - r^3) / (3 S sin alpha cos alpha).  The
-    meridional stress, the drive on the striker over the cone's section at its base, is lower for these
-    strikers.  Zero when the striker fills the bore."""
+@dataclass(frozen=True)
+class SabotCone:
+    """A sabot's cone sized at every radius (``sabot_cone``)."""
+    mass: float                   # [kg]
+    acceleration: float           # the shot's, striker and sabot [m/s^2]
+    radius: np.ndarray            # from the striker's base ring out to the bore's rim [m]
+    thickness: np.ndarray         # [m]
+    hoop: np.ndarray              # the membrane stresses there [Pa] (meridional: compression negative)
+    meridional: np.ndarray
+
+
+def sabot_cone(bore: float, pressure: float, striker_diameter: float, striker_mass: float,
+               samples: int = 400) -> SabotCone | None:
+    """The sabot that carries a striker of ``striker_mass`` [kg] narrower than the bore: an aluminium
+    (6061-T6) cone at half-angle alpha = 45 degrees from the bore's rim to the striker's base ring, the gas
+    pressing on its back and on the striker's base.  As a membrane (Roark, 7th ed., Table 13.3 case 4) it
+    carries at radius rho the hoop stress p rho / (t cos alpha) and the meridional stress
+    -N(rho) / (2 pi rho t cos alpha), N(rho) the axial load through that section: the pressure's resultant
+    outside it less the inertia of the cone outside it, p pi (R^2 - rho^2) - m(rho..R) a, which at the
+    striker is the striker's inertia less its base's own pressure force, M_s a - p pi r^2 (compression).
+    The thickness is the least at which von Mises (sqrt(s_h^2 - s_h s_m + s_m^2)) is the allowable S, the
+    cone's mass integrated from the rim inward (dm = rho_al 2 pi rho t d rho / sin alpha), the acceleration
+    a = p pi R^2 / (M_s + m) solved with the sabot's own mass.  Range: a membrane; the junctions' bending
+    and the ring's bearing on the striker's floor are not checked.  None when the striker fills the bore."""
     R, r = bore / 2, striker_diameter / 2
     if R <= r * (1 + 1e-9):
-        return 0.0
-    rho = property_si(SABOT_MATERIAL, "density", "density")
+        return None
+    rho_al = property_si(SABOT_MATERIAL, "density", "density")
     S = initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY
     alpha = math.pi / 4
-    return rho * 2 * math.pi * pressure * (R ** 3 - r ** 3) / (3 * S * math.sin(alpha) * math.cos(alpha))
+    radius = np.linspace(R, r, samples)
+    hoop_load = pressure * radius / math.cos(alpha)          # s_h t [N/m]
+    mass, acceleration = 0.0, pressure * math.pi * R * R / striker_mass
+    for _ in range(SABOT_PASSES * 10):
+        t, m = np.empty(samples), np.zeros(samples)
+        for i, rho in enumerate(radius):
+            if i:
+                # the cone outside rho: the trapezoidal rule in the radius, each ring at its own thickness
+                m[i] = m[i - 1] + rho_al * math.pi * (radius[i - 1] - rho) * (
+                    radius[i - 1] * t[i - 1] + rho * _ring_thickness(hoop_load[i], pressure, R, rho, m[i - 1],
+                                                                     acceleration, alpha, S)) / math.sin(alpha)
+            t[i] = _ring_thickness(hoop_load[i], pressure, R, rho, m[i], acceleration, alpha, S)
+        new = m[-1]
+        acceleration = pressure * math.pi * R * R / (striker_mass + new)
+        if abs(new - mass) <= 1e-9 * (striker_mass + new):
+            break
+        mass = new
+    N = pressure * math.pi * (R * R - radius ** 2) - m * acceleration
+    return SabotCone(new, acceleration, radius[::-1], t[::-1], (hoop_load / t)[::-1],
+                     (-N / (2 * math.pi * radius * t * math.cos(alpha)))[::-1])
+
+
+def _ring_thickness(hoop_load: float, pressure: float, R: float, rho: float, outside: float, acceleration: float,
+                    alpha: float, S: float) -> float:
+    """The cone's least thickness at radius rho [m]: von Mises at S of the hoop stress hoop_load / t and the
+    meridional -n / t, n = (p pi (R^2 - rho^2) - outside a) / (2 pi rho cos alpha) (``sabot_cone``)."""
+    n = (pressure * math.pi * (R * R - rho * rho) - outside * acceleration) / (2 * math.pi * rho * math.cos(alpha))
+    return math.sqrt(hoop_load ** 2 + hoop_load * n + n * n) / S
+
+
+def sabot_mass(bore: float, pressure: float, striker_diameter: float, striker_mass: float) -> float:
+    """The sabot's mass [kg] (``sabot_cone``); zero when the striker fills the bore."""
+    cone = sabot_cone(bore, pressure, striker_diameter, striker_mass)
+    return cone.mass if cone else 0.0
 
 
 def striker_body(fixture) -> dict:
@@ -185,11 +235,11 @@ def _with_sabot(spec: MachineSpec, striker: float, speed: float, diameter: float
     pressure asks at this bore (``sabot_mass`` grows with the pressure, and the lightest gun usually runs
     at the pressure limit): where the gun's pressure is that limit the sabot has settled at once."""
     s = dataclasses.replace(spec, max_bore=bore)
-    sabot = sabot_mass(bore, spec.max_pressure, diameter)
+    sabot = sabot_mass(bore, spec.max_pressure, diameter, striker)
     for _ in range(SABOT_PASSES):
         L = launcher_for(s, striker + sabot, speed, starts, min_bore=bore, report_binding=report_binding)
         g = L.design.gun
-        new = sabot_mass(g.bore, g.reservoir_pressure, diameter)
+        new = sabot_mass(g.bore, g.reservoir_pressure, diameter, striker)
         if abs(new - sabot) <= 1e-3 * (striker + sabot):
             break
         sabot = new
@@ -340,27 +390,66 @@ def _times(x: float, y: float) -> str:
     return f"{x / y:.3g} times" if x >= y else f"{y / x:.3g} times less than"
 
 
-def closed_form(m: Machine) -> dict:
-    """The premise's closed form (``boundary``) at the design's striker: what the design's chain keeps of its
-    launch energy (at its effective e, and at e = 1), the least gun any chain needs at that e, the break-even
-    restitutions (the best chain, and the spec's launch speed and mass count; air, helium, an air amplifier
-    against a helium direct gun) and the best restitution a pad of the library is sized with."""
+# Q within this of 1 is parity: the closed form's ideal guns bracket a real one by more (the simple-wave
+# and the infinitely chambered gun's Q differ by a third at the 12 lb striker, docs/machine.md), so there the
+# verdict rests on the interfaces, not on Q
+PARITY = 1.1
+
+
+def specified_striker_speed(m: Machine) -> float:
+    """The striker speed [m/s] the specification asks of the designed fixture's striker: the rigid collision
+    law (``dashpot_design.striker_speed``) for the specified pulse's velocity change (``programmer.requirement``)
+    at the fixture's payload, striker and measured restitution (the map's law at the spec's point)."""
+    f, pulse = m.fixture, m.spec.pulse
+    dv = requirement(pulse.shape, pulse.peak, pulse.duration, f.payload_mass).velocity_change
+    return striker_speed(f.payload_mass, f.striker_mass, dv, max(f.restitution, 0.0))
+
+
+def closed_form(m: Machine, sabot: float = 0.0, speed: float | None = None) -> dict:
+    """The premise's closed form (``boundary``) at the design's striker, at ``speed`` [m/s] (None: the
+    designed fixture's): what the design's chain keeps of its launch energy (at its effective e, and at
+    e = 1), the least gun any chain needs at that e, the break-even restitutions (the best chain, and the
+    spec's launch speed and mass count; air, helium, an air amplifier against a helium direct gun), the same
+    against the direct gun that launches the striker and its ``sabot`` [kg] (``with_sabot``: the direct
+    machine the premise admits), the best chain's fastest interface against the solids' elastic limit
+    (``chain_interface_bound``) and the best restitution a pad of the library is sized with."""
     s, e = m.spec, m.amplifier.restitution
-    V = m.fixture.striker_speed
+    V = m.fixture.striker_speed if speed is None else speed
     G = V / s.launch_speed
     pad, e_pad = best_pad_restitution()
     ok = math.isfinite(e) and e > 0
+    load = (m.fixture.striker_mass + sabot) / m.fixture.striker_mass
+    best = best_chain(e, V, s.gas) if ok else None
     return {"striker_speed": V, "restitution": e, "masses": s.masses, "launch_speed": s.launch_speed, "gain": G,
             "chain_efficiency": chain_efficiency(e, G, s.masses) if ok else math.nan,
             "chain_efficiency_elastic": chain_efficiency(1.0, G, s.masses),
-            "best": best_chain(e, V, s.gas).as_dict() if ok else None,
+            "best": best.as_dict() if ok else None,
             "break_even": {gas: break_even(V, gas) for gas in ("air", "helium")},
             "break_even_spec": {gas: break_even(V, gas, masses=s.masses, launch_speed=s.launch_speed)
                                 for gas in ("air", "helium")},
             "break_even_air_against_helium": break_even(V, "air", "helium"),
             # both guns as the infinitely chambered gun (the bound the simple-wave gun is not)
             "break_even_chambered": {"air": break_even(V, "air", chambered=True)},
+            "with_sabot": {"sabot": sabot, "direct_load": load,
+                           "best": best_chain(e, V, s.gas, direct_load=load).as_dict() if ok else None,
+                           "break_even": {"air": break_even(V, "air", direct_load=load),
+                                          "chambered": break_even(V, "air", chambered=True, direct_load=load)}},
+            "interface": chain_interface_bound(m, best) if ok else None,
             "best_pad": pad, "best_pad_restitution": e_pad, "scale_free": scale_free(m)}
+
+
+def chain_interface_bound(m: Machine, chain: Chain) -> dict:
+    """The best chain's fastest interface (its last, closing at V_s / g, g the stage gain G^(1/(n-1))) against
+    the speed v* to which the library's best solid returns an interface's energy elastically
+    (``elastic_limit_speeds``): a pad that held it would weigh (dv / v*)^2 m_a / (m_a + m_b) times the struck
+    body, m_a / (m_a + m_b) = 1 / (1 + q) for the geometric chain's mass ratio q = (1 + e) / g - 1."""
+    g = chain.gain ** (1 / (chain.masses - 1))
+    closing = chain.striker_speed / g
+    q = (1 + chain.restitution) / g - 1
+    speeds = elastic_limit_speeds(m.spec)
+    best = max(speeds, key=speeds.get)
+    return {"closing_speed": closing, "mass_ratio": q, "best_solid": best, "elastic_limit_speed": speeds[best],
+            "pad_over_struck": (closing / speeds[best]) ** 2 / (1 + q), "past_elastic_limit": closing > speeds[best]}
 
 
 # the restitutions the pads' finite-element runs measured at the 12 lb chain's first interface (4,773 kg on
@@ -445,13 +534,22 @@ def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: f
     infinitely chambered gun (the most any real chamber gives, ``chambered``) and the constant-pressure bound
     (an infinite reservoir right behind the base, massless gas: p A L = M V^2 / 2, the least barrel of all)."""
     p, A, L = spec.max_pressure, math.pi * spec.max_bore ** 2 / 4, spec.max_barrel_length
-    M = striker + sabot_mass(spec.max_bore, p, diameter)
-    out = {"limits": {"barrel": L, "bore": spec.max_bore, "pressure": p}, "launched": M,
+    M = striker + sabot_mass(spec.max_bore, p, diameter, striker)
+    out = {"limits": {"barrel": L, "bore": spec.max_bore, "pressure": p}, "launched": M, "striker": striker,
            "constant_pressure_barrel": 0.5 * M * speed ** 2 / (p * A),
            "constant_pressure_speed": math.sqrt(2 * p * A * L / M)}
+    out.update(_ideal_guns(M, speed, p, A, L))
+    # the bare striker at the same limits (a massless sabot): what no sabot could beat
+    out["bare"] = _ideal_guns(striker, speed, p, A, L)
+    return out
+
+
+def _ideal_guns(M: float, speed: float, p: float, A: float, L: float) -> dict:
+    """``direct_remedies``' ideal guns in air and helium for a launched mass ``M`` [kg]."""
+    out = {}
     for gas in ("air", "helium"):
         g = GASES[gas]
-        c0 = g.sound_speed(p, TEMPERATURE)
+        c0 = sound_speed(gas)
         top = 2 * c0 / (g.gamma - 1)
         out[gas] = {"barrel": travel(speed, M, p, A, c0, g.gamma) if speed < top else math.inf,
                     "speed": muzzle_speed(L, M, p, A, c0, g.gamma),
@@ -515,43 +613,91 @@ def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, reme
     return words
 
 
+def _e_words(x: float) -> str:
+    return f"{x:.3f}" if math.isfinite(x) else "never (not even at e = 1)"
+
+
 def _closed_form_words(k: dict) -> str:
     be, spec = k["break_even"], k["break_even_spec"]
-
-    def e_words(x):
-        return f"{x:.3f}" if math.isfinite(x) else "never (not even at e = 1)"
-    pays = math.isfinite(be["air"]) and k["restitution"] > be["air"]
     air_he = k["break_even_air_against_helium"]
     return (f"the closed form (`machine.boundary`): the design's {k['masses']} masses at its effective e "
             f"{k['restitution']:.4f} keep {k['chain_efficiency']:.3g} of the launch energy "
             f"({k['chain_efficiency_elastic']:.3g} even at e = 1), so the amplifier always launches more than the "
             f"striker's energy and only the gun's higher efficiency at a lower speed can pay it back: for a striker "
-            f"at {k['striker_speed']:.4g} m/s the amplifier needs less gun (p0 A L) than the direct gun only above "
-            f"e = {e_words(be['air'])} in air and {e_words(be['helium'])} in helium (the best launch speed and "
-            f"mass count; at the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses "
-            f"{e_words(spec['air'])} and {e_words(spec['helium'])}), and an air amplifier against a helium direct "
-            f"gun {'pays only above ' + e_words(air_he) if math.isfinite(air_he) else 'never pays'} (up to "
+            f"at {k['striker_speed']:.4g} m/s the amplifier needs less gun (p0 A L) than a direct gun firing the bare "
+            f"striker only above e = {_e_words(be['air'])} in air and {_e_words(be['helium'])} in helium (the best "
+            f"launch speed and mass count; at the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses "
+            f"{_e_words(spec['air'])} and {_e_words(spec['helium'])}), and an air amplifier against a helium direct "
+            f"gun {'pays only above ' + _e_words(air_he) if math.isfinite(air_he) else 'never pays'} (up to "
             f"{MAX_MASSES} masses); with both guns the infinitely chambered gun (a tank wider than the bore) the "
-            f"air break-even is e = {e_words(k['break_even_chambered']['air'])}; "
+            f"air break-even is e = {_e_words(k['break_even_chambered']['air'])}; "
             f"the best pad material of the library is sized at e = {k['best_pad_restitution']:.3f} "
-            f"({k['best_pad']}, its rebound on rigid masses), the design's chain runs at {k['restitution']:.3f}: "
-            + ("amplification pays" if pays else "amplification does not pay"))
+            f"({k['best_pad']}, its rebound on rigid masses), the design's chain runs at {k['restitution']:.3f}; "
+            + _sabot_words(k))
+
+
+def _sabot_words(k: dict) -> str:
+    """Q against the direct machine the premise admits (the striker in its sabot), and what the verdict
+    rests on: Q where it is clearly above parity, else the best chain's fastest interface."""
+    best, w, face = k["best"], k["with_sabot"], k["interface"]
+    if not best or not w["best"]:
+        return "no chain to compare"
+    q_bare, q = best["gun_ratio"], w["best"]["gun_ratio"]
+    words = (f"the best chain ({best['masses']} masses launched at {best['launch_speed']:.4g} m/s) needs Q = "
+             f"{q_bare:.3g} times the gun of a direct gun firing the bare striker, and Q = {q:.3g} times that of the "
+             f"direct machine the premise admits, which fires the striker in its {w['sabot']:.4g} kg sabot (the "
+             f"chain's masses fill the bore and need none; break-even e {_e_words(w['break_even']['air'])} "
+             f"simple-wave, {_e_words(w['break_even']['chambered'])} chambered)")
+    if q > PARITY:
+        return words + ": amplification does not pay"
+    verdict = "amplification does not pay" if face["past_elastic_limit"] else "amplification may pay"
+    return (words + f"; so Q alone does not decide it, the interfaces do: the best chain's fastest interface "
+            f"closes at {face['closing_speed']:.0f} m/s, where the library's best solid ({face['best_solid']}) "
+            f"returns an interface's energy elastically only up to v* = {face['elastic_limit_speed']:.0f} m/s; a "
+            f"pad that held it would weigh {face['pad_over_struck']:.3g} times the struck body (the pads' runs "
+            f"restitute {min(MEASURED_RESTITUTIONS.values()):.2f}-{max(MEASURED_RESTITUTIONS.values()):.2f} at "
+            f"99 m/s): {verdict}")
+
+
+def _specified_words(k: dict, remedies: dict, band_passed: bool, fixture_speed: float) -> str:
+    """The premise at the striker speed the specification asks (``specified_striker_speed``)."""
+    air, he = remedies["air"], remedies["helium"]
+    bare = remedies.get("bare", {}).get("air", {})
+    fits = max(air["chambered_speed"], air["speed"]) >= k["striker_speed"]
+    words = (f"the comparison above is at the designed fixture's {fixture_speed:.4g} m/s"
+             + (", a pulse that fails the band" if not band_passed else "")
+             + f"; at the speed the specification asks ({k['striker_speed']:.4g} m/s, the rigid collision law for "
+             f"its pulse's velocity change at this striker) the ideal infinitely chambered air gun at every limit "
+             f"gives the striker in its {remedies['launched'] - remedies['striker']:.4g} kg sabot "
+             f"{air['chambered_speed']:.4g} m/s" + (f" and the bare striker {bare['chambered_speed']:.4g} m/s"
+                                                    if bare else "")
+             + (": an air gun within the limits could fire it" if fits else
+                f": no air gun within the limits fires it; in helium the infinitely chambered gun gives "
+                f"{he['chambered_speed']:.4g} m/s (the simple-wave gun {he['speed']:.4g}), "
+                + ("enough" if he["chambered_speed"] >= k["striker_speed"] else "short of it too")
+                + f", and in air a barrel of {air['chambered_barrel'] / FT:.3g} ft (chambered) would fire it"))
+    return words + "; there " + _sabot_words(k)
 
 
 def verdict(a: Arrangement, b: Arrangement, c: Arrangement, bound: Arrangement | None = None,
-            closed: dict | None = None, remedies: dict | None = None) -> str:
+            closed: dict | None = None, remedies: dict | None = None, at_spec: tuple | None = None) -> str:
     """What the arrangements say about the premise, from their numbers (``bound``: (b) with a massless
     sabot, the direct gun's lower bound, never a machine; ``closed``: ``closed_form``; ``remedies``:
-    ``direct_remedies``)."""
+    ``direct_remedies``; ``at_spec``: (``closed_form``, ``direct_remedies``, the fixture's band passed) at
+    the striker speed the specification asks)."""
     words = [_energies(a, b, bound)] + _feasibility(a, b, bound, remedies)
     if closed and closed.get("scale_free"):
         words.append(_scale_free_words(closed["scale_free"]))
     if a.fixture_problems:
-        words.append("every arrangement (a) to (c) carries the same fixture, and it is not within its own limits ("
-                     + "; ".join(a.fixture_problems) + "): none of them is a feasible machine until the fixture "
+        words.append("every arrangement (a) to (c) carries the same fixture (its metering pin the closed form's "
+                     "quasi-steady one, not cut on the column: `fixture.PIN_ITERATIONS`), and it is not within its "
+                     "own limits (" + "; ".join(a.fixture_problems) + "): none of them is a feasible machine until "
+                     "the fixture "
                      "is, and the comparison above is of the guns and moving masses that fixture asks")
     if closed:
         words.append(_closed_form_words(closed))
+    if at_spec:
+        words.append(_specified_words(*at_spec, a.striker_speed))
     if not math.isfinite(c.striker_speed):
         words.append(f"the white paper's flying target (c) has no fixture: {c.notes[-1]}")
         return "; ".join(words) + "."
@@ -691,7 +837,7 @@ def map_point(spec: MachineSpec, duration: float, peak: float, article: float, s
     V = striker_speed(payload, M, dv, fixture_e)
     Lb, _ = direct_launcher(s, M, V, None, starts=1, report_binding=False)
     gb = Lb.design.gun
-    sabot = sabot_mass(gb.bore, gb.reservoir_pressure, 2 * r * wall)
+    sabot = sabot_mass(gb.bore, gb.reservoir_pressure, 2 * r * wall, M)
     direct = _gun_entry(Lb, M, Lb.design.feasible, f"massless sabot; its sabot would weigh {sabot:.3g} kg")
     direct["sabot_estimate"] = sabot
     chains = _chains(amp_e, V, s.gas)

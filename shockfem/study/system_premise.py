@@ -171,8 +171,10 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     echo("  (d) the closed-breech gas drive")
     drives = D.gas_drives(m.spec, m.fixture)
     d_rows = [D.arrangement(x) for x in drives]
-    rep.table("arrangements", ARRANGEMENT_HEADER, [_arrangement_row(x) for x in (a, b, b0, c, *d_rows)],
-              ARRANGEMENT_FORMATS)
+    header = ARRANGEMENT_HEADER[:-2] + [f"gun reaches it (at the fixture's {m.fixture.striker_speed:.4g} m/s"
+                                        + ("" if m.fixture.band_passed else ", a pulse that fails the band") + ")",
+                                        "notes"]
+    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, b, b0, c, *d_rows)], ARRANGEMENT_FORMATS)
     rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
@@ -187,12 +189,18 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
              f"{D.CATCH_RATIO:.0%} of the peak after the band's window (the model leaves out the valve's dynamics "
              "beyond that ramp, gas friction and heat loss, the seal, the piston's elastic waves).")
     gas_drive_table(rep, drives)
-    closed = P.closed_form(m)
-    remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
-                                 2 * m.fixture.housing_outer_radius)
+    f = m.fixture
+    closed = P.closed_form(m, sabot=b.launched_mass - b.striker_mass)
+    remedies = P.direct_remedies(m.spec, f.striker_mass, f.striker_speed, 2 * f.housing_outer_radius)
+    # the premise at the speed the specification asks (the map's law at the spec's point), its direct
+    # machine the striker in the sabot the limits' bore and pressure need
+    V_spec = P.specified_striker_speed(m)
+    remedies_spec = P.direct_remedies(m.spec, f.striker_mass, V_spec, 2 * f.housing_outer_radius)
+    closed_spec = P.closed_form(m, sabot=remedies_spec["launched"] - f.striker_mass, speed=V_spec)
     boundary_table(rep, closed)
     gas_spring_section(rep, m)
-    words = P.verdict(a, b, c, b0, closed, remedies)[:-1] + "; " + D.verdict_words(drives, a, b) + "."
+    words = (P.verdict(a, b, c, b0, closed, remedies, (closed_spec, remedies_spec, f.band_passed))[:-1] + "; "
+             + D.verdict_words(drives, a, b) + ".")
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
     for x in (a, b, b0, c):
         rep.value(f"launch_energy_{x.name.split(')')[0].strip('(')}", x.launch_energy)
@@ -205,6 +213,8 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
                               "bore": x.gun.bore if x.gun else None, "stored": y.stored,
                               "broken": [lim.describe() for lim in broken(x.limits)]}
                              for x, y in zip(drives, d_rows)])
+    rep.value("premise_closed_form_at_spec", closed_spec)
+    rep.value("direct_remedies_at_spec", remedies_spec)
     return a, b, b0, c, target
 
 
@@ -244,6 +254,9 @@ def boundary_table(rep: Report, k: dict):
              k["break_even_air_against_helium"]],
             [f"the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses, air", spec["air"]],
             [f"the spec's {k['launch_speed']:.4g} m/s and {k['masses']} masses, helium", spec["helium"]],
+            [f"the best launch speed and mass count, air, against the direct gun firing the striker in its "
+             f"{k['with_sabot']['sabot']:.4g} kg sabot", k["with_sabot"]["break_even"]["air"]],
+            ["the same, both guns the infinitely chambered gun", k["with_sabot"]["break_even"]["chambered"]],
             [f"the best pad material of the library ({k['best_pad']}, sized at its rebound's sqrt(R))",
              k["best_pad_restitution"]],
             ["the design's chain (its effective e)", k["restitution"]]]

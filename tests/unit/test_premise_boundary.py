@@ -82,6 +82,47 @@ def test_gun_ratio_and_break_even():
     assert B.break_even_speed(e_air, "air") == pytest.approx(430.0, rel=1e-3)
 
 
+def test_gun_ratio_counts_the_direct_guns_sabot():
+    """The direct machine the premise admits fires the striker in a sabot: its gun grows by (M + m_sabot) / M
+    and Q falls by as much.  The hostile review's be.py at the 12 lb design's 412.2 m/s and e 0.632: the best
+    chain (2 masses launched at 360.9 m/s) needs Q = 1.47 against the bare 498.8 kg striker, 1.01 against it in
+    a 227.7 kg sabot, and the air break-even falls from 0.838 to 0.637 (their digits).  That chain's one
+    interface closes at 360.9 m/s, where PU 60D (v* 59 m/s) would need a pad (361 / 59)^2 x 0.70 = 26 times
+    the struck body (the review's arithmetic)."""
+    import types
+    from shockfem.machine.premise import chain_interface_bound
+    from shockfem.machine.spec import read_spec
+    load = (498.8 + 227.7) / 498.8
+    bare, sabot = B.best_chain(0.632, 412.2), B.best_chain(0.632, 412.2, direct_load=load)
+    assert bare.masses == sabot.masses == 2 and bare.launch_speed == pytest.approx(360.9, abs=0.1)
+    assert bare.gun_ratio == pytest.approx(1.47, abs=5e-3) and sabot.gun_ratio == pytest.approx(1.01, abs=5e-3)
+    assert sabot.gun_ratio == pytest.approx(bare.gun_ratio / load, rel=1e-6)
+    assert B.break_even(412.2, "air") == pytest.approx(0.838, abs=5e-4)
+    assert B.break_even(412.2, "air", direct_load=load) == pytest.approx(0.637, abs=5e-4)
+    face = chain_interface_bound(types.SimpleNamespace(spec=read_spec({"article": "12 lb"})), bare)
+    assert face["closing_speed"] == pytest.approx(bare.launch_speed, rel=1e-9)      # two masses: one interface
+    assert face["best_solid"] == "pu_60d" and face["past_elastic_limit"]
+    assert face["pad_over_struck"] == pytest.approx(26.0, rel=0.03)
+
+
+def test_verdict_rests_on_the_interfaces_where_q_is_at_parity():
+    """With the sabot counted Q near 1 does not decide the premise: the words then rest on the best chain's
+    interface against the solids' elastic limit, and say 'does not pay' only when it is past it."""
+    from shockfem.machine.premise import PARITY, _sabot_words
+    face = {"closing_speed": 360.9, "best_solid": "pu_60d", "elastic_limit_speed": 59.0, "pad_over_struck": 26.0,
+            "past_elastic_limit": True}
+    k = {"best": {"masses": 2, "launch_speed": 360.9, "gun_ratio": 1.47}, "interface": face,
+         "with_sabot": {"sabot": 227.7, "best": {"gun_ratio": 1.01}, "break_even": {"air": 0.637, "chambered": 0.658}}}
+    words = _sabot_words(k)
+    assert "Q = 1.47" in words and "Q = 1.01" in words and "227.7 kg sabot" in words
+    assert "Q alone does not decide it" in words and "closes at 361 m/s" in words
+    assert words.endswith("amplification does not pay")
+    face["past_elastic_limit"] = False
+    assert _sabot_words(k).endswith("amplification may pay")
+    k["with_sabot"]["best"]["gun_ratio"] = 1.01 * PARITY / 1.0 + 0.01
+    assert "Q alone" not in _sabot_words(k) and _sabot_words(k).endswith("amplification does not pay")
+
+
 def _entry(mass, feasible, sabot=0.0):
     return {"machine_mass": mass, "feasible": feasible, "sabot_estimate": sabot}
 
