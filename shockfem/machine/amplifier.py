@@ -255,8 +255,8 @@ def share_speed(iface: Interface, material: str) -> float:
 
 
 def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, echo,
-             bounds: list[str] | None = None) -> list[Stage]:
-    """Each interface's pad chosen and measured; where the first check (``pad_bound``) finds that no
+             bounds: list[str] | None = None, materials=tuple(PAD_MATERIALS)) -> list[Stage]:
+    """Each interface's pad chosen among ``materials`` and measured; where the first check (``pad_bound``) finds that no
     material holds its limits at some interface, no pad is run at all (each keeps its material's estimate,
     the square root of its rebound resilience) and ``bounds`` gets the reasons."""
     allowable = initial_yield_stress(spec.material) / spec.safety_factor
@@ -268,7 +268,7 @@ def _measure(spec, masses, bodies, e: float, cache: RunCache, resolution: str, e
     if why:
         resolution = "estimate"
     for iface in faces:
-        pad, table = choose_pad(iface)
+        pad, table = choose_pad(iface, materials)
         m, pad, resizing = cache.measure_within_limits(iface, pad.material, resolution)
         stages.append(_stage(iface.rounded(), pad, m, table, allowable, resizing))
         if echo:

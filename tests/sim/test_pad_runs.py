@@ -11,11 +11,12 @@ import pytest
 from shockfem.amplifier.gain import cylinder_size
 from shockfem.machine.amplifier import _amplifier, _chain_gain, _measure, interfaces
 from shockfem.machine import pads
-from shockfem.machine.pads import RESIZE_AIM, RESIZE_BAND, RunCache
+from shockfem.machine.pads import RESIZE_AIM, RESIZE_BAND, RunCache, solid_pads
 from shockfem.machine.spec import read_spec
 
 RHO = 7850.0
 FE_CONTACT = "stress (FE contact)"
+SOLID = tuple(solid_pads())
 
 
 @pytest.fixture(scope="module")
@@ -25,7 +26,10 @@ def chain(tmp_path_factory):
     bodies = [{"name": f"m{k + 1}", "shape": "cylinder", **cylinder_size(m, RHO, 1.0)} for k, m in enumerate(masses)]
     folder = str(tmp_path_factory.mktemp("pads"))
     cache = RunCache(folder)
-    stages = _measure(spec, masses, bodies, 0.6, cache, "smoke", None)
+    # the solid pads only: at 3 m/s between these masses the nitrogen gas spring holds its limits and its
+    # estimate restitutes more (0.72 and 0.70 against PU 90A's 0.671), so the design would take it; these
+    # tests are of the elastomer pads' own runs
+    stages = _measure(spec, masses, bodies, 0.6, cache, "smoke", None, materials=SOLID)
     return spec, masses, bodies, stages, folder, cache
 
 
@@ -66,7 +70,7 @@ def test_small_chain_takes_polyurethane_inside_every_limit_on_its_own_runs(chain
 def test_the_cache_answers_the_same_interface_again(chain):
     spec, masses, bodies, stages, folder, _ = chain
     cache = RunCache(folder)               # read back from pad_runs.json
-    again = _measure(spec, masses, bodies, 0.6, cache, "smoke", None)
+    again = _measure(spec, masses, bodies, 0.6, cache, "smoke", None, materials=SOLID)
     # every size again, from the table: the resized geometry is in the key
     assert cache.hits == sum(len(st.resizing["steps"]) for st in stages) and cache.misses == 0
     assert [st.restitution for st in again] == [st.restitution for st in stages]
