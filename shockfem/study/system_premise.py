@@ -184,8 +184,9 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
              "no striker and no dashpot; its 'launched' column is the moving mass, its 'barrel' the stroke) in air "
              "and in helium at the spec's 5,000 psi, its pulse by the infinitely chambered gun's base pressure "
              "with the valve's onset ramp and the fall as the piston leaves the cylinder, caught at "
-             f"{D.CATCH_RATIO:.0%} of the peak after the band's window (the model leaves out the valve's dynamics "
-             "beyond that ramp, gas friction and heat loss, the seal, the piston's elastic waves).")
+             "the spec's catch deceleration after the band's window (the model leaves out the valve's dynamics "
+             "beyond that ramp, the gas's escape after the open end, gas friction and heat loss, the seal, the "
+             "piston's elastic waves).")
     gas_drive_table(rep, drives)
     closed = P.closed_form(m)
     remedies = P.direct_remedies(m.spec, m.fixture.striker_mass, m.fixture.striker_speed,
@@ -227,9 +228,10 @@ def gas_drive_table(rep: Report, drives: list):
              "trapezoid's velocity change over its duration; the peak is where the valve's ramp ends (the chambered "
              "base pressure falls after it); the band is the fixture study's (`metrics.shapes`); the piston the "
              "lightest of " + ", ".join(D.PISTON_MATERIALS) + " (a flat disc, Roark's simply supported plate under "
-             f"the carriage's central load); the catch at {D.CATCH_RATIO:.0%} of the peak; the lumped gun "
+             f"the carriage's central load); the catch at the spec's catch deceleration; the lumped gun "
              "(`launcher.gun.fire`: the finite tank, the valve's flow, Lagrange gas, the air ahead) fires the same "
-             "cylinder and tank as the independent check. `shockfem verify gas_drive` checks the drive against the "
+             "cylinder and tank, a check of the chambered law's tank fall and gas inertia only (it shares the "
+             "valve's opening and the fall). `shockfem verify gas_drive` checks the drive against the "
              "chambered closed form and the constant-force limit.")
 
 
