@@ -44,8 +44,7 @@ rho h a of the pressure):
   after a free run of the band's monitoring window after the pulse (1.5 D at u_end), so that the catch is no
   part of the record the band checks; the frame carries the largest of the drive's thrust p0 A, the catch's
   force at the allowable, and the blowdown's thrust once the piston has left: nothing closes the supply, so
-  the tank empties through the choked bore, its thrust C_F p0 A with C_F = (gamma + 1) (2 / (gamma + 1))^
-  (gamma / (gamma - 1)) (the sonic exit's momentum and pressure, the ambient's left out: an upper bound),
+  the tank empties through the choked bore (``machine.blowdown``: its thrust C_F p0 A at first, its impulse),
   a reaction the foundation takes (``layout.frame_force``);
 * the gas a shot vents: the tank's and the cylinder's charge, as nothing closes the supply (``vented_gas``),
   a running cost, not a limit.
@@ -80,6 +79,7 @@ from ..launcher.simple_wave import chambered_pressure_ratio, escape_speed
 from ..metrics import shapes
 from ..scene.library import LIBRARY, initial_yield_stress, property_si
 from ..units import G0, IN, PSI
+from . import blowdown as B
 from .boundary import TEMPERATURE
 from .launcher import SIZING, launcher_of
 from .layout import RING_CLEARANCE, frame_force, frame_section, ring_area, tank_length
@@ -241,12 +241,6 @@ def tank_volume(swept: float, gamma: float) -> float:
     return swept / ((1 - CHAMBER_HOLD) ** (-1 / gamma) - 1)
 
 
-def blowdown_thrust_coefficient(gamma: float) -> float:
-    """C_F of a sonic exit fed at stagnation p0: (gamma + 1) (2 / (gamma + 1))^(gamma / (gamma - 1)), the
-    ambient pressure left out (module docstring)."""
-    return (gamma + 1) * (2 / (gamma + 1)) ** (gamma / (gamma - 1))
-
-
 def vented_gas(gas, p0: float, volume: float) -> tuple[float, float]:
     """The gas [kg] at ``p0`` [Pa] and the chamber's temperature in ``volume`` [m^3] that a shot vents, and its
     volume at standard conditions [m^3]."""
@@ -279,6 +273,7 @@ class GasDrive:
     openings: list = field(default_factory=list)  # ``opening_sensitivity``
     vented_mass: float = math.nan     # the gas a shot vents [kg] (``vented_gas``)
     vented_volume: float = math.nan   # the same at standard conditions [m^3]
+    blowdown: object = None           # ``blowdown.Blowdown``: the tank emptying after the piston has left
     notes: list[str] = field(default_factory=list)
 
     @property
@@ -359,7 +354,8 @@ def _size_machine(d: GasDrive, spec: MachineSpec, article: float, diameter: floa
     d.stop = design_stop("gas drive's piston, carriage and article", mv.total, pulse.end_speed, mv.piston_thickness,
                          rho, S, ring_area(mv.bore, diameter + RING_CLEARANCE), spec.oil_pressure,
                          deceleration=spec.catch)
-    thrust = max(1.0, blowdown_thrust_coefficient(g.gamma)) * d.pressure * area
+    d.blowdown = B.blowdown(V0 + area * pulse.stroke, area, d.pressure, d.sound_speed, g.gamma)
+    thrust = max(d.pressure * area, d.blowdown.peak_thrust)
     d.vented_mass, d.vented_volume = vented_gas(g, d.pressure, V0 + area * pulse.stroke)
     d.machine_length = d.tank_length + d.cylinder_length + d.free_run + d.stop.length
     d.frame_mass = 2 * rho * frame_section(frame_force([d.stop], thrust), S) * d.machine_length
@@ -443,6 +439,7 @@ def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
            f"{d.free_run:.3g}, catch {s.length:.3g}",
            f"vents {d.vented_mass:.3g} kg of {d.gas} a shot ({d.vented_volume:,.0f} m^3 at 0 degC, 1 atm: the tank "
            f"and cylinder, nothing closing the supply), not recovered in this design: a running cost",
+           B.words(d.blowdown, mv.total * p.end_speed),
            "valve opening against the band (same k and stroke): " + "; ".join(
                f"{o['opening'] * 1e3:g} ms: peak {o['peak'] / G0:,.0f} g, {o['speed_error']:+.1%} in speed, "
                + ("in" if o["band"].passed else f"OUTSIDE (worst excess {o['band'].worst_excess:.3g})")

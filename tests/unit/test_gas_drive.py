@@ -6,6 +6,7 @@ import pytest
 
 from shockfem.launcher.gas import GASES
 from shockfem.launcher.simple_wave import chambered_pressure_ratio
+from shockfem.machine import blowdown as B
 from shockfem.machine import gas_drive as D
 from shockfem.machine.boundary import TEMPERATURE
 from shockfem.machine.spec import read_spec
@@ -114,7 +115,7 @@ def test_verdict_names_the_gas_drive_only_where_its_numbers_make_it_the_answer(h
 def test_blowdown_thrust_coefficient_is_the_sonic_exits():
     # a sonic exit at gamma = 1.4 (ambient left out): C_F = 1.268 (Sutton, Rocket Propulsion Elements, the
     # thrust coefficient of a convergent nozzle at pressure ratio p0 / p_exit = 1.893)
-    assert D.blowdown_thrust_coefficient(1.4) == pytest.approx(1.268, abs=1e-3)
+    assert B.thrust_coefficient(1.4) == pytest.approx(1.268, abs=1e-3)
 
 
 def test_vented_gas_is_the_tank_and_cylinder_charge(helium):
@@ -138,3 +139,14 @@ def test_opening_sensitivity_reproduces_the_design_and_fails_a_slow_valve(helium
     assert first["opening"] == pytest.approx(5e-4) and first["end_speed"] == pytest.approx(helium.pulse.end_speed,
                                                                                            rel=1e-7)
     assert first["band"].passed == helium.band.passed and not last["band"].passed
+
+
+def test_blowdown_closed_form_halves_the_pressure_where_it_says():
+    # p / p0 = (1 + (gamma - 1) / 2 t / tau)^(-2 gamma / (gamma - 1)): at t = 2 tau (2^(1/5) - 1) / (gamma - 1)
+    # helium's pressure is half p0 (gamma = 5/3, the exponent -5); its impulse to a near-zero ambient is
+    # C_F A p0 tau 2 / (gamma + 1)
+    gamma, tau = 5 / 3, 0.05
+    t_half = 2 * tau * (2 ** 0.2 - 1) / (gamma - 1)
+    assert B.pressure(t_half, 1.0, tau, gamma) == pytest.approx(0.5, rel=1e-12)
+    b = B.blowdown(2.0, 0.07, 34.47e6, 1007.0, gamma, ambient=1e-9)
+    assert b.impulse == pytest.approx(B.thrust_coefficient(gamma) * 0.07 * 34.47e6 * b.time_constant * 0.75, rel=1e-6)
