@@ -219,7 +219,7 @@ def gas_drive_table(rep: Report, drives: list):
                      "yes" if x.in_band else "NO", mv.material if mv else "none", mv.piston_mass if mv else
                      float("nan"), x.stop.kind if x.stop else "-", x.stop.stroke if x.stop else float("nan"),
                      f"{lu['speed_error']:+.2%}" if lu else "-", ("yes" if lu["band"].passed else "NO") if lu else "-",
-                     "FEASIBLE" if x.feasible else "NOT FEASIBLE"])
+                     "CANDIDATE (stated valve and end)" if x.feasible else "NOT FEASIBLE"])
     rep.table("gas_drive", ["gas", "c0 [m/s]", "k = p0 A / m [g]", "peak [g]", "band: worst excess [of peak]",
                             "in the band", "piston", "piston [kg]", "catch", "catch stroke [m]",
                             "lumped gun: end speed error [-]", "lumped gun: in the band", "verdict"], rows,
