@@ -12,6 +12,11 @@ and an independent model.
   tank, the valve's flow, Lagrange gas, the air ahead, which the chambered law leaves out): its speed after the
   fall against the chambered law's, within the band's velocity-change tolerance (10%, ``metrics.shapes``);
   the error printed is what those losses cost.
+* The tank's choked blowdown after the piston has left (``machine.blowdown``): the tank's mass integrated
+  through the launcher's own orifice law (``launcher.gas.orifice_flow``, isentropic tank) against the closed
+  form p(t) = p0 (1 + (gamma - 1) / 2 t / tau)^(-2 gamma / (gamma - 1)) at t = tau and at the unchoking time,
+  and the jet's impulse C_F A int p dt to unchoking against its closed form, helium and air: exact, so the
+  integrator's rtol 1e-12 (1e-7 allowed).
 """
 from __future__ import annotations
 
@@ -27,6 +32,7 @@ K, RISE, FALL, PORT = 1.0e5, 5e-4, 5e-4, 4.5e-3     # a 10,000 g drive of 5 ms w
 PRESSURE = 34.47e6                                  # 5,000 psi [Pa]
 CLOSED_FORM_TOL = 1e-7       # the integrator's rtol 1e-10 and the closed form's quadrature
 CONSTANT_FORCE_TOL = 1e-8    # exact, the integrator's rtol 1e-10
+BLOWDOWN_TOL = 1e-7          # exact, the integrator's rtol 1e-12 over the pressure's p ~ m^gamma
 
 
 def _against_chambered(gas: str) -> list[dict]:
@@ -72,6 +78,40 @@ def _lumped() -> dict:
     return out
 
 
+def _blowdown(gas_name: str) -> list[dict]:
+    from scipy.integrate import solve_ivp
+
+    from ..launcher.gas import orifice_flow
+    from ..machine import blowdown as B
+    t0 = time.perf_counter()
+    gas, V, A = GASES[gas_name], 2.0, 0.07     # a drive's tank and bore [m^3, m^2]
+    c0, m0 = gas.sound_speed(PRESSURE, TEMPERATURE), gas.mass_for(PRESSURE, TEMPERATURE, V)
+    b = B.blowdown(V, A, PRESSURE, c0, gas.gamma)
+
+    def state(m):
+        # the tank's gas isentropic from (p0, T0): p ~ rho^gamma, T ~ rho^(gamma - 1)
+        r = m / m0
+        return PRESSURE * r ** gas.gamma, TEMPERATURE * r ** (gas.gamma - 1)
+    # the outflow to vacuum stays choked: the closed form holds to the unchoking time and past it
+    times = [b.time_constant, b.choked_time]
+    c_f = B.thrust_coefficient(gas.gamma)
+    # the tank's mass and the jet's impulse C_F p A
+    sol = solve_ivp(lambda t, y: [-orifice_flow(gas, A, *state(y[0]), 0.0), c_f * A * state(y[0])[0]],
+                    (0.0, times[-1]), [m0, 0.0], method="DOP853", rtol=1e-12, atol=[1e-12 * m0, 1e-12 * b.impulse],
+                    t_eval=times)
+    out = []
+    for t, m in zip(times, sol.y[0]):
+        out.append(check(f"gas_drive.blowdown {gas_name} p at {t * 1e3:.4g} ms [Pa]",
+                         B.pressure(t, PRESSURE, b.time_constant, gas.gamma), state(float(m))[0], BLOWDOWN_TOL,
+                         time.perf_counter() - t0, 0))
+    out.append(check(f"gas_drive.blowdown {gas_name} impulse to unchoking [N s]", b.impulse, sol.y[1, -1],
+                     BLOWDOWN_TOL, time.perf_counter() - t0, 0))
+    out[-1]["note"] = f"tau {b.time_constant * 1e3:.4g} ms, choked for {b.choked_time * 1e3:.4g} ms"
+    return out
+
+
 def gas_drive(size: str, workdir: str) -> list[dict]:
-    """(d)'s drive against the chambered closed form, the constant-force limit and the lumped gun."""
-    return _against_chambered("air") + _against_chambered("helium") + _constant_force() + [_lumped()]
+    """(d)'s drive against the chambered closed form, the constant-force limit, the lumped gun and the
+    blowdown's closed form."""
+    return (_against_chambered("air") + _against_chambered("helium") + _constant_force() + [_lumped()]
+            + _blowdown("helium") + _blowdown("air"))
