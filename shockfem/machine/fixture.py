@@ -17,14 +17,13 @@ the column's peak wall pressure times the dynamic factor read from the column's 
 a monobloc forging's Y_max = ``PRACTICAL_RATIO``, its floor VIII-2 4.6's integral flat head at the
 floor's pressure and factor (``housing.fixture_mass``).  The machine's striker carries it over the
 whole bore: the column, the piston and the article standing in it (``BORE_HEADROOM`` above its nose),
-at the same outer radius, with the metering pin and the oil.  The column designer's striker already
-carries its pressurised housing; if the machine's longer housing, at the outer radius its wall needs,
-outweighs the asked ratio, the striker is the ratio where that housing (pin and oil with it) weighs it,
-found both ways from the asked ratio (``striker_fixed_point``: a heavier striker closes slower and needs a
-thinner wall), each trial a new dashpot design.  The column designer's own striker may be heavier (it
-weighs its pressurised housing on the closed-form design before its search, ``column_design
-.carried_ratio``): that striker then stands, the housing drawn at the radius that weighs it, and the wall
-does not set it.  Beyond Y_max the housing is drawn at
+at the same outer radius, with the metering pin and the oil.  The striker is the column designer's fixed
+point of its found design (``programmer.fixed_point.striker_fixed_point``, both ways from the designer's
+start, never below the spec's ratio, to its tolerance): the ratio at which this housing, at the outer
+radius its wall needs, with pin and oil, weighs the striker (a heavier striker closes slower and needs a
+thinner wall); where the designer keeps a heavier striker (the fixed point's design outside a check, or
+the search unconverged: ``design["column_design"]["striker_fixed_point"]`` says which), the housing is
+drawn at the radius that weighs it and the wall does not set it.  Beyond Y_max the housing is drawn at
 Y_max and its limit is broken by how far its wall ratio is past it.
 
 What it leaves out: the bodies' elasticity (the fixture study's finite-element runs), the column's own
@@ -38,7 +37,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
-from ..programmer.column_design import STRIKER_TOLERANCE, design_on_column
+from ..programmer.column_design import design_on_column
 from ..programmer.dashpot_design import DASHPOT
 from ..programmer.housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, THICK_PLATE, floor_for,
                                   held_pressure)
@@ -49,10 +48,6 @@ from .spec import REFERENCE_ARTICLE, MachineSpec
 
 # the free length left in the bore above the article's nose [m]
 BORE_HEADROOM = 0.02
-# the striker ratio has converged when its housing at the wall's radius weighs it to this share (the
-# column designer's own striker tolerance, ``column_design.STRIKER_TOLERANCE``: each design is a search)
-RATIO_TOL = STRIKER_TOLERANCE
-MAX_REDESIGNS = 6
 # the oil's specific heat [J/(kg K)] (the design liquid's, ``programmer.liquids.MINERAL_OIL``)
 OIL_HEAT_CAPACITY = MINERAL_OIL.heat_capacity
 LIQUID = MINERAL_OIL
@@ -163,7 +158,7 @@ def striker_housing(d: dict, weight: dict, depth: float, steel: str) -> Housing:
     """The housing over the whole bore ``depth`` at the wall and floor ``weight`` (``housing.fixture_mass``)
     sized (its wall at most Y_max), or, where the design's striker is heavier, at the outer radius that
     weighs it; both radii are kept, and the mass at the wall's own radius (what the striker must at least
-    be, ``striker_fixed_point``)."""
+    be: the designer's fixed point, ``design_fixture``)."""
     rho = HOUSING_STEELS[steel].density
     r, t = d["bore_radius"], weight["floor_thickness"]
     carried = weight["pin"] + d["liquid_mass"]
@@ -177,85 +172,33 @@ def striker_housing(d: dict, weight: dict, depth: float, steel: str) -> Housing:
     return Housing(R, t, depth, steel_of(R), steel_of(R) + carried, R_wall, R_mass, steel_of(R_wall) + carried)
 
 
-@dataclass(frozen=True)
-class FixedPoint:
-    """The striker ratio ``striker_fixed_point`` settles on and the design made at it."""
-    ratio: float
-    needed: float                 # what the housing at its wall's radius asks at ``ratio`` [-]
-    state: object                 # the evaluation's design at ``ratio``
-    redesigns: int                # designs after the first
-    binds: bool                   # the wall sets the ratio (above the least, at the fixed point)
-
-
-def striker_fixed_point(needed_at, least: float, tol: float = RATIO_TOL, most: int = MAX_REDESIGNS) -> FixedPoint:
-    """The striker ratio r at which the housing at its own wall's radius (pin and oil with it) weighs r times
-    the payload, never below ``least``.  ``needed_at(r)`` designs at r and returns (the ratio that housing
-    needs, the ratio the design's striker has: at least r, more where the design's own rule asks it, the
-    design).  A heavier striker closes slower, so the pressure and the wall fall: needed - ratio decreases
-    with the ratio, and the fixed point is bracketed by a design where it is positive and needed there
-    (where it is not), then found by false position (Illinois) both ways within the bracket, to ``tol`` of
-    the ratio.  A first design whose striker already carries its housing ends the search (the wall does not
-    set it); at ``most`` redesigns unconverged, the heavier end of the bracket (a striker that carries it)."""
-    need, lo, state = needed_at(least)
-    if need <= lo * (1 + tol):
-        return FixedPoint(lo, need, state, 0, lo > least and need >= lo * (1 - tol))
-    g_lo, hi = need - lo, need
-    need_hi, hi, state_hi = needed_at(hi)
-    g_hi, k, side = need_hi - hi, 1, 0
-    if abs(g_hi) <= tol * hi:
-        return FixedPoint(hi, need_hi, state_hi, k, True)
-    if g_hi > 0:                     # not decreasing here after all: the heavier striker is the answer
-        return FixedPoint(hi, need_hi, state_hi, k, False)
-    while k < most:
-        need_x, x, state_x = needed_at(lo - g_lo * (hi - lo) / (g_hi - g_lo))
-        k, g = k + 1, need_x - x
-        if abs(g) <= tol * x:
-            return FixedPoint(x, need_x, state_x, k, True)
-        # Illinois: an end kept twice running has its mismatch halved, so the bracket closes from both sides
-        if g > 0:
-            lo, g_lo = x, g
-            g_hi = g_hi / 2 if side == 1 else g_hi
-            side = 1
-        else:
-            hi, g_hi, need_hi, state_hi = x, g, need_x, state_x
-            g_lo = g_lo / 2 if side == -1 else g_lo
-            side = -1
-    return FixedPoint(hi, need_hi, state_hi, k, False)
-
-
 def design_fixture(spec: MachineSpec, echo=None, evaluations: int = DESIGN_EVALUATIONS,
                    search_cells: int = SEARCH_CELLS, steel: str = HOUSING_STEEL) -> Fixture:
-    """The dashpot for the spec's article and pulse on the column, and the striker that carries it: at the
-    spec's striker ratio, or, where the housing over the whole bore at its wall's radius outweighs it, at
-    the ratio where the two agree (``striker_fixed_point``)."""
+    """The dashpot for the spec's article and pulse on the column, and the striker that carries it: the
+    column designer's fixed point of the found design (``programmer.fixed_point.striker_fixed_point``,
+    never below the spec's striker ratio) with the housing this fixture draws over the whole bore at its
+    wall's radius, pin and oil with it (``striker_housing``)."""
     L_article = article_length(spec)
-    runs = 0
 
-    def needed_at(ratio):
-        nonlocal runs
-        out = design_on_column(spec.pulse, spec.article_mass, 0.0, LIQUID, ratio, evaluations, search_cells,
-                               steel=steel, echo=echo, pin_iterations=PIN_ITERATIONS)
-        runs += out["evaluations"] + 2
-        d, weight, run = out["design"], out["fixture"], out["runs"]["column"]
-        if run is None:
-            raise ValueError(f"fixture: the column dashpot designed for the striker ratio {ratio:.3g} did not run "
-                               f"({out['walls'].get('column_error', '')})")
+    def housing_of(out):
+        d, weight = out["design"], out["fixture"]
+        if out["runs"]["column"] is None:
+            raise ValueError(f"fixture: the column dashpot designed for the striker ratio "
+                             f"{d['striker_mass'] / d['payload_mass']:.3g} did not run "
+                             f"({out['walls'].get('column_error', '')})")
         depth = d["column"] + DASHPOT["piston_thickness"] + L_article + BORE_HEADROOM
-        housing = striker_housing(d, weight, depth, steel)
-        if echo:
-            echo(f"  striker ratio {ratio:.4g} asked (the column designer's {d['striker_mass'] / d['payload_mass']:.4g}): "
-                 f"its housing at the wall's radius asks {housing.wall_mass / d['payload_mass']:.4g}")
-        return housing.wall_mass / d["payload_mass"], max(ratio, d["striker_mass"] / d["payload_mass"]), (out, housing)
-    # the column designer's striker is at least the ratio asked of it and at least what carries its own
-    # pressurised housing (``column_design.carried_ratio``, iterated on the closed-form design at the search's
-    # start handles, before its search): where that is heavier than the housing at the found design's wall
-    # needs, the striker is the designer's and the wall does not set it
-    fp = striker_fixed_point(needed_at, spec.striker_ratio)
-    out, housing = fp.state
-    return _fixture(spec, out, housing, fp, runs, L_article, steel)
+        return striker_housing(d, weight, depth, steel)
+
+    def carried(out):
+        return housing_of(out).wall_mass / out["design"]["payload_mass"]
+    out = design_on_column(spec.pulse, spec.article_mass, 0.0, LIQUID, spec.striker_ratio, evaluations, search_cells,
+                           steel=steel, echo=echo, pin_iterations=PIN_ITERATIONS, carried=carried)
+    # the column runs of every design made: the search's and each confirmation's two on the column
+    runs = out["evaluations"] + 2 * (1 + out["striker_fixed_point"]["redesigns"])
+    return _fixture(spec, out, housing_of(out), runs, L_article, steel)
 
 
-def _fixture(spec, out: dict, housing: Housing, fp: FixedPoint, runs: int, L_article: float, steel: str) -> Fixture:
+def _fixture(spec, out: dict, housing: Housing, runs: int, L_article: float, steel: str) -> Fixture:
     d, weight, run = out["design"], out["fixture"], out["runs"]["column"]
     pulse, band = spec.pulse.band(run.t, run.acceleration)
     r, R = d["bore_radius"], housing.outer_radius
@@ -270,16 +213,17 @@ def _fixture(spec, out: dict, housing: Housing, fp: FixedPoint, runs: int, L_art
     payload_after, striker_after = float(run.payload_speed[-1]), float(run.striker_speed[-1])
     taken = oil_work(run, d)
     record = {k: out[k] for k in ("verdict", "models", "walls", "evaluations", "search_wall", "closed_form_bore",
-                                  "lumped_agrees", "objective")}
+                                  "lumped_agrees", "objective", "striker_fixed_point")}
+    fp = out["striker_fixed_point"]
     record["housing"] = weight
     fixture = Fixture(
         spec.article_mass, spec.diameter, L_article, r, d["piston_mass"], d["payload_mass"],
         housing.striker_mass / d["payload_mass"], housing.striker_mass, d["striker_speed"], d["liquid_mass"], d["column"], float(run.stroke.max()),
         weight["peak_pressure"], R, housing.floor + housing.depth, housing.floor, housing.depth, housing.steel_mass,
-        fp.binds, wall_stress, floor_stress, allowed, pulse.peak, pulse.duration,
+        fp["binds"], wall_stress, floor_stress, allowed, pulse.peak, pulse.duration,
         pulse.velocity_change, bool(band.passed), float(band.worst_excess), payload_after, striker_after,
         float(np.trapz(run.striker_speed, run.t)), float(np.trapz(run.payload_speed, run.t)),
-        taken / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, fp.redesigns, {**d, "column_design": record},
+        taken / (d["liquid_mass"] * OIL_HEAT_CAPACITY), runs, fp["redesigns"], {**d, "column_design": record},
         taken, (payload_after - striker_after) / d["striker_speed"], steel)
     fixture.verdict = out["verdict"]
     fixture.pin_mass = weight["pin"]

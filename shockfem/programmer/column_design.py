@@ -36,10 +36,18 @@ pin, each next one on the last one's cut pin (its shape carried to the trial han
 point, ``carried_pin``), the pin cut again after each, until the handles settle; the round of the least
 score at the design grid is kept, never worse than the quasi-steady handles cut after.
 
-The striker carries the housing: before the search, the striker over the payload is iterated with the
-housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
-below ``STRIKER_RATIO``; the confirmed design reports its striker against what carries its own housing
-and the closing speed the band then takes (``striker_report``).
+The striker carries the housing of the design found.  The handles are searched at a start: the striker
+that carries the housing of the closed-form design at the start handles (``carried_ratio``), whose
+pressure is not the found design's.  The striker is then the fixed point of the found design with its
+own housing, pin and oil (``carried_ratio_of``; ``fixed_point.striker_fixed_point``): both ways from the
+start, never below the ratio asked, to ``STRIKER_TOLERANCE``, each trial ratio the found handles designed
+again at it (their closed-form bore and collision law at that striker), searched again from them where
+that design is not ``admissible``.  A lighter striker closes faster and raises the pressure, so the
+design kept is inside every vetoing check and its housing's limits where any trial is (``admissible``),
+and the record (``striker_fixed_point``) says when the search did not converge.  The confirmed design
+reports its striker against what carries its own housing and the closing speed the band then takes
+(``striker_report``).  A caller whose striker carries more (the machine's housing over the whole bore)
+passes its own ``carried``.
 
 The closed-form limits, before any design (``contact_pressure_limit``, ``upstream_pressure_limit``): the
 closing speed above which the least front at contact, reflected at the floor and as a step, exceeds
@@ -51,6 +59,7 @@ from __future__ import annotations
 
 import math
 import time
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import brentq, minimize
@@ -64,6 +73,7 @@ from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RAT
 from .dashpot_validity import Limit, column_holds, dashpot_limits, lumped_holds
 from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE, fixture_mass, held_pressure,
                       step_factor)
+from .fixed_point import STRIKER_TOLERANCE, striker_fixed_point
 from .jet_load import jet_load
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
@@ -187,15 +197,20 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
                      steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None,
                      largest_ratio: float = VALID_AREA_RATIO, pin_iterations: int = PIN_ITERATIONS,
-                     pin_rounds: int = PIN_ROUNDS) -> dict:
+                     pin_rounds: int = PIN_ROUNDS, carried=None) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
-    The striker is at least ``striker_ratio`` times the payload and at least what carries the housing
-    (``carried_ratio`` before the search; after it, the found handles are confirmed again at a heavier
-    striker while its own housing outweighs the one it has).  Returns a dict: the design, its runs (``column``, ``search_column``,
+    The striker is at least ``striker_ratio`` times the payload and carries the housing of the design
+    found: the handles are searched at ``carried_ratio`` (the closed-form design's, a start), and the
+    striker is then the fixed point of the found design with its housing (``fixed_point
+    .striker_fixed_point``, both ways, to ``STRIKER_TOLERANCE``): at each trial ratio the found handles
+    are designed again, and searched again from them where that design is not ``admissible``.
+    ``carried(out)``: the ratio a confirmed design's striker must be (default ``carried_ratio_of``: its
+    pressurised housing, pin and oil with the striker's structure).  Returns a dict: the design, its runs (``column``, ``search_column``,
     ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
-    ``steel`` by ``rule``), the striker (``striker``), the wall times, and ``verdict``: "inside" (band
+    ``steel`` by ``rule``), the striker (``striker``) and its fixed point's record (``striker_fixed_point``:
+    the trials, whether it converged and why its design was kept), the wall times, and ``verdict``: "inside" (band
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
     pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
     "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
@@ -205,68 +220,146 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     first on the last one's pin cut at ``cells`` (``search_rounds``; 1: the handles searched on the
     quasi-steady pin alone, the pin cut after); ``search_rounds`` in the result holds each round's record,
     ``objective`` the kept design's score."""
-    end, law = pulse.record_end(), OrificeLaw(largest_ratio=largest_ratio)
-    striker_ratio = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule,
-                                  law)
-    base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
+    law, carried = OrificeLaw(largest_ratio=largest_ratio), carried or carried_ratio_of
+    start = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule, law)
+    designer = _Designer(pulse, article_mass, seat_mass, liquid, law, evaluations, search_cells, cells, steel, rule,
+                         pin_iterations, pin_rounds if pin_iterations else 1)
+    found = designer.searched(start)
 
-    def design(h, correction, ratio=striker_ratio, bore=base):
-        return carried_pin(_design(pulse, article_mass, seat_mass, liquid, bore, h, ratio, law), correction)
-
-    def search(correction, start):
-        liquid_column = liquid.column()
-
-        def objective(h):
-            if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
-                return 100.0
-            d = design(h, correction)
-            try:
-                run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
-            except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
-                return 50.0
-            return design_objective(d, run, pulse, liquid, steel, rule)
-        return minimize(objective, np.array(start), method="Nelder-Mead",
-                        options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
-
-    def cut_on_design_grid(d):
-        return _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
-
-    t0 = time.perf_counter()
-    d, handles, correction, fun, rounds = search_rounds(search, design, cut_on_design_grid,
-                                                        pin_rounds if pin_iterations else 1)
-    search_wall = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
-    for _ in range(STRIKER_ITERATIONS):            # the found design's own housing heavier than its striker
-        if out["striker"] is None or out["striker"]["carries"]:
-            break
-        striker_ratio = out["striker"]["carrying"] / d["payload_mass"]
-        base = closed_form_bore(pulse, article_mass, seat_mass, liquid, striker_ratio, law)
-        d = cut_on_design_grid(design(handles, correction, striker_ratio, base))
-        out = confirm(d, pulse, liquid, search_cells, cells, steel, rule)
-    out.update(closed_form_bore=base, evaluations=sum(r["evaluations"] for r in rounds), search_wall=search_wall,
-               objective=fun, search_rounds=rounds, confirm_wall=time.perf_counter() - t0)
+    def needed_at(ratio):
+        state = found if ratio == start else designer.reused(found, ratio)
+        if not admissible(state) and ratio != start:
+            state = designer.searched(ratio, state.handles)
+        need = carried(state.out)
+        if echo:
+            echo(f"  striker ratio {ratio:.4g}: its housing asks {need:.4g} ({state.how}, {state.out['verdict']})")
+        return need, state
+    fp = striker_fixed_point(needed_at, striker_ratio, start, admissible=admissible)
+    out = fp.state.out
+    out.update(closed_form_bore=fp.state.bore, evaluations=designer.evaluations, search_wall=designer.search_wall,
+               objective=fp.state.objective, search_rounds=fp.state.rounds, confirm_wall=designer.confirm_wall,
+               striker_fixed_point=fp.record())
     if echo:
-        echo(f"  dashpot on the column ({liquid.name}): {out['evaluations']} runs in {len(rounds)} rounds, "
-             f"{search_wall:.0f} s, {out['verdict']}")
-        if "pin_cut" in d:
+        echo(f"  dashpot on the column ({liquid.name}): {out['evaluations']} runs, {designer.search_wall:.0f} s, "
+             f"{out['verdict']}; striker {fp.ratio:.4g} payloads in {fp.redesigns} redesigns ({fp.kept})")
+        if "pin_cut" in out["design"]:
             echo("  pin cut on the column, peak overshoot by iteration: "
-                 + " ".join(f"{s['overshoot']:+.2f}" for s in d["pin_cut"]["steps"]) + f" ({d['pin_cut']['stop']})")
+                 + " ".join(f"{s['overshoot']:+.2f}" for s in out["design"]["pin_cut"]["steps"])
+                 + f" ({out['design']['pin_cut']['stop']})")
     return out
 
 
-def search_rounds(search, design, cut, rounds: int) -> tuple:
+def admissible(state) -> bool:
+    """A design the striker's fixed point may keep: inside every vetoing check of the column's, its
+    housing within the practical wall ratio, its pin holding, the band passed (``confirm``'s verdict
+    "inside"), and its floor within the flat-head formula's thin-plate range."""
+    out = state.out
+    return out["verdict"] == "inside" and not out["fixture"]["floor_thick"]
+
+
+def carried_ratio_of(out: dict) -> float:
+    """The striker over the payload that carries a confirmed design's own housing, pin and oil
+    (``carried_by``)."""
+    return carried_by(out["fixture"]) / out["design"]["payload_mass"]
+
+
+def carried_by(weight: dict) -> float:
+    """The least striker [kg] that carries a weighed fixture's (``weigh``) housing, pin and oil with its
+    own structure (``dashpot_design.striker_carrying``)."""
+    return striker_carrying(weight["housing_carried"] + weight["pin"], weight["liquid"])
+
+
+@dataclass(frozen=True)
+class Designed:
+    """A confirmed design (``confirm``'s dict) with what made it: its handles and pin correction (to
+    design again at another striker), the closed-form bore, its score, its search rounds and how."""
+    out: dict
+    handles: tuple
+    correction: object
+    bore: float
+    objective: float
+    rounds: list
+    how: str
+
+
+class _Designer:
+    """The column designer's two ways to a design at a striker ratio: the handles searched
+    (``searched``, ``search_rounds``) or the handles found at another ratio reused (``reused``), each
+    confirmed; it keeps the runs and wall time they took."""
+
+    def __init__(self, pulse, article_mass, seat_mass, liquid, law, evaluations, search_cells, cells, steel, rule,
+                 pin_iterations, rounds):
+        self.pulse, self.article_mass, self.seat_mass, self.liquid, self.law = pulse, article_mass, seat_mass, liquid, law
+        self.max_evaluations, self.search_cells, self.cells, self.steel, self.rule = (evaluations, search_cells, cells,
+                                                                                       steel, rule)
+        self.pin_iterations, self.rounds = pin_iterations, rounds
+        self.evaluations, self.search_wall, self.confirm_wall = 0, 0.0, 0.0
+
+    def bore(self, ratio):
+        return closed_form_bore(self.pulse, self.article_mass, self.seat_mass, self.liquid, ratio, self.law)
+
+    def design(self, h, correction, ratio, bore):
+        return carried_pin(_design(self.pulse, self.article_mass, self.seat_mass, self.liquid, bore, h, ratio,
+                                   self.law), correction)
+
+    def cut(self, d):
+        return _cut(d, self.pulse, self.liquid, self.cells, self.pin_iterations, self.steel, self.rule)
+
+    def confirm(self, d):
+        t0 = time.perf_counter()
+        out = confirm(d, self.pulse, self.liquid, self.search_cells, self.cells, self.steel, self.rule)
+        self.confirm_wall += time.perf_counter() - t0
+        return out
+
+    def searched(self, ratio, start=START) -> Designed:
+        """The handles searched at ``ratio`` from ``start`` (``search_rounds``), the kept design confirmed."""
+        bore, end, column = self.bore(ratio), self.pulse.record_end(), self.liquid.column()
+
+        def design(h, correction):
+            return self.design(h, correction, ratio, bore)
+
+        def search(correction, start):
+            def objective(h):
+                if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
+                    return 100.0
+                d = design(h, correction)
+                try:
+                    run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, self.search_cells, column)
+                except (RuntimeError, ValueError):    # the piston reached the floor; a striker lighter than its oil
+                    return 50.0
+                return design_objective(d, run, self.pulse, self.liquid, self.steel, self.rule)
+            return minimize(objective, np.array(start), method="Nelder-Mead",
+                            options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": self.max_evaluations})
+        t0 = time.perf_counter()
+        d, handles, correction, fun, rounds = search_rounds(search, design, self.cut, self.rounds, start)
+        self.search_wall += time.perf_counter() - t0
+        self.evaluations += sum(r["evaluations"] for r in rounds)
+        return Designed(self.confirm(d), handles, correction, bore, fun, rounds, "searched")
+
+    def reused(self, found: Designed, ratio) -> Designed:
+        """The ``found`` design's handles and pin correction at ``ratio`` (the closed form's bore for it),
+        its pin cut and confirmed; its score the search's objective on its column at the design grid."""
+        bore = self.bore(ratio)
+        out = self.confirm(self.cut(self.design(found.handles, found.correction, ratio, bore)))
+        run = out["runs"]["column"]
+        score = (design_objective(out["design"], run, self.pulse, self.liquid, self.steel, self.rule)
+                 if run is not None else math.inf)
+        return Designed(out, found.handles, found.correction, bore, score, [], "handles reused")
+
+
+def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
     """The handles searched with the pin they get: round 0 searches (``search(correction, start)``, a
     Nelder-Mead result) on the quasi-steady pin, and its design's pin is cut (``cut(design)``, at the
     design grid); each next round searches from the last one's handles on the quasi-steady pin times the
-    correction that cut found (``pin_correction``), and cuts its own design's pin from there.  At most
+    correction that cut found (``pin_correction``), and cuts its own design's pin from there (the first
+    round from ``start``: ``START``, or the handles found at another striker).  At most
     ``rounds``; they stop once no handle moved by more than ``HANDLES_SETTLED`` of itself.  Of the
     rounds' cut designs the one of the least score (the cut's, the search's objective at the design grid)
     is kept: round 0 is the handles searched on the quasi-steady pin and cut after, so the kept design
     is never worse than that.  Returns the kept cut design, its handles, the correction that reproduces
     its cut pin on them, its score, and each round's record (handles, search objective, runs, the cut's
     score and why it stopped)."""
-    correction, start, kept, history = None, START, None, []
+    correction, kept, history = None, None, []
     for k in range(rounds):
         res = search(correction, start)
         h = tuple(res.x)
@@ -389,36 +482,34 @@ def housing_ratio(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RUL
     return weight["peak_pressure"] * weight["dynamic_factor"] / weight["holdable_pressure"]
 
 
-# the striker's fixed point with its housing: at most this many column runs, to this share of its mass
-STRIKER_ITERATIONS, STRIKER_TOLERANCE = 4, 0.02
+# the closed-form striker's fixed point with its housing (``carried_ratio``, the search's start): at most
+# this many column runs
+STRIKER_ITERATIONS = 4
 
 
 def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liquid: DesignLiquid,
                   least_ratio: float = STRIKER_RATIO, cells: int = SEARCH_CELLS, steel: str = HOUSING_STEEL,
                   rule: str = WALL_RULE, law: OrificeLaw = AREA_RATIO) -> float:
-    """The striker over the payload that carries the housing its own design needs: the larger of
-    ``least_ratio`` and ``dashpot_design.striker_carrying`` (housing, liquid and structure) over the
-    payload, the housing weighed on the column's run (``cells``) of the closed-form design at the bore
-    A0 for that striker (beyond the practical wall ratio, the heaviest housing a monobloc gives: the
-    design is then outside, and the striker its best case).  A fixed point (a heavier striker closes slower, so the pressure and the
-    housing fall): ``STRIKER_ITERATIONS`` at most, to ``STRIKER_TOLERANCE``."""
-    ratio = least_ratio
-    for _ in range(STRIKER_ITERATIONS):
+    """The striker over the payload that carries the housing its own design needs, never below
+    ``least_ratio``: ``carried_by`` (housing, pin, liquid and structure) over the payload, the housing
+    weighed on the column's run (``cells``) of the closed-form design at the bore A0 for that striker
+    (beyond the practical wall ratio, the heaviest housing a monobloc gives: the design is then outside,
+    and the striker its best case).  The closed form's fixed point (``fixed_point.striker_fixed_point``,
+    ``STRIKER_ITERATIONS`` runs at most, to ``STRIKER_TOLERANCE``): the start of the search, whose found
+    design then has its own (``design_on_column``).  A design whose piston reaches the floor, or whose
+    housing no finite striker carries, keeps the striker it was made at."""
+    end, column = pulse.record_end(), liquid.column()
+
+    def needed_at(ratio):
         d = _design(pulse, article_mass, seat_mass, liquid,
                     closed_form_bore(pulse, article_mass, seat_mass, liquid, ratio, law), START, ratio, law)
         try:
-            run = simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, cells, liquid.column())
-        except (RuntimeError, ValueError):        # the piston reached the floor: keep the last striker
-            break
-        w = weigh(d, run, steel, rule)
-        needed = max(least_ratio, striker_carrying(w["housing_carried"], w["liquid"]) / d["payload_mass"])
-        if not math.isfinite(needed):
-            break
-        converged = abs(needed / ratio - 1.0) <= STRIKER_TOLERANCE
-        ratio = needed
-        if converged:
-            break
-    return ratio
+            run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, cells, column)
+        except (RuntimeError, ValueError):        # the piston reached the floor: keep this striker
+            return ratio, None
+        needed = carried_by(weigh(d, run, steel, rule)) / d["payload_mass"]
+        return (needed if math.isfinite(needed) else ratio), None
+    return striker_fixed_point(needed_at, least_ratio, most=STRIKER_ITERATIONS - 1).ratio
 
 
 def striker_report(d: dict, pulse: PulseSpec, weight: dict) -> dict:
@@ -426,7 +517,7 @@ def striker_report(d: dict, pulse: PulseSpec, weight: dict) -> dict:
     speed and the least closing speed the band takes (its velocity change at the band's floor, by the
     collision law at that striker: dV (1 + m / M)) [m/s]."""
     m, M = d["payload_mass"], d["striker_mass"]
-    carrying = striker_carrying(weight["housing_carried"], weight["liquid"])
+    carrying = carried_by(weight)
     return {"mass": M, "carrying": carrying, "carries": bool(M >= carrying * (1.0 - STRIKER_TOLERANCE)),
             "ratio": M / m, "closing_speed": d["striker_speed"],
             "least_closing_speed": striker_speed(m, M, pulse.least_velocity_change())}

@@ -112,7 +112,7 @@ def test_the_closed_form_limits_read_one_wall_and_one_factor():
 
 
 def test_the_striker_carries_its_housing_and_sets_the_closing_speed():
-    """``striker_report``: the least striker is (housing + liquid) x 1.2; the least closing speed is the
+    """``striker_report``: the least striker is (housing + pin + liquid) x 1.2; the least closing speed is the
     band floor's velocity change times 1 + m / M (the collision law at restitution 0), the band's being
     the checked trapezoid's (10% ramps: 0.9 A T) within 10%, not the rectangle's A T."""
     from shockfem.programmer.column_design import striker_report
@@ -120,8 +120,8 @@ def test_the_striker_carries_its_housing_and_sets_the_closing_speed():
     from shockfem.units import G0
     pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
     d = {"payload_mass": 6.0, "striker_mass": 400.0, "striker_speed": 500.0}
-    r = striker_report(d, pulse, {"housing_carried": 300.0, "liquid": 10.0})
-    assert r["carrying"] == pytest.approx(372.0, rel=1e-12) and r["carries"]
+    r = striker_report(d, pulse, {"housing_carried": 300.0, "pin": 5.0, "liquid": 10.0})
+    assert r["carrying"] == pytest.approx(378.0, rel=1e-12) and r["carries"]      # (300 + 5 + 10) 1.2
     trapezoid = 0.9 * 10_000 * G0 * 5e-3                  # A (T - the two half ramps), by hand
     assert r["least_closing_speed"] == pytest.approx(0.9 * trapezoid * (1 + 6.0 / 400.0), rel=1e-9)
 
@@ -132,7 +132,7 @@ def test_the_carried_striker_is_a_fixed_point_with_its_housing():
     ten payloads (the housing is hundreds of kilograms at these pressures)."""
     from shockfem.programmer import column_design as cd
     from shockfem.programmer.column_dashpot import simulate_column
-    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, PulseSpec, dashpot_lumped, striker_carrying
+    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, PulseSpec, dashpot_lumped
     from shockfem.programmer.liquids import MINERAL_OIL as oil
     from shockfem.units import G0, LB
     pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
@@ -140,5 +140,4 @@ def test_the_carried_striker_is_a_fixed_point_with_its_housing():
     d = cd._design(pulse, 12 * LB, 0.0, oil, cd.closed_form_bore(pulse, 12 * LB, 0.0, oil, ratio), cd.START, ratio)
     w = cd.weigh(d, simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, 40, oil.column()))
     assert ratio > 10.0
-    assert d["striker_mass"] == pytest.approx(striker_carrying(w["housing_carried"], w["liquid"]),
-                                              rel=2 * cd.STRIKER_TOLERANCE)
+    assert d["striker_mass"] == pytest.approx(cd.carried_by(w), rel=2 * cd.STRIKER_TOLERANCE)

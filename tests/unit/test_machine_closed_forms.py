@@ -164,35 +164,6 @@ def test_sabot_cone_holds_its_hoop_and_meridional_stress():
     assert cone.thickness[-1] == pytest.approx(p * R / (S * math.cos(math.pi / 4)), rel=1e-9)
 
 
-def test_striker_fixed_point_searches_both_ways():
-    """The striker's housing at its wall's radius falls as the striker grows (a slower closing, a lower
-    peak): a first design at the asked ratio 10 asks 84.7 (the 12 lb machine's first pass); the ratio at
-    which the housing weighs the striker is the root of needed(r) = r, here 31.1, which the old upward-only
-    loop (stop when needed <= ratio) never went below: it kept 84.7."""
-    from scipy.optimize import brentq
-    from shockfem.machine.fixture import RATIO_TOL, striker_fixed_point
-
-    def needed(r):
-        return 25.0 + 59.7 * (10.0 / r) ** 2
-    calls = []
-
-    def needed_at(r):
-        calls.append(r)
-        return needed(r), r, ("design at", r)
-    root = brentq(lambda r: needed(r) - r, 10.0, 84.7)
-    fp = striker_fixed_point(needed_at, 10.0)
-    assert fp.binds and abs(fp.needed / fp.ratio - 1) <= RATIO_TOL
-    assert fp.ratio == pytest.approx(root, rel=RATIO_TOL) and fp.ratio < 0.5 * 84.7
-    assert fp.state == ("design at", fp.ratio) and fp.redesigns == len(calls) - 1
-    # a housing lighter than the asked striker: the asked ratio stands and the wall does not set it
-    fp = striker_fixed_point(lambda r: (5.0, r, r), 10.0)
-    assert fp.ratio == 10.0 and not fp.binds and fp.redesigns == 0
-    # a design whose own rule gives a heavier striker than its housing at the wall needs (the column
-    # designer's carried ratio): that striker stands, the wall does not set it, and no design is made again
-    fp = striker_fixed_point(lambda r: (needed(84.7), 84.7, r), 10.0)
-    assert fp.ratio == 84.7 and not fp.binds and fp.redesigns == 0
-
-
 @pytest.mark.parametrize("architecture", ["launched-chain", "stack-on-anvil"])
 def test_effective_restitution_recovers_the_rigid_chain(architecture):
     masses = [900.0, 300.0, 100.0, 33.0]
