@@ -42,9 +42,9 @@ pressure is not the found design's.  The striker is then the fixed point of the 
 own housing, pin and oil (``carried_ratio_of``; ``fixed_point.striker_fixed_point``): both ways from the
 start, never below the ratio asked, to ``STRIKER_TOLERANCE``, each trial ratio the found handles designed
 again at it (their closed-form bore and collision law at that striker), searched again from them where
-that design is not ``admissible``.  A lighter striker closes faster and raises the pressure, so the
-design kept is inside every vetoing check and its housing's limits where any trial is (``admissible``),
-and the record (``striker_fixed_point``) says when the search did not converge.  The confirmed design
+that design breaks a check the found one holds.  A lighter striker closes faster and raises the
+pressure, so the design kept holds every vetoing check and housing limit the found design holds, where any
+trial carrying its housing does (``admissible``, ``design_checks``), and the record (``striker_fixed_point``) says when the search did not converge.  The confirmed design
 reports its striker against what carries its own housing and the closing speed the band then takes
 (``striker_report``).  A caller whose striker carries more (the machine's housing over the whole bore)
 passes its own ``carried``.
@@ -205,7 +205,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     found: the handles are searched at ``carried_ratio`` (the closed-form design's, a start), and the
     striker is then the fixed point of the found design with its housing (``fixed_point
     .striker_fixed_point``, both ways, to ``STRIKER_TOLERANCE``): at each trial ratio the found handles
-    are designed again, and searched again from them where that design is not ``admissible``.
+    are designed again, and searched again from them where that design breaks a check the found one holds
+    (``admissible``).
     ``carried(out)``: the ratio a confirmed design's striker must be (default ``carried_ratio_of``: its
     pressurised housing, pin and oil with the striker's structure).  Returns a dict: the design, its runs (``column``, ``search_column``,
     ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
@@ -226,15 +227,19 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                          pin_iterations, pin_rounds if pin_iterations else 1)
     found = designer.searched(start)
 
+    def kept(state):
+        return admissible(state.out, found.out)
+
     def needed_at(ratio):
         state = found if ratio == start else designer.reused(found, ratio)
-        if not admissible(state) and ratio != start:
-            state = designer.searched(ratio, state.handles)
+        if not kept(state):
+            again = designer.searched(ratio, state.handles)
+            state = again if kept(again) or again.objective <= state.objective else state
         need = carried(state.out)
         if echo:
             echo(f"  striker ratio {ratio:.4g}: its housing asks {need:.4g} ({state.how}, {state.out['verdict']})")
         return need, state
-    fp = striker_fixed_point(needed_at, striker_ratio, start, admissible=admissible)
+    fp = striker_fixed_point(needed_at, striker_ratio, start, admissible=kept)
     out = fp.state.out
     out.update(closed_form_bore=fp.state.bore, evaluations=designer.evaluations, search_wall=designer.search_wall,
                objective=fp.state.objective, search_rounds=fp.state.rounds, confirm_wall=designer.confirm_wall,
@@ -249,12 +254,24 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     return out
 
 
-def admissible(state) -> bool:
-    """A design the striker's fixed point may keep: inside every vetoing check of the column's, its
-    housing within the practical wall ratio, its pin holding, the band passed (``confirm``'s verdict
-    "inside"), and its floor within the flat-head formula's thin-plate range."""
-    out = state.out
-    return out["verdict"] == "inside" and not out["fixture"]["floor_thick"]
+def design_checks(out: dict) -> dict:
+    """A confirmed design's checks a lighter striker (a faster closing, a higher pressure) can break:
+    the column's vetoing checks (the laws' ranges), its housing within the practical wall ratio, its pin
+    at the steel's S, its floor within the flat-head formula's thin-plate range; each True where it holds."""
+    col, weight = out["models"].get("column"), out["fixture"]
+    if col is None or weight is None:
+        return {"the column ran": False}
+    return {"the column ran": True, "the column's vetoing checks": col["holds"],
+            "a housing within Y_max": weight["housing_holds"], "the pin at S": weight["pin_holds"],
+            "the floor's thin-plate range": not weight["floor_thick"]}
+
+
+def admissible(out: dict, reference: dict) -> bool:
+    """A design the striker's fixed point may keep: every check that holds for the ``reference`` design
+    (the search's, at the start) holds for it too (``design_checks``), so the striker's search never takes
+    the design into a region where one of its models or the housing's rules does not hold."""
+    held = design_checks(out)
+    return all(held.get(name, False) for name, ok in design_checks(reference).items() if ok)
 
 
 def carried_ratio_of(out: dict) -> float:
@@ -491,7 +508,8 @@ def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liqui
                   least_ratio: float = STRIKER_RATIO, cells: int = SEARCH_CELLS, steel: str = HOUSING_STEEL,
                   rule: str = WALL_RULE, law: OrificeLaw = AREA_RATIO) -> float:
     """The striker over the payload that carries the housing its own design needs, never below
-    ``least_ratio``: ``carried_by`` (housing, pin, liquid and structure) over the payload, the housing
+    ``least_ratio``: ``dashpot_design.striker_carrying`` (the pressurised housing, its liquid and the
+    striker's structure; the closed form's estimate, without its pin) over the payload, the housing
     weighed on the column's run (``cells``) of the closed-form design at the bore A0 for that striker
     (beyond the practical wall ratio, the heaviest housing a monobloc gives: the design is then outside,
     and the striker its best case).  The closed form's fixed point (``fixed_point.striker_fixed_point``,
@@ -507,9 +525,12 @@ def carried_ratio(pulse: PulseSpec, article_mass: float, seat_mass: float, liqui
             run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, cells, column)
         except (RuntimeError, ValueError):        # the piston reached the floor: keep this striker
             return ratio, None
-        needed = carried_by(weigh(d, run, steel, rule)) / d["payload_mass"]
+        w = weigh(d, run, steel, rule)
+        needed = striker_carrying(w["housing_carried"], w["liquid"]) / d["payload_mass"]
         return (needed if math.isfinite(needed) else ratio), None
-    return striker_fixed_point(needed_at, least_ratio, most=STRIKER_ITERATIONS - 1).ratio
+    # the striker the last design's housing asks (the search's start: one step of the iteration past the
+    # trial that converged)
+    return max(least_ratio, striker_fixed_point(needed_at, least_ratio, most=STRIKER_ITERATIONS - 1).needed)
 
 
 def striker_report(d: dict, pulse: PulseSpec, weight: dict) -> dict:
