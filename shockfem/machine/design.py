@@ -26,6 +26,7 @@ from .amplifier import Amplifier, chain_run, check_with_first_mass, design_ampli
 from .energy import EnergyTable, chain_record, energy_table
 from .fixture import Fixture, design_fixture
 from ..launcher.vessel import max_pressure
+from ..programmer.fixed_point import STRIKER_TOLERANCE
 from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher
 from .layout import GUIDES_PER_BODY, Layout, frame_force, place, rail_section, shoe_length
 from .limits import Limit, broken, model_range
@@ -303,6 +304,10 @@ def _binding(spec, fixture, amp, launcher, layout, limits: list[Limit]) -> tuple
                        f"at {fixture.striker_ratio:.2f} times the payload, above the {spec.striker_ratio:g} asked "
                        f"(wall outer radius {fixture.housing_wall_radius * 1e3:.1f} mm, b / a "
                        f"{fixture.housing_wall_radius / fixture.bore_radius:.3g})")
+    fp = fixture.design["column_design"]["striker_fixed_point"]
+    if fp["needed"] > fp["ratio"] * (1 + STRIKER_TOLERANCE):
+        problems.append(f"fixture: the striker ({fp['ratio']:.4g} times the payload) does not carry its housing "
+                        f"({fp['needed']:.4g}): its fixed point did not converge in {fp['redesigns']} redesigns")
     if not fixture.band_passed:
         problems.append(f"fixture: the column's pulse is outside the specification's band (worst excess "
                         f"{fixture.worst_excess:.3g} of the peak)")

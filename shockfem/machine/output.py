@@ -29,7 +29,7 @@ def summary_lines(m: Machine) -> list[str]:
         f"{f.peak / G0:,.0f} g, {f.duration * 1e3:.2f} ms, {f.velocity_change:.1f} m/s, band "
         f"{'pass' if f.band_passed else 'FAIL'}, {f.verdict}; oil {f.peak_pressure / 1e6:.0f} MPa, +{f.oil_heating:.0f} K a shot",
         f"  striker: {f.striker_ratio:.4g} times the payload ({'the wall sets it' if f.housing_binds else 'the wall does not set it'}"
-        f"; {f.redesigns} redesigns); housing outer radius {f.housing_outer_radius * 1e3:.1f} mm, the wall rule's "
+        f"; {f.redesigns} redesigns, {_fixed_point(f)}); housing outer radius {f.housing_outer_radius * 1e3:.1f} mm, the wall rule's "
         f"{f.housing_wall_radius * 1e3:.1f} mm (b / a {f.housing_wall_radius / f.bore_radius:.3g}), the striker's "
         f"mass's {f.housing_mass_radius * 1e3:.1f} mm; the column designer's striker {f.design_striker_mass:.4g} kg",
         f"  amplifier: {len(a.masses)} masses " + ", ".join(f"{x:.4g}" for x in a.masses) + " kg; pads "
@@ -56,6 +56,14 @@ def summary_lines(m: Machine) -> list[str]:
     lines += [f"  PROBLEM: {p}" for p in m.problems]
     lines.append(f"  {verdict_line(m.limits)}")
     return lines
+
+
+def _fixed_point(f) -> str:
+    """The striker's fixed point with its housing, as the column designer's record gives it: the design
+    kept and, where it did not converge, so."""
+    fp = f.design["column_design"]["striker_fixed_point"]
+    trials = " -> ".join(f"{t['ratio']:.4g} (asks {t['needed']:.4g})" for t in fp["trials"])
+    return f"{'converged' if fp['converged'] else 'NOT CONVERGED'}: {fp['kept']}; trials {trials}"
 
 
 def _table(header: list[str], rows: list[list]) -> str:
