@@ -23,7 +23,8 @@ piston's face, area A; the rest of the cavity is held still.
 * ``dashpot_designer``: the column designer's start (``programmer.column_design``, 12 lb at 10,000 g /
   5 ms, oil and water) over its first transit after contact against the exact shock ahead of a piston
   whose orifice passes the flow (Rankine-Hugoniot with Tait's law and the orifice law), within 0.5%; the
-  housing wall's dynamic factor against Biggs' step and ramp (round-off).
+  housing wall's dynamic factor against Biggs' step and ramp (round-off); the striker's fixed point with
+  its housing against a closed-form root (the method's own 2%).
 """
 from __future__ import annotations
 
@@ -336,6 +337,25 @@ def housing_dynamic_factor(size, workdir):
     return out
 
 
+def striker_fixed_point_exact(size, workdir):
+    """``programmer.fixed_point.striker_fixed_point`` on a housing whose asked ratio has a closed form,
+    needed(r) = a + b / r^2 (a wall that falls as the closing speed's square with the striker; a, b the
+    12 lb machine's shape, 25 and 5,970), from below (the spec's ratio 10) and from above (84.7): the
+    ratio found against the cubic's root r^3 - a r^2 - b = 0, within the method's own tolerance (its stop,
+    |needed - r| <= tol r, with needed' < 0, bounds |r - root| by tol r)."""
+    from ..programmer.fixed_point import STRIKER_TOLERANCE, striker_fixed_point
+    a, b = 25.0, 5970.0
+    root = max(z.real for z in np.roots([1.0, -a, 0.0, -b]) if abs(z.imag) < 1e-12)
+    out = []
+    for start in (10.0, 84.7):
+        t0 = time.perf_counter()
+        fp = striker_fixed_point(lambda r: (a + b / r ** 2, r), 10.0, start)
+        out.append(check(f"striker_fixed_point.from_{start:g} [-]", root, fp.ratio, STRIKER_TOLERANCE,
+                         time.perf_counter() - t0, 0))
+    return out
+
+
 def dashpot_designer(size, workdir):
-    """The column designer's model at contact, and the housing's dynamic factor."""
-    return designer_contact(size, workdir) + housing_dynamic_factor(size, workdir)
+    """The column designer's model at contact, the housing's dynamic factor, and the striker's fixed point."""
+    return (designer_contact(size, workdir) + housing_dynamic_factor(size, workdir)
+            + striker_fixed_point_exact(size, workdir))
