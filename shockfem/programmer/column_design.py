@@ -43,9 +43,10 @@ own housing, pin and oil (``carried_ratio_of``; ``fixed_point.striker_fixed_poin
 start, never below the ratio asked, to ``STRIKER_TOLERANCE``, each trial ratio the found handles designed
 again at it (their closed-form bore and collision law at that striker), searched again from them where
 that design breaks a check the found one holds.  A lighter striker closes faster and raises the
-pressure, so the design kept holds every vetoing check and housing limit the found design holds, where any
-trial carrying its housing does (``admissible``, ``design_checks``), and the record (``striker_fixed_point``) says when the search did not converge.  The confirmed design
-reports its striker against what carries its own housing and the closing speed the band then takes
+pressure, so the design kept holds every vetoing check and housing limit the found design holds, where
+any trial carrying its housing does (``admissible``, ``design_checks``), and the record
+(``striker_fixed_point``) says when the search did not converge.  The confirmed design reports its
+striker against what carries its own housing and the closing speed the band then takes
 (``striker_report``).  A caller whose striker carries more (the machine's housing over the whole bore)
 passes its own ``carried``.
 
@@ -208,8 +209,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     are designed again, and searched again from them where that design breaks a check the found one holds
     (``admissible``).
     ``carried(out)``: the ratio a confirmed design's striker must be (default ``carried_ratio_of``: its
-    pressurised housing, pin and oil with the striker's structure).  Returns a dict: the design, its runs (``column``, ``search_column``,
-    ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
+    pressurised housing, pin and oil with the striker's structure).  Returns a dict: the design, its runs
+    (``column``, ``search_column``, ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
     ``steel`` by ``rule``), the striker (``striker``) and its fixed point's record (``striker_fixed_point``:
     the trials, whether it converged and why its design was kept), the wall times, and ``verdict``: "inside" (band
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
@@ -306,7 +307,8 @@ class _Designer:
 
     def __init__(self, pulse, article_mass, seat_mass, liquid, law, evaluations, search_cells, cells, steel, rule,
                  pin_iterations, rounds):
-        self.pulse, self.article_mass, self.seat_mass, self.liquid, self.law = pulse, article_mass, seat_mass, liquid, law
+        self.pulse, self.article_mass, self.seat_mass = pulse, article_mass, seat_mass
+        self.liquid, self.law = liquid, law
         self.max_evaluations, self.search_cells, self.cells, self.steel, self.rule = (evaluations, search_cells, cells,
                                                                                        steel, rule)
         self.pin_iterations, self.rounds = pin_iterations, rounds
@@ -355,13 +357,14 @@ class _Designer:
 
     def reused(self, found: Designed, ratio) -> Designed:
         """The ``found`` design's handles and pin correction at ``ratio`` (the closed form's bore for it),
-        its pin cut and confirmed; its score the search's objective on its column at the design grid."""
+        its pin cut and confirmed; its score the search's objective on its column at the design grid, its
+        rounds the search's that found the handles."""
         bore = self.bore(ratio)
         out = self.confirm(self.cut(self.design(found.handles, found.correction, ratio, bore)))
         run = out["runs"]["column"]
         score = (design_objective(out["design"], run, self.pulse, self.liquid, self.steel, self.rule)
                  if run is not None else math.inf)
-        return Designed(out, found.handles, found.correction, bore, score, [], "handles reused")
+        return Designed(out, found.handles, found.correction, bore, score, found.rounds, "handles reused")
 
 
 def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:

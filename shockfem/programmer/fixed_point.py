@@ -108,9 +108,12 @@ def _kept(trials, states, k, why, binds, tol) -> FixedPoint:
 
 
 def _unconverged(trials, states, tol) -> FixedPoint:
+    """No trial within the tolerance: the lightest trial whose striker carries its housing and is
+    admissible, else the lightest that carries it, else the last, each said so."""
     order = sorted(range(len(trials)), key=lambda i: trials[i].ratio)
-    for pick, why in (([i for i in order if trials[i].carries(tol) and trials[i].admissible], "lightest admissible carrying"),
-                      ([i for i in order if trials[i].carries(tol)], "lightest carrying (outside a check)"),
+    carrying = [i for i in order if trials[i].carries(tol)]
+    for pick, why in (([i for i in carrying if trials[i].admissible], "lightest admissible carrying"),
+                      (carrying, "lightest carrying (outside a check)"),
                       ([len(trials) - 1], "last (none carries its housing)")):
         if pick:
             i = pick[0]
