@@ -63,7 +63,8 @@ def _fixed_point(f) -> str:
     kept and, where it did not converge, so."""
     fp = f.design["column_design"]["striker_fixed_point"]
     trials = " -> ".join(f"{t['ratio']:.4g} (asks {t['needed']:.4g})" for t in fp["trials"])
-    return f"{'converged' if fp['converged'] else 'NOT CONVERGED'}: {fp['kept']}; trials {trials}"
+    kept = fp["kept"].removeprefix("not converged: ")
+    return f"{'converged' if fp['converged'] else 'NOT CONVERGED'}: {kept}; trials {trials}"
 
 
 def _table(header: list[str], rows: list[list]) -> str:
