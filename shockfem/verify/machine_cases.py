@@ -21,7 +21,7 @@ pressures and its force on the payload), sum to the gas work within 0.5%; and th
 equals the isentropic expansion work p0 V0 (1 - (V0 / V1)^(gamma - 1)) / (gamma - 1) where the gun is that
 closed form (no valve, massless gas, an evacuated barrel), and the gas stored is p0 V0 / (gamma - 1).
 
-``direct_striker``: the direct-striker gun (a representative 12 lb striker, the 12 lb fixture's found design at the column designer's start, 84.7 payloads: 498.8 kg at 412.2 m/s, alone, within
+``direct_striker``: the direct-striker gun (the 12 lb design's striker, 220.9 kg at 418.3 m/s, alone, within
 the machine's limits, from the machine's full-bore-valve gun: the premise's (b0)) against the launcher
 model's own verification, the brute-force grid of ``launcher_design`` (no grid gun lighter), and its
 launch energy M V^2 / 2.  The striker is a representative point, fixed: it is the one the premise
@@ -144,9 +144,9 @@ def machine_energy(size: str, workdir: str) -> list[dict]:
     return out
 
 
-# a representative 12 lb striker (the 12 lb fixture's found design at the column designer's start, 84.7
-# payloads, rounded): the housing, its pin and its oil, at that design's closing speed (the module's docstring)
-STRIKER = {"mass": 498.8, "speed": 412.2}
+# the 12 lb design's striker (``shockfem design-machine --article "12 lb"``, rounded): the housing, its pin and
+# its oil, at the fixture's closing speed; a representative point (the module's docstring)
+STRIKER = {"mass": 220.9, "speed": 418.3}
 
 
 def direct_striker(size: str, workdir: str) -> list[dict]:
@@ -162,7 +162,7 @@ def direct_striker(size: str, workdir: str) -> list[dict]:
     limits = Limits(max_length=spec.max_barrel_length, max_bore=spec.max_bore, max_pressure=spec.max_pressure)
     out = against_grid("direct_striker", L.design, machine_gun(STRIKER["mass"], spec.gas), STRIKER["speed"], limits,
                        SIZING, n, wall)
-    out[0]["note"] += ("; a representative 12 lb striker: the optimiser against a brute-force "
+    out[0]["note"] += ("; the 12 lb design's striker, a representative point: the optimiser against a brute-force "
                        "search of the same gun model, which holds for any striker it can fire")
     # the muzzle speed within 2e-4 of the asked (the optimiser's constraint): twice that on its square
     out.append(check("direct_striker.launch_energy M V^2 / 2 [J]", 0.5 * STRIKER["mass"] * STRIKER["speed"] ** 2,
