@@ -17,7 +17,7 @@ for d in D.gas_drives(spec, type("Article", (), {"article_mass": 12 * LB, "artic
     for n in d.notes:
         print("  ", n)
     if d.moving:
-        print(f"   frame {d.frame_mass:,.0f} kg; blowdown {d.blowdown}")
+        print(f"   frame {d.frame_mass:,.0f} kg; ports {d.port_band}; arrest {d.arrest.kind} {d.arrest.force:.4g} N over {d.arrest.stroke:.4g} m")
         for lim in d.limits:
             print(f"   limit {lim.component} {lim.quantity}: {lim.value:.4g} of {lim.limit:.4g} {lim.unit}")
         print("   broken:", [lim.describe() for lim in broken(d.limits)])

@@ -80,6 +80,7 @@ from ..metrics import shapes
 from ..scene.library import LIBRARY, initial_yield_stress, property_si
 from ..units import G0, IN, PSI
 from . import blowdown as B
+from . import drive_end as E
 from .boundary import TEMPERATURE
 from .launcher import SIZING, launcher_of
 from .layout import RING_CLEARANCE, frame_force, frame_section, ring_area, tank_length
@@ -102,6 +103,9 @@ SEAT_DEPTH = 1.0              # the carriage's length over the article's diamete
 GASES_TRIED = ("air", "helium")
 RTOL = 1e-10
 FIXED_POINT_TOL, FIXED_POINT_PASSES = 1e-10, 200
+PORTS_TOL = 1e-7             # the ports' bore settled
+# the valve's closing times [s] the gas a shot vents is given at (``closing_sensitivity``; inf: left open)
+CLOSING_TIMES = (1e-3, 5e-3, 20e-3, math.inf)
 
 
 @dataclass
@@ -110,12 +114,23 @@ class DrivePulse:
     time: np.ndarray             # [s]
     acceleration: np.ndarray     # [m/s^2]
     specific_force: float        # k = p0 A / m [m/s^2]
-    port_time: float             # the piston's back at the open end [s]
+    port_time: float             # the piston's back at the ports [s]
     port_speed: float            # [m/s]
-    stroke: float                # the travel to the open end [m]
-    end_speed: float             # after the fall [m/s]
-    fall_travel: float           # travelled during the fall [m]
+    stroke: float                # the travel to the ports, x_p [m]
+    end_speed: float             # at the separation [m/s]
+    fall_travel: float           # travelled from the ports to the arrest, x_a - x_p [m]
     peak: float                  # [m/s^2]
+    fall: object = None          # ``drive_end.PortedFall``
+    ports: object = None         # ``drive_end.Ports``
+
+    @property
+    def separation_time(self) -> float:
+        return self.fall.end_time
+
+    @property
+    def arrest_travel(self) -> float:
+        """The piston's back where its front meets the arrest, x_a [m]."""
+        return self.stroke + self.fall_travel
 
 
 def _ramp(t: float, rise: float) -> float:
@@ -136,37 +151,42 @@ def _drive(k: float, c0: float, gamma: float, rise: float, port_time: float, den
     return y[0], y[1], pieces
 
 
-def drive_pulse(k: float, c0: float, gamma: float, rise: float, fall: float, port_time: float,
-                record: float = 0.0, samples: int = 2000) -> DrivePulse:
-    """The drive at specific force ``k`` [m/s^2] (module docstring), its record sampled to ``record`` [s]
-    (free flight after the fall)."""
+def drive_pulse(k: float, c0: float, gamma: float, rise: float, ports, port_time: float,
+                separation: float | None = None, arrest: float | None = None, record: float = 0.0,
+                samples: int = 2000) -> DrivePulse:
+    """The drive at specific force ``k`` [m/s^2] (module docstring) to the ports at ``port_time`` [s], then the
+    ported fall (``drive_end.ported_fall``, ``ports`` a ``drive_end.Ports``) to the separation at
+    ``separation`` [s] or where the piston reaches ``arrest`` [m]; its record sampled to ``record`` [s]
+    (free flight after the separation)."""
     u_p, x_p, pieces = _drive(k, c0, gamma, rise, port_time, dense=True)
-    a_p = k * _ramp(port_time, rise) * chambered_pressure_ratio(u_p, c0, gamma)
-    t = np.linspace(0.0, max(record, port_time + fall), samples)
+    fall = E.ported_fall(k, ports, u_p, x_p, port_time, t_end=separation, x_end=arrest)
+    t = np.linspace(0.0, max(record, fall.end_time), samples)
     a = np.zeros_like(t)
     for k_t, s in enumerate(t):
         if s <= port_time:
             piece = next(p for p in pieces if s <= p.t[-1] * (1 + 1e-12))
             a[k_t] = k * _ramp(s, rise) * chambered_pressure_ratio(float(piece.sol(s)[0]), c0, gamma)
-        elif s <= port_time + fall:
-            a[k_t] = a_p * (1 - (s - port_time) / fall)
+    on = (t > port_time) & (t <= fall.end_time)
+    a[on] = np.interp(t[on], fall.time, fall.acceleration)
     # the peak is where the ramp ends (pi falls after it), whatever the sampling
     u_r = pieces[0].y[0, -1] if rise > 0 else 0.0
     peak = k * chambered_pressure_ratio(u_r, c0, gamma)
-    return DrivePulse(t, a, k, port_time, u_p, x_p, u_p + 0.5 * a_p * fall, u_p * fall + a_p * fall ** 2 / 3,
-                      float(max(a.max(), a_p, peak)))
+    return DrivePulse(t, a, k, port_time, u_p, x_p, fall.end_speed, fall.end_travel - x_p, float(max(a.max(), peak)),
+                      fall, ports)
 
 
-def specific_force_for(dv: float, duration: float, rise: float, fall: float, c0: float, gamma: float) -> float:
-    """The specific force k [m/s^2] that gives the velocity change ``dv`` at the end of a pulse of ``duration``
-    (the fall starting at duration - fall); inf past what the gas can give (the escape speed)."""
+def specific_force_for(dv: float, duration: float, rise: float, fall: float, c0: float, gamma: float,
+                       ports) -> float:
+    """The specific force k [m/s^2] that gives the velocity change ``dv`` at the separation at ``duration``
+    [s] (the ports opening at duration - fall, ``ports`` a ``drive_end.Ports``); inf past what the gas can
+    give (the escape speed)."""
     if dv >= escape_speed(c0, gamma, chambered=True) * (1 - 1e-6):
         return math.inf
     port = duration - fall
 
     def short(k):
-        u_p, _, _ = _drive(k, c0, gamma, rise, port)
-        return u_p + 0.5 * k * chambered_pressure_ratio(u_p, c0, gamma) * fall - dv
+        u_p, x_p, _ = _drive(k, c0, gamma, rise, port)
+        return E.ported_fall(k, ports, u_p, x_p, port, t_end=duration, samples=2).end_speed - dv
     # k D >= u_end, so half of dv / D falls short; double until the speed is passed
     lo = hi = 0.5 * dv / duration
     while short(hi) < 0:
@@ -241,11 +261,9 @@ def tank_volume(swept: float, gamma: float) -> float:
     return swept / ((1 - CHAMBER_HOLD) ** (-1 / gamma) - 1)
 
 
-def vented_gas(gas, p0: float, volume: float) -> tuple[float, float]:
-    """The gas [kg] at ``p0`` [Pa] and the chamber's temperature in ``volume`` [m^3] that a shot vents, and its
-    volume at standard conditions [m^3]."""
-    mass = gas.mass_for(p0, TEMPERATURE, volume)
-    return mass, mass / gas.mass_for(STP_PRESSURE, STP_TEMPERATURE, 1.0)
+def stp_volume(gas, mass: float) -> float:
+    """The volume [m^3] of ``mass`` [kg] of ``gas`` at standard conditions (0 degC, 1 atm)."""
+    return mass / gas.mass_for(STP_PRESSURE, STP_TEMPERATURE, 1.0)
 
 
 @dataclass
@@ -271,9 +289,13 @@ class GasDrive:
     limits: list = field(default_factory=list)
     lumped: dict = field(default_factory=dict)   # ``lumped_check``
     openings: list = field(default_factory=list)  # ``opening_sensitivity``
-    vented_mass: float = math.nan     # the gas a shot vents [kg] (``vented_gas``)
+    vented_mass: float = math.nan     # the gas a shot vents, the valve left open [kg] (``closing_sensitivity``)
     vented_volume: float = math.nan   # the same at standard conditions [m^3]
-    blowdown: object = None           # ``blowdown.Blowdown``: the tank emptying after the piston has left
+    port_band: object = None          # ``drive_end.PortBand``
+    arrest: object = None             # ``stops.Stop``: the piston's, which the carriage and article pass
+    push: float = math.nan            # the gas's push on the held piston [N]
+    arrest_limit: float = math.nan    # the most the piston puts on its arrest at its allowable [N]
+    closings: list = field(default_factory=list)  # ``closing_sensitivity``
     notes: list[str] = field(default_factory=list)
 
     @property
@@ -298,33 +320,51 @@ def design_gas_drive(spec: MachineSpec, gas: str, article: float, article_diamet
     c0 = g.sound_speed(p0, TEMPERATURE)
     ideal = shapes.specified(spec.pulse.checked_shape, spec.pulse.peak, spec.pulse.duration)
     dv = ideal.velocity_change
-    k = specific_force_for(dv, ideal.duration, ideal.rise, ideal.fall, c0, g.gamma)
+    k, pulse, mv = _ported_design(spec, g, p0, c0, ideal, article, article_diameter / 2)
     if not math.isfinite(k):
         return _no_drive(spec, gas, c0, dv, f"{gas} cannot give {dv:.4g} m/s in {ideal.duration * 1e3:.3g} ms at any "
                          f"pressure: its escape speed is {escape_speed(c0, g.gamma, True):.4g} m/s")
-    pulse = drive_pulse(k, c0, g.gamma, ideal.rise, ideal.fall, ideal.duration - ideal.fall,
-                        spec.pulse.record_end())
     band = spec.pulse.band(pulse.time, pulse.acceleration)[1]
-    r0 = article_diameter / 2
-    options = []
-    for mat in PISTON_MATERIALS:
-        carriage, r_b = carriage_for(mat, spec, article, r0, pulse.peak)
-        mv = moving_mass(mat, spec.safety_factor, article, carriage, r_b, k, pulse.peak, p0)
-        if mv:
-            options.append(dataclasses.replace(mv, bearing_radius=r_b))
-    if not options:
+    if mv is None:
         d = _no_drive(spec, gas, c0, dv, f"no piston of {', '.join(PISTON_MATERIALS)} carries its own inertia at "
                       f"{p0 / PSI:,.0f} psi and {pulse.peak / G0:,.0f} g (its share of the pressure rho h a over "
                       f"p0 reaches 1); {_band_words(band)}")
         d.pulse, d.band = pulse, band
         return d
-    mv = min(options, key=lambda o: o.total)
     d = GasDrive(gas, p0, c0, dv, pulse, mv, None, band=band)
     _size_machine(d, spec, article, article_diameter, article_length, ideal)
-    d.lumped = lumped_check(d, spec, ideal.fall)
-    d.openings = opening_sensitivity(d, spec, ideal.fall)
+    d.lumped = lumped_check(d, spec)
+    d.openings = opening_sensitivity(d, spec)
     d.notes = _notes(d, spec)
     return d
+
+
+def _ported_design(spec: MachineSpec, g, p0: float, c0: float, ideal, article: float, r0: float):
+    """k, the pulse and the moving mass with ports of the bore they size (``drive_end.area_ratio_rate``): a
+    fixed point on the bore, from none; (inf, None, None) where the gas cannot, (k, pulse, None) where no piston
+    carries its inertia."""
+    beta, pulse = 0.0, None
+    for _ in range(FIXED_POINT_PASSES):
+        ports = E.Ports(g, p0, TEMPERATURE, beta)
+        k = specific_force_for(ideal.velocity_change, ideal.duration, ideal.rise, ideal.fall, c0, g.gamma, ports)
+        if not math.isfinite(k):
+            return k, None, None
+        pulse = drive_pulse(k, c0, g.gamma, ideal.rise, ports, ideal.duration - ideal.fall,
+                            separation=ideal.duration, record=spec.pulse.record_end())
+        options = []
+        for mat in PISTON_MATERIALS:
+            carriage, r_b = carriage_for(mat, spec, article, r0, pulse.peak)
+            mv = moving_mass(mat, spec.safety_factor, article, carriage, r_b, k, pulse.peak, p0)
+            if mv:
+                options.append(dataclasses.replace(mv, bearing_radius=r_b))
+        if not options:
+            return k, pulse, None
+        mv = min(options, key=lambda o: o.total)
+        new = E.area_ratio_rate(E.PORT_SHARE, mv.bore)
+        if abs(new - beta) <= PORTS_TOL * new:
+            return k, pulse, mv
+        beta = new
+    raise RuntimeError("the ports' bore did not settle")
 
 
 def _band_words(band) -> str:
@@ -333,38 +373,71 @@ def _band_words(band) -> str:
 
 
 def _size_machine(d: GasDrive, spec: MachineSpec, article: float, diameter: float, length: float, ideal):
-    """The cylinder, tank, catch and frame of ``d``, its mass, length and limits."""
+    """The cylinder, tank, ports, arrest, catch and frame of ``d``, its mass, length and limits."""
     mv, pulse, g = d.moving, d.pulse, GASES[d.gas]
     area = math.pi * mv.bore ** 2 / 4
-    V0 = tank_volume(area * pulse.stroke, g.gamma)
+    # the chambered column is the law through the fall too: the tank holds its pressure to the arrest
+    V0 = tank_volume(area * pulse.arrest_travel, g.gamma)
     gun = Gun(V0, d.pressure, mv.bore, pulse.stroke, mv.total, TEMPERATURE, d.gas, valve_area=area,
               opening_time=ideal.rise)
     wb, wt = weights(gun, SIZING)
     L = launcher_of(LauncherDesign(gun, wb + wt, wb, wt, pulse.end_speed, d.velocity_change, pulse.peak, math.nan,
                                    True), mv.total)
     size = L.sizing
-    seat = SEAT_DEPTH * diameter
     d.gun, d.launcher = gun, L
-    d.cylinder_length = pulse.stroke + mv.piston_thickness + seat + length
-    d.cylinder_mass = size["barrel"]["weight"] * d.cylinder_length / pulse.stroke
-    d.tank_length = tank_length(V0, size["tank"]["diameter"], size["tank"]["head_thickness"])
-    d.free_run = pulse.fall_travel + shapes.TOLERANCE["after"] * ideal.duration * pulse.end_speed
     rho = property_si(spec.material, "density", "density")
     S = initial_yield_stress(spec.material) / spec.safety_factor
-    d.stop = design_stop("gas drive's piston, carriage and article", mv.total, pulse.end_speed, mv.piston_thickness,
-                         rho, S, ring_area(mv.bore, diameter + RING_CLEARANCE), spec.oil_pressure,
+    _design_end(d, spec, size, rho, S)
+    seat = SEAT_DEPTH * diameter
+    d.cylinder_length = max(pulse.arrest_travel + mv.piston_thickness + d.arrest.length,
+                            mv.piston_thickness + seat + length)
+    d.cylinder_mass = size["barrel"]["weight"] * d.cylinder_length / pulse.stroke + d.port_band.mass
+    d.tank_length = tank_length(V0, size["tank"]["diameter"], size["tank"]["head_thickness"])
+    # the carriage and article run free from the separation, past the band's window, to the catch
+    d.free_run = shapes.TOLERANCE["after"] * ideal.duration * pulse.end_speed
+    free = article + mv.carriage_mass
+    d.stop = design_stop("gas drive's carriage and article", free, pulse.end_speed, seat, rho, S,
+                         ring_area(2 * mv.bearing_radius, diameter + RING_CLEARANCE), spec.oil_pressure,
                          deceleration=spec.catch)
-    d.blowdown = B.blowdown(V0 + area * pulse.stroke, area, d.pressure, d.sound_speed, g.gamma)
-    thrust = max(d.pressure * area, d.blowdown.peak_thrust)
-    d.vented_mass, d.vented_volume = vented_gas(g, d.pressure, V0 + area * pulse.stroke)
+    d.closings = closing_sensitivity(d, V0)
+    # the design leaves the valve open: what it vents is the open valve's blowdown through the ports
+    d.vented_mass = next(c["vented"] for c in d.closings if not math.isfinite(c["closing"]))
+    d.vented_volume = stp_volume(g, d.vented_mass)
     d.machine_length = d.tank_length + d.cylinder_length + d.free_run + d.stop.length
-    d.frame_mass = 2 * rho * frame_section(frame_force([d.stop], thrust), S) * d.machine_length
-    d.machine_mass = wt + d.cylinder_mass + mv.total + d.stop.absorber_mass + d.frame_mass
+    # the ports' jets are radial and cancel: the frame carries the drive's thrust or the catch, not a blowdown
+    d.frame_mass = 2 * rho * frame_section(frame_force([d.stop], d.pressure * area), S) * d.machine_length
+    d.machine_mass = wt + d.cylinder_mass + mv.total + d.arrest.absorber_mass + d.stop.absorber_mass + d.frame_mass
+    d.limits = _drive_limits(d, spec, size, article, diameter, ideal, S) + _end_limits(d, spec, S) + list(d.stop.limits)
+
+
+def _design_end(d: GasDrive, spec: MachineSpec, size: dict, rho: float, S: float):
+    """The ports' band and the piston's arrest (``drive_end``): the arrest at the force the piston's rim
+    carries less the gas's push on the held piston, the band's wall at the cylinder's allowable."""
+    mv, pulse, g = d.moving, d.pulse, GASES[d.gas]
+    area = math.pi * mv.bore ** 2 / 4
+    ports_area = E.PORT_SHARE * math.pi * mv.bore * pulse.fall_travel
+    d.push = d.pressure * area * max(pulse.fall.end_ratio, E.steady_pressure(
+        g, d.pressure, TEMPERATURE, area, ports_area, B.ATMOSPHERE) / d.pressure)
+    nu = float(LIBRARY[mv.material]["poisson_ratio"])
+    # the piston's front annulus outside the carriage's foot meets the arrest, which lets the carriage pass
+    passage = 2 * mv.bearing_radius + RING_CLEARANCE
+    d.arrest_limit = E.arrest_force_limit(mv.piston_thickness, mv.allowable, nu, mv.bore, passage)
+    rho_p = property_si(mv.material, "density", "density")
+    d.arrest = design_stop("gas drive's piston (its arrest)", mv.piston_mass, pulse.end_speed, mv.piston_thickness,
+                           rho_p, mv.allowable, ring_area(mv.bore, passage), spec.oil_pressure,
+                           max_force=max(d.arrest_limit - d.push, 1e-3 * d.arrest_limit))
+    d.port_band = E.port_band(mv.bore, pulse.fall_travel, E.PORT_SHARE, d.pressure, S,
+                              size["barrel"]["thickness"], rho, d.arrest.force + d.push)
+
+
+def _drive_limits(d: GasDrive, spec: MachineSpec, size: dict, article: float, diameter: float, ideal,
+                  S: float) -> list[Limit]:
+    mv, pulse = d.moving, d.pulse
     seat_stress = (article + mv.carriage_mass) * pulse.peak / (math.pi * diameter ** 2 / 4)
-    d.limits = [
+    return [
         Limit("gas drive cylinder", "bore", mv.bore, spec.max_bore, "m", "the bore A = m k / p0", "the spec's limit"),
         Limit("gas drive cylinder", "length", d.cylinder_length, spec.max_barrel_length, "m",
-              "stroke, piston, carriage and article", "the spec's barrel limit"),
+              "the arrest's travel, the piston and the arrest", "the spec's barrel limit"),
         Limit("gas drive cylinder", "wall hoop stress (Lame, inner wall)", size["barrel"]["hoop_stress"],
               size["barrel"]["hoop_stress"] * (1 + size["barrel"]["margin"]), "Pa", size["barrel"]["rule"],
               f"ASME II-D allowable of {size['barrel']['material']}"),
@@ -379,34 +452,76 @@ def _size_machine(d: GasDrive, spec: MachineSpec, article: float, diameter: floa
         Limit("gas drive piston", "radial wave transit over the valve's rise", mv.bore / 2 / mv.wave_speed / ideal.rise,
               WAVE_RANGE, "-", "R / sqrt(E / rho) over t_r", "the rigid piston's range"),
         Limit("gas drive chamber", "pressure fall while the stroke fills", CHAMBER_HOLD, CHAMBER_HOLD, "-",
-              "(V0 / (V0 + A x))^gamma bound", "the chambered law's range (a chamber at p0)", sized=True),
-    ] + list(d.stop.limits)
+              "(V0 / (V0 + A x_a))^gamma bound", "the chambered law's range (a chamber at p0)", sized=True),
+    ]
 
 
-def lumped_check(d: GasDrive, spec: MachineSpec, fall: float) -> dict:
+def _end_limits(d: GasDrive, spec: MachineSpec, S: float) -> list[Limit]:
+    """The ports', the arrest's and the ported fall's range (``drive_end``)."""
+    mv, pulse, band, g = d.moving, d.pulse, d.port_band, GASES[d.gas]
+    c_b = d.sound_speed * pulse.fall.ratio.min() ** ((g.gamma - 1) / (2 * g.gamma))
+    steel = f"{spec.material} yield / {spec.safety_factor:g}"
+    return [
+        Limit("gas drive piston", "load on its arrest", d.arrest.force + d.push, d.arrest_limit, "N",
+              "the arrest's force and the gas's push: the annulus's bearing, the centre's bending (Roark 11.2 10a)",
+              f"{mv.material} allowable", sized=True),
+        Limit("gas drive ports", "ligament hoop stress at p0", band.hoop_stress, S, "Pa",
+              "p0 R / (E t), UG-53 ligament efficiency", steel, sized=True),
+        Limit("gas drive ports", "ligament axial stress under the arrest", band.axial_stress, S, "Pa",
+              "(F_arrest + push) / (E pi D_m t)", steel, sized=True),
+    ] + E.range_limits(band, pulse.separation_time - pulse.port_time, pulse.stroke, d.sound_speed, c_b) \
+        + list(d.arrest.limits)
+
+
+def closing_sensitivity(d: GasDrive, V0: float, times=CLOSING_TIMES) -> list[dict]:
+    """The gas a shot vents [kg] with the valve closing over each of ``times`` [s] from the separation
+    (``drive_end.vent_history``: the tank and the cylinder, the piston held on its arrest), and how long the
+    held piston's push lasts (the cylinder above twice the ambient)."""
+    g, pulse = GASES[d.gas], d.pulse
+    area = math.pi * d.moving.bore ** 2 / 4
+    r = pulse.fall.end_ratio
+    cylinder = (area * pulse.arrest_travel, r * d.pressure, TEMPERATURE * r ** ((g.gamma - 1) / g.gamma))
+    # long enough for the open valve's blowdown through the bore and the ports to end
+    duration = 12 * B.time_constant(V0, area, d.sound_speed, g.gamma)
+    out = []
+    for closing in times:
+        v = E.vent_history(g, (V0, d.pressure, TEMPERATURE), cylinder, area, d.port_band.area, closing,
+                           B.ATMOSPHERE, duration)
+        held = v.time[v.cylinder_pressure > 2 * B.ATMOSPHERE]
+        out.append({"closing": closing, "vented": v.vented, "tank_left": v.tank_left,
+                    "push_time": float(held[-1]) if len(held) else 0.0})
+    return out
+
+
+def lumped_check(d: GasDrive, spec: MachineSpec) -> dict:
     """The same cylinder and tank fired by the lumped gun (``launcher.gun.fire``: the finite tank, the valve's
-    flow through its opening area, Lagrange gas inertia, the air ahead) to the open end, then the same fall:
-    its speed there, its peak and its pulse against the band, beside the chambered law's."""
+    flow through its opening area, Lagrange gas inertia, the air ahead) to the ports, then the same ported fall
+    to the same arrest: its speed there, its peak and its pulse against the band, beside the chambered law's."""
     shot = fire(d.gun, samples=400)
     h = shot.history
-    t_p, a_p = float(h["time"][-1]), float(h["acceleration"][-1])
-    t = np.linspace(0.0, max(spec.pulse.record_end(), t_p + fall), 2000)
-    a = np.where(t <= t_p, np.interp(t, h["time"], h["acceleration"]), a_p * np.clip(1 - (t - t_p) / fall, 0.0, 1.0))
+    t_p = float(h["time"][-1])
+    fall = E.ported_fall(d.pulse.specific_force, d.pulse.ports, shot.muzzle_velocity, d.pulse.stroke, t_p,
+                         x_end=d.pulse.arrest_travel)
+    t = np.linspace(0.0, max(spec.pulse.record_end(), fall.end_time), 2000)
+    a = np.where(t <= t_p, np.interp(t, h["time"], h["acceleration"]),
+                 np.where(t <= fall.end_time, np.interp(t, fall.time, fall.acceleration), 0.0))
     band = spec.pulse.band(t, a)[1]
-    end = shot.muzzle_velocity + 0.5 * a_p * fall
-    return {"port_speed": shot.muzzle_velocity, "end_speed": end, "peak": shot.peak_acceleration, "band": band,
-            "speed_error": end / d.pulse.end_speed - 1, "peak_error": shot.peak_acceleration / d.pulse.peak - 1}
+    return {"port_speed": shot.muzzle_velocity, "end_speed": fall.end_speed, "peak": shot.peak_acceleration,
+            "band": band, "speed_error": fall.end_speed / d.pulse.end_speed - 1,
+            "peak_error": shot.peak_acceleration / d.pulse.peak - 1}
 
 
-def opening_sensitivity(d: GasDrive, spec: MachineSpec, fall: float, times=OPENING_TIMES) -> list[dict]:
-    """The same machine (its k and stroke) with the valve's ramp over each of ``times`` [s]: the pulse's peak,
-    its speed after the fall and the band (the piston reaching the open end later as the ramp lengthens)."""
+def opening_sensitivity(d: GasDrive, spec: MachineSpec, times=OPENING_TIMES) -> list[dict]:
+    """The same machine (its k, ports and arrest) with the valve's ramp over each of ``times`` [s]: the pulse's
+    peak, its speed at the separation and the band (the piston reaching the ports later as the ramp
+    lengthens)."""
     c0, gamma, p = d.sound_speed, GASES[d.gas].gamma, d.pulse
     k, out = p.specific_force, []
     for rise in times:
         port = brentq(lambda t: _drive(k, c0, gamma, rise, t)[1] - p.stroke, 0.1 * p.port_time,
                       10 * p.port_time + rise, xtol=1e-12)
-        pulse = drive_pulse(k, c0, gamma, rise, fall, port, spec.pulse.record_end())
+        pulse = drive_pulse(k, c0, gamma, rise, p.ports, port, arrest=p.arrest_travel,
+                            record=spec.pulse.record_end())
         band = spec.pulse.band(pulse.time, pulse.acceleration)[1]
         out.append({"opening": rise, "peak": pulse.peak, "end_speed": pulse.end_speed, "band": band,
                     "speed_error": pulse.end_speed / d.velocity_change - 1})
@@ -419,33 +534,46 @@ def longest_opening_in_band(d: GasDrive) -> float:
 
 
 def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
-    mv, p, s, lu = d.moving, d.pulse, d.stop, d.lumped
+    mv, p, s, lu, band = d.moving, d.pulse, d.stop, d.lumped, d.port_band
     a_end = p.specific_force * chambered_pressure_ratio(p.port_speed, d.sound_speed, GASES[d.gas].gamma)
-    band = d.band
     out = [f"{d.gas} at {d.pressure / PSI:,.0f} psi: the acceleration {p.peak / G0:,.0f} g after the valve's ramp, "
-           f"{a_end / G0:,.0f} g at the open end ({a_end / spec.pulse.peak:.3g} of the peak); the pulse "
-           + _band_words(band)[10:],
+           f"{a_end / G0:,.0f} g as the ports open ({a_end / spec.pulse.peak:.3g} of the peak), "
+           f"{p.fall.acceleration[-1] / G0:,.0f} g ({p.fall.end_ratio:.3g} p0) as the arrest separates the carriage "
+           f"and article {(p.separation_time - p.port_time) * 1e3:.3g} ms later; the pulse " + _band_words(d.band)[10:],
            f"piston {mv.material} {mv.piston_thickness * 1e3:.0f} mm x {mv.bore / IN:.3g} in ({mv.piston_mass:.3g} kg), "
-           f"carriage {mv.carriage_mass:.3g} kg: {mv.total:.4g} kg driven over {p.stroke:.3g} m to {p.end_speed:.4g} m/s",
-           f"tank {d.gun.reservoir_volume:.3g} m^3 ({CHAMBER_HOLD:.0%} fall at most); caught at "
-           f"{s.deceleration / spec.pulse.peak:.0%} of the peak after {d.free_run:.3g} m of free run by a {s.kind} ({s.stroke:.3g} m of stroke, "
-           f"{s.length:.3g} m long, {s.absorber_mass:,.0f} kg)",
-           f"the lumped gun on the same cylinder and tank (finite tank, valve flow, Lagrange gas, air ahead): "
-           f"{lu['end_speed']:.4g} m/s after the fall ({lu['speed_error']:+.2%} of the chambered law's), peak "
-           f"{lu['peak'] / G0:,.0f} g ({lu['peak_error']:+.2%}); {_band_words(lu['band'])}",
+           f"carriage {mv.carriage_mass:.3g} kg: {mv.total:.4g} kg driven over {p.stroke:.3g} m to the ports and "
+           f"{p.fall_travel:.3g} m past them, to {p.end_speed:.4g} m/s",
+           f"ports: {band.share:.0%} of a {band.length:.3g} m band open ({band.area:.3g} m^2, "
+           f"{band.area / (math.pi * mv.bore ** 2 / 4):.3g} bores), holes {band.hole * 1e3:.0f} mm at a "
+           f"{band.pitch * 1e3:.0f} mm pitch (ligament efficiency {band.efficiency:.2f}) in a {band.thickness * 1e3:.0f} "
+           f"mm wall ({band.mass:+.3g} kg on the plain wall)",
+           f"the piston's arrest: a {d.arrest.kind}, {d.arrest.force / 1e6:.3g} MN over {d.arrest.stroke:.3g} m "
+           f"({d.arrest.deceleration / G0:,.0f} g), plus the gas's push on the held piston, {d.push / 1e6:.3g} MN: "
+           f"{(d.arrest.force + d.push) / d.arrest_limit:.3g} of what its rim carries ({d.arrest_limit / 1e6:.3g} MN)",
+           f"tank {d.gun.reservoir_volume:.3g} m^3 ({CHAMBER_HOLD:.0%} fall at most); the carriage and article caught "
+           f"at {s.deceleration / spec.pulse.peak:.0%} of the peak after {d.free_run:.3g} m of free run by a {s.kind} "
+           f"({s.stroke:.3g} m of stroke, {s.length:.3g} m long, {s.absorber_mass:,.0f} kg)",
+           f"the lumped gun on the same cylinder and tank (finite tank, valve flow, Lagrange gas, air ahead) to the "
+           f"ports, then the same ported fall to the arrest: {lu['end_speed']:.4g} m/s ({lu['speed_error']:+.2%} of "
+           f"the chambered law's), peak {lu['peak'] / G0:,.0f} g ({lu['peak_error']:+.2%}); {_band_words(lu['band'])}",
            f"machine {d.machine_mass:,.0f} kg: tank {d.launcher.design.tank_weight:,.0f}, cylinder "
-           f"{d.cylinder_mass:,.0f}, moving {mv.total:.3g}, catch {s.absorber_mass:,.0f}, frame {d.frame_mass:,.0f}; "
-           f"length {d.machine_length:.3g} m: tank {d.tank_length:.3g}, cylinder {d.cylinder_length:.3g}, free run "
-           f"{d.free_run:.3g}, catch {s.length:.3g}",
-           f"vents {d.vented_mass:.3g} kg of {d.gas} a shot ({d.vented_volume:,.0f} m^3 at 0 degC, 1 atm: the tank "
-           f"and cylinder, nothing closing the supply), not recovered in this design: a running cost",
-           B.words(d.blowdown, mv.total * p.end_speed),
-           "valve opening against the band (same k and stroke): " + "; ".join(
+           f"{d.cylinder_mass:,.0f}, moving {mv.total:.3g}, arrest {d.arrest.absorber_mass:,.0f}, catch "
+           f"{s.absorber_mass:,.0f}, frame {d.frame_mass:,.0f}; length {d.machine_length:.3g} m: tank "
+           f"{d.tank_length:.3g}, cylinder {d.cylinder_length:.3g}, free run {d.free_run:.3g}, catch {s.length:.3g}",
+           "the gas a shot vents with the valve closing from the separation (the tank and the cylinder emptying "
+           "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings)
+           + f"; the ports' jets are radial and cancel, so the foundation takes no blowdown thrust",
+           "valve opening against the band (same k, ports and arrest): " + "; ".join(
                f"{o['opening'] * 1e3:g} ms: peak {o['peak'] / G0:,.0f} g, {o['speed_error']:+.1%} in speed, "
                + ("in" if o["band"].passed else f"OUTSIDE (worst excess {o['band'].worst_excess:.3g})")
                for o in d.openings)]
     out += [f"limit broken: {lim.describe()}" for lim in broken(d.limits)]
     return out
+
+
+def _closing_words(c: dict, gas: str) -> str:
+    when = "left open" if not math.isfinite(c["closing"]) else f"{c['closing'] * 1e3:g} ms"
+    return f"{when}: {c['vented']:.3g} kg of {gas} (the held piston pushed for {c['push_time'] * 1e3:,.0f} ms)"
 
 
 def arrangement(d: GasDrive) -> Arrangement:
@@ -471,14 +599,21 @@ def gas_drives(spec: MachineSpec, fixture) -> list[GasDrive]:
 
 def _candidate_words(d: GasDrive) -> str:
     t = longest_opening_in_band(d)
-    return (f"a CANDIDATE, not a designed machine: within the limits checked and its pulse in the band only if its "
-            f"valve opens full-bore in {t * 1e3:g} ms or less (assumed; no valve sourced), the thrust is cut within "
-            "about one bore of travel after the open end (the stated fall; nothing in the design cuts it) and the "
-            "losses the model leaves out (the gas column's inertia, the valve's loss, the seal's friction) stay "
-            f"within a few per cent of the velocity change; it vents {d.vented_mass:.3g} kg of {d.gas} "
-            f"({d.vented_volume:,.0f} m^3 at standard conditions) a shot; its mass and length leave out the valve, "
-            "the blowdown's foundation and the gas's handling; and it gives an axial pulse only (it is the white "
-            "paper's closed-muzzle gun)")
+    shut = {c["closing"]: c for c in d.closings}
+    open_ = shut[math.inf]
+    quick = min((c for c in d.closings if math.isfinite(c["closing"])), key=lambda c: c["closing"])
+    lumped = "in" if d.lumped["band"].passed else f"OUTSIDE (worst excess {d.lumped['band'].worst_excess:.3g})"
+    return (f"a CANDIDATE, not a designed machine: within the limits checked, its thrust ended by vent ports and "
+            f"the piston's arrest (computed: {d.pulse.fall.end_ratio:.3g} p0 left when the carriage and article "
+            f"separate), and its pulse in the band only if its valve opens full-bore in {t * 1e3:g} ms or less "
+            f"(assumed; no valve sourced; the lumped gun's slower shot to the same arrest is {lumped} the band), "
+            f"and the losses the model leaves out (the valve's loss, the seal's friction) stay within a few per "
+            f"cent of the velocity change; with the valve left open a shot vents {open_['vented']:.3g} kg of "
+            f"{d.gas} ({d.vented_volume:,.0f} m^3 at standard conditions) radially through the ports, the "
+            f"foundation taking no blowdown thrust; a supply valve closing in {quick['closing'] * 1e3:g} ms after "
+            f"the separation would vent {quick['vented']:.3g} kg (assumed, no such valve sourced either); its mass "
+            "and length leave out the valve and the gas's handling; and it gives an axial pulse only (it is the "
+            "white paper's closed-muzzle gun)")
 
 
 def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str:
@@ -506,7 +641,7 @@ def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str
         why = "their common fixture breaks its own limits" if not fixture else "neither is within its limits"
         parts.append(f"so the gas drive in {best.gas} is the candidate to check where neither the amplifier nor the "
                      f"direct gun is a machine ({why}): on these numbers velocity amplification is not the answer, "
-                     "and the gas drive is one only once its valve and the thrust's end are designed")
+                     "and the gas drive is one only once its valve is sourced")
     else:
         other = b if b_ok else a
         parts.append(f"the gas drive in {best.gas} weighs {best.machine_mass / 1e3:.3g} t and is "

@@ -1,0 +1,266 @@
+"""The end of the gas drive's thrust (arrangement (d), ``machine.gas_drive``): vent ports in the cylinder's wall
+that the piston uncovers at the end of its stroke, and an arrest that stops the piston while the carriage and the
+article run on.
+
+Why this end.  Three ways to end a HYGE-type drive's thrust were weighed:
+
+* a fast-closing supply valve alone does not end it: the cylinder's own charge (the swept volume at the base
+  pressure) keeps pushing, falling only as (x / x_c)^-gamma, a half in helium after half the stroke again (about
+  a millisecond at 441 m/s), and a full-bore valve closing faster than it opens is no more sourced than the
+  opening;
+* a fixed charge (no tank on the cylinder during the shot) holds the plateau within the band only with a charge
+  volume several times the swept volume, which is the tank again, and it too vents whole;
+* vent ports give the gas behind the piston a way out where the piston is, so the base pressure falls as soon
+  as they open, and an arrest ahead of the piston separates the carriage and the article from it, which cuts
+  what is left of the thrust on the article at once.  This is the end built here.
+
+The fall.  The ports' holes (``PORT_SHARE`` of the wall open, round holes on a square pitch) start where the
+piston's back is at the stroke x_p; as it travels on, the uncovered area grows as A_v(x) = share pi D (x - x_p).
+For the few tenths of a millisecond of the fall the gas column behind the piston is the drive's infinitely
+chambered column (the valve and tank do not see the ports before their rarefaction has crossed the column, 2 x_p /
+c0 later), and the ports at the piston's face take a volume flux Q = mdot / rho_b out of it: to the column the
+face recedes at u + Q / A, so the base pressure is
+
+    p_b = p0 pi(u + Q(p_b) / A),   Q = mdot(A_v, p_b, T_b) / rho_b,   T_b = T0 (p_b / p0)^((gamma - 1) / gamma),
+
+pi the chambered law (``simple_wave.chambered_pressure_ratio``), mdot the one orifice law
+(``launcher.gas.orifice_flow``, the gas at the face its upstream state, venting to the test cell), solved for
+p_b at each instant (``ported_pressure_ratio``).  On the subsonic branch with the ports choked it has a closed
+form: with s = c_b / c0, s^2 + (gamma - 1) / 2 (u / c0 + Gamma alpha s)^2 = 1, alpha = A_v / A and Gamma the
+choked flow factor (``ported_ratio_closed_form``, the verification's).  The moving mass then follows
+u' = k p_b / p0 (k = p0 A / m) until the piston's front meets the arrest at x_a (``ported_fall``): the arrest's
+force rises within its own impact time, far shorter than the fall, so the carriage and the article leave the
+piston there and run free (their acceleration zero), whatever of the thrust is left.
+
+After it.  The piston is held on its arrest while the tank blows down through the open valve and the ports:
+the cylinder's pressure settles where the valve's inflow equals the ports' outflow, both at the tank's stagnation
+temperature (adiabatic mixing, ``steady_pressure``), and the arrest carries that push as well as the piston's
+momentum.  The ports are a ring around the cylinder, so their jets' axial reactions cancel: the foundation
+takes no blowdown thrust (the bore's open end, whose jet pushed the frame back, is closed by the arrest's head).
+The gas a shot vents is the cylinder's and whatever the valve passes before it closes (``vent_history``: the tank
+and the cylinder two control volumes, the tank's gas isentropic, the cylinder's mixing, the valve's area falling
+linearly over its closing time from the separation); with the valve left open it is the whole tank.
+
+The ports' band (``port_band``): round holes of the band's wall thickness on a square pitch p, the open share
+pi d^2 / (4 p^2); the ligament efficiency E = (p - d) / p (ASME VIII-1 UG-53, the longitudinal ligament) sets
+the band's wall so that the hoop stress at p0 across the ligaments, p0 R / (E t) (thin wall), and the arrest's
+force crossing the same ligaments axially, F / (E pi D_m t), are within the allowable.  The
+piston on its arrest: its front annulus, from the carriage's passage (radius r_i) to the bore, bears on the
+arrest, against its own inertia and the gas's push, a uniform load q = F / A over its face; the annulus bears
+(F over its area at most S) and the central disc inside it bends as a simply supported disc of radius r_i
+under q, sigma = 3 (3 + nu) q r_i^2 / (8 h^2) (Roark, 7th ed., Table 11.2 case 10a; an upper bound, the disc
+being continuous with the supported annulus), so the arrest's force is at most the lesser of the two
+(``arrest_force_limit``).  The band's wall is a forged ring of the specification's steel at its allowable
+(yield over the safety factor) flanged between the cylinder's pipes, not the pipe's ASME grade: the ligaments
+need the strength, and a thinner band keeps the gas's transit through its holes short.
+
+Range (checked on every design, ``range_limits``): a perfect gas; the ports quasi-steady (the gas crosses the
+band's wall, t / c_b, within ``PORT_WALL_RANGE`` of the fall); the ports at the piston's face (the band's wave
+transit l_p / c_b within ``PORT_SPREAD_RANGE`` of the fall); the column the chambered one through the fall (its
+echo from the valve, 2 x_p / c0, no sooner than the fall's end); the arrest's force rising to the thrust left
+within a time short against the fall (stated, not checked: the absorber's impact time).  Left out: the ports' discharge coefficient (1, an upper bound on their flow), the gas's axial
+momentum at the ports' entry (its static state taken as the stagnation: less flow), the air ahead of the piston
+in the arrest's bore.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+from ..launcher.gas import Gas, orifice_flow
+from ..launcher.simple_wave import chambered_pressure_ratio, escape_speed
+from . import blowdown as B
+from .limits import Limit
+
+PORT_SHARE = 0.3             # the band's wall open to the ports (holes at d / p = 0.62, E = 0.38)
+PORT_WALL_RANGE = 0.1        # the gas's transit through the band's wall over the fall
+PORT_SPREAD_RANGE = 0.5      # the band's wave transit l_p / c_b over the fall
+RTOL = 1e-10
+
+
+def area_ratio_rate(share: float, bore: float) -> float:
+    """beta = d(A_v / A) / dx [1/m]: the uncovered ports over the bore's area per metre of travel past x_p."""
+    return share * math.pi * bore / (math.pi * bore * bore / 4)
+
+
+def ported_pressure_ratio(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float) -> float:
+    """p_b / p0 at the piston's face at ``u`` [m/s] with ports of ``alpha`` times the bore's area open behind it
+    (module docstring)."""
+    c0 = gas.sound_speed(p0, T0)
+    bare = chambered_pressure_ratio(u, c0, gas.gamma)
+    if alpha <= 0 or bare * p0 <= ambient:
+        return bare
+
+    def excess(r):
+        p, T = r * p0, T0 * r ** ((gas.gamma - 1) / gas.gamma)
+        q = orifice_flow(gas, alpha, p, T, ambient) / (p / (gas.R * T))   # Q / A: alpha stands for A_v / A
+        return chambered_pressure_ratio(min(u + q, escape_speed(c0, gas.gamma, True)), c0, gas.gamma) - r
+    # at r = pi(u) the ports' flux lowers the pressure below it; at the ambient they take none
+    return float(brentq(excess, ambient / p0, bare, xtol=1e-14, rtol=1e-13))
+
+
+def ported_ratio_closed_form(u: float, alpha: float, c0: float, gamma: float) -> float:
+    """The same on the subsonic branch, ports choked (module docstring): the root of the quadratic in s."""
+    Gamma, g1 = B.mass_flow_factor(gamma), gamma - 1
+    a, b, c = 1 + g1 / 2 * (Gamma * alpha) ** 2, g1 * (u / c0) * Gamma * alpha, g1 / 2 * (u / c0) ** 2 - 1
+    s = (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
+    return s ** (2 * gamma / g1)
+
+
+@dataclass
+class PortedFall:
+    """The thrust's fall from the ports' opening to the separation."""
+    time: np.ndarray             # [s]
+    acceleration: np.ndarray     # [m/s^2]
+    ratio: np.ndarray            # p_b / p0
+    end_time: float              # the separation [s]
+    end_speed: float             # [m/s]
+    end_travel: float            # the piston's back at the separation, x_a [m]
+    end_ratio: float             # p_b / p0 just before it
+
+
+@dataclass(frozen=True)
+class Ports:
+    """The ports behind the piston: its gas and chamber state, and ``beta`` (``area_ratio_rate``)."""
+    gas: Gas
+    p0: float                    # [Pa]
+    T0: float                    # [K]
+    beta: float                  # [1/m]
+    ambient: float = B.ATMOSPHERE
+
+
+def ported_fall(k: float, ports: Ports, u_p: float, x_p: float, t_p: float, t_end: float | None = None,
+                x_end: float | None = None, samples: int = 200) -> PortedFall:
+    """u' = k p_b / p0, x' = u from the ports' opening (u_p, x_p at t_p) to the separation, at ``t_end`` [s] or
+    where the piston reaches ``x_end`` [m] (module docstring)."""
+    gas, p0, T0, beta, ambient = ports.gas, ports.p0, ports.T0, ports.beta, ports.ambient
+
+    def ratio(u, x):
+        return ported_pressure_ratio(u, beta * max(x - x_p, 0.0), gas, p0, T0, ambient)
+
+    def rhs(t, y):
+        return [k * ratio(*y), y[0]]
+    event = None
+    if x_end is not None:
+        def event(t, y):
+            return y[1] - x_end
+        event.terminal, event.direction = True, 1
+    # long enough to reach x_end at the opening speed, twice over
+    span = t_end - t_p if t_end is not None else 2 * (x_end - x_p) / max(u_p, 1e-9)
+    sol = solve_ivp(rhs, (t_p, t_p + span), [u_p, x_p], method="DOP853", rtol=RTOL,
+                    atol=[RTOL * max(u_p, 1.0), RTOL * max(x_p, 1e-3)], events=event, dense_output=True)
+    t1 = float(sol.t[-1])
+    t = np.linspace(t_p, t1, samples)
+    y = sol.sol(t)
+    r = np.array([ratio(u, x) for u, x in y.T])
+    return PortedFall(t, k * r, r, t1, float(sol.y[0, -1]), float(sol.y[1, -1]), float(r[-1]))
+
+
+def steady_pressure(gas: Gas, p0: float, T0: float, valve_area: float, port_area: float, ambient: float) -> float:
+    """The cylinder's pressure [Pa] with the valve and the ports open and the piston held: the valve's inflow
+    from the tank at (p0, T0) equal to the ports' outflow, the cylinder at T0 (module docstring)."""
+    def balance(p):
+        return orifice_flow(gas, valve_area, p0, T0, p) - orifice_flow(gas, port_area, p, T0, ambient)
+    return float(brentq(balance, ambient, p0, xtol=1e-9 * p0))
+
+
+@dataclass
+class Venting:
+    """The tank and the cylinder emptying after the separation."""
+    vented: float                # the gas the shot vents [kg]: the tank's loss and all the cylinder held
+    tank_left: float             # [kg]
+    time: np.ndarray             # [s] from the separation
+    cylinder_pressure: np.ndarray   # [Pa]
+    tank_pressure: np.ndarray    # [Pa]
+
+
+def vent_history(gas: Gas, tank: tuple[float, float, float], cylinder: tuple[float, float, float],
+                 valve_area: float, port_area: float, closing: float, ambient: float, duration: float,
+                 samples: int = 400) -> Venting:
+    """The tank and the cylinder as control volumes (module docstring): ``tank`` and ``cylinder`` as (volume
+    [m^3], pressure [Pa], temperature [K]); the valve's area falls linearly to zero over ``closing`` [s] (inf:
+    left open) from the separation, the ports' area fixed; integrated over ``duration`` [s]."""
+    V_t, V_c = tank[0], cylinder[0]
+    m_t0, m_c0 = (gas.mass_for(p, T, V) for V, p, T in (tank, cylinder))
+    y0 = [m_t0, m_t0 * gas.cv * tank[2], m_c0, m_c0 * gas.cv * cylinder[2]]
+
+    def state(m, U, V):
+        return (gas.pressure(m, U, V), gas.temperature(m, U)) if m > 0 else (0.0, 0.0)
+
+    def valve(t):
+        if not math.isfinite(closing):
+            return valve_area
+        return valve_area * max(1 - t / closing, 0.0) if closing > 0 else 0.0
+
+    def rhs(t, y):
+        (p_t, T_t), (p_c, T_c) = state(y[0], y[1], V_t), state(y[2], y[3], V_c)
+        # the valve's flow either way, the upstream side's stagnation state; the ports to the test cell
+        m_v = (orifice_flow(gas, valve(t), p_t, T_t, p_c) - orifice_flow(gas, valve(t), p_c, T_c, p_t))
+        h_v = gas.cp * (T_t if m_v >= 0 else T_c)
+        m_p = orifice_flow(gas, port_area, p_c, T_c, ambient)
+        return [-m_v, -h_v * m_v, m_v - m_p, h_v * m_v - gas.cp * T_c * m_p]
+    t_eval = np.linspace(0.0, duration, samples)
+    sol = solve_ivp(rhs, (0.0, duration), y0, method="LSODA", rtol=1e-8, atol=[1e-8 * m_t0, 1e-8 * y0[1],
+                    1e-8 * m_t0, 1e-8 * y0[1]], t_eval=t_eval)
+    p_c = np.array([state(m, U, V_c)[0] for m, U in zip(sol.y[2], sol.y[3])])
+    p_t = np.array([state(m, U, V_t)[0] for m, U in zip(sol.y[0], sol.y[1])])
+    # once the valve is shut the cylinder's gas goes to the cell whole (to its ambient charge, left out)
+    left = float(sol.y[0, -1])
+    return Venting(m_t0 + m_c0 - left, left, sol.t, p_c, p_t)
+
+
+def arrest_force_limit(h: float, S: float, nu: float, bore: float, inner: float) -> float:
+    """The largest force [N] the piston (thickness ``h``, allowable ``S``) puts on its arrest, an annulus from the
+    carriage's passage (diameter ``inner``) to the ``bore`` (module docstring): the central disc's bending under
+    the face's uniform load, q <= 8 h^2 S / (3 (3 + nu) r_i^2) (Roark Table 11.2 case 10a), or the annulus's
+    bearing, S (A - pi r_i^2), whichever is less."""
+    r_i, A = inner / 2, math.pi * bore * bore / 4
+    return min(8 * h * h * S / (3 * (3 + nu) * r_i * r_i) * A, S * (A - math.pi * r_i * r_i))
+
+
+@dataclass
+class PortBand:
+    """The ring of vent ports: holes on a square pitch in a thickened band of the cylinder's wall."""
+    share: float                 # open share of the band's wall
+    length: float                # along the axis, x_a - x_p [m]
+    area: float                  # all its holes [m^2]
+    hole: float                  # diameter [m]
+    pitch: float                 # [m]
+    efficiency: float            # the ligament's, (p - d) / p
+    thickness: float             # the band's wall [m]
+    hoop_stress: float           # across the ligaments at p0 [Pa]
+    axial_stress: float          # the arrest's force across the ligaments [Pa]
+    mass: float                  # the band over the plain wall it replaces [kg]
+
+
+def port_band(bore: float, length: float, share: float, p0: float, allowable: float, wall: float, rho: float,
+              arrest_force: float) -> PortBand:
+    """The band (module docstring): its wall at the ``allowable`` across the ligaments, against p0's hoop stress
+    or the arrest's force, whichever needs more; its holes one band thickness across; its mass over the plain
+    ``wall`` it replaces."""
+    ratio = math.sqrt(4 * share / math.pi)       # d / p
+    E = 1 - ratio
+    t = max(p0 * bore / 2 / (E * allowable), arrest_force / (E * math.pi * bore * allowable))
+    hoop = p0 * bore / 2 / (E * t)
+    axial = arrest_force / (E * math.pi * (bore + t) * t)
+    shell = rho * math.pi * (bore + t) * t * length * (1 - share)
+    plain = rho * math.pi * (bore + wall) * wall * length
+    return PortBand(share, length, share * math.pi * bore * length, t, t / ratio, E, t, hoop, axial,
+                    shell - plain)
+
+
+def range_limits(band: PortBand, fall: float, stroke: float, c0: float, c_b: float) -> list[Limit]:
+    """The ported end's range (module docstring) as limits, each checked on the design; ``c_b`` the lowest
+    sound speed at the piston's face over the fall [m/s]."""
+    return [
+        Limit("gas drive ports", "gas transit through the band's wall over the fall", band.thickness / c_b / fall,
+              PORT_WALL_RANGE, "-", "t / c_b over t_f", "quasi-steady port flow"),
+        Limit("gas drive ports", "wave transit along the band over the fall", band.length / c_b / fall,
+              PORT_SPREAD_RANGE, "-", "l_p / c_b over t_f", "the ports at the piston's face"),
+        Limit("gas drive ports", "the fall over the column's echo from the valve", fall / (2 * stroke / c0), 1.0,
+              "-", "t_f over 2 x_p / c0", "the chambered column through the fall"),
+    ]
