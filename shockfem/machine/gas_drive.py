@@ -5,9 +5,9 @@ and no dashpot.
 The article stands on its nose seat (the carriage, a steel cylinder of its diameter and one diameter deep) on
 a thrust piston in a closed cylinder; a chamber (the tank) at p0 opens on the piston's back through a
 full-bore valve (a HYGE's seal lifting off its seat) and the gas drives piston, carriage and article over the
-stroke until the piston leaves the cylinder's open end, where the gas escapes around it and the drive ends;
-the moving mass then runs free past the pulse's monitoring window and is caught by an absorber
-(``stops.design_stop``).
+stroke until the piston's back uncovers vent ports in the cylinder's wall; its front then meets an arrest, and
+the carriage and article leave it and run free past the pulse's monitoring window to be caught by an absorber
+(``stops.design_stop``).  The end (ports, arrest, the gas a shot vents) is ``drive_end``'s.
 
 The drive's pressure (``drive_pulse``): the infinitely chambered gun's base pressure
 (``launcher.simple_wave.chambered_pressure_ratio``, Seigel 1965 ch. 3), so the specific force
@@ -15,12 +15,14 @@ k = p0 A / m falls as the piston speeds up, a(t) = k s(t) pi(u) with
 
 * s(t) = t / t_r over the valve's opening, t_r the trapezoid's rise (10% of D, ``metrics.shapes.specified``),
   then 1: the onset ramp the valve must give (the chamber's pressure let in in proportion to its opening);
-* once the piston's back passes the open end (at t_p = D - t_f) the force falls linearly to zero over the
-  trapezoid's fall t_f (the gas escaping round the piston); u_end = u_p + a_p t_f / 2.
+* once the piston's back uncovers the ports (at t_p = D - t_f) the base pressure falls as the ports take gas
+  from the piston's face (``drive_end.ported_fall``) until the arrest at D separates the carriage and article
+  (the arrest's place x_a is where the piston is at D).
 
 The design (``design_gas_drive``) holds the trapezoid's velocity change (its band centre, 441 m/s for
 10,000 g and 5 ms) and its duration D foot to foot: one specific force k does both (``specific_force_for``),
-so the plateau's mean is the peak; sizing the bore instead for m P at the pressure left at the end of the
+so the plateau's mean is the peak (the ports' size follows the bore, so k and the bore are a fixed point,
+``_ported_design``); sizing the bore instead for m P at the pressure left at the end of the
 stroke (a plateau that starts at P / pi(u_end)) would make the pulse shorter than D.  Then the parts, at the
 spec's highest pressure p0 (the smallest bore and the lightest piston: the piston's own inertia takes
 rho h a of the pressure):
@@ -42,12 +44,12 @@ rho h a of the pressure):
   load then enters over r_b;
 * the catch at the spec's catch deceleration (``MachineSpec.catch``, the rule every row of the premise uses),
   after a free run of the band's monitoring window after the pulse (1.5 D at u_end), so that the catch is no
-  part of the record the band checks; the frame carries the largest of the drive's thrust p0 A, the catch's
-  force at the allowable, and the blowdown's thrust once the piston has left: nothing closes the supply, so
-  the tank empties through the choked bore (``machine.blowdown``: its thrust C_F p0 A at first, its impulse),
-  a reaction the foundation takes (``layout.frame_force``);
-* the gas a shot vents: the tank's and the cylinder's charge, as nothing closes the supply (``vented_gas``),
-  a running cost, not a limit.
+  part of the record the band checks; the frame carries the larger of the drive's thrust p0 A and the catch's
+  force (``layout.frame_force``): the ports' jets are radial and cancel, so no blowdown thrust reaches it;
+* the ports' band and the piston's arrest (``drive_end``: the band's ligaments at the allowable, the arrest at
+  the force the piston carries onto it less the gas's push on the held piston);
+* the gas a shot vents with the valve left open and with it closing over ``CLOSING_TIMES``
+  (``closing_sensitivity``), a running cost, not a limit.
 
 The valve's opening time is assumed, no source found for a full-bore differential-area seal's opening at this
 bore and pressure; ``opening_sensitivity`` gives the band against it (the same machine, k and stroke, the
@@ -549,7 +551,7 @@ def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
            f"mm wall ({band.mass:+.3g} kg on the plain wall)",
            f"the piston's arrest: a {d.arrest.kind}, {d.arrest.force / 1e6:.3g} MN over {d.arrest.stroke:.3g} m "
            f"({d.arrest.deceleration / G0:,.0f} g), plus the gas's push on the held piston, {d.push / 1e6:.3g} MN: "
-           f"{(d.arrest.force + d.push) / d.arrest_limit:.3g} of what its rim carries ({d.arrest_limit / 1e6:.3g} MN)",
+           f"{(d.arrest.force + d.push) / d.arrest_limit:.3g} of the most the piston puts on it ({d.arrest_limit / 1e6:.3g} MN)",
            f"tank {d.gun.reservoir_volume:.3g} m^3 ({CHAMBER_HOLD:.0%} fall at most); the carriage and article caught "
            f"at {s.deceleration / spec.pulse.peak:.0%} of the peak after {d.free_run:.3g} m of free run by a {s.kind} "
            f"({s.stroke:.3g} m of stroke, {s.length:.3g} m long, {s.absorber_mass:,.0f} kg)",
