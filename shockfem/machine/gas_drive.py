@@ -536,22 +536,17 @@ def longest_opening_in_band(d: GasDrive) -> float:
 
 
 def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
-    mv, p, s, lu, band = d.moving, d.pulse, d.stop, d.lumped, d.port_band
+    mv, p, s, lu = d.moving, d.pulse, d.stop, d.lumped
     a_end = p.specific_force * chambered_pressure_ratio(p.port_speed, d.sound_speed, GASES[d.gas].gamma)
     out = [f"{d.gas} at {d.pressure / PSI:,.0f} psi: the acceleration {p.peak / G0:,.0f} g after the valve's ramp, "
            f"{a_end / G0:,.0f} g as the ports open ({a_end / spec.pulse.peak:.3g} of the peak), "
-           f"{p.fall.acceleration[-1] / G0:,.0f} g ({p.fall.end_ratio:.3g} p0) as the arrest separates the carriage "
-           f"and article {(p.separation_time - p.port_time) * 1e3:.3g} ms later; the pulse " + _band_words(d.band)[10:],
-           f"piston {mv.material} {mv.piston_thickness * 1e3:.0f} mm x {mv.bore / IN:.3g} in ({mv.piston_mass:.3g} kg), "
-           f"carriage {mv.carriage_mass:.3g} kg: {mv.total:.4g} kg driven over {p.stroke:.3g} m to the ports and "
+           f"{p.fall.acceleration[-1] / G0:,.0f} g ({p.fall.end_ratio:.3g} p0) as the arrest separates the "
+           f"carriage and article {(p.separation_time - p.port_time) * 1e3:.3g} ms later; the pulse "
+           + _band_words(d.band)[10:],
+           f"piston {mv.material} {mv.piston_thickness * 1e3:.0f} mm x {mv.bore / IN:.3g} in "
+           f"({mv.piston_mass:.3g} kg), carriage {mv.carriage_mass:.3g} kg: {mv.total:.4g} kg driven over "
+           f"{p.stroke:.3g} m to the ports and "
            f"{p.fall_travel:.3g} m past them, to {p.end_speed:.4g} m/s",
-           f"ports: {band.share:.0%} of a {band.length:.3g} m band open ({band.area:.3g} m^2, "
-           f"{band.area / (math.pi * mv.bore ** 2 / 4):.3g} bores), holes {band.hole * 1e3:.0f} mm at a "
-           f"{band.pitch * 1e3:.0f} mm pitch (ligament efficiency {band.efficiency:.2f}) in a {band.thickness * 1e3:.0f} "
-           f"mm wall ({band.mass:+.3g} kg on the plain wall)",
-           f"the piston's arrest: a {d.arrest.kind}, {d.arrest.force / 1e6:.3g} MN over {d.arrest.stroke:.3g} m "
-           f"({d.arrest.deceleration / G0:,.0f} g), plus the gas's push on the held piston, {d.push / 1e6:.3g} MN: "
-           f"{(d.arrest.force + d.push) / d.arrest_limit:.3g} of the most the piston puts on it ({d.arrest_limit / 1e6:.3g} MN)",
            f"tank {d.gun.reservoir_volume:.3g} m^3 ({CHAMBER_HOLD:.0%} fall at most); the carriage and article caught "
            f"at {s.deceleration / spec.pulse.peak:.0%} of the peak after {d.free_run:.3g} m of free run by a {s.kind} "
            f"({s.stroke:.3g} m of stroke, {s.length:.3g} m long, {s.absorber_mass:,.0f} kg)",
@@ -562,15 +557,29 @@ def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
            f"{d.cylinder_mass:,.0f}, moving {mv.total:.3g}, arrest {d.arrest.absorber_mass:,.0f}, catch "
            f"{s.absorber_mass:,.0f}, frame {d.frame_mass:,.0f}; length {d.machine_length:.3g} m: tank "
            f"{d.tank_length:.3g}, cylinder {d.cylinder_length:.3g}, free run {d.free_run:.3g}, catch {s.length:.3g}",
-           "the gas a shot vents with the valve closing from the separation (the tank and the cylinder emptying "
-           "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings)
-           + f"; the ports' jets are radial and cancel, so the foundation takes no blowdown thrust",
            "valve opening against the band (same k, ports and arrest): " + "; ".join(
                f"{o['opening'] * 1e3:g} ms: peak {o['peak'] / G0:,.0f} g, {o['speed_error']:+.1%} in speed, "
                + ("in" if o["band"].passed else f"OUTSIDE (worst excess {o['band'].worst_excess:.3g})")
                for o in d.openings)]
+    out[2:2] = _end_notes(d)
     out += [f"limit broken: {lim.describe()}" for lim in broken(d.limits)]
     return out
+
+
+def _end_notes(d: GasDrive) -> list[str]:
+    """The ports, the arrest and the gas a shot vents, in words."""
+    mv, band, a = d.moving, d.port_band, d.arrest
+    return [f"ports: {band.share:.0%} of a {band.length:.3g} m band open ({band.area:.3g} m^2, "
+            f"{band.area / (math.pi * mv.bore ** 2 / 4):.3g} bores), holes {band.hole * 1e3:.0f} mm at a "
+            f"{band.pitch * 1e3:.0f} mm pitch (ligament efficiency {band.efficiency:.2f}) in a "
+            f"{band.thickness * 1e3:.0f} mm wall ({band.mass:+.3g} kg on the plain wall)",
+            f"the piston's arrest: a {a.kind}, {a.force / 1e6:.3g} MN over {a.stroke:.3g} m "
+            f"({a.deceleration / G0:,.0f} g, {a.consumed:.3g} kg used a shot), plus the gas's push on the held "
+            f"piston, {d.push / 1e6:.3g} MN: {(a.force + d.push) / d.arrest_limit:.3g} of the most the piston puts "
+            f"on it ({d.arrest_limit / 1e6:.3g} MN)",
+            "the gas a shot vents with the valve closing from the separation (the tank and the cylinder emptying "
+            "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings)
+            + "; the ports' jets are radial and cancel, so the foundation takes no blowdown thrust"]
 
 
 def _closing_words(c: dict, gas: str) -> str:
