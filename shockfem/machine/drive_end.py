@@ -20,23 +20,27 @@ Why this end.  Three ways to end a HYGE-type drive's thrust were weighed:
   is its lower chamber's gas and programmers (C. Lalanne, Mechanical Vibration and Shock, vol. II, ch. 6),
   which decelerate the table with the article on it rather than let it fly.
 
-The fall.  The ports' holes (``PORT_SHARE`` of the wall open, round holes on a square pitch) start where the
+The fall.  The ports' holes (a share of the wall open, ``PORT_SHARES``, round holes on a square pitch) start where the
 piston's back is at the stroke x_p; as it travels on, the uncovered area grows as A_v(x) = share pi D (x - x_p).
-For the few tenths of a millisecond of the fall the gas column behind the piston is the drive's infinitely
-chambered column (the valve's answer to the ports' rarefaction reaches the piston only 2 x_p / c0 later), and
-the ports at the piston's face take a volume flux Q = mdot / rho_b out of it: to the column the face recedes at
-u + Q / A, so the base pressure is
+The fall lasts a few tenths of a millisecond, less than the column's echo from the valve (2 x_p / c0: checked),
+so the ports' opening is an unsteady event in the gas column, not a new steady state: the ports at the
+piston's face take a volume flux Q = mdot / rho_b out of it, so the gas at the face moves at u + Q / A, and a
+rarefaction runs up the column, across which the Riemann invariant u + 2 c / (gamma - 1) of the column's own
+flow (u, c_s: the chambered column at the piston's speed, c_s = c0 pi(u)^((gamma - 1) / (2 gamma))) holds.  The
+face's pressure is therefore the simple-wave gun's law with the ports' flux as the face's extra speed,
 
-    p_b = p0 pi(u + Q(p_b) / A),   Q = mdot(A_v, p_b, T_b) / rho_b,   T_b = T0 (p_b / p0)^((gamma - 1) / gamma),
+    p_b = p0 pi(u) (1 - (gamma - 1) / 2 Q(p_b) / (A c_s))^(2 gamma / (gamma - 1)),
+    Q = mdot(A_v, p_b, T_b) / rho_b,   T_b = T0 (p_b / p0)^((gamma - 1) / gamma),
 
-pi the chambered law (``simple_wave.chambered_pressure_ratio``), mdot the one orifice law
-(``launcher.gas.orifice_flow``, the gas at the face its upstream state, venting to the test cell), solved for
-p_b at each instant (``ported_pressure_ratio``).  On the subsonic branch with the ports choked it has a closed
-form: with s = c_b / c0, s^2 + (gamma - 1) / 2 (u / c0 + Gamma alpha s)^2 = 1, alpha = A_v / A and Gamma the
-choked flow factor (``ported_ratio_closed_form``, the verification's).  The moving mass then follows
-u' = k p_b / p0 (k = p0 A / m) until the piston's front meets the arrest at x_a (``ported_fall``): the arrest's
-force rises within its own impact time, far shorter than the fall, so the carriage and the article leave the
-piston there and run free (their acceleration zero), whatever of the thrust is left.
+pi the chambered law (``simple_wave.chambered_pressure_ratio``) and the bracket ``simple_wave.
+base_pressure_ratio``, mdot the one orifice law (``launcher.gas.orifice_flow``, the gas at the face its upstream
+state, venting to the test cell), solved for p_b at each instant (``ported_pressure_ratio``).  With the ports
+choked, Q / A = Gamma alpha c_b (alpha = A_v / A, Gamma the choked flow factor, c_b = c_s w), so w = 1 - (gamma
+- 1) / 2 Gamma alpha w and the law has a closed form, p_b = p0 pi(u) (1 + (gamma - 1) / 2 Gamma alpha)^(-2 gamma
+/ (gamma - 1)) (``ported_ratio_closed_form``, the verification's).  The moving mass then follows u' = k p_b / p0
+(k = p0 A / m) until the piston's front meets the arrest at x_a (``ported_fall``): the arrest's force rises
+within its own impact time, far shorter than the fall, so the carriage and the article leave the piston there and
+run free (their acceleration zero), whatever of the thrust is left.
 
 After it.  The piston is held on its arrest while the tank blows down through the open valve and the ports:
 the cylinder's pressure settles where the valve's inflow equals the ports' outflow, both at the tank's stagnation
@@ -63,7 +67,7 @@ need the strength, and a thinner band keeps the gas's transit through its holes 
 Range (checked on every design, ``range_limits``): a perfect gas; the ports quasi-steady (the gas crosses the
 band's wall, t / c_b, within ``PORT_WALL_RANGE`` of the fall); the ports at the piston's face (the band's wave
 transit l_p / c_b within ``PORT_SPREAD_RANGE`` of the fall); the column the chambered one through the fall (its
-echo from the valve, 2 x_p / c0, no sooner than the fall's end); the arrest's force rising to the thrust left
+echo from the valve, 2 x_p / c0, no sooner than the fall's end: the simple wave's own range); the arrest's force rising to the thrust left
 within a time short against the fall (stated, not checked: the absorber's impact time).  Left out: the ports'
 discharge coefficient (1, an upper bound on their flow), the gas's axial momentum at the ports' entry (its static
 state taken as the stagnation: less flow), the air ahead of the piston in the arrest's bore.
@@ -78,11 +82,14 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from ..launcher.gas import Gas, orifice_flow
-from ..launcher.simple_wave import chambered_pressure_ratio, escape_speed
+from ..launcher.simple_wave import base_pressure_ratio, chambered_pressure_ratio
 from . import blowdown as B
 from .limits import Limit
 
-PORT_SHARE = 0.3             # the band's wall open to the ports (holes at d / p = 0.62, E = 0.38)
+# the band's wall open to the ports, largest first: the design keeps the first whose end holds its range and
+# whose pulse is in the band at both of the face's bounds (``machine.gas_drive``); 0.3 is d / p = 0.62, E = 0.38
+PORT_SHARES = (0.3, 0.25, 0.2, 0.15, 0.1)
+INFLOW_RANGE = 1.0           # the column's Mach number into the ported band: past 1 it chokes there
 PORT_WALL_RANGE = 0.1        # the gas's transit through the band's wall over the fall
 PORT_SPREAD_RANGE = 0.5      # the band's wave transit l_p / c_b over the fall
 RTOL = 1e-10
@@ -93,28 +100,47 @@ def area_ratio_rate(share: float, bore: float) -> float:
     return share * math.pi * bore / (math.pi * bore * bore / 4)
 
 
-def ported_pressure_ratio(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float) -> float:
-    """p_b / p0 at the piston's face at ``u`` [m/s] with ports of ``alpha`` times the bore's area open behind it
-    (module docstring)."""
+def _ported_state(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float):
+    """(p / p0, Q / A, c) of the column where the ports are, at ``u`` [m/s] with ports of ``alpha`` times the
+    bore's area open (module docstring): the simple wave from the chambered column's state."""
     c0 = gas.sound_speed(p0, T0)
     bare = chambered_pressure_ratio(u, c0, gas.gamma)
+    c_s = c0 * bare ** ((gas.gamma - 1) / (2 * gas.gamma))
     if alpha <= 0 or bare * p0 <= ambient:
-        return bare
+        return bare, 0.0, c_s
 
-    def excess(r):
+    def flux(r):
         p, T = r * p0, T0 * r ** ((gas.gamma - 1) / gas.gamma)
-        q = orifice_flow(gas, alpha, p, T, ambient) / (p / (gas.R * T))   # Q / A: alpha stands for A_v / A
-        return chambered_pressure_ratio(min(u + q, escape_speed(c0, gas.gamma, True)), c0, gas.gamma) - r
+        return orifice_flow(gas, alpha, p, T, ambient) / (p / (gas.R * T))   # Q / A: alpha stands for A_v / A
     # at r = pi(u) the ports' flux lowers the pressure below it; at the ambient they take none
-    return float(brentq(excess, ambient / p0, bare, xtol=1e-14, rtol=1e-13))
+    r = float(brentq(lambda r: bare * base_pressure_ratio(flux(r), c_s, gas.gamma) - r, ambient / p0, bare,
+                     xtol=1e-14, rtol=1e-13))
+    return r, flux(r), c_s * (r / bare) ** ((gas.gamma - 1) / (2 * gas.gamma))
+
+
+def ported_pressure_ratio(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float,
+                          recovery: bool = False) -> float:
+    """p_b / p0 at the piston's face at ``u`` [m/s] with ports of ``alpha`` times the bore's area open behind it
+    (module docstring); ``recovery``: the face's upper bound, the gas that reaches the face stopped from the
+    column's speed to the piston's, p_b (1 + gamma M_f (M_in - M_f))."""
+    r, q, c = _ported_state(u, alpha, gas, p0, T0, ambient)
+    if not recovery:
+        return r
+    m_f = u / c
+    return r * (1 + gas.gamma * m_f * q / c)
+
+
+def inflow_mach(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float) -> float:
+    """M_in = (u + Q / A) / c: the column's Mach number into the ported band (module docstring)."""
+    r, q, c = _ported_state(u, alpha, gas, p0, T0, ambient)
+    return (u + q) / c
 
 
 def ported_ratio_closed_form(u: float, alpha: float, c0: float, gamma: float) -> float:
-    """The same on the subsonic branch, ports choked (module docstring): the root of the quadratic in s."""
-    Gamma, g1 = B.mass_flow_factor(gamma), gamma - 1
-    a, b, c = 1 + g1 / 2 * (Gamma * alpha) ** 2, g1 * (u / c0) * Gamma * alpha, g1 / 2 * (u / c0) ** 2 - 1
-    s = (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
-    return s ** (2 * gamma / g1)
+    """The same with the ports choked (module docstring): pi(u) (1 + (gamma - 1) / 2 Gamma alpha)^(-2 gamma /
+    (gamma - 1))."""
+    w = 1 / (1 + 0.5 * (gamma - 1) * B.mass_flow_factor(gamma) * alpha)
+    return chambered_pressure_ratio(u, c0, gamma) * w ** (2 * gamma / (gamma - 1))
 
 
 @dataclass
@@ -127,15 +153,19 @@ class PortedFall:
     end_speed: float             # [m/s]
     end_travel: float            # the piston's back at the separation, x_a [m]
     end_ratio: float             # p_b / p0 just before it
+    inflow_mach: float           # the largest M_in over the fall
 
 
 @dataclass(frozen=True)
 class Ports:
-    """The ports behind the piston: its gas and chamber state, and ``beta`` (``area_ratio_rate``)."""
+    """The ports behind the piston: its gas and chamber state, the wall's open ``share`` and ``beta``
+    (``area_ratio_rate``), and which of the face's bounds (``ported_pressure_ratio``)."""
     gas: Gas
     p0: float                    # [Pa]
     T0: float                    # [K]
     beta: float                  # [1/m]
+    share: float = 0.0
+    recovery: bool = False
     ambient: float = B.ATMOSPHERE
 
 
@@ -146,7 +176,7 @@ def ported_fall(k: float, ports: Ports, u_p: float, x_p: float, t_p: float, t_en
     gas, p0, T0, beta, ambient = ports.gas, ports.p0, ports.T0, ports.beta, ports.ambient
 
     def ratio(u, x):
-        return ported_pressure_ratio(u, beta * max(x - x_p, 0.0), gas, p0, T0, ambient)
+        return ported_pressure_ratio(u, beta * max(x - x_p, 0.0), gas, p0, T0, ambient, ports.recovery)
 
     def rhs(t, y):
         return [k * ratio(*y), y[0]]
@@ -163,7 +193,8 @@ def ported_fall(k: float, ports: Ports, u_p: float, x_p: float, t_p: float, t_en
     t = np.linspace(t_p, t1, samples)
     y = sol.sol(t)
     r = np.array([ratio(u, x) for u, x in y.T])
-    return PortedFall(t, k * r, r, t1, float(sol.y[0, -1]), float(sol.y[1, -1]), float(r[-1]))
+    mach = max(inflow_mach(u, beta * max(x - x_p, 0.0), gas, p0, T0, ambient) for u, x in y.T)
+    return PortedFall(t, k * r, r, t1, float(sol.y[0, -1]), float(sol.y[1, -1]), float(r[-1]), mach)
 
 
 def steady_pressure(gas: Gas, p0: float, T0: float, valve_area: float, port_area: float, ambient: float) -> float:
@@ -259,7 +290,7 @@ def port_band(bore: float, length: float, share: float, p0: float, allowable: fl
                     shell - plain)
 
 
-def range_limits(band: PortBand, fall: float, stroke: float, c0: float, c_b: float) -> list[Limit]:
+def range_limits(band: PortBand, fall: float, stroke: float, c0: float, c_b: float, mach: float) -> list[Limit]:
     """The ported end's range (module docstring) as limits, each checked on the design; ``c_b`` the lowest
     sound speed at the piston's face over the fall [m/s]."""
     return [
@@ -267,6 +298,8 @@ def range_limits(band: PortBand, fall: float, stroke: float, c0: float, c_b: flo
               PORT_WALL_RANGE, "-", "t / c_b over t_f", "quasi-steady port flow"),
         Limit("gas drive ports", "wave transit along the band over the fall", band.length / c_b / fall,
               PORT_SPREAD_RANGE, "-", "l_p / c_b over t_f", "the ports at the piston's face"),
+        Limit("gas drive ports", "the column's Mach number into the ports", mach, INFLOW_RANGE, "-",
+              "(u + Q / A) / c", "the simple wave feeding the ports (it chokes past 1)"),
         Limit("gas drive ports", "the fall over the column's echo from the valve", fall / (2 * stroke / c0), 1.0,
-              "-", "t_f over 2 x_p / c0", "the chambered column through the fall"),
+              "-", "t_f over 2 x_p / c0", "the simple wave through the fall (no echo yet)"),
     ]

@@ -290,6 +290,7 @@ class GasDrive:
     band: object = None          # ``metrics.shapes.BandCheck``
     limits: list = field(default_factory=list)
     lumped: dict = field(default_factory=dict)   # ``lumped_check``
+    recovery: dict = field(default_factory=dict)  # ``recovery_check``: the face's upper bound
     openings: list = field(default_factory=list)  # ``opening_sensitivity``
     vented_mass: float = math.nan     # the gas a shot vents, the valve left open [kg] (``closing_sensitivity``)
     vented_volume: float = math.nan   # the same at standard conditions [m^3]
@@ -306,7 +307,9 @@ class GasDrive:
 
     @property
     def feasible(self) -> bool:
-        return self.moving is not None and not broken(self.limits) and self.in_band
+        """Within its limits, and its pulse in the band at both of the face's bounds (``recovery_check``)."""
+        return (self.moving is not None and not broken(self.limits) and self.in_band
+                and bool(self.recovery) and self.recovery["band"].passed)
 
 
 def _no_drive(spec: MachineSpec, gas: str, c0: float, dv: float, why: str) -> GasDrive:
@@ -317,12 +320,20 @@ def design_gas_drive(spec: MachineSpec, gas: str, article: float, article_diamet
                      article_length: float) -> GasDrive:
     """(d) for ``gas`` at the spec's highest pressure: the pulse, the parts, the catch, the limits and the band
     (module docstring); the article [kg], its diameter and length [m]."""
-    g = GASES[gas]
-    p0 = spec.max_pressure
-    c0 = g.sound_speed(p0, TEMPERATURE)
     ideal = shapes.specified(spec.pulse.checked_shape, spec.pulse.peak, spec.pulse.duration)
-    dv = ideal.velocity_change
-    k, pulse, mv = _ported_design(spec, g, p0, c0, ideal, article, article_diameter / 2)
+    for share in E.PORT_SHARES:
+        d = _design_with_ports(spec, gas, share, article, article_diameter, article_length, ideal)
+        if d.feasible or d.moving is None:
+            break
+    return d
+
+
+def _design_with_ports(spec: MachineSpec, gas: str, share: float, article: float, article_diameter: float,
+                       article_length: float, ideal) -> GasDrive:
+    """(d) with ports of ``share`` of the band's wall open (``design_gas_drive``)."""
+    g, p0 = GASES[gas], spec.max_pressure
+    c0, dv = g.sound_speed(p0, TEMPERATURE), ideal.velocity_change
+    k, pulse, mv = _ported_design(spec, g, p0, c0, ideal, article, article_diameter / 2, share)
     if not math.isfinite(k):
         return _no_drive(spec, gas, c0, dv, f"{gas} cannot give {dv:.4g} m/s in {ideal.duration * 1e3:.3g} ms at any "
                          f"pressure: its escape speed is {escape_speed(c0, g.gamma, True):.4g} m/s")
@@ -335,19 +346,20 @@ def design_gas_drive(spec: MachineSpec, gas: str, article: float, article_diamet
         return d
     d = GasDrive(gas, p0, c0, dv, pulse, mv, None, band=band)
     _size_machine(d, spec, article, article_diameter, article_length, ideal)
+    d.recovery = recovery_check(d, spec, ideal)
     d.lumped = lumped_check(d, spec)
     d.openings = opening_sensitivity(d, spec)
     d.notes = _notes(d, spec)
     return d
 
 
-def _ported_design(spec: MachineSpec, g, p0: float, c0: float, ideal, article: float, r0: float):
+def _ported_design(spec: MachineSpec, g, p0: float, c0: float, ideal, article: float, r0: float, share: float):
     """k, the pulse and the moving mass with ports of the bore they size (``drive_end.area_ratio_rate``): a
     fixed point on the bore, from none; (inf, None, None) where the gas cannot, (k, pulse, None) where no piston
     carries its inertia."""
     beta, pulse = 0.0, None
     for _ in range(FIXED_POINT_PASSES):
-        ports = E.Ports(g, p0, TEMPERATURE, beta)
+        ports = E.Ports(g, p0, TEMPERATURE, beta, share)
         k = specific_force_for(ideal.velocity_change, ideal.duration, ideal.rise, ideal.fall, c0, g.gamma, ports)
         if not math.isfinite(k):
             return k, None, None
@@ -362,7 +374,7 @@ def _ported_design(spec: MachineSpec, g, p0: float, c0: float, ideal, article: f
         if not options:
             return k, pulse, None
         mv = min(options, key=lambda o: o.total)
-        new = E.area_ratio_rate(E.PORT_SHARE, mv.bore)
+        new = E.area_ratio_rate(share, mv.bore)
         if abs(new - beta) <= PORTS_TOL * new:
             return k, pulse, mv
         beta = new
@@ -417,7 +429,7 @@ def _design_end(d: GasDrive, spec: MachineSpec, size: dict, rho: float, S: float
     carries less the gas's push on the held piston, the band's wall at the cylinder's allowable."""
     mv, pulse, g = d.moving, d.pulse, GASES[d.gas]
     area = math.pi * mv.bore ** 2 / 4
-    ports_area = E.PORT_SHARE * math.pi * mv.bore * pulse.fall_travel
+    ports_area = pulse.ports.share * math.pi * mv.bore * pulse.fall_travel
     d.push = d.pressure * area * max(pulse.fall.end_ratio, E.steady_pressure(
         g, d.pressure, TEMPERATURE, area, ports_area, B.ATMOSPHERE) / d.pressure)
     nu = float(LIBRARY[mv.material]["poisson_ratio"])
@@ -428,7 +440,7 @@ def _design_end(d: GasDrive, spec: MachineSpec, size: dict, rho: float, S: float
     d.arrest = design_stop("gas drive's piston (its arrest)", mv.piston_mass, pulse.end_speed, mv.piston_thickness,
                            rho_p, mv.allowable, ring_area(mv.bore, passage), spec.oil_pressure,
                            max_force=max(d.arrest_limit - d.push, 1e-3 * d.arrest_limit))
-    d.port_band = E.port_band(mv.bore, pulse.fall_travel, E.PORT_SHARE, d.pressure, S,
+    d.port_band = E.port_band(mv.bore, pulse.fall_travel, pulse.ports.share, d.pressure, S,
                               size["barrel"]["thickness"], rho, d.arrest.force + d.push)
 
 
@@ -471,7 +483,8 @@ def _end_limits(d: GasDrive, spec: MachineSpec, S: float) -> list[Limit]:
               "p0 R / (E t), UG-53 ligament efficiency", steel, sized=True),
         Limit("gas drive ports", "ligament axial stress under the arrest", band.axial_stress, S, "Pa",
               "(F_arrest + push) / (E pi D_m t)", steel, sized=True),
-    ] + E.range_limits(band, pulse.separation_time - pulse.port_time, pulse.stroke, d.sound_speed, c_b) \
+    ] + E.range_limits(band, pulse.separation_time - pulse.port_time, pulse.stroke, d.sound_speed, c_b,
+                       pulse.fall.inflow_mach) \
         + list(d.arrest.limits)
 
 
@@ -493,6 +506,18 @@ def closing_sensitivity(d: GasDrive, V0: float, times=CLOSING_TIMES) -> list[dic
         out.append({"closing": closing, "vented": v.vented, "tank_left": v.tank_left,
                     "push_time": float(held[-1]) if len(held) else 0.0})
     return out
+
+
+def recovery_check(d: GasDrive, spec: MachineSpec, ideal) -> dict:
+    """The same machine (k, ports, arrest) with the face's pressure at its upper bound through the fall
+    (``drive_end.ported_pressure_ratio``, ``recovery``): its pulse against the band and its speed at the
+    separation."""
+    p = d.pulse
+    c0, gamma = d.sound_speed, GASES[d.gas].gamma
+    pulse = drive_pulse(p.specific_force, c0, gamma, ideal.rise, dataclasses.replace(p.ports, recovery=True),
+                        p.port_time, arrest=p.arrest_travel, record=spec.pulse.record_end())
+    return {"band": spec.pulse.band(pulse.time, pulse.acceleration)[1], "end_ratio": pulse.fall.end_ratio,
+            "speed_error": pulse.end_speed / p.end_speed - 1}
 
 
 def lumped_check(d: GasDrive, spec: MachineSpec) -> dict:
@@ -579,7 +604,12 @@ def _end_notes(d: GasDrive) -> list[str]:
             f"on it ({d.arrest_limit / 1e6:.3g} MN)",
             "the gas a shot vents with the valve closing from the separation (the tank and the cylinder emptying "
             "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings)
-            + "; the ports' jets are radial and cancel, so the foundation takes no blowdown thrust"]
+            + "; the ports' jets are radial and cancel, so the foundation takes no blowdown thrust",
+            f"the face's upper bound through the fall (the gas that reaches the piston stopped from the column's "
+            f"speed): {d.recovery['end_ratio']:.3g} p0 at the separation against {d.pulse.fall.end_ratio:.3g}, "
+            f"{d.recovery['speed_error']:+.2%} in speed; " + _band_words(d.recovery["band"])
+            + f"; the ports' share {band.share:g} is the largest of {', '.join(f'{x:g}' for x in E.PORT_SHARES)} "
+            "whose end holds its range and whose pulse is in the band at both bounds"]
 
 
 def _closing_words(c: dict, gas: str) -> str:
@@ -615,8 +645,9 @@ def _candidate_words(d: GasDrive) -> str:
     quick = min((c for c in d.closings if math.isfinite(c["closing"])), key=lambda c: c["closing"])
     lumped = "in" if d.lumped["band"].passed else f"OUTSIDE (worst excess {d.lumped['band'].worst_excess:.3g})"
     return (f"a CANDIDATE, not a designed machine: within the limits checked, its thrust ended by vent ports and "
-            f"the piston's arrest (computed: {d.pulse.fall.end_ratio:.3g} p0 left when the carriage and article "
-            f"separate), and its pulse in the band only if its valve opens full-bore in {t * 1e3:g} ms or less "
+            f"the piston's arrest (computed: {d.pulse.fall.end_ratio:.3g} to {d.recovery['end_ratio']:.3g} p0 left, "
+            "the face's two bounds, when the carriage and article separate, the pulse in the band at both), and "
+            f"its pulse in the band only if its valve opens full-bore in {t * 1e3:g} ms or less "
             f"(assumed; no valve sourced; the lumped gun's slower shot to the same arrest is {lumped} the band), "
             f"and the losses the model leaves out (the valve's loss, the seal's friction) stay within a few per "
             f"cent of the velocity change; with the valve left open a shot vents {open_['vented']:.3g} kg of "

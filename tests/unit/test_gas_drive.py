@@ -43,7 +43,7 @@ def test_constant_force_limit_without_ports_holds_the_thrust_to_the_separation()
 def test_the_specific_force_gives_the_asked_velocity_change_at_the_separation():
     g = GASES["helium"]
     c0 = g.sound_speed(34.47e6, TEMPERATURE)
-    ports = _ports("helium", E.area_ratio_rate(E.PORT_SHARE, 0.27))
+    ports = _ports("helium", E.area_ratio_rate(0.2, 0.27))
     k = D.specific_force_for(DV, DURATION, RAMP, RAMP, c0, g.gamma, ports)
     p = D.drive_pulse(k, c0, g.gamma, RAMP, ports, DURATION - RAMP, separation=DURATION, samples=2)
     assert p.end_speed == pytest.approx(DV, rel=1e-9)
@@ -53,13 +53,26 @@ def test_the_specific_force_gives_the_asked_velocity_change_at_the_separation():
 
 
 def test_ported_pressure_is_its_quadratic_and_falls_with_the_ports():
-    # the subsonic branch, ports choked: the brentq root equals the closed form's (1e-10: brentq's 1e-13)
+    # ports choked: the brentq root equals the closed form's (1e-10: brentq's 1e-13)
     g = GASES["helium"]
     c0 = g.sound_speed(34.47e6, TEMPERATURE)
     ratios = [E.ported_pressure_ratio(300.0, a, g, 34.47e6, TEMPERATURE, B.ATMOSPHERE) for a in (0.0, 0.2, 0.5)]
     assert ratios[0] == pytest.approx(chambered_pressure_ratio(300.0, c0, g.gamma), rel=1e-12)
     assert ratios[2] == pytest.approx(E.ported_ratio_closed_form(300.0, 0.5, c0, g.gamma), rel=1e-10)
     assert ratios[0] > ratios[1] > ratios[2]
+
+
+def test_the_faces_upper_bound_adds_the_stopped_gass_momentum():
+    # p_b (1 + gamma M_f (M_in - M_f)): above the simple wave's face, equal to it with no ports, and M_in above
+    # the piston's own Mach number by the ports' flux
+    g = GASES["helium"]
+    args = (g, 34.47e6, TEMPERATURE, B.ATMOSPHERE)
+    low, high = (E.ported_pressure_ratio(441.0, 0.6, *args, recovery=r) for r in (False, True))
+    c_b = g.sound_speed(34.47e6, TEMPERATURE) * low ** ((g.gamma - 1) / (2 * g.gamma))
+    m_in = E.inflow_mach(441.0, 0.6, *args)
+    assert high == pytest.approx(low * (1 + g.gamma * 441.0 / c_b * (m_in - 441.0 / c_b)), rel=1e-12)
+    assert high > low and E.ported_pressure_ratio(441.0, 0.0, *args, recovery=True) == \
+        E.ported_pressure_ratio(441.0, 0.0, *args)
 
 
 def test_steady_pressure_balances_the_valve_and_the_ports():
@@ -222,5 +235,8 @@ def test_the_helium_design_stays_in_its_models_range(helium):
     from shockfem.machine.limits import broken
     names = {lim.quantity for lim in helium.limits if lim.component in ("gas drive ports", "gas drive piston")}
     assert {"gas transit through the band's wall over the fall", "wave transit along the band over the fall",
-            "the fall over the column's echo from the valve", "load on its arrest"} <= names
+            "the column's Mach number into the ports", "the fall over the column's echo from the valve",
+            "load on its arrest"} <= names
     assert not broken(helium.limits)
+    # and its pulse is in the band at the face's upper bound too, which feasibility asks
+    assert helium.recovery["band"].passed == helium.feasible
