@@ -42,6 +42,13 @@ choked, Q / A = Gamma alpha c_b (alpha = A_v / A, Gamma the choked flow factor, 
 within its own impact time, far shorter than the fall, so the carriage and the article leave the piston there and
 run free (their acceleration zero), whatever of the thrust is left.
 
+The face's upper bound.  Between the ports and the face the gas that follows the piston is stopped from the
+column's speed u + Q / A to the piston's u; if the gas leaving through the ports keeps its axial speed, the face
+takes that momentum as well, p_b (1 + gamma M_f (M_in - M_f)) with M_f = u / c_b and M_in = (u + Q / A) / c_b
+(``ported_pressure_ratio``'s ``recovery``): the face's pressure is taken to lie between the two, and the design
+asks the band of both.  The column feeding the ports must stay subsonic, M_in < 1 (``inflow_mach``): past it the bore chokes
+ahead of the ports and this law does not hold.
+
 After it.  The piston is held on its arrest while the tank blows down through the open valve and the ports:
 the cylinder's pressure settles where the valve's inflow equals the ports' outflow, both at the tank's stagnation
 temperature (adiabatic mixing, ``steady_pressure``), and the arrest carries that push as well as the piston's
@@ -64,13 +71,15 @@ being continuous with the supported annulus), so the arrest's force is at most t
 (yield over the safety factor) flanged between the cylinder's pipes, not the pipe's ASME grade: the ligaments
 need the strength, and a thinner band keeps the gas's transit through its holes short.
 
-Range (checked on every design, ``range_limits``): a perfect gas; the ports quasi-steady (the gas crosses the
+Range (checked on every design, ``range_limits``): a perfect gas; the column into the ports subsonic
+(``INFLOW_RANGE``); the ports quasi-steady (the gas crosses the
 band's wall, t / c_b, within ``PORT_WALL_RANGE`` of the fall); the ports at the piston's face (the band's wave
-transit l_p / c_b within ``PORT_SPREAD_RANGE`` of the fall); the column the chambered one through the fall (its
-echo from the valve, 2 x_p / c0, no sooner than the fall's end: the simple wave's own range); the arrest's force rising to the thrust left
-within a time short against the fall (stated, not checked: the absorber's impact time).  Left out: the ports'
-discharge coefficient (1, an upper bound on their flow), the gas's axial momentum at the ports' entry (its static
-state taken as the stagnation: less flow), the air ahead of the piston in the arrest's bore.
+transit l_p / c_b within ``PORT_SPREAD_RANGE`` of the fall); the fall the simple wave's (the column's echo from
+the valve, 2 x_p / c0, no sooner than the fall's end); the arrest's force rising to the thrust left within a time
+short against the fall (stated, not checked: the absorber's impact time).  Left out: the ports' discharge
+coefficient (1, an upper bound on their flow), the gas's axial momentum at the ports' entry (its static state
+taken as the stagnation: less flow; the face's upper bound takes the other extreme), the air ahead of the piston
+in the arrest's bore.
 """
 from __future__ import annotations
 

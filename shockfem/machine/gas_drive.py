@@ -17,7 +17,9 @@ k = p0 A / m falls as the piston speeds up, a(t) = k s(t) pi(u) with
   then 1: the onset ramp the valve must give (the chamber's pressure let in in proportion to its opening);
 * once the piston's back uncovers the ports (at t_p = D - t_f) the base pressure falls as the ports take gas
   from the piston's face (``drive_end.ported_fall``) until the arrest at D separates the carriage and article
-  (the arrest's place x_a is where the piston is at D).
+  (the arrest's place x_a is where the piston is at D); the ports' share of the wall is the largest of
+  ``drive_end.PORT_SHARES`` whose end holds its range and whose pulse is in the band at both of the face's bounds
+  (``recovery_check``).
 
 The design (``design_gas_drive``) holds the trapezoid's velocity change (its band centre, 441 m/s for
 10,000 g and 5 ms) and its duration D foot to foot: one specific force k does both (``specific_force_for``),
