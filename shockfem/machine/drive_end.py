@@ -46,8 +46,8 @@ The face's upper bound.  Between the ports and the face the gas that follows the
 column's speed u + Q / A to the piston's u; if the gas leaving through the ports keeps its axial speed, the face
 takes that momentum as well, p_b (1 + gamma M_f (M_in - M_f)) with M_f = u / c_b and M_in = (u + Q / A) / c_b
 (``ported_pressure_ratio``'s ``recovery``): the face's pressure is taken to lie between the two, and the design
-asks the band of both.  The column feeding the ports must stay subsonic, M_in < 1 (``inflow_mach``): past it the bore chokes
-ahead of the ports and this law does not hold.
+asks the band of both.  The column feeding the ports must stay subsonic, M_in < 1 (``inflow_mach``): past it
+the bore chokes ahead of the ports and this law does not hold.
 
 After it.  The piston is held on its arrest while the tank blows down through the open valve and the ports:
 the cylinder's pressure settles where the valve's inflow equals the ports' outflow, both at the tank's stagnation
