@@ -83,6 +83,7 @@ in the arrest's bore.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -102,6 +103,13 @@ INFLOW_RANGE = 1.0           # the column's Mach number into the ported band: pa
 PORT_WALL_RANGE = 0.1        # the gas's transit through the band's wall over the fall
 PORT_SPREAD_RANGE = 0.5      # the band's wave transit l_p / c_b over the fall
 RTOL = 1e-10
+# The holes' discharge coefficient, the bracket's range.  A sharp-edged round hole as long as it is wide fed from
+# still gas discharges about 0.78 of its ideal flow (the jet reattached in the hole: A. Lichtarowicz, R. K.
+# Duggins and E. Markland, J. Mech. Eng. Sci. 7 (1965) 210, long orifices; check); gas grazing the wall lowers
+# it as the approach Mach number rises (J. E. Rohde, H. T. Richards and G. W. Metger, NASA TN D-5467 (1969),
+# thick-plate orifices with the approach flow perpendicular to the orifice axis; the column here reaches 0.85;
+# check the figure's value), so the bracket runs from 0.6 to the ideal 1 (1 the most flow: the least thrust).
+DISCHARGE_RANGE = (0.6, 1.0)
 
 
 def area_ratio_rate(share: float, bore: float) -> float:
@@ -130,13 +138,12 @@ def _ported_state(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambien
 def ported_pressure_ratio(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float,
                           recovery: bool = False) -> float:
     """p_b / p0 at the piston's face at ``u`` [m/s] with ports of ``alpha`` times the bore's area open behind it
-    (module docstring); ``recovery``: the face's upper bound, the gas that reaches the face stopped from the
-    column's speed to the piston's, p_b (1 + gamma M_f (M_in - M_f))."""
+    (module docstring; ``alpha`` the ports' effective area, the discharge coefficient in it); ``recovery``: the
+    face's upper bound, the port gas leaving with no axial speed, p_1 (1 + gamma M_Q M_in)."""
     r, q, c = _ported_state(u, alpha, gas, p0, T0, ambient)
     if not recovery:
         return r
-    m_f = u / c
-    return r * (1 + gas.gamma * m_f * q / c)
+    return r * (1 + gas.gamma * (q / c) * (u + q) / c)
 
 
 def inflow_mach(u: float, alpha: float, gas: Gas, p0: float, T0: float, ambient: float) -> float:
@@ -176,13 +183,24 @@ class Ports:
     share: float = 0.0
     recovery: bool = False
     ambient: float = B.ATMOSPHERE
+    discharge: float = 1.0       # the holes' discharge coefficient (``DISCHARGE_RANGE``)
+
+
+def bracket(ports: Ports) -> tuple[Ports, Ports]:
+    """The face pressure's two ends (module docstring): the least, the holes at the top of ``DISCHARGE_RANGE``
+    and the port gas keeping the column's speed; the most, the holes at its bottom and the port gas leaving
+    radially (``ported_pressure_ratio``'s ``recovery``)."""
+    low, high = DISCHARGE_RANGE
+    return (dataclasses.replace(ports, discharge=high, recovery=False),
+            dataclasses.replace(ports, discharge=low, recovery=True))
 
 
 def ported_fall(k: float, ports: Ports, u_p: float, x_p: float, t_p: float, t_end: float | None = None,
                 x_end: float | None = None, samples: int = 200) -> PortedFall:
     """u' = k p_b / p0, x' = u from the ports' opening (u_p, x_p at t_p) to the separation, at ``t_end`` [s] or
     where the piston reaches ``x_end`` [m] (module docstring)."""
-    gas, p0, T0, beta, ambient = ports.gas, ports.p0, ports.T0, ports.beta, ports.ambient
+    gas, p0, T0, ambient = ports.gas, ports.p0, ports.T0, ports.ambient
+    beta = ports.beta * ports.discharge          # the ports' effective area's rate
 
     def ratio(u, x):
         return ported_pressure_ratio(u, beta * max(x - x_p, 0.0), gas, p0, T0, ambient, ports.recovery)
@@ -214,11 +232,20 @@ def steady_pressure(gas: Gas, p0: float, T0: float, valve_area: float, port_area
     return float(brentq(balance, ambient, p0, xtol=1e-9 * p0))
 
 
+def jet_thrust(gas: Gas, pressure: float, T0: float, port_area: float, bore_area: float, ambient: float) -> float:
+    """The most axial thrust [N] the ports' jets put on the cylinder with the piston held at ``pressure`` [Pa]
+    (module docstring): the column's axial momentum flux mdot u_col into the ports, if the jets keep it."""
+    mdot = orifice_flow(gas, port_area, pressure, T0, ambient)
+    return mdot * mdot / (pressure / (gas.R * T0) * bore_area)
+
+
 @dataclass
 class Venting:
     """The tank and the cylinder emptying after the separation."""
     vented: float                # the gas the shot vents [kg]: the tank's loss and all the cylinder held
     tank_left: float             # [kg]
+    ported: float                # through the ports over the duration, the integral of their flow [kg]
+    cylinder_left: float         # [kg]
     time: np.ndarray             # [s] from the separation
     cylinder_pressure: np.ndarray   # [Pa]
     tank_pressure: np.ndarray    # [Pa]
@@ -232,7 +259,7 @@ def vent_history(gas: Gas, tank: tuple[float, float, float], cylinder: tuple[flo
     left open) from the separation, the ports' area fixed; integrated over ``duration`` [s]."""
     V_t, V_c = tank[0], cylinder[0]
     m_t0, m_c0 = (gas.mass_for(p, T, V) for V, p, T in (tank, cylinder))
-    y0 = [m_t0, m_t0 * gas.cv * tank[2], m_c0, m_c0 * gas.cv * cylinder[2]]
+    y0 = [m_t0, m_t0 * gas.cv * tank[2], m_c0, m_c0 * gas.cv * cylinder[2], 0.0]
 
     def state(m, U, V):
         return (gas.pressure(m, U, V), gas.temperature(m, U)) if m > 0 else (0.0, 0.0)
@@ -248,15 +275,15 @@ def vent_history(gas: Gas, tank: tuple[float, float, float], cylinder: tuple[flo
         m_v = (orifice_flow(gas, valve(t), p_t, T_t, p_c) - orifice_flow(gas, valve(t), p_c, T_c, p_t))
         h_v = gas.cp * (T_t if m_v >= 0 else T_c)
         m_p = orifice_flow(gas, port_area, p_c, T_c, ambient)
-        return [-m_v, -h_v * m_v, m_v - m_p, h_v * m_v - gas.cp * T_c * m_p]
+        return [-m_v, -h_v * m_v, m_v - m_p, h_v * m_v - gas.cp * T_c * m_p, m_p]
     t_eval = np.linspace(0.0, duration, samples)
     sol = solve_ivp(rhs, (0.0, duration), y0, method="LSODA", rtol=1e-8, atol=[1e-8 * m_t0, 1e-8 * y0[1],
-                    1e-8 * m_t0, 1e-8 * y0[1]], t_eval=t_eval)
+                    1e-8 * m_t0, 1e-8 * y0[1], 1e-8 * m_t0], t_eval=t_eval)
     p_c = np.array([state(m, U, V_c)[0] for m, U in zip(sol.y[2], sol.y[3])])
     p_t = np.array([state(m, U, V_t)[0] for m, U in zip(sol.y[0], sol.y[1])])
     # once the valve is shut the cylinder's gas goes to the cell whole (to its ambient charge, left out)
     left = float(sol.y[0, -1])
-    return Venting(m_t0 + m_c0 - left, left, sol.t, p_c, p_t)
+    return Venting(m_t0 + m_c0 - left, left, float(sol.y[4, -1]), float(sol.y[2, -1]), sol.t, p_c, p_t)
 
 
 def arrest_force_limit(h: float, S: float, nu: float, bore: float, inner: float) -> float:
@@ -290,8 +317,16 @@ def port_band(bore: float, length: float, share: float, p0: float, allowable: fl
     ``wall`` it replaces."""
     ratio = math.sqrt(4 * share / math.pi)       # d / p
     E = 1 - ratio
-    t = max(p0 * bore / 2 / (E * allowable), arrest_force / (E * math.pi * bore * allowable))
-    hoop = p0 * bore / 2 / (E * t)
+    if E * allowable <= p0:
+        raise ValueError(f"the ports' band: no wall carries p0 across ligaments of efficiency {E:.3g} at "
+                         f"{allowable / 1e6:.3g} MPa; lower the ports' share")
+    # Lame's inner-wall hoop stress p0 (Y^2 + 1) / (Y^2 - 1) across the ligaments at the allowable
+    y2 = (E * allowable / p0 + 1) / (E * allowable / p0 - 1)
+    t_hoop = bore / 2 * (math.sqrt(y2) - 1)
+    t = max(t_hoop, brentq(lambda t: arrest_force / (E * math.pi * (bore + t) * t) - allowable, 1e-6 * bore,
+                           10 * bore))
+    Y2 = (1 + 2 * t / bore) ** 2
+    hoop = p0 * (Y2 + 1) / (Y2 - 1) / E
     axial = arrest_force / (E * math.pi * (bore + t) * t)
     shell = rho * math.pi * (bore + t) * t * length * (1 - share)
     plain = rho * math.pi * (bore + wall) * wall * length

@@ -91,10 +91,14 @@ from .layout import RING_CLEARANCE, frame_force, frame_section, ring_area, tank_
 from .limits import Limit, broken
 from .premise import Arrangement
 from .spec import MachineSpec
-from .stops import design_stop
+from .stops import HONEYCOMB, design_stop
 
 # the valve's opening times [s] the band is checked against (``opening_sensitivity``)
-OPENING_TIMES = (0.5e-3, 1e-3, 2e-3, 5e-3)
+OPENING_TIMES = (0.5e-3, 0.55e-3, 0.6e-3, 0.7e-3, 0.8e-3, 1e-3, 2e-3, 5e-3)
+# the charge's pressure over the design's the band is checked against (``charge_sensitivity``)
+CHARGE_SHARES = (0.99, 0.98, 0.97)
+# separation times over D the band is checked against with the arrest moved (``arrest_sensitivity``)
+SEPARATION_SHARES = (0.99, 0.98, 0.97, 0.96, 0.95)
 # standard conditions for the vented gas's volume (0 degC, 1 atm)
 STP_TEMPERATURE, STP_PRESSURE = 273.15, 101325.0
 # the chamber's pressure may fall by this share while the swept volume fills: a quarter of the band's +/- 20%
@@ -292,7 +296,12 @@ class GasDrive:
     band: object = None          # ``metrics.shapes.BandCheck``
     limits: list = field(default_factory=list)
     lumped: dict = field(default_factory=dict)   # ``lumped_check``
-    recovery: dict = field(default_factory=dict)  # ``recovery_check``: the face's upper bound
+    recovery: dict = field(default_factory=dict)  # ``recovery_check``: the face's upper end
+    charges: list = field(default_factory=list)   # ``charge_sensitivity``
+    separations: list = field(default_factory=list)   # ``arrest_sensitivity``
+    range_limits: list = field(default_factory=list)  # the ported fall's own range (``drive_end.range_limits``)
+    jet_thrust: float = math.nan      # the held piston's port jets' axial momentum flux, their most [N]
+    arrest_reaction: float = math.nan  # the arrest's force less the gas's on the breech at the separation [N]
     openings: list = field(default_factory=list)  # ``opening_sensitivity``
     vented_mass: float = math.nan     # the gas a shot vents, the valve left open [kg] (``closing_sensitivity``)
     vented_volume: float = math.nan   # the same at standard conditions [m^3]
@@ -323,11 +332,15 @@ def design_gas_drive(spec: MachineSpec, gas: str, article: float, article_diamet
     """(d) for ``gas`` at the spec's highest pressure: the pulse, the parts, the catch, the limits and the band
     (module docstring); the article [kg], its diameter and length [m]."""
     ideal = shapes.specified(spec.pulse.checked_shape, spec.pulse.peak, spec.pulse.duration)
+    in_range = None
     for share in E.PORT_SHARES:
         d = _design_with_ports(spec, gas, share, article, article_diameter, article_length, ideal)
         if d.feasible or d.moving is None:
-            break
-    return d
+            return d
+        if in_range is None and not broken(d.range_limits):
+            in_range = d
+    # none feasible: the largest share whose fall holds its own range, its broken limits in the verdict
+    return in_range or d
 
 
 def _design_with_ports(spec: MachineSpec, gas: str, share: float, article: float, article_diameter: float,
@@ -351,6 +364,8 @@ def _design_with_ports(spec: MachineSpec, gas: str, share: float, article: float
     d.recovery = recovery_check(d, spec, ideal)
     d.lumped = lumped_check(d, spec)
     d.openings = opening_sensitivity(d, spec)
+    d.charges = charge_sensitivity(d, spec)
+    d.separations = arrest_sensitivity(d, spec)
     d.notes = _notes(d, spec)
     return d
 
@@ -420,30 +435,38 @@ def _size_machine(d: GasDrive, spec: MachineSpec, article: float, diameter: floa
     d.vented_mass = next(c["vented"] for c in d.closings if not math.isfinite(c["closing"]))
     d.vented_volume = stp_volume(g, d.vented_mass)
     d.machine_length = d.tank_length + d.cylinder_length + d.free_run + d.stop.length
-    # the ports' jets are radial and cancel: the frame carries the drive's thrust or the catch, not a blowdown
-    d.frame_mass = 2 * rho * frame_section(frame_force([d.stop], d.pressure * area), S) * d.machine_length
+    # the frame carries the drive's thrust, the catch, the arrest's net push on the vessel at the separation or
+    # the held piston's port jets' axial thrust, whichever is largest
+    d.frame_mass = 2 * rho * frame_section(frame_force([d.stop], max(d.pressure * area, d.arrest_reaction,
+                                                                     d.jet_thrust)), S) * d.machine_length
     d.machine_mass = wt + d.cylinder_mass + mv.total + d.arrest.absorber_mass + d.stop.absorber_mass + d.frame_mass
     d.limits = _drive_limits(d, spec, size, article, diameter, ideal, S) + _end_limits(d, spec, S) + list(d.stop.limits)
 
 
 def _design_end(d: GasDrive, spec: MachineSpec, size: dict, rho: float, S: float):
-    """The ports' band and the piston's arrest (``drive_end``): the arrest at the force the piston's rim
-    carries less the gas's push on the held piston, the band's wall at the cylinder's allowable."""
+    """The ports' band and the piston's arrest (``drive_end``): the arrest against the gas's push on the piston,
+    bounded by p0 A (the column brought to rest by a simple compression keeps u + 2 c / (gamma - 1) =
+    2 c0 / (gamma - 1), so it stops at p0), its force at most what the piston's front carries; the band's wall
+    at the cylinder's allowable against p0 and the arrest's force."""
     mv, pulse, g = d.moving, d.pulse, GASES[d.gas]
     area = math.pi * mv.bore ** 2 / 4
     ports_area = pulse.ports.share * math.pi * mv.bore * pulse.fall_travel
-    d.push = d.pressure * area * max(pulse.fall.end_ratio, E.steady_pressure(
-        g, d.pressure, TEMPERATURE, area, ports_area, B.ATMOSPHERE) / d.pressure)
+    steady = E.steady_pressure(g, d.pressure, TEMPERATURE, area, ports_area, B.ATMOSPHERE)
+    d.push = d.pressure * area
+    d.jet_thrust = E.jet_thrust(g, steady, TEMPERATURE, ports_area, area, B.ATMOSPHERE)
     nu = float(LIBRARY[mv.material]["poisson_ratio"])
     # the piston's front annulus outside the carriage's foot meets the arrest, which lets the carriage pass
     passage = 2 * mv.bearing_radius + RING_CLEARANCE
     d.arrest_limit = E.arrest_force_limit(mv.piston_thickness, mv.allowable, nu, mv.bore, passage)
     rho_p = property_si(mv.material, "density", "density")
-    d.arrest = design_stop("gas drive's piston (its arrest)", mv.piston_mass, pulse.end_speed, mv.piston_thickness,
-                           rho_p, mv.allowable, ring_area(mv.bore, passage), spec.oil_pressure,
-                           max_force=max(d.arrest_limit - d.push, 1e-3 * d.arrest_limit))
+    args = ("gas drive's piston (its arrest)", mv.piston_mass, pulse.end_speed, mv.piston_thickness, rho_p,
+            mv.allowable, ring_area(mv.bore, passage), spec.oil_pressure)
+    d.arrest = design_stop(*args, max_force=d.arrest_limit, push=d.push) or design_stop(*args,
+                                                                                        max_force=d.arrest_limit)
+    # the vessel takes the arrest's force forward and the gas's on the breech back, least at the separation
+    d.arrest_reaction = d.arrest.force - pulse.fall.end_ratio * d.pressure * area
     d.port_band = E.port_band(mv.bore, pulse.fall_travel, pulse.ports.share, d.pressure, S,
-                              size["barrel"]["thickness"], rho, d.arrest.force + d.push)
+                              size["barrel"]["thickness"], rho, d.arrest.force)
 
 
 def _drive_limits(d: GasDrive, spec: MachineSpec, size: dict, article: float, diameter: float, ideal,
@@ -477,17 +500,19 @@ def _end_limits(d: GasDrive, spec: MachineSpec, S: float) -> list[Limit]:
     mv, pulse, band, g = d.moving, d.pulse, d.port_band, GASES[d.gas]
     c_b = d.sound_speed * pulse.fall.ratio.min() ** ((g.gamma - 1) / (2 * g.gamma))
     steel = f"{spec.material} yield / {spec.safety_factor:g}"
+    d.range_limits = E.range_limits(band, pulse.separation_time - pulse.port_time, pulse.stroke, d.sound_speed, c_b,
+                                    pulse.fall.inflow_mach)
     return [
-        Limit("gas drive piston", "load on its arrest", d.arrest.force + d.push, d.arrest_limit, "N",
-              "the arrest's force and the gas's push: the annulus's bearing, the centre's bending (Roark 11.2 10a)",
-              f"{mv.material} allowable", sized=True),
-        Limit("gas drive ports", "ligament hoop stress at p0", band.hoop_stress, S, "Pa",
-              "p0 R / (E t), UG-53 ligament efficiency", steel, sized=True),
+        Limit("gas drive piston", "load on its arrest", d.arrest.force, d.arrest_limit, "N",
+              "the arrest's peak force (the push reaches it only through the arrest): the annulus's bearing, the "
+              "centre's bending (Roark 11.2 10a)", f"{mv.material} allowable", sized=True),
+        Limit("gas drive piston's arrest", "the gas's push over the arrest's force", d.push, d.arrest.force, "N",
+              "p0 A against the absorber's force: below it the piston never stops", "the push held (module docstring)"),
+        Limit("gas drive ports", "ligament hoop stress at p0 (Lame, inner wall)", band.hoop_stress, S, "Pa",
+              "p0 (Y^2 + 1) / (Y^2 - 1) / E, UG-53 ligament efficiency", steel, sized=True),
         Limit("gas drive ports", "ligament axial stress under the arrest", band.axial_stress, S, "Pa",
-              "(F_arrest + push) / (E pi D_m t)", steel, sized=True),
-    ] + E.range_limits(band, pulse.separation_time - pulse.port_time, pulse.stroke, d.sound_speed, c_b,
-                       pulse.fall.inflow_mach) \
-        + list(d.arrest.limits)
+              "F_arrest / (E pi D_m t)", steel, sized=True),
+    ] + d.range_limits + list(d.arrest.limits)
 
 
 def closing_sensitivity(d: GasDrive, V0: float, times=CLOSING_TIMES) -> list[dict]:
@@ -510,16 +535,42 @@ def closing_sensitivity(d: GasDrive, V0: float, times=CLOSING_TIMES) -> list[dic
     return out
 
 
+def _end_pulse(d: GasDrive, spec: MachineSpec, ports, k: float | None = None, rise: float | None = None,
+               p0: float | None = None) -> DrivePulse:
+    """The same machine (stroke to the ports, arrest) fired with ``ports``, the specific force ``k``, the valve's
+    ramp ``rise`` and the charge ``p0`` (the design's where None): the piston reaching the ports when it has
+    travelled the stroke, the fall to the arrest."""
+    c0, gamma, p = d.sound_speed, GASES[d.gas].gamma, d.pulse
+    k = p.specific_force if k is None else k
+    rise = spec_rise(spec) if rise is None else rise
+    if p0 is not None:
+        ports = dataclasses.replace(ports, p0=p0)
+    port = brentq(lambda t: _drive(k, c0, gamma, rise, t)[1] - p.stroke, 0.1 * p.port_time,
+                  10 * p.port_time + rise, xtol=1e-12)
+    return drive_pulse(k, c0, gamma, rise, ports, port, arrest=p.arrest_travel, record=spec.pulse.record_end())
+
+
+def spec_rise(spec: MachineSpec) -> float:
+    """The specified trapezoid's rise [s], the valve's design opening."""
+    return shapes.specified(spec.pulse.checked_shape, spec.pulse.peak, spec.pulse.duration).rise
+
+
+def _band_of(spec: MachineSpec, pulse: DrivePulse):
+    return spec.pulse.band(pulse.time, pulse.acceleration)[1]
+
+
 def recovery_check(d: GasDrive, spec: MachineSpec, ideal) -> dict:
-    """The same machine (k, ports, arrest) with the face's pressure at its upper bound through the fall
-    (``drive_end.ported_pressure_ratio``, ``recovery``): its pulse against the band and its speed at the
-    separation."""
+    """The same machine (k, ports, arrest) with the face's pressure at the bracket's upper end through the fall
+    (``drive_end.bracket``), and with the port gas leaving radially from ideal holes (the momentum's extreme
+    alone): each pulse against the band and its speed at the separation."""
     p = d.pulse
-    c0, gamma = d.sound_speed, GASES[d.gas].gamma
-    pulse = drive_pulse(p.specific_force, c0, gamma, ideal.rise, dataclasses.replace(p.ports, recovery=True),
-                        p.port_time, arrest=p.arrest_travel, record=spec.pulse.record_end())
-    return {"band": spec.pulse.band(pulse.time, pulse.acceleration)[1], "end_ratio": pulse.fall.end_ratio,
-            "speed_error": pulse.end_speed / p.end_speed - 1}
+    upper = E.bracket(p.ports)[1]
+    out = {}
+    for key, ports in (("upper", upper), ("radial", dataclasses.replace(upper, discharge=1.0))):
+        pulse = _end_pulse(d, spec, ports, rise=ideal.rise)
+        out[key] = {"band": _band_of(spec, pulse), "end_ratio": pulse.fall.end_ratio,
+                    "speed_error": pulse.end_speed / p.end_speed - 1}
+    return {**out["upper"], "radial": out["radial"]}
 
 
 def lumped_check(d: GasDrive, spec: MachineSpec) -> dict:
@@ -541,25 +592,50 @@ def lumped_check(d: GasDrive, spec: MachineSpec) -> dict:
 
 
 def opening_sensitivity(d: GasDrive, spec: MachineSpec, times=OPENING_TIMES) -> list[dict]:
-    """The same machine (its k, ports and arrest) with the valve's ramp over each of ``times`` [s]: the pulse's
-    peak, its speed at the separation and the band (the piston reaching the ports later as the ramp
-    lengthens)."""
-    c0, gamma, p = d.sound_speed, GASES[d.gas].gamma, d.pulse
-    k, out = p.specific_force, []
+    """The same machine (its k, ports and arrest) with the valve's ramp over each of ``times`` [s], at both ends
+    of the face's bracket (``drive_end.bracket``): the pulse's peak, its speed at the separation and the band
+    (the piston reaching the ports later as the ramp lengthens)."""
+    out = []
     for rise in times:
-        port = brentq(lambda t: _drive(k, c0, gamma, rise, t)[1] - p.stroke, 0.1 * p.port_time,
-                      10 * p.port_time + rise, xtol=1e-12)
-        pulse = drive_pulse(k, c0, gamma, rise, p.ports, port, arrest=p.arrest_travel,
-                            record=spec.pulse.record_end())
-        band = spec.pulse.band(pulse.time, pulse.acceleration)[1]
-        out.append({"opening": rise, "peak": pulse.peak, "end_speed": pulse.end_speed, "band": band,
-                    "speed_error": pulse.end_speed / d.velocity_change - 1})
+        low, high = (_end_pulse(d, spec, ports, rise=rise) for ports in E.bracket(d.pulse.ports))
+        out.append({"opening": rise, "peak": low.peak, "end_speed": low.end_speed, "band": _band_of(spec, low),
+                    "upper_band": _band_of(spec, high), "speed_error": low.end_speed / d.velocity_change - 1})
     return out
+
+
+def charge_sensitivity(d: GasDrive, spec: MachineSpec, shares=CHARGE_SHARES) -> list[dict]:
+    """The same machine charged to each of ``shares`` of its p0 (k in proportion), at both ends of the bracket."""
+    out = []
+    for f in shares:
+        low, high = (_end_pulse(d, spec, ports, k=f * d.pulse.specific_force, p0=f * d.pressure)
+                     for ports in E.bracket(d.pulse.ports))
+        out.append({"share": f, "band": _band_of(spec, low), "upper_band": _band_of(spec, high),
+                    "speed_error": low.end_speed / d.velocity_change - 1})
+    return out
+
+
+def arrest_sensitivity(d: GasDrive, spec: MachineSpec, shares=SEPARATION_SHARES) -> list[dict]:
+    """The same k and ports with the arrest moved to where the bracket's lower end reaches it at each of
+    ``shares`` of D: both ends against the band (what would bring the step at the separation in)."""
+    c0, gamma, p = d.sound_speed, GASES[d.gas].gamma, d.pulse
+    rise, out = spec_rise(spec), []
+    for f in shares:
+        t_s = f * spec.pulse.duration
+        at = drive_pulse(p.specific_force, c0, gamma, rise, p.ports, p.port_time, separation=t_s)
+        moved = dataclasses.replace(d, pulse=dataclasses.replace(p, fall_travel=at.fall_travel))
+        low, high = (_end_pulse(moved, spec, ports) for ports in E.bracket(p.ports))
+        out.append({"separation": t_s, "band": _band_of(spec, low), "upper_band": _band_of(spec, high),
+                    "upper_ratio": high.fall.end_ratio, "speed_error": low.end_speed / d.velocity_change - 1})
+    return out
+
+
+def _in_both(c: dict) -> bool:
+    return c["band"].passed and c["upper_band"].passed
 
 
 def longest_opening_in_band(d: GasDrive) -> float:
     """The longest of the checked opening times [s] at which the band still passes (0 where none does)."""
-    return max((o["opening"] for o in d.openings if o["band"].passed), default=0.0)
+    return max((o["opening"] for o in d.openings if _in_both(o)), default=0.0)
 
 
 def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
@@ -584,39 +660,61 @@ def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
            f"{d.cylinder_mass:,.0f}, moving {mv.total:.3g}, arrest {d.arrest.absorber_mass:,.0f}, catch "
            f"{s.absorber_mass:,.0f}, frame {d.frame_mass:,.0f}; length {d.machine_length:.3g} m: tank "
            f"{d.tank_length:.3g}, cylinder {d.cylinder_length:.3g}, free run {d.free_run:.3g}, catch {s.length:.3g}",
-           "valve opening against the band (same k, ports and arrest): " + "; ".join(
-               f"{o['opening'] * 1e3:g} ms: peak {o['peak'] / G0:,.0f} g, {o['speed_error']:+.1%} in speed, "
-               + ("in" if o["band"].passed else f"OUTSIDE (worst excess {o['band'].worst_excess:.3g})")
-               for o in d.openings)]
+           "valve opening against the band at the bracket's lower / upper end (same k, ports and arrest): "
+           + "; ".join(f"{o['opening'] * 1e3:g} ms: {o['speed_error']:+.1%} in speed, {_ends_words(o)}"
+                       for o in d.openings),
+           "the charge below its p0 (k in proportion, same machine), lower / upper end: " + "; ".join(
+               f"{c['share']:.0%}: {_ends_words(c)}" for c in d.charges),
+           "the arrest moved so that the lower end separates earlier (same k and ports), lower / upper end: "
+           + "; ".join(f"{c['separation'] * 1e3:.3g} ms: {c['speed_error']:+.1%} in speed, upper end "
+                       f"{c['upper_ratio']:.3g} p0 at it, {_ends_words(c)}" for c in d.separations)]
     out[2:2] = _end_notes(d)
     out += [f"limit broken: {lim.describe()}" for lim in broken(d.limits)]
     return out
 
 
+def _ends_words(c: dict) -> str:
+    def one(b):
+        return "in" if b.passed else f"OUTSIDE ({b.worst_excess:.3g})"
+    return f"{one(c['band'])} / {one(c['upper_band'])}"
+
+
 def _end_notes(d: GasDrive) -> list[str]:
     """The ports, the arrest and the gas a shot vents, in words."""
-    mv, band, a = d.moving, d.port_band, d.arrest
+    mv, band, a, r = d.moving, d.port_band, d.arrest, d.recovery
+    low, high = E.DISCHARGE_RANGE
     return [f"ports: {band.share:.0%} of a {band.length:.3g} m band open ({band.area:.3g} m^2, "
             f"{band.area / (math.pi * mv.bore ** 2 / 4):.3g} bores), holes {band.hole * 1e3:.0f} mm at a "
             f"{band.pitch * 1e3:.0f} mm pitch (ligament efficiency {band.efficiency:.2f}) in a "
             f"{band.thickness * 1e3:.0f} mm wall ({band.mass:+.3g} kg on the plain wall)",
-            f"the piston's arrest: a {a.kind}, {a.force / 1e6:.3g} MN over {a.stroke:.3g} m "
-            f"({a.deceleration / G0:,.0f} g, {a.consumed:.3g} kg used a shot), plus the gas's push on the held "
-            f"piston, {d.push / 1e6:.3g} MN: {(a.force + d.push) / d.arrest_limit:.3g} of the most the piston puts "
-            f"on it ({d.arrest_limit / 1e6:.3g} MN)",
+            f"the piston's arrest against the gas's push (at most p0 A = {d.push / 1e6:.3g} MN, held at rest): a "
+            f"{a.kind}, {a.force / 1e6:.3g} MN over {a.stroke:.3g} m ({a.deceleration / G0:,.0f} g), "
+            f"{a.force / d.arrest_limit:.3g} of the most the piston puts on it ({d.arrest_limit / 1e6:.3g} MN); "
+            f"no honeycomb grade's static crush force on the annulus ({max(v[1] for v in HONEYCOMB.values()) * ring_area(mv.bore, 2 * mv.bearing_radius + RING_CLEARANCE) / 1e6:.3g} MN at most) holds the push; "
+            f"at the piston's most force the stroke would be {_pushed_stroke(d, d.arrest_limit):.3g} m",
+            f"the vessel at the arrest's impact takes {d.arrest_reaction / 1e6:.3g} MN forward (the arrest's force "
+            f"less the gas's at the separation); the held piston's port jets, if they keep the column's axial "
+            f"speed, thrust it {d.jet_thrust / 1e6:.3g} MN; the frame carries the largest of these, p0 A and "
+            "the catch",
             "the gas a shot vents with the valve closing from the separation (the tank and the cylinder emptying "
-            "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings)
-            + "; the ports' jets are radial and cancel, so the foundation takes no blowdown thrust",
-            f"the face's upper bound through the fall (the gas that reaches the piston stopped from the column's "
-            f"speed): {d.recovery['end_ratio']:.3g} p0 at the separation against {d.pulse.fall.end_ratio:.3g}, "
-            f"{d.recovery['speed_error']:+.2%} in speed; " + _band_words(d.recovery["band"])
-            + f"; the ports' share {band.share:g} is the largest of {', '.join(f'{x:g}' for x in E.PORT_SHARES)} "
-            "whose end holds its range and whose pulse is in the band at both bounds"]
+            "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings),
+            f"the face's bracket (holes' discharge coefficient {low:g} to {high:g}, the port gas keeping the "
+            f"column's speed to leaving radially): {d.pulse.fall.end_ratio:.3g} to {r['end_ratio']:.3g} p0 at the "
+            f"separation, the lower end {_band_words(d.band)[4:]}, the upper ({r['speed_error']:+.2%} in speed) "
+            f"{_band_words(r['band'])[4:]}; radial jets from ideal holes alone: {r['radial']['end_ratio']:.3g} p0, "
+            f"{_band_words(r['radial']['band'])[4:]}; the ports' share {band.share:g}: the largest of "
+            f"{', '.join(f'{x:g}' for x in E.PORT_SHARES)} whose end holds its range"]
+
+
+def _pushed_stroke(d: GasDrive, force: float) -> float:
+    """The piston's arrest stroke at a constant ``force`` against the push (``stops``: m v^2 / (2 (F - F_p)))."""
+    return 0.5 * d.moving.piston_mass * d.pulse.end_speed ** 2 / (force - d.push) if force > d.push else math.inf
 
 
 def _closing_words(c: dict, gas: str) -> str:
     when = "left open" if not math.isfinite(c["closing"]) else f"{c['closing'] * 1e3:g} ms"
-    return f"{when}: {c['vented']:.3g} kg of {gas} (the held piston pushed for {c['push_time'] * 1e3:,.0f} ms)"
+    return (f"{when}: {c['vented']:.3g} kg of {gas} (the cylinder above twice the ambient for "
+            f"{c['push_time'] * 1e3:,.0f} ms, the arrest holding the piston that long)")
 
 
 def arrangement(d: GasDrive) -> Arrangement:
@@ -660,6 +758,18 @@ def _candidate_words(d: GasDrive) -> str:
             "white paper's closed-muzzle gun)")
 
 
+def _what_would_bring_it_in(d: GasDrive) -> str:
+    """The changes the numbers say would bring (d) in: the arrest's force and stroke against the push, and the
+    earliest separation checked at which both ends of the bracket are in the band."""
+    moved = next((c for c in d.separations if _in_both(c)), None)
+    band = ("" if moved is None else f"; an arrest placed so that the carriage and article separate at "
+            f"{moved['separation'] * 1e3:.3g} ms ({moved['speed_error']:+.1%} in speed) puts both ends of the "
+            "bracket in the band")
+    return (f"it would need a piston arrest that takes {d.pulse.end_speed:.0f} m/s against the push p0 A = "
+            f"{d.push / 1e6:.3g} MN and holds it at rest (at the {d.arrest_limit / 1e6:.3g} MN the piston carries, "
+            f"{_pushed_stroke(d, d.arrest_limit):.3g} m of stroke), which no absorber here does{band}")
+
+
 def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str:
     """(d)'s line in the premise's verdict, from its numbers."""
     parts = []
@@ -668,8 +778,14 @@ def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str
             parts.append(f"(d) in {d.gas} has no design: {d.notes[0]}")
             continue
         why = [f"{lim.component} {lim.quantity} {lim.ratio:.3g} times its limit" for lim in broken(d.limits)]
+        if d.recovery and not d.recovery["band"].passed:
+            why.insert(0, f"at the face pressure's upper end ({d.recovery['end_ratio']:.3g} p0 when the carriage "
+                          f"and article separate) its pulse is outside the band (worst excess "
+                          f"{d.recovery['band'].worst_excess:.3g} of the peak)")
         if not d.in_band:
             why.insert(0, f"its pulse is outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
+        if d.moving is not None and not d.feasible:
+            why.append(_what_would_bring_it_in(d))
         parts.append(f"(d), the closed-breech gas drive in {d.gas} ({d.moving.total:.3g} kg driven over "
                      f"{d.pulse.stroke:.3g} m from a {d.gun.bore / IN:.3g} in bore at {d.pressure / PSI:,.0f} psi; "
                      f"{d.machine_mass / 1e3:.3g} t, {d.machine_length:.3g} m long), is "

@@ -12,6 +12,13 @@ and an independent model.
   state, the ports' flux Q / A through the orifice law as the face's extra speed, solved by brentq) against its
   closed form with the ports choked, pi(u) (1 + (gamma - 1) / 2 Gamma alpha)^(-2 gamma / (gamma - 1)), helium and
   air, below and past the chambered column's sonic speed: exact, brentq's 1e-13 (1e-10 allowed).
+* The face's upper end (``ported_pressure_ratio``'s ``recovery``: the port gas leaving radially) against the
+  momentum balance on the gas from a section upstream of the ports to the face, p_face = p_1 + rho_1 Q (u + Q),
+  written from the choked closed form (p_1 above, Q / A = Gamma alpha c_1): exact, brentq's 1e-13 (1e-9
+  allowed: the root's error carried through rho_1 Q).
+* The piston's arrest against the gas's push (``stops.crushable`` with a push, the closed-form stroke
+  m ln(1 + k v0^2 / (sigma_c - F_p / A)) / (2 A k)) against m v dv/dx = F_p - A (sigma_c + k v^2) integrated to
+  rest: the integrator's rtol 1e-11 (1e-6 allowed).
 * The ported fall's duration, a heavy piston (k -> 0: u stays u_p, the ports opening as alpha = beta u_p t):
   the time at which the thrust is down to 60% of its value at the ports' opening, by hand from the closed form,
   t = 2 (0.6^(-(gamma - 1) / (2 gamma)) - 1) / ((gamma - 1) Gamma beta u_p), against ``drive_end.ported_fall``
@@ -48,6 +55,8 @@ CONSTANT_FORCE_TOL = 1e-8    # exact, the integrator's rtol 1e-10
 BLOWDOWN_TOL = 1e-7          # exact, the integrator's rtol 1e-12 over the pressure's p ~ m^gamma
 PORTED_TOL = 1e-10           # exact, brentq's rtol 1e-13
 VENT_TOL = 1e-6              # exact, LSODA's rtol 1e-8
+UPPER_TOL = 1e-9             # exact, brentq's rtol 1e-13 carried through rho_1 Q
+ARREST_TOL = 1e-6            # the integrator's rtol 1e-11 (the speed's 1e-3 m/s end short of rest)
 
 
 def _bare(gas: str):
@@ -117,6 +126,42 @@ def _ported_pressure(gas_name: str) -> list[dict]:
         out.append(check(f"gas_drive.ported_pressure {gas_name} u {u / c0:g} c0, ports {alpha:g} A [p/p0]",
                          E.ported_ratio_closed_form(u, alpha, c0, g.gamma), r, PORTED_TOL,
                          time.perf_counter() - t0, 0))
+    return out
+
+
+def _upper_end(gas_name: str) -> dict:
+    from ..machine import drive_end as E
+    from ..machine.blowdown import ATMOSPHERE, mass_flow_factor
+    t0 = time.perf_counter()
+    g = GASES[gas_name]
+    c0 = g.sound_speed(PRESSURE, TEMPERATURE)
+    u, alpha = 0.4 * c0, 0.6
+    r1 = E.ported_ratio_closed_form(u, alpha, c0, g.gamma)
+    c1 = c0 * r1 ** ((g.gamma - 1) / (2 * g.gamma))
+    q = mass_flow_factor(g.gamma) * alpha * c1
+    exact = r1 + g.gamma * r1 / c1 ** 2 * q * (u + q)
+    r = E.ported_pressure_ratio(u, alpha, g, PRESSURE, TEMPERATURE, ATMOSPHERE, recovery=True)
+    return check(f"gas_drive.upper_end {gas_name} u 0.4 c0, ports 0.6 A, radial jets [p/p0]", exact, r, UPPER_TOL,
+                 time.perf_counter() - t0, 0)
+
+
+def _pushed_arrest() -> dict:
+    from scipy.integrate import solve_ivp
+    from ..machine import stops
+    t0 = time.perf_counter()
+    m, v0, A, grade = 12.6, 441.0, 0.05, "12 pcf"
+    rho0, sigma_c = stops.HONEYCOMB[grade]
+    k, push = rho0 / stops.DENSIFICATION, 0.5 * sigma_c * A
+    c = stops.crushable("piston", m, v0, 1e9, A, grade, 7850.0, 460e6, push=push)
+
+    def at_rest(x, y):
+        return y[0] - 1e-3
+    at_rest.terminal = True
+    sol = solve_ivp(lambda x, y: [(push - A * (sigma_c + k * y[0] ** 2)) / (m * y[0])], (0.0, 10.0), [v0],
+                    events=at_rest, rtol=1e-11, atol=1e-9)
+    out = check("gas_drive.pushed_arrest honeycomb stroke, push half its crush force [m]", float(sol.t_events[0][0]),
+                c["stroke"], ARREST_TOL, time.perf_counter() - t0, 0)
+    out["note"] = f"{grade} honeycomb on {A:g} m^2, {m:g} kg at {v0:g} m/s, push {push / 1e6:.3g} MN"
     return out
 
 
@@ -190,6 +235,7 @@ def gas_drive(size: str, workdir: str) -> list[dict]:
     """(d)'s drive against the chambered closed form, the constant-force limit, the ported end's closed forms,
     the lumped gun and the blowdown's closed form."""
     return (_against_chambered("air") + _against_chambered("helium") + _constant_force()
-            + _ported_pressure("helium") + _ported_pressure("air") + [_ported_fall_time("helium"),
+            + _ported_pressure("helium") + _ported_pressure("air") + [_upper_end("helium"), _upper_end("air"),
+            _pushed_arrest(), _ported_fall_time("helium"),
             _ported_fall_time("air"), _vent_against_blowdown("helium"), _vent_against_blowdown("air"), _lumped()]
             + _blowdown("helium") + _blowdown("air"))
