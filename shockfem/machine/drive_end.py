@@ -14,7 +14,7 @@ Why this end.  Three ways to end a HYGE-type drive's thrust were weighed:
   spent on the charge's fall (the 5% hold this design keeps needs 32);
 * vent ports give the gas behind the piston a way out where the piston is, so the base pressure falls as soon
   as they open, and an arrest ahead of the piston separates the carriage and the article from it, which cuts
-  what is left of the thrust on the article at once.  This is the end built here.  Vent ports that the
+  what is left of the thrust on the article at once (a step).  This is the end built here.  Vent ports that the
   accelerated piston passes, a high-speed valve and braking devices for the parts that run on are the
   arrangement of an impact test facility patented by V. D. Stepanov (RU 2006807 C1); the HYGE actuator's own end
   is its lower chamber's gas and programmers (C. Lalanne, Mechanical Vibration and Shock, vol. II, ch. 6),
@@ -42,44 +42,54 @@ choked, Q / A = Gamma alpha c_b (alpha = A_v / A, Gamma the choked flow factor, 
 within its own impact time, far shorter than the fall, so the carriage and the article leave the piston there and
 run free (their acceleration zero), whatever of the thrust is left.
 
-The face's upper bound.  Between the ports and the face the gas that follows the piston is stopped from the
-column's speed u + Q / A to the piston's u; if the gas leaving through the ports keeps its axial speed, the face
-takes that momentum as well, p_b (1 + gamma M_f (M_in - M_f)) with M_f = u / c_b and M_in = (u + Q / A) / c_b
-(``ported_pressure_ratio``'s ``recovery``): the face's pressure is taken to lie between the two, and the design
-asks the band of both.  The column feeding the ports must stay subsonic, M_in < 1 (``inflow_mach``): past it
-the bore chokes ahead of the ports and this law does not hold.
+The face's bracket.  Take the gas from a section upstream of the ports (state 1, the law above) to the piston's
+face, its profile moving with the piston: its momentum balance gives p_face = p_1 + rho_1 Q (u + Q - v_ax), v_ax
+the lab-frame axial speed at which the port gas leaves.  Jets that keep the column's speed (v_ax = u + Q) give
+p_1, the bracket's lower end; jets that leave radially (v_ax = 0, the case in which the cylinder takes no axial
+thrust from them) give p_1 (1 + gamma M_Q M_in), M_Q = Q / (A c_1), M_in = (u + Q / A) / c_1, its upper end
+(``ported_pressure_ratio``'s ``recovery``).  The holes' discharge coefficient (``DISCHARGE_RANGE``: its sources
+in the comment) multiplies their area: the most flow (1) with the lower end, the least with the upper
+(``bracket``); the design asks the band of both ends.  The column feeding the ports must stay subsonic, M_in < 1
+(``inflow_mach``): past it the bore chokes ahead of the ports and this law does not hold.
 
-After it.  The piston is held on its arrest while the tank blows down through the open valve and the ports:
-the cylinder's pressure settles where the valve's inflow equals the ports' outflow, both at the tank's stagnation
-temperature (adiabatic mixing, ``steady_pressure``), and the arrest carries that push as well as the piston's
-momentum.  The ports are a ring around the cylinder, so their jets' axial reactions cancel: the foundation
-takes no blowdown thrust (the bore's open end, whose jet pushed the frame back, is closed by the arrest's head).
-The gas a shot vents is the cylinder's and whatever the valve passes before it closes (``vent_history``: the tank
-and the cylinder two control volumes, the tank's gas isentropic, the cylinder's mixing, the valve's area falling
-linearly over its closing time from the separation); with the valve left open it is the whole tank.
+After it.  The piston runs into its arrest with the gas still pushing: up to p0 A (the column brought to rest
+by a simple compression keeps u + 2 c / (gamma - 1) = 2 c0 / (gamma - 1), so it stops at c0 and p0), so the
+arrest must take the piston's energy and the push's work over its stroke, and hold the push at rest
+(``machine.stops``: a pushed body).  Then the tank blows down through the open valve and the ports: the
+cylinder's pressure settles where the valve's inflow equals the ports' outflow, both at the tank's stagnation
+temperature (adiabatic mixing, ``steady_pressure``; the valve subsonic there unless the ports exceed about 2
+valve areas).  The gas approaches the ports at the column's speed u_col = mdot / (rho A): jets that keep it
+thrust the cylinder by mdot u_col (``jet_thrust``, their most; radial jets, none).  The gas a shot vents is the
+cylinder's and whatever the valve passes before it closes (``vent_history``: the tank and the cylinder two
+control volumes, the tank's gas isentropic, the cylinder's mixing, the valve's area falling linearly over its
+closing time from the separation; the cylinder to the piston at rest on its arrest); with the valve left open
+it is the whole tank.
 
 The ports' band (``port_band``): round holes of the band's wall thickness on a square pitch p, the open share
 pi d^2 / (4 p^2); the ligament efficiency E = (p - d) / p (ASME VIII-1 UG-53, the longitudinal ligament) sets
-the band's wall so that the hoop stress at p0 across the ligaments, p0 R / (E t) (thin wall), and the arrest's
-force crossing the same ligaments axially, F / (E pi D_m t), are within the allowable.  The
-piston on its arrest: its front annulus, from the carriage's passage (radius r_i) to the bore, bears on the
-arrest, against its own inertia and the gas's push, a uniform load q = F / A over its face; the annulus bears
-(F over its area at most S) and the central disc inside it bends as a simply supported disc of radius r_i
-under q, sigma = 3 (3 + nu) q r_i^2 / (8 h^2) (Roark, 7th ed., Table 11.2 case 10a; an upper bound, the disc
-being continuous with the supported annulus), so the arrest's force is at most the lesser of the two
-(``arrest_force_limit``).  The band's wall is a forged ring of the specification's steel at its allowable
-(yield over the safety factor) flanged between the cylinder's pipes, not the pipe's ASME grade: the ligaments
-need the strength, and a thinner band keeps the gas's transit through its holes short.
+the band's wall so that Lame's inner-wall hoop stress at p0 across the ligaments, p0 (Y^2 + 1) / ((Y^2 - 1) E)
+(Y the band's outer over inner radius), and the arrest's force crossing the same ligaments axially,
+F / (E pi D_m t), are within the allowable.  The piston on its arrest: its front annulus, from the carriage's
+passage (radius r_i) to the bore, bears on the arrest, a uniform load q = F / A over its face (the push reaches
+the arrest only through it: F is the whole force between them); the annulus bears (F over its area at most S)
+and the central disc inside it bends as a simply supported disc of radius r_i under q, sigma = 3 (3 + nu) q r_i^2
+/ (8 h^2) (Roark, 7th ed., Table 11.2 case 10a; an upper bound, the disc being continuous with the supported
+annulus), so the arrest's force is at most the lesser of the two (``arrest_force_limit``).  The band's wall is
+a forged ring of the specification's steel at its allowable (yield over the safety factor) flanged between the
+cylinder's pipes, not the pipe's ASME grade: the ligaments need the strength, and a thinner band keeps the gas's
+transit through its holes short.  No fatigue check: every shot is a cycle of both stresses at the holes.
 
 Range (checked on every design, ``range_limits``): a perfect gas; the column into the ports subsonic
-(``INFLOW_RANGE``); the ports quasi-steady (the gas crosses the
-band's wall, t / c_b, within ``PORT_WALL_RANGE`` of the fall); the ports at the piston's face (the band's wave
-transit l_p / c_b within ``PORT_SPREAD_RANGE`` of the fall); the fall the simple wave's (the column's echo from
-the valve, 2 x_p / c0, no sooner than the fall's end); the arrest's force rising to the thrust left within a time
-short against the fall (stated, not checked: the absorber's impact time).  Left out: the ports' discharge
-coefficient (1, an upper bound on their flow), the gas's axial momentum at the ports' entry (its static state
-taken as the stagnation: less flow; the face's upper bound takes the other extreme), the air ahead of the piston
-in the arrest's bore.
+(``INFLOW_RANGE``); the ports quasi-steady (the gas crosses the band's wall, t / c_b, within ``PORT_WALL_RANGE``
+of the fall); the band's wave transit l_p / c_b within ``PORT_SPREAD_RANGE`` of the fall: the band is the fall's
+travel, so this is about the piston's Mach number at the face, u / c_b, whatever the share, and 0.5 has no
+source; it stands for the ports' flux reaching the face late (the oldest ports' a wave transit behind it), which
+the law puts at the face and no calculation here checks (a quasi-1-D one with the wall's bleed would); the fall
+the simple wave's (the column's echo from the valve, 2 x_p / c0, no sooner than the fall's end); the arrest's
+force rising to the thrust left within a time short against the fall (stated, not checked: the absorber's
+impact time).  Left out: the compression the decelerating piston sends back into the gas (about rho c du, on
+top of the push, bounded by p0 A above), the air ahead of the piston in the arrest's bore (bounded in
+``machine.gas_drive``), the separation's step on the article's own modes.
 """
 from __future__ import annotations
 
@@ -96,8 +106,8 @@ from ..launcher.simple_wave import base_pressure_ratio, chambered_pressure_ratio
 from . import blowdown as B
 from .limits import Limit
 
-# the band's wall open to the ports, largest first: the design keeps the first whose end holds its range and
-# whose pulse is in the band at both of the face's bounds (``machine.gas_drive``); 0.3 is d / p = 0.62, E = 0.38
+# the band's wall open to the ports, largest first: the design keeps the first that makes it feasible, else the
+# first whose end holds its range (``machine.gas_drive``); 0.3 is d / p = 0.62, E = 0.38
 PORT_SHARES = (0.3, 0.25, 0.2, 0.15, 0.1)
 INFLOW_RANGE = 1.0           # the column's Mach number into the ported band: past 1 it chokes there
 PORT_WALL_RANGE = 0.1        # the gas's transit through the band's wall over the fall
@@ -237,6 +247,14 @@ def jet_thrust(gas: Gas, pressure: float, T0: float, port_area: float, bore_area
     (module docstring): the column's axial momentum flux mdot u_col into the ports, if the jets keep it."""
     mdot = orifice_flow(gas, port_area, pressure, T0, ambient)
     return mdot * mdot / (pressure / (gas.R * T0) * bore_area)
+
+
+def reflected_shock_pressure(p2: float, p1: float, gamma: float) -> float:
+    """The pressure [Pa] behind a shock of p2 / p1 reflected from a closed end (the air ahead of the piston off
+    the arrest's face): p5 / p2 = ((a + 2) p2 / p1 - 1) / (p2 / p1 + a), a = (gamma + 1) / (gamma - 1) (the
+    normal reflection of a plane shock; Anderson, Modern Compressible Flow, sec. 7.7)."""
+    a, r = (gamma + 1) / (gamma - 1), p2 / p1
+    return p2 * ((a + 2) * r - 1) / (r + a)
 
 
 @dataclass

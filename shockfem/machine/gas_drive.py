@@ -18,8 +18,8 @@ k = p0 A / m falls as the piston speeds up, a(t) = k s(t) pi(u) with
 * once the piston's back uncovers the ports (at t_p = D - t_f) the base pressure falls as the ports take gas
   from the piston's face (``drive_end.ported_fall``) until the arrest at D separates the carriage and article
   (the arrest's place x_a is where the piston is at D); the ports' share of the wall is the largest of
-  ``drive_end.PORT_SHARES`` whose end holds its range and whose pulse is in the band at both of the face's bounds
-  (``recovery_check``).
+  ``drive_end.PORT_SHARES`` that makes the design feasible, else the largest whose end holds its range; the band
+  is asked at both ends of the face pressure's bracket (``drive_end.bracket``, ``recovery_check``).
 
 The design (``design_gas_drive``) holds the trapezoid's velocity change (its band centre, 441 m/s for
 10,000 g and 5 ms) and its duration D foot to foot: one specific force k does both (``specific_force_for``),
@@ -46,22 +46,27 @@ rho h a of the pressure):
   load then enters over r_b;
 * the catch at the spec's catch deceleration (``MachineSpec.catch``, the rule every row of the premise uses),
   after a free run of the band's monitoring window after the pulse (1.5 D at u_end), so that the catch is no
-  part of the record the band checks; the frame carries the larger of the drive's thrust p0 A and the catch's
-  force (``layout.frame_force``): the ports' jets are radial and cancel, so no blowdown thrust reaches it;
-* the ports' band and the piston's arrest (``drive_end``: the band's ligaments at the allowable, the arrest at
-  the force the piston carries onto it less the gas's push on the held piston);
+  part of the record the band checks; the frame carries the largest of the drive's thrust p0 A, the catch's
+  force, the arrest's force less the gas's on the breech at the separation (what the vessel takes forward at
+  the arrest's impact) and the ports' jets' most axial thrust (``layout.frame_force``);
+* the ports' band and the piston's arrest (``drive_end``: the band's ligaments at the allowable; the arrest
+  against the gas's push, at most p0 A, its force at most what the piston's front carries, ``stops.design_stop``
+  with the push);
 * the gas a shot vents with the valve left open and with it closing over ``CLOSING_TIMES``
   (``closing_sensitivity``), a running cost, not a limit.
 
 The valve's opening time is assumed, no source found for a full-bore differential-area seal's opening at this
 bore and pressure; ``opening_sensitivity`` gives the band against it (the same machine, k and stroke, the
-ramp's length varied), and the verdict states the longest opening it was found in the band at.
+ramp's length varied) at both ends of the bracket, ``charge_sensitivity`` against a lower charge and
+``arrest_sensitivity`` against the arrest's place, and the verdict states the longest opening it was found in the
+band at.  The band is the metrics' (``metrics.shapes``): the specified pulse placed on the measured one by its
+10% up-crossing, so a slower ramp moves the ideal later with it.
 
 Range of the model (each checked on every design where it can be): a perfect gas at rest in the chamber at
 293 K; the chamber's pressure held within ``CHAMBER_HOLD`` (by the tank's size); the valve's opening is the
-stated linear ramp of pressure, not its flow dynamics; the drive's end is the stated linear fall, not the
-gas's escape round the piston; no gas friction or heat loss, no seal drag, no air ahead; the piston and
-carriage rigid (their elastic waves left out: the radial wave transit R / c_bar over the rise is checked
+stated linear ramp of pressure, not its flow dynamics; the drive's end is the ported fall within its bracket
+(``drive_end``'s range); no gas friction or heat loss, no seal drag, no air ahead (bounded,
+``air_ahead_bound``); the separation a step (``separation_step``); the piston and carriage rigid (their elastic waves left out: the radial wave transit R / c_bar over the rise is checked
 against ``WAVE_RANGE``).  ``lumped_check`` fires the same cylinder and tank with the lumped gun
 (``launcher.gun.fire``: the finite tank, the valve's flow through its opening area, the Lagrange gas inertia,
 the air ahead), the independent model the chambered law leaves those out of.
@@ -78,7 +83,7 @@ from scipy.optimize import brentq
 
 from ..launcher.design import LauncherDesign, weights
 from ..launcher.gas import GASES
-from ..launcher.gun import Gun, fire
+from ..launcher.gun import Gun, air_ahead_pressure, fire
 from ..launcher.simple_wave import chambered_pressure_ratio, escape_speed
 from ..metrics import shapes
 from ..scene.library import LIBRARY, initial_yield_stress, property_si
@@ -301,6 +306,9 @@ class GasDrive:
     separations: list = field(default_factory=list)   # ``arrest_sensitivity``
     range_limits: list = field(default_factory=list)  # the ported fall's own range (``drive_end.range_limits``)
     jet_thrust: float = math.nan      # the held piston's port jets' axial momentum flux, their most [N]
+    seat_stress: float = math.nan     # the carriage's seat at the peak [Pa]
+    air_ahead: dict = field(default_factory=dict)   # ``air_ahead_bound``
+    step: dict = field(default_factory=dict)        # ``separation_step``
     arrest_reaction: float = math.nan  # the arrest's force less the gas's on the breech at the separation [N]
     openings: list = field(default_factory=list)  # ``opening_sensitivity``
     vented_mass: float = math.nan     # the gas a shot vents, the valve left open [kg] (``closing_sensitivity``)
@@ -366,6 +374,7 @@ def _design_with_ports(spec: MachineSpec, gas: str, share: float, article: float
     d.openings = opening_sensitivity(d, spec)
     d.charges = charge_sensitivity(d, spec)
     d.separations = arrest_sensitivity(d, spec)
+    d.air_ahead, d.step = air_ahead_bound(d), separation_step(d, spec)
     d.notes = _notes(d, spec)
     return d
 
@@ -472,7 +481,7 @@ def _design_end(d: GasDrive, spec: MachineSpec, size: dict, rho: float, S: float
 def _drive_limits(d: GasDrive, spec: MachineSpec, size: dict, article: float, diameter: float, ideal,
                   S: float) -> list[Limit]:
     mv, pulse = d.moving, d.pulse
-    seat_stress = (article + mv.carriage_mass) * pulse.peak / (math.pi * diameter ** 2 / 4)
+    seat_stress = d.seat_stress = (article + mv.carriage_mass) * pulse.peak / (math.pi * diameter ** 2 / 4)
     return [
         Limit("gas drive cylinder", "bore", mv.bore, spec.max_bore, "m", "the bore A = m k / p0", "the spec's limit"),
         Limit("gas drive cylinder", "length", d.cylinder_length, spec.max_barrel_length, "m",
@@ -522,7 +531,9 @@ def closing_sensitivity(d: GasDrive, V0: float, times=CLOSING_TIMES) -> list[dic
     g, pulse = GASES[d.gas], d.pulse
     area = math.pi * d.moving.bore ** 2 / 4
     r = pulse.fall.end_ratio
-    cylinder = (area * pulse.arrest_travel, r * d.pressure, TEMPERATURE * r ** ((g.gamma - 1) / g.gamma))
+    # the cylinder to the piston at rest on its arrest
+    cylinder = (area * (pulse.arrest_travel + d.arrest.stroke), r * d.pressure,
+                TEMPERATURE * r ** ((g.gamma - 1) / g.gamma))
     # long enough for the open valve's blowdown through the bore and the ports to end
     duration = 12 * B.time_constant(V0, area, d.sound_speed, g.gamma)
     out = []
@@ -683,6 +694,7 @@ def _end_notes(d: GasDrive) -> list[str]:
     """The ports, the arrest and the gas a shot vents, in words."""
     mv, band, a, r = d.moving, d.port_band, d.arrest, d.recovery
     low, high = E.DISCHARGE_RANGE
+    air, step = d.air_ahead, d.step
     return [f"ports: {band.share:.0%} of a {band.length:.3g} m band open ({band.area:.3g} m^2, "
             f"{band.area / (math.pi * mv.bore ** 2 / 4):.3g} bores), holes {band.hole * 1e3:.0f} mm at a "
             f"{band.pitch * 1e3:.0f} mm pitch (ligament efficiency {band.efficiency:.2f}) in a "
@@ -698,12 +710,47 @@ def _end_notes(d: GasDrive) -> list[str]:
             "the catch",
             "the gas a shot vents with the valve closing from the separation (the tank and the cylinder emptying "
             "through the ports, the piston held): " + "; ".join(_closing_words(c, d.gas) for c in d.closings),
+            f"the air ahead, left out (a bound): the piston's shock {air['incident'] / 1e6:.3g} MPa, reflected off "
+            f"the arrest {air['reflected'] / 1e6:.3g} MPa, {air['acceleration']:.3g} of the peak against the thrust "
+            f"in the fall and {air['speed_share']:.2%} of the velocity change",
+            f"the separation is a step, not a fall: {step['low']:.3g} to {step['high']:.3g} of the peak dropped "
+            f"within the arrest's rise; it releases the seat's {step['stress'] / 1e6:.3g} MPa, a particle speed of "
+            f"{step['particle_speed']:.3g} m/s, so the carriage and article (joined in compression only) may part "
+            "and ring at their own modes after D, which the band's rigid-body record does not show",
             f"the face's bracket (holes' discharge coefficient {low:g} to {high:g}, the port gas keeping the "
             f"column's speed to leaving radially): {d.pulse.fall.end_ratio:.3g} to {r['end_ratio']:.3g} p0 at the "
             f"separation, the lower end {_band_words(d.band)[4:]}, the upper ({r['speed_error']:+.2%} in speed) "
             f"{_band_words(r['band'])[4:]}; radial jets from ideal holes alone: {r['radial']['end_ratio']:.3g} p0, "
             f"{_band_words(r['radial']['band'])[4:]}; the ports' share {band.share:g}: the largest of "
             f"{', '.join(f'{x:g}' for x in E.PORT_SHARES)} whose end holds its range"]
+
+
+def air_ahead_bound(d: GasDrive) -> dict:
+    """The air ahead of the piston in the bore the arrest's head closes (left out of the chambered law): the
+    shock the piston drives at its speed at the separation (``launcher.gun.air_ahead_pressure``) over the whole
+    stroke, and that shock reflected whole off the arrest's face (``drive_end.reflected_shock_pressure``) over
+    the fall; a bound (the real shock is weaker earlier, and the carriage's passage and the cells relieve the
+    reflection): its acceleration over the peak during the fall, and the velocity change it takes."""
+    p, mv = d.pulse, d.moving
+    area, ambient = math.pi * mv.bore ** 2 / 4, d.gun.ambient_pressure
+    p2 = air_ahead_pressure(d.gun, p.end_speed)
+    p5 = E.reflected_shock_pressure(p2, ambient, GASES["air"].gamma)
+    taken = ((p2 - ambient) * p.port_time + (p5 - ambient) * (p.separation_time - p.port_time)) * area / mv.total
+    return {"incident": p2, "reflected": p5, "acceleration": (p5 - ambient) * area / mv.total / d.pulse.peak,
+            "speed_share": taken / d.velocity_change}
+
+
+def separation_step(d: GasDrive, spec: MachineSpec) -> dict:
+    """The separation as a step: the acceleration it drops (over the peak) at both ends of the bracket, and the
+    seat's compression it releases, sigma = (article + carriage) a / A_seat at the lower end, as a particle speed
+    sigma / (rho c) in the carriage's steel (the speed at which the carriage and article may part)."""
+    rho = property_si(spec.material, "density", "density")
+    c = math.sqrt(property_si(spec.material, "youngs_modulus", "pressure") / rho)
+    low = d.pulse.fall.acceleration[-1]
+    high = low * d.recovery["end_ratio"] / d.pulse.fall.end_ratio
+    sigma = d.seat_stress * low / d.pulse.peak
+    return {"low": low / spec.pulse.peak, "high": high / spec.pulse.peak, "stress": sigma,
+            "particle_speed": sigma / (rho * c)}
 
 
 def _pushed_stroke(d: GasDrive, force: float) -> float:
