@@ -101,9 +101,11 @@ from .stops import HONEYCOMB, design_stop
 # the valve's opening times [s] the band is checked against (``opening_sensitivity``)
 OPENING_TIMES = (0.5e-3, 0.55e-3, 0.6e-3, 0.7e-3, 0.8e-3, 1e-3, 2e-3, 5e-3)
 # the charge's pressure over the design's the band is checked against (``charge_sensitivity``)
-CHARGE_SHARES = (0.99, 0.98, 0.97)
+CHARGE_SHARES = (0.99, 0.98, 0.97, 0.95, 0.9)
 # separation times over D the band is checked against with the arrest moved (``arrest_sensitivity``)
 SEPARATION_SHARES = (0.99, 0.98, 0.97, 0.96, 0.95)
+# the openings [s] and charges each moved arrest is checked at, for its margins (fewer: a run's time)
+MARGIN_OPENINGS, MARGIN_CHARGES = (0.5e-3, 0.6e-3, 0.7e-3, 0.8e-3, 1e-3), (0.98, 0.95, 0.9)
 # standard conditions for the vented gas's volume (0 degC, 1 atm)
 STP_TEMPERATURE, STP_PRESSURE = 273.15, 101325.0
 # the chamber's pressure may fall by this share while the swept volume fills: a quarter of the band's +/- 20%
@@ -635,8 +637,11 @@ def arrest_sensitivity(d: GasDrive, spec: MachineSpec, shares=SEPARATION_SHARES)
         at = drive_pulse(p.specific_force, c0, gamma, rise, p.ports, p.port_time, separation=t_s)
         moved = dataclasses.replace(d, pulse=dataclasses.replace(p, fall_travel=at.fall_travel))
         low, high = (_end_pulse(moved, spec, ports) for ports in E.bracket(p.ports))
+        openings = [o["opening"] for o in opening_sensitivity(moved, spec, MARGIN_OPENINGS) if _in_both(o)]
+        charges = [c["share"] for c in charge_sensitivity(moved, spec, MARGIN_CHARGES) if _in_both(c)]
         out.append({"separation": t_s, "band": _band_of(spec, low), "upper_band": _band_of(spec, high),
-                    "upper_ratio": high.fall.end_ratio, "speed_error": low.end_speed / d.velocity_change - 1})
+                    "upper_ratio": high.fall.end_ratio, "speed_error": low.end_speed / d.velocity_change - 1,
+                    "opening": max(openings, default=0.0), "charge": min(charges, default=math.nan)})
     return out
 
 
@@ -678,10 +683,18 @@ def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
                f"{c['share']:.0%}: {_ends_words(c)}" for c in d.charges),
            "the arrest moved so that the lower end separates earlier (same k and ports), lower / upper end: "
            + "; ".join(f"{c['separation'] * 1e3:.3g} ms: {c['speed_error']:+.1%} in speed, upper end "
-                       f"{c['upper_ratio']:.3g} p0 at it, {_ends_words(c)}" for c in d.separations)]
+                       f"{c['upper_ratio']:.3g} p0 at it, {_ends_words(c)}" + _margin_words(c) for c in d.separations)]
     out[2:2] = _end_notes(d)
     out += [f"limit broken: {lim.describe()}" for lim in broken(d.limits)]
     return out
+
+
+def _margin_words(c: dict) -> str:
+    """The longest opening and the lowest charge checked at which both ends are in the band."""
+    if not c["opening"]:
+        return ""
+    charge = "" if math.isnan(c["charge"]) else f", charged down to {c['charge']:.0%} of p0"
+    return f" (both in with the valve opening in up to {c['opening'] * 1e3:g} ms{charge})"
 
 
 def _ends_words(c: dict) -> str:
@@ -808,10 +821,11 @@ def _candidate_words(d: GasDrive) -> str:
 def _what_would_bring_it_in(d: GasDrive) -> str:
     """The changes the numbers say would bring (d) in: the arrest's force and stroke against the push, and the
     earliest separation checked at which both ends of the bracket are in the band."""
-    moved = next((c for c in d.separations if _in_both(c)), None)
+    held = [c for c in d.separations if _in_both(c)]
+    moved = max(held, key=lambda c: (c["opening"], -c["charge"], c["separation"]), default=None)
     band = ("" if moved is None else f"; an arrest placed so that the carriage and article separate at "
             f"{moved['separation'] * 1e3:.3g} ms ({moved['speed_error']:+.1%} in speed) puts both ends of the "
-            "bracket in the band")
+            "bracket in the band" + _margin_words(moved))
     return (f"it would need a piston arrest that takes {d.pulse.end_speed:.0f} m/s against the push p0 A = "
             f"{d.push / 1e6:.3g} MN and holds it at rest (at the {d.arrest_limit / 1e6:.3g} MN the piston carries, "
             f"{_pushed_stroke(d, d.arrest_limit):.3g} m of stroke), which no absorber here does{band}")
