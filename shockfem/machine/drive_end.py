@@ -149,7 +149,7 @@ def ported_pressure_ratio(u: float, alpha: float, gas: Gas, p0: float, T0: float
                           recovery: bool = False) -> float:
     """p_b / p0 at the piston's face at ``u`` [m/s] with ports of ``alpha`` times the bore's area open behind it
     (module docstring; ``alpha`` the ports' effective area, the discharge coefficient in it); ``recovery``: the
-    face's upper bound, the port gas leaving with no axial speed, p_1 (1 + gamma M_Q M_in)."""
+    face pressure's upper end, the port gas leaving with no axial speed, p_1 (1 + gamma M_Q M_in)."""
     r, q, c = _ported_state(u, alpha, gas, p0, T0, ambient)
     if not recovery:
         return r
@@ -185,7 +185,8 @@ class PortedFall:
 @dataclass(frozen=True)
 class Ports:
     """The ports behind the piston: its gas and chamber state, the wall's open ``share`` and ``beta``
-    (``area_ratio_rate``), and which of the face's bounds (``ported_pressure_ratio``)."""
+    (``area_ratio_rate``), the holes' discharge coefficient, and which end of the face pressure's bracket
+    (``bracket``)."""
     gas: Gas
     p0: float                    # [Pa]
     T0: float                    # [K]

@@ -66,7 +66,8 @@ Range of the model (each checked on every design where it can be): a perfect gas
 293 K; the chamber's pressure held within ``CHAMBER_HOLD`` (by the tank's size); the valve's opening is the
 stated linear ramp of pressure, not its flow dynamics; the drive's end is the ported fall within its bracket
 (``drive_end``'s range); no gas friction or heat loss, no seal drag, no air ahead (bounded,
-``air_ahead_bound``); the separation a step (``separation_step``); the piston and carriage rigid (their elastic waves left out: the radial wave transit R / c_bar over the rise is checked
+``air_ahead_bound``); the separation a step (``separation_step``); the piston and carriage rigid (their
+elastic waves left out: the radial wave transit R / c_bar over the rise is checked
 against ``WAVE_RANGE``).  ``lumped_check`` fires the same cylinder and tank with the lumped gun
 (``launcher.gun.fire``: the finite tank, the valve's flow through its opening area, the Lagrange gas inertia,
 the air ahead), the independent model the chambered law leaves those out of.
@@ -715,7 +716,8 @@ def _end_notes(d: GasDrive) -> list[str]:
             f"the piston's arrest against the gas's push (at most p0 A = {d.push / 1e6:.3g} MN, held at rest): a "
             f"{a.kind}, {a.force / 1e6:.3g} MN over {a.stroke:.3g} m ({a.deceleration / G0:,.0f} g), "
             f"{a.force / d.arrest_limit:.3g} of the most the piston puts on it ({d.arrest_limit / 1e6:.3g} MN); "
-            f"no honeycomb grade's static crush force on the annulus ({max(v[1] for v in HONEYCOMB.values()) * ring_area(mv.bore, 2 * mv.bearing_radius + RING_CLEARANCE) / 1e6:.3g} MN at most) holds the push; "
+            f"no honeycomb grade's static crush force on the annulus ({_strongest_honeycomb(d) / 1e6:.3g} MN at "
+            "most) holds the push; "
             f"at the piston's most force the stroke would be {_pushed_stroke(d, d.arrest_limit):.3g} m",
             f"the vessel at the arrest's impact takes {d.arrest_reaction / 1e6:.3g} MN forward (the arrest's force "
             f"less the gas's at the separation); the held piston's port jets, if they keep the column's axial "
@@ -766,6 +768,12 @@ def separation_step(d: GasDrive, spec: MachineSpec) -> dict:
             "particle_speed": sigma / (rho * c)}
 
 
+def _strongest_honeycomb(d: GasDrive) -> float:
+    """The static crush force [N] of the strongest honeycomb grade on the piston's arrest annulus."""
+    annulus = ring_area(d.moving.bore, 2 * d.moving.bearing_radius + RING_CLEARANCE)
+    return max(sigma for _, sigma in HONEYCOMB.values()) * annulus
+
+
 def _pushed_stroke(d: GasDrive, force: float) -> float:
     """The piston's arrest stroke at a constant ``force`` against the push (``stops``: m v^2 / (2 (F - F_p)))."""
     return 0.5 * d.moving.piston_mass * d.pulse.end_speed ** 2 / (force - d.push) if force > d.push else math.inf
@@ -806,13 +814,14 @@ def _candidate_words(d: GasDrive) -> str:
     lumped = "in" if d.lumped["band"].passed else f"OUTSIDE (worst excess {d.lumped['band'].worst_excess:.3g})"
     return (f"a CANDIDATE, not a designed machine: within the limits checked, its thrust ended by vent ports and "
             f"the piston's arrest (computed: {d.pulse.fall.end_ratio:.3g} to {d.recovery['end_ratio']:.3g} p0 left, "
-            "the face's two bounds, when the carriage and article separate, the pulse in the band at both), and "
+            "the face pressure's bracket, when the carriage and article separate, the pulse in the band at both "
+            f"ends; the arrest a {d.arrest.kind} against the gas's push), and "
             f"its pulse in the band only if its valve opens full-bore in {t * 1e3:g} ms or less "
             f"(assumed; no valve sourced; the lumped gun's slower shot to the same arrest is {lumped} the band), "
             f"and the losses the model leaves out (the valve's loss, the seal's friction) stay within a few per "
             f"cent of the velocity change; with the valve left open a shot vents {open_['vented']:.3g} kg of "
-            f"{d.gas} ({d.vented_volume:,.0f} m^3 at standard conditions) radially through the ports, the "
-            f"foundation taking no blowdown thrust; a supply valve closing in {quick['closing'] * 1e3:g} ms after "
+            f"{d.gas} ({d.vented_volume:,.0f} m^3 at standard conditions) through the ports; a supply valve closing "
+            f"in {quick['closing'] * 1e3:g} ms after "
             f"the separation would vent {quick['vented']:.3g} kg (assumed, no such valve sourced either); its mass "
             "and length leave out the valve and the gas's handling; and it gives an axial pulse only (it is the "
             "white paper's closed-muzzle gun)")

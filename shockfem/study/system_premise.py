@@ -239,12 +239,12 @@ def gas_drive_table(rep: Report, drives: list):
                             "in the band", "face's upper end: worst excess [of peak]", "piston's arrest",
                             "arrest within its limits", "piston", "piston [kg]", "catch", "catch stroke [m]",
                             "lumped gun: end speed error [-]", "lumped gun: in the band", "verdict"], rows,
-              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{:.3g}", "{}", "{}", "{}", "{:.3g}", "{}", "{:.3g}",
-               "{}", "{}", "{}"])
+              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{:.3g}", "{}", "{}", "{}", "{:.3g}", "{}",
+               "{:.3g}", "{}", "{}", "{}"])
     rep.text("(d)'s pulse and parts (`machine/gas_drive.py`): k = p0 A / m is the one specific force that gives the "
              "trapezoid's velocity change over its duration; the peak is where the valve's ramp ends (the chambered "
-             "base pressure falls after it); the band is the fixture study's (`metrics.shapes`), checked at both ends of "
-             "the face pressure's bracket after the ports open (the holes' discharge coefficient "
+             "base pressure falls after it); the band is the fixture study's (`metrics.shapes`), checked at both "
+             "ends of the face pressure's bracket after the ports open (the holes' discharge coefficient "
              f"{min(E.DISCHARGE_RANGE):g} to {max(E.DISCHARGE_RANGE):g}, the port gas keeping the column's speed or "
              "leaving radially: `machine.drive_end.bracket`); the piston's arrest takes the piston against the gas's "
              "push p0 A and holds it (`machine.stops`, a pushed body), a limit of the design; the piston the "
