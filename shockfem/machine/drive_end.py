@@ -89,7 +89,8 @@ the simple wave's (the column's echo from the valve, 2 x_p / c0, no sooner than 
 force rising to the thrust left within a time short against the fall (stated, not checked: the absorber's
 impact time).  Left out: the compression the decelerating piston sends back into the gas (about rho c du, on
 top of the push, bounded by p0 A above), the air ahead of the piston in the arrest's bore (bounded in
-``machine.gas_drive``), the separation's step on the article's own modes.
+``machine.gas_drive``), the separation's step on the article's own modes, the plenum that must contain the
+ports' jets (one blocked hole is a jet's side load), the piston's seals crossing the ports' edges.
 """
 from __future__ import annotations
 
