@@ -346,12 +346,25 @@ def design_gas_drive(spec: MachineSpec, gas: str, article: float, article_diamet
     in_range = None
     for share in E.PORT_SHARES:
         d = _design_with_ports(spec, gas, share, article, article_diameter, article_length, ideal)
-        if d.feasible or d.moving is None:
+        if d.moving is None:
             return d
+        if d.feasible:
+            return _checked(d, spec)
         if in_range is None and not broken(d.range_limits):
             in_range = d
     # none feasible: the largest share whose fall holds its own range, its broken limits in the verdict
-    return in_range or d
+    return _checked(in_range or d, spec)
+
+
+def _checked(d: GasDrive, spec: MachineSpec) -> GasDrive:
+    """The kept design's checks beside it (the lumped gun, the margins, the air ahead, the step) and its notes."""
+    d.lumped = lumped_check(d, spec)
+    d.openings = opening_sensitivity(d, spec)
+    d.charges = charge_sensitivity(d, spec)
+    d.separations = arrest_sensitivity(d, spec)
+    d.air_ahead, d.step = air_ahead_bound(d), separation_step(d, spec)
+    d.notes = _notes(d, spec)
+    return d
 
 
 def _design_with_ports(spec: MachineSpec, gas: str, share: float, article: float, article_diameter: float,
@@ -373,12 +386,6 @@ def _design_with_ports(spec: MachineSpec, gas: str, share: float, article: float
     d = GasDrive(gas, p0, c0, dv, pulse, mv, None, band=band)
     _size_machine(d, spec, article, article_diameter, article_length, ideal)
     d.recovery = recovery_check(d, spec, ideal)
-    d.lumped = lumped_check(d, spec)
-    d.openings = opening_sensitivity(d, spec)
-    d.charges = charge_sensitivity(d, spec)
-    d.separations = arrest_sensitivity(d, spec)
-    d.air_ahead, d.step = air_ahead_bound(d), separation_step(d, spec)
-    d.notes = _notes(d, spec)
     return d
 
 
