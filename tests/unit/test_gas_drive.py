@@ -279,3 +279,24 @@ def test_the_helium_design_stays_in_its_models_range_and_says_where_it_fails(hel
     assert helium.recovery["end_ratio"] > helium.recovery["radial"]["end_ratio"] > helium.pulse.fall.end_ratio
     # the arrest carries the gas's push: its force above p0 A, so the piston stops
     assert helium.arrest.force > helium.push == pytest.approx(helium.pressure * math.pi * helium.moving.bore ** 2 / 4)
+
+
+def test_a_reflected_shock_doubles_a_weak_one_and_reaches_eight_times_a_strong_one():
+    # the normal reflection of a plane shock off a closed end (drive_end.reflected_shock_pressure): an acoustic
+    # wave doubles its overpressure; a strong shock in air reflects at p5 / p2 -> (gamma + 1) / (gamma - 1) + 2 = 8
+    # (Anderson, Modern Compressible Flow, sec. 7.7)
+    eps = 1e-6
+    assert E.reflected_shock_pressure(1 + eps, 1.0, 1.4) - 1 == pytest.approx(2 * eps, rel=1e-4)
+    assert E.reflected_shock_pressure(1e9, 1.0, 1.4) / 1e9 == pytest.approx(8.0, rel=1e-6)
+
+
+def test_a_lower_charge_slows_the_same_machine_and_an_earlier_arrest_shortens_it(helium):
+    # k in proportion to the charge: each lower charge ends slower at the same arrest, about as sqrt(k) over the
+    # same travel (the work k x; within 0.01: pi(u) falls less at the lower speed); each earlier arrest ends
+    # slower too (less of the pulse), and the bracket's upper end is higher there (less time for the ports)
+    speeds = [c["speed_error"] for c in helium.charges]
+    assert speeds == sorted(speeds, reverse=True)
+    assert all(c["speed_error"] == pytest.approx(math.sqrt(c["share"]) - 1, abs=0.01) for c in helium.charges)
+    moved = helium.separations
+    assert [c["speed_error"] for c in moved] == sorted((c["speed_error"] for c in moved), reverse=True)
+    assert [c["upper_ratio"] for c in moved] == sorted(c["upper_ratio"] for c in moved)
