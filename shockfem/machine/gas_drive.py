@@ -556,7 +556,7 @@ def closing_sensitivity(d: GasDrive, V0: float, times=CLOSING_TIMES) -> list[dic
     return out
 
 
-def _end_pulse(d: GasDrive, spec: MachineSpec, ports, k: float | None = None, rise: float | None = None,
+def end_pulse(d: GasDrive, spec: MachineSpec, ports, k: float | None = None, rise: float | None = None,
                p0: float | None = None) -> DrivePulse:
     """The same machine (stroke to the ports, arrest) fired with ``ports``, the specific force ``k``, the valve's
     ramp ``rise`` and the charge ``p0`` (the design's where None): the piston reaching the ports when it has
@@ -588,7 +588,7 @@ def recovery_check(d: GasDrive, spec: MachineSpec, ideal) -> dict:
     upper = E.bracket(p.ports)[1]
     out = {}
     for key, ports in (("upper", upper), ("radial", dataclasses.replace(upper, discharge=1.0))):
-        pulse = _end_pulse(d, spec, ports, rise=ideal.rise)
+        pulse = end_pulse(d, spec, ports, rise=ideal.rise)
         out[key] = {"band": _band_of(spec, pulse), "end_ratio": pulse.fall.end_ratio,
                     "speed_error": pulse.end_speed / p.end_speed - 1}
     return {**out["upper"], "radial": out["radial"]}
@@ -618,7 +618,7 @@ def opening_sensitivity(d: GasDrive, spec: MachineSpec, times=OPENING_TIMES) -> 
     (the piston reaching the ports later as the ramp lengthens)."""
     out = []
     for rise in times:
-        low, high = (_end_pulse(d, spec, ports, rise=rise) for ports in E.bracket(d.pulse.ports))
+        low, high = (end_pulse(d, spec, ports, rise=rise) for ports in E.bracket(d.pulse.ports))
         out.append({"opening": rise, "peak": low.peak, "end_speed": low.end_speed, "band": _band_of(spec, low),
                     "upper_band": _band_of(spec, high), "speed_error": low.end_speed / d.velocity_change - 1})
     return out
@@ -628,7 +628,7 @@ def charge_sensitivity(d: GasDrive, spec: MachineSpec, shares=CHARGE_SHARES) -> 
     """The same machine charged to each of ``shares`` of its p0 (k in proportion), at both ends of the bracket."""
     out = []
     for f in shares:
-        low, high = (_end_pulse(d, spec, ports, k=f * d.pulse.specific_force, p0=f * d.pressure)
+        low, high = (end_pulse(d, spec, ports, k=f * d.pulse.specific_force, p0=f * d.pressure)
                      for ports in E.bracket(d.pulse.ports))
         out.append({"share": f, "band": _band_of(spec, low), "upper_band": _band_of(spec, high),
                     "speed_error": low.end_speed / d.velocity_change - 1})
@@ -644,7 +644,7 @@ def arrest_sensitivity(d: GasDrive, spec: MachineSpec, shares=SEPARATION_SHARES)
         t_s = f * spec.pulse.duration
         at = drive_pulse(p.specific_force, c0, gamma, rise, p.ports, p.port_time, separation=t_s)
         moved = dataclasses.replace(d, pulse=dataclasses.replace(p, fall_travel=at.fall_travel))
-        low, high = (_end_pulse(moved, spec, ports) for ports in E.bracket(p.ports))
+        low, high = (end_pulse(moved, spec, ports) for ports in E.bracket(p.ports))
         openings = [o["opening"] for o in opening_sensitivity(moved, spec, MARGIN_OPENINGS) if _in_both(o)]
         charges = [c["share"] for c in charge_sensitivity(moved, spec, MARGIN_CHARGES) if _in_both(c)]
         out.append({"separation": t_s, "band": _band_of(spec, low), "upper_band": _band_of(spec, high),
