@@ -313,6 +313,7 @@ class GasDrive:
     air_ahead: dict = field(default_factory=dict)   # ``air_ahead_bound``
     step: dict = field(default_factory=dict)        # ``separation_step``
     arrest_reaction: float = math.nan  # the arrest's force less the gas's on the breech at the separation [N]
+    arrest_hold: float = math.nan     # the force with which the arrest stops the piston against the push (0: none)
     openings: list = field(default_factory=list)  # ``opening_sensitivity``
     vented_mass: float = math.nan     # the gas a shot vents, the valve left open [kg] (``closing_sensitivity``)
     vented_volume: float = math.nan   # the same at standard conditions [m^3]
@@ -480,8 +481,10 @@ def _design_end(d: GasDrive, spec: MachineSpec, size: dict, rho: float, S: float
     rho_p = property_si(mv.material, "density", "density")
     args = ("gas drive's piston (its arrest)", mv.piston_mass, pulse.end_speed, mv.piston_thickness, rho_p,
             mv.allowable, ring_area(mv.bore, passage), spec.oil_pressure)
-    d.arrest = design_stop(*args, max_force=d.arrest_limit, push=d.push) or design_stop(*args,
-                                                                                        max_force=d.arrest_limit)
+    pushed = design_stop(*args, max_force=d.arrest_limit, push=d.push)
+    # none stops the piston against the push: the unpushed one sizes the parts, its holding force nil
+    d.arrest = pushed or design_stop(*args, max_force=d.arrest_limit)
+    d.arrest_hold = d.arrest.force if pushed else 0.0
     # the vessel takes the arrest's force forward and the gas's on the breech back, least at the separation
     d.arrest_reaction = d.arrest.force - pulse.fall.end_ratio * d.pressure * area
     d.port_band = E.port_band(mv.bore, pulse.fall_travel, pulse.ports.share, d.pressure, S,
@@ -525,7 +528,7 @@ def _end_limits(d: GasDrive, spec: MachineSpec, S: float) -> list[Limit]:
         Limit("gas drive piston", "load on its arrest", d.arrest.force, d.arrest_limit, "N",
               "the arrest's peak force (the push reaches it only through the arrest): the annulus's bearing, the "
               "centre's bending (Roark 11.2 10a)", f"{mv.material} allowable", sized=True),
-        Limit("gas drive piston's arrest", "the gas's push over the arrest's force", d.push, d.arrest.force, "N",
+        Limit("gas drive piston's arrest", "the gas's push over the arrest's force", d.push, d.arrest_hold, "N",
               "p0 A against the absorber's force: below it the piston never stops", "the push held (module docstring)"),
         Limit("gas drive ports", "ligament hoop stress at p0 (Lame, inner wall)", band.hoop_stress, S, "Pa",
               "p0 (Y^2 + 1) / (Y^2 - 1) / E, UG-53 ligament efficiency", steel, sized=True),
