@@ -865,6 +865,9 @@ def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str
         if not d.in_band:
             why.insert(0, f"its pulse is outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
         if d.moving is not None and not d.feasible:
+            if d.lumped and not d.lumped["band"].passed:
+                why.append(f"the lumped gun's shot to the same arrest is outside the band too (worst excess "
+                           f"{d.lumped['band'].worst_excess:.3g})")
             why.append(_what_would_bring_it_in(d))
         parts.append(f"(d), the closed-breech gas drive in {d.gas} ({d.moving.total:.3g} kg driven over "
                      f"{d.pulse.stroke:.3g} m from a {d.gun.bore / IN:.3g} in bore at {d.pressure / PSI:,.0f} psi; "
