@@ -168,7 +168,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
-    c, target = P.flying_target_arrangement(m.spec, m.fixture)
+    c, target = P.flying_target_arrangement(m.spec, m.fixture, evaluations=cfg["fixture_evaluations"])
     echo("  (d) the closed-breech gas drive")
     drives = D.gas_drives(m.spec, m.fixture)
     d_rows = [D.arrangement(x) for x in drives]
