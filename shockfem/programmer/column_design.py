@@ -21,7 +21,8 @@ search's grid printed) and on the lumped model with the same law (the difference
 model designs only where that difference is inside its own checks and the band's margin), and weighed
 whole (``housing.fixture_mass``: the wall by ASME VIII-2's rule unless another is named).  The housing
 is a constraint of the search too: a wall's peak pressure times its dynamic factor above what the steel
-holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log ratio.  A design whose
+holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log ratio, and so does the
+metering pin's von Mises stress (the liquid's pressure all round it) above the steel's S.  A design whose
 checks do not all hold is reported outside, not chosen: the search's penalty pushes it in where it can,
 and where it cannot, the checks say why.
 
@@ -309,11 +310,15 @@ def pin_correction(cut_d: dict, d: dict) -> np.ndarray:
 def design_objective(d: dict, run, pulse: PulseSpec, liquid: DesignLiquid, steel: str = HOUSING_STEEL,
                      rule: str = WALL_RULE) -> float:
     """The search's objective of a design ``d`` on its column ``run``: the band's (narrowed by the design
-    margin), every vetoing check of the column's that fails, and the housing beyond the practical wall
-    ratio, each by its log ratio times ``PENALTY``."""
+    margin), every vetoing check of the column's that fails, the housing beyond the practical wall ratio
+    and the metering pin's von Mises stress over the steel's S (``housing.fixture_mass``'s
+    ``pin_stress_ratio``, which the verdict's "the pin does not hold it" reads), each by its log ratio
+    times ``PENALTY``."""
     _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
+    weight = weigh(d, run, steel, rule)
+    beyond = (housing_ratio(weight), weight["pin_stress_ratio"])
     return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
-            + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
+            + PENALTY * sum(math.log(max(ratio, 1.0)) for ratio in beyond))
 
 
 def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations: int, steel: str, rule: str) -> dict:
@@ -382,10 +387,9 @@ def weigh(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> di
     return fixture_mass(d, run.t, np.maximum(run.pressure, run.floor_pressure), run.floor_pressure, steel, rule)
 
 
-def housing_ratio(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> float:
-    """The wall's peak pressure times its dynamic factor over the most a wall of ``steel`` holds by
-    ``rule`` at the practical wall ratio: above 1 no housing within Y_max holds the design."""
-    weight = weigh(d, run, steel, rule)
+def housing_ratio(weight: dict) -> float:
+    """The wall's peak pressure times its dynamic factor over the most a wall holds at the practical wall
+    ratio (``weight``: ``weigh``'s fixture): above 1 no housing within Y_max holds the design."""
     return weight["peak_pressure"] * weight["dynamic_factor"] / weight["holdable_pressure"]
 
 
