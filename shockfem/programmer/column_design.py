@@ -80,8 +80,9 @@ PENALTY = 10.0
 # the pin's cut: an iterate outside a vetoing check of the column's scores this much over its objective
 OUTSIDE_SCORE = 1.0e6
 # the handle searches (``search_rounds``): the first on the quasi-steady pin, each next on the last one's
-# pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself
-PIN_ROUNDS, HANDLES_SETTLED = 3, 0.02
+# pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself or the round's
+# score (the kept quantity) by no more than SCORE_SETTLED of the last round's
+PIN_ROUNDS, HANDLES_SETTLED, SCORE_SETTLED = 3, 0.02, 0.02
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
@@ -215,19 +216,23 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
         return carried_pin(_design(pulse, article_mass, seat_mass, liquid, bore, h, ratio, law), correction)
 
     def search(correction, start):
-        liquid_column = liquid.column()
+        # a round on a carried cut pin searches on the grid that pin was cut on and its score is read on:
+        # the search grid reads a pin cut at the design grid wrongly (fitted to that grid's waves)
+        liquid_column, grid = liquid.column(), search_cells if correction is None else cells
 
         def objective(h):
             if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
                 return 100.0
             d = design(h, correction)
             try:
-                run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, search_cells, liquid_column)
+                run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, grid, liquid_column)
             except (RuntimeError, ValueError):        # the piston reached the floor; a striker lighter than its oil
                 return 50.0
             return design_objective(d, run, pulse, liquid, steel, rule)
-        return minimize(objective, np.array(start), method="Nelder-Mead",
-                        options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
+        res = minimize(objective, np.array(start), method="Nelder-Mead",
+                       options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": evaluations})
+        res.cells = grid
+        return res
 
     def cut_on_design_grid(d):
         return _cut(d, pulse, liquid, cells, pin_iterations, steel, rule)
@@ -261,12 +266,15 @@ def search_rounds(search, design, cut, rounds: int) -> tuple:
     Nelder-Mead result) on the quasi-steady pin, and its design's pin is cut (``cut(design)``, at the
     design grid); each next round searches from the last one's handles on the quasi-steady pin times the
     correction that cut found (``pin_correction``), and cuts its own design's pin from there.  At most
-    ``rounds``; they stop once no handle moved by more than ``HANDLES_SETTLED`` of itself.  Of the
+    ``rounds``; they stop once no handle moved by more than ``HANDLES_SETTLED`` of itself, or the round's
+    score by no more than ``SCORE_SETTLED`` of the last round's (the handles may still wander along a
+    valley of the score, which is what the rounds keep).  Of the
     rounds' cut designs the one of the least score (the cut's, the search's objective at the design grid)
     is kept: round 0 is the handles searched on the quasi-steady pin and cut after, so the kept design
     is never worse than that.  Returns the kept cut design, its handles, the correction that reproduces
-    its cut pin on them, its score, and each round's record (handles, search objective, runs, the cut's
-    score and why it stopped)."""
+    its cut pin on them, its score, and each round's record (handles, search objective, its grid if the
+    search names one, runs, the cut's score, why the cut stopped, and ``settled``: what settled after
+    it, "handles" or "score", or None)."""
     correction, start, kept, history = None, START, None, []
     for k in range(rounds):
         res = search(correction, start)
@@ -274,14 +282,17 @@ def search_rounds(search, design, cut, rounds: int) -> tuple:
         cut_d = cut(design(h, correction))
         steps, best = cut_d.get("pin_cut", {}).get("steps", []), cut_d.get("pin_cut", {}).get("best")
         score = steps[best]["score"] if best is not None else float(res.fun)
+        settled = (None if k == 0 else "handles" if np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED)
+                   else "score" if abs(score / history[-1]["cut_score"] - 1.0) <= SCORE_SETTLED else None)
         history.append({"handles": dict(zip(HANDLES, map(float, h))), "objective": float(res.fun),
-                        "evaluations": int(res.nfev), "carried": correction is not None, "cut_score": score,
-                        "cut_stop": cut_d.get("pin_cut", {}).get("stop")})
+                        "cells": getattr(res, "cells", None), "evaluations": int(res.nfev),
+                        "carried": correction is not None, "cut_score": score,
+                        "cut_stop": cut_d.get("pin_cut", {}).get("stop"), "settled": settled})
         if "pin_cut" in cut_d:             # no cut (no pin iterations): the quasi-steady pin as it is
             correction = pin_correction(cut_d, design(h, None))
         if kept is None or score < kept[3]:
             kept = (cut_d, h, correction, score)
-        if k > 0 and np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED):
+        if settled:
             break
         start = h
     return (*kept, history)
