@@ -29,13 +29,15 @@ and where it cannot, the checks say why.
 The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
 the striker and the force, and the pin's area table is iterated against the column's own force at the
 design grid, from the pin the handles were searched with; of its iterates the design keeps the one of
-the least objective (the search's: band, checks, housing) among those inside every vetoing check of the
+the least objective (the search's: band, checks, housing, pin) among those inside every vetoing check of the
 column's, so the cut never makes the design worse by that objective nor takes it out of the laws' ranges
 (its first iterate is the searched pin, its closing end held at the machinable least gap).  And the
 handles are searched with the pin they get (``search_rounds``): the first search on the quasi-steady
-pin, each next one on the last one's cut pin (its shape carried to the trial handles as a factor a pin
-point, ``carried_pin``), the pin cut again after each, until the handles settle; the round of the least
-score at the design grid is kept, never worse than the quasi-steady handles cut after.
+pin at ``SEARCH_CELLS``, each next one on the last one's cut pin (its shape carried to the trial handles
+as a factor a pin point, ``carried_pin``) at the design grid, where that pin was cut (the coarse grid
+reads a pin cut to the fine grid's waves wrongly), the pin cut again after each, until the handles or
+the score settle; the round of the least score at the design grid is kept, never worse than the
+quasi-steady handles cut after.
 
 The striker carries the housing: before the search, the striker over the payload is iterated with the
 housing its closed-form design needs on the column (``carried_ratio``, a fixed point of a few runs), never
@@ -334,7 +336,7 @@ def design_objective(d: dict, run, pulse: PulseSpec, liquid: DesignLiquid, steel
 
 def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations: int, steel: str, rule: str) -> dict:
     """The design with its pin cut on the column (``pin_cut.cut_pin``) at ``cells``, the best iterate by
-    the search's own objective (``design_objective``: the band, the checks and the housing, not the
+    the search's own objective (``design_objective``: the band, the checks, the housing and the pin, not the
     force's match alone: a pin that flattens the force by raising the floor's pressure beyond what a
     housing holds is no better design), among the iterates inside every vetoing check of the column's if
     any is (the designer does not cut a pin into a region where its model is invalid); ``d`` itself with
