@@ -83,8 +83,8 @@ then its reflection from the floor, 2 z / c later; where that delay is a whole n
 periods the two steps add in phase, and the slice responds as the floor's does, where they arrive
 together as one step.  Over a column many ring periods long some slice is in phase whatever the
 period, so the floor's history stands for it; the envelope's factor instead swings between
-about 2 p_2 / (p_1 + p_2) and 2 (p_1, p_2 the two steps) with the phase of one delay, every few
-percent of the period, and would let a design choose its wall's phase.  The range: a column at least
+1 + |p_1 - p_2| / (p_1 + p_2) and 2 (p_1 the front, p_2 what its reflection adds) with the phase of one
+delay, every few percent of the period, and would let a design choose its wall's phase.  The range: a column at least
 one ring period of delay long (a shorter one is nearer the floor's single step still); slices between
 the ends are not run, only argued.
 
