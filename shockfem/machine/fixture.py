@@ -13,7 +13,8 @@ the machine, with its ratio.  The lumped model's run of the same design is kept 
 
 The housing is the fixture study's (``programmer.housing``, the one place for its formulas):
 ``HOUSING_STEEL`` at ASME VIII-2's design stress S, its wall by VIII-2 4.3.3 (P = S ln Y, Y = b / a) at
-the column's peak wall pressure times the dynamic factor read from the column's own history, at most
+the column's peak wall pressure times the dynamic factor of its worst slice (the column's histories at
+the piston's face and at the floor, each slice a ring of its own: ``housing.wall_factor``), at most
 a monobloc forging's Y_max = ``PRACTICAL_RATIO``, its floor VIII-2 4.6's integral flat head at the
 floor's pressure and factor (``housing.fixture_mass``).  The machine's striker carries it over the
 whole bore: the column, the piston and the article standing in it (``BORE_HEADROOM`` above its nose),

@@ -511,8 +511,9 @@ def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int =
 
 def weigh(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
     """The fixture's mass (``housing.fixture_mass``) on a column ``run``'s pressures: the wall sized for
-    the largest over the column and the floor, the floor for its own."""
-    return fixture_mass(d, run.t, np.maximum(run.pressure, run.floor_pressure), run.floor_pressure, steel, rule)
+    the worse of its slices at the piston's face and at the floor (``housing.wall_factor``), the floor
+    for its own."""
+    return fixture_mass(d, run.t, np.vstack((run.pressure, run.floor_pressure)), run.floor_pressure, steel, rule)
 
 
 def housing_ratio(weight: dict) -> float:

@@ -72,8 +72,24 @@ peak times ``dynamic_factor`` of the pressure's own history on the wall's breath
 period 2 pi b / c, c = sqrt(E / rho): ``liquids-and-machines.md``) and on the floor's first mode, an
 undamped oscillator x'' + w^2 x = w^2 p(t); the factor is its largest response over the largest
 pressure (Biggs, Introduction to Structural Dynamics, 1964, ch. 2: 2 for a step, 1 + |sin(pi t_r /
-T)| / (pi t_r / T) for a ramp of rise t_r).  A design reads it from the column's history; the closed
-form (``column_design.contact_pressure_limit``) from the front's own, a shock: a step, 2.
+T)| / (pi t_r / T) for a ramp of rise t_r), exact for the sampled (piecewise-linear) history and
+continuous in the period.  A design reads it from the column's histories; the closed form
+(``column_design.contact_pressure_limit``) from the front's own, a shock: a step, 2.
+
+Each slice of the wall is a ring driven by its own history (``wall_factor``): the wall is sized for the
+worst slice whose history the column holds, the piston's face and the floor, not for the envelope of
+the two, which no slice sees.  On the column the contact front reaches a slice at z from the floor,
+then its reflection from the floor, 2 z / c later; where that delay is a whole number of the ring's
+periods the two steps add in phase, and the slice responds as the floor's does, where they arrive
+together as one step.  Over a column many ring periods long some slice is in phase whatever the
+period, so the floor's history stands for it; the envelope's factor instead swings between
+1 + |p_1 - p_2| / (p_1 + p_2) and 2 (p_1 the front, p_2 what its reflection adds) with the phase of one
+delay, every few percent of the period, and would let a design choose its wall's phase.  The range: a column at least
+one ring period of delay long (a shorter one is nearer the floor's single step still); slices between
+the ends are not run, only argued.
+
+The period depends on the size it sizes (the wall's on its outer radius, the floor's on its thickness):
+each is the least size that holds its own response at its own period (``least_self_consistent``).
 
 The pressurised bore runs the column and the piston's thickness; the article's guide beyond it, which
 holds no pressure, is not counted.
@@ -255,26 +271,109 @@ def floor_for(pressure: float, bore: float, steel: HousingSteel | str = HOUSING_
 
 
 def dynamic_factor(t: np.ndarray, p: np.ndarray, period: float) -> float:
-    """The largest response of an undamped oscillator of ``period`` [s], at rest before the history,
-    driven by the pressure ``p`` at times ``t`` (linear between samples) over the largest pressure.
-
-    Exact for the piecewise-linear load: on a sample interval the load's own line is a particular
-    solution, so x - p oscillates freely at w there; the response is stepped interval by interval."""
+    """The largest |x| of an undamped oscillator x'' + w^2 x = w^2 p(t) of ``period`` [s], at rest before
+    the history, driven by the pressure ``p`` at strictly increasing times ``t`` (linear between
+    samples), over the largest pressure (``largest_response``); 1 where the pressure never rises."""
+    p = np.asarray(p, dtype=float)
     peak = float(np.max(p))
+    return largest_response(t, p, period) / peak if peak > 0.0 else 1.0
+
+
+def largest_response(t: np.ndarray, p: np.ndarray, period: float) -> float:
+    """The largest |x| [p's unit] of ``dynamic_factor``'s oscillator over the history.
+
+    Exact for the piecewise-linear load, and continuous in the period: on the interval from t_k, of
+    slope m_k, the load's own line is a particular solution, so x = p_k + m_k tau + A_k cos(w tau - phi_k)
+    (``oscillation_states``), and the interval's largest |x| is at its ends or where x' = 0
+    (``interval_extremes``)."""
+    t, p = np.asarray(t, dtype=float), np.asarray(p, dtype=float)
+    h = np.diff(t)
+    if np.any(h <= 0.0):
+        raise ValueError("dynamic_factor: the history's times must increase strictly")
+    w = 2.0 * math.pi / period
+    slope = np.diff(p) / h
+    z = oscillation_states(t, p, slope, w)
+    last = p[-1] + (z[-1] * np.exp(-1j * w * h[-1])).real
+    ends = max(float(np.max(np.abs(p[:-1] + z.real))), abs(float(last)))
+    return max(ends, interval_extremes(p[:-1], slope, z, w, h))
+
+
+def wall_factor(t: np.ndarray, slices: np.ndarray, period: float) -> float:
+    """The wall's dynamic factor: the largest response over its ``slices``' pressure histories (rows;
+    one history alone as a 1-D array), each slice a ring of ``period`` driven by its own, over the largest
+    pressure of any (see the module's docstring: the worst slice, not the envelope of the histories)."""
+    slices = np.atleast_2d(np.asarray(slices, dtype=float))
+    peak = float(np.max(slices))
     if peak <= 0.0:
         return 1.0
-    w = 2.0 * math.pi / period
-    x, v, largest = 0.0, 0.0, 0.0
-    for k in range(len(t) - 1):
-        h = t[k + 1] - t[k]
-        slope = (p[k + 1] - p[k]) / h
-        y, yd = x - p[k], v - slope
-        c, s = math.cos(w * h), math.sin(w * h)
-        x = y * c + yd / w * s + p[k + 1]
-        v = -y * w * s + yd * c + slope
-        # the largest |x| of the interval, between samples where the oscillation peaks inside it
-        largest = max(largest, abs(x), abs(p[k]) + math.hypot(y, yd / w) if w * h > math.pi / 8 else 0.0)
-    return largest / peak
+    return max(largest_response(t, p, period) for p in slices if np.max(np.abs(p)) > 0.0) / peak
+
+
+def oscillation_states(t: np.ndarray, p: np.ndarray, slope: np.ndarray, w: float) -> np.ndarray:
+    """The free oscillation about the load's line at the start of each sample interval, as
+    z_k = (x - p)_k + i (x' - m_k)_k / w, so that x - p_k - m_k tau = Re(z_k e^(-i w tau)) on it: at rest
+    at t_0, z_0 = -p_0 - i m_0 / w; across an interval z turns by e^(-i w h); at a sample x and x' are
+    continuous and the slope changes, so z gains i (m_(k-1) - m_k) / w.  The gains are summed at once,
+    z_k = e^(-i w t_k) sum_(j <= k) J_j e^(i w t_j) (its round-off: the sum's, a few ulp of sum |J_j|)."""
+    gains = np.empty(len(slope), dtype=complex)
+    gains[0] = -p[0] - 1j * slope[0] / w
+    gains[1:] = 1j * (slope[:-1] - slope[1:]) / w
+    tau = t[:-1] - t[0]
+    return np.cumsum(gains * np.exp(1j * w * tau)) * np.exp(-1j * w * tau)
+
+
+def interval_extremes(p0: np.ndarray, slope: np.ndarray, z: np.ndarray, w: float, h: np.ndarray) -> float:
+    """The largest |x| inside the intervals, x = p0 + m tau + A cos(w tau - phi) (z = A e^(i phi)) for
+    0 <= tau <= h: x' = 0 where theta = w tau - phi = asin(s) + 2 pi n (x's maxima) or pi - asin(s) +
+    2 pi n (its minima), s = m / (A w), |s| < 1 (else x is monotone there).  Along one branch x moves by
+    2 pi m / w from one root to the next, so its extreme is at the branch's first or last root inside the
+    interval: two roots a branch, whatever w h."""
+    amplitude = np.abs(z)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(amplitude > 0.0, slope / (amplitude * w), np.inf)
+    turning = np.abs(s) < 1.0
+    p0, slope, amplitude, phase, h, s = (a[turning] for a in (p0, slope, amplitude, np.angle(z), h, s))
+    largest = 0.0
+    for branch in (np.arcsin(s), math.pi - np.arcsin(s)):
+        first = np.ceil((-phase - branch) / (2.0 * math.pi))
+        last = np.floor((w * h - phase - branch) / (2.0 * math.pi))
+        inside = first <= last
+        if not np.any(inside):
+            continue
+        for n in (first[inside], last[inside]):
+            theta = branch[inside] + 2.0 * math.pi * n
+            x = p0[inside] + slope[inside] * (theta + phase[inside]) / w + amplitude[inside] * np.cos(theta)
+            largest = max(largest, float(np.max(np.abs(x))))
+    return largest
+
+
+# the scan for the least self-consistent size: a step of 3% in the size, so in the period (a front's
+# step of rise t_r has the factor 1 + |sin x| / x, x = pi t_r / T, which 3% of T moves by about 0.01 x^2:
+# under 1e-3 for a rise within a third of the period); the root to a share 1e-10 of the size
+SIZE_STEP, SIZE_TOLERANCE = 1.03, 1e-10
+
+
+def least_self_consistent(needed, lower: float) -> float:
+    """The least size x >= ``lower`` [m] of a part whose period its size sets that holds its own response:
+    ``needed(x)``, the size the part needs at the period size x gives, at most x (a wall or floor thinner
+    than that does not hold the pressure at its own period; any thicker one whose need it meets does, and
+    this is the lightest).  Where ``needed(lower) <= lower`` the lower bound is halved until it does not
+    (a wall's bore is its least size).  Scanned up by ``SIZE_STEP`` to the first size that meets its
+    need, then the root in that step (brentq); where the need turns infinite first (a rule that saturates
+    below the pressure), that size.  Its range: a need that does not dip below the size and back within
+    one step (the scan would step over that root)."""
+    for _ in range(60):
+        if needed(lower) > lower:
+            break
+        lower *= 0.5
+    else:
+        return lower
+    x0, x1 = lower, lower * SIZE_STEP
+    while (need := needed(x1)) > x1:
+        if not math.isfinite(need):
+            return x1
+        x0, x1 = x1, x1 * SIZE_STEP
+    return brentq(lambda x: needed(x) - x, x0, x1, xtol=SIZE_TOLERANCE * x0, rtol=1e-14)
 
 
 # a steel's Poisson ratio, in the floor plate's stiffness (only its square enters)
@@ -297,8 +396,9 @@ def step_factor() -> float:
 def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_pressure: np.ndarray,
                  steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> dict:
     """The dashpot ``design`` (``dashpot_design``) weighed whole, its housing of ``HOUSING_STEELS[steel]``
-    sized by ``rule`` (``wall_for``, ``floor_for``) for the pressure histories on its wall (the largest
-    over the column) and on its floor [Pa] at times ``t`` [s], each times its own dynamic factor: a dict
+    sized by ``rule`` (``wall_for``, ``floor_for``) for the pressure histories on its wall's slices (rows,
+    or one history: ``wall_factor``) and on its floor [Pa] at times ``t`` [s], each times its own dynamic
+    factor at the period of the least size that holds it (``least_self_consistent``): a dict
     of the parts [kg] and their sum, ``fixture``; ``housing_carried``, the housing or, beyond the practical
     ratio, the heaviest a monobloc gives (what a striker can be asked to carry); the wall (``Wall``'s fields under ``wall_``), the floor,
     the factors, ``housing_holds`` (the wall within ``PRACTICAL_RATIO``), ``holdable_pressure`` (what
@@ -309,18 +409,20 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
     a = design["bore_radius"]
     allowed = s.allowed_stress()
     peak = float(np.max(wall_pressure))
-    # the breathing period of the wall it gives, from a first guess at twice the bore
-    outer, factor = 2.0 * a, 1.0
-    for _ in range(4):
-        factor = dynamic_factor(t, wall_pressure, 2.0 * math.pi * outer / s.bar_speed())
-        wall = wall_for(peak * factor, a, s, rule)
-        outer = wall.outer_radius
-        if not math.isfinite(outer):
-            break
-    floor_peak, floor, floor_factor = float(np.max(floor_pressure)), a, 1.0
-    for _ in range(4):
+    period = 2.0 * math.pi / s.bar_speed()           # the wall's breathing period per metre of outer radius
+
+    def wall_at(outer):
+        return wall_for(peak * wall_factor(t, wall_pressure, period * outer), a, s, rule)
+    wall = wall_at(least_self_consistent(lambda R: wall_at(R).outer_radius, a))
+    factor, outer = (wall.pressure / peak if peak > 0.0 else 1.0), wall.outer_radius
+    floor_peak = float(np.max(floor_pressure))
+
+    def floor_at(thickness):
+        return floor_for(floor_peak * dynamic_factor(t, floor_pressure, floor_period(a, thickness, s)), a, s)
+    floor, floor_factor = 0.0, 1.0
+    if floor_peak > 0.0:
+        floor = least_self_consistent(floor_at, 0.5 * floor_for(floor_peak, a, s))
         floor_factor = dynamic_factor(t, floor_pressure, floor_period(a, floor, s))
-        floor = floor_for(floor_peak * floor_factor, a, s)
     length = design["column"] + design.get("piston_thickness", 0.015)
     housing = wall.mass_per_length * length + s.density * math.pi * outer ** 2 * floor
     # the heaviest housing a monobloc gives: the wall at the practical ratio, the same floor

@@ -334,6 +334,26 @@ def housing_dynamic_factor(size, workdir):
         exact = 2.0 if ratio == 0 else 1.0 + abs(math.sin(x)) / x
         out.append(check(f"housing.dynamic_factor_rise_{ratio:g}T [-]", exact, measured, FACTOR_TOLERANCE,
                          time.perf_counter() - t0, 0))
+    return out + housing_two_fronts(T)
+
+
+def housing_two_fronts(T):
+    """``housing.dynamic_factor`` between coarse samples (8 a period: the largest response falls inside
+    the intervals): a column's contact front to p_1 = 0.4 and its reflection to 1 a delay D later, each
+    rising over one sample h, the plateau 14 periods long.  After a ramp of rise h the free oscillation's
+    amplitude is the step's times sin(w h / 2) / (w h / 2), centred on the ramp; so the largest response
+    is 1 + sinc |p_1 + p_2 e^(i w D)|: in phase (D = 5 T) 1 + sinc, out of phase (D = 5.5 T)
+    1 + 0.2 sinc, the two bounds between which the envelope's factor swings with its phase."""
+    from ..programmer.housing import dynamic_factor
+    h, out = T / 8, []
+    t = np.arange(0.0, 20 * T + h / 2, h)
+    sinc = math.sin(math.pi / 8) / (math.pi / 8)
+    for periods in (5.0, 5.5):
+        t0 = time.perf_counter()
+        p = 0.4 * np.clip((t - T) / h, 0, 1) + 0.6 * np.clip((t - T - periods * T) / h, 0, 1)
+        exact = 1.0 + sinc * abs(0.4 + 0.6 * complex(math.cos(2 * math.pi * periods), math.sin(2 * math.pi * periods)))
+        out.append(check(f"housing.dynamic_factor_two_fronts_{periods:g}T [-]", exact, dynamic_factor(t, p, T),
+                         FACTOR_TOLERANCE, time.perf_counter() - t0, 0))
     return out
 
 

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from shockfem.programmer.housing import (HOUSING_STEELS, PRACTICAL_RATIO, bore_von_mises, critical_flaw,
-                                         fixture_mass, floor_for, held_pressure, step_factor, wall_for, wall_ratio)
+                                         dynamic_factor, fixture_mass, floor_for, held_pressure, least_self_consistent,
+                                         step_factor, wall_factor, wall_for, wall_ratio)
 
 MARAGING = HOUSING_STEELS["maraging_300"]
 S = 1830e6 / 2.4                         # the lesser of 1790 / 1.5 and 1830 / 2.4 [Pa]
@@ -167,3 +168,105 @@ def test_a_pin_over_its_steels_s_scores_worse_by_its_log_ratio():
     assert cd.weigh(over, run)["pin_stress_ratio"] == pytest.approx(1.25, rel=1e-12)
     penalty = (cd.design_objective(over, run, pulse, oil) - cd.design_objective(under, run, pulse, oil))
     assert penalty == pytest.approx(cd.PENALTY * math.log(1.25), rel=1e-9)
+
+
+def _node_stepped_factor(t, p, period, subdivide):
+    """An independent reference for ``dynamic_factor``: the history cut into ``subdivide`` pieces a sample
+    interval, the oscillator stepped in closed form (cos / sin of each piece) and |x| read at the nodes
+    only.  It lies below the exact largest |x| by at most |x''| h^2 / 8 <= A_max (w h)^2 / 8 at piece h."""
+    tf = np.linspace(t[0], t[-1], (len(t) - 1) * subdivide + 1)
+    pf = np.interp(tf, t, p)
+    w, x, v, largest = 2 * math.pi / period, 0.0, 0.0, 0.0
+    for k in range(len(tf) - 1):
+        h = tf[k + 1] - tf[k]
+        m = (pf[k + 1] - pf[k]) / h
+        y, yd = x - pf[k], v - m
+        c, s = math.cos(w * h), math.sin(w * h)
+        x, v = y * c + yd / w * s + pf[k + 1], -y * w * s + yd * c + m
+        largest = max(largest, abs(x))
+    return largest / pf.max()
+
+
+def _two_fronts(t, first, delay):
+    """A column's wall history: the contact front to 0.4 at ``first``, its reflection to 1.0 ``delay``
+    later (each over one sample), a decay and a small ringing after."""
+    p = 0.4 * np.clip((t - first) / (t[1] - t[0]), 0, 1) + 0.6 * np.clip((t - first - delay) / (t[1] - t[0]), 0, 1)
+    return p * np.exp(-np.clip(t - first - delay, 0, None) / (t[-1] - t[0])) * (1 + 0.03 * np.sin(t / (t[-1] - t[0]) * 37))
+
+
+@pytest.mark.parametrize("period_over_sample", [1.5, 3.0, 8.0, 16.0 * (1 - 1e-3), 16.0 * (1 + 1e-3), 40.0, 100.0])
+def test_the_dynamic_factor_is_the_exact_largest_response_between_samples(period_over_sample):
+    """``dynamic_factor`` on two fronts against the node-stepped reference at 400 pieces a sample: the
+    reference lies below the exact maximum by at most A_max (w h / 400)^2 / 8 (A_max <= 2 peak), which is
+    under 2e-5 of the peak at a period of 1.5 samples, so the factor lies within [ref, ref + 2e-5] (and
+    never below the reference less round-off, 1e-12: an exact maximum is at least any sampled value).
+    Sampling ratios from coarse (1.5 samples a period) to fine, and either side of 16 samples a period."""
+    t = np.linspace(0.0, 1.0, 401)
+    period = period_over_sample * (t[1] - t[0])
+    p = _two_fronts(t, 0.05, 0.31)
+    reference = _node_stepped_factor(t, p, period, 400)
+    exact = dynamic_factor(t, p, period)
+    bound = 2.0 * (2 * math.pi / period_over_sample / 400) ** 2 / 8
+    assert reference - 1e-12 <= exact <= reference + bound
+
+
+def test_the_dynamic_factor_is_continuous_across_sixteen_samples_a_period():
+    """Either side of 16 samples a period, a share 1e-8 of it apart, the factor moves by at most what the
+    period's change can move the response, x = w int sin(w (t - s)) p(s) ds: |dx/dw| <= (t_end + w
+    t_end^2 / 2) peak, so dF <= (w t_end + (w t_end)^2 / 2) dT / T = (157 + 12,300) 2e-8 = 2.5e-4
+    (w t_end = 2 pi 400 / 16); a switch between two bounds of the interval's maximum there moves it by
+    tenths."""
+    t = np.linspace(0.0, 1.0, 401)
+    p = _two_fronts(t, 0.05, 0.31)
+    sample = t[1] - t[0]
+    below, above = (dynamic_factor(t, p, 16.0 * sample * (1 + e)) for e in (-1e-8, 1e-8))
+    assert abs(above - below) <= 2.5e-4
+
+
+def test_the_least_self_consistent_size_is_the_least_root():
+    """A need 1 + x / 2 meets its size at 2 only, from below and from a lower bound already past it (the
+    bound halved first); a need x + 0.3 (3 - x)(5 - x)(8 - x) / (1 + x), at most x on [3, 5] and beyond 8,
+    gives the least, 3; a need that turns infinite gives the size where it did."""
+    assert least_self_consistent(lambda x: 1 + x / 2, 0.5) == pytest.approx(2.0, rel=1e-9)
+    assert least_self_consistent(lambda x: 1 + x / 2, 3.0) == pytest.approx(2.0, rel=1e-9)
+    need = lambda x: x + 0.3 * (3 - x) * (5 - x) * (8 - x) / (1 + x)      # noqa: E731 (below x on (3, 5) and > 8)
+    assert least_self_consistent(need, 1.0) == pytest.approx(3.0, rel=1e-9)
+    assert least_self_consistent(lambda x: math.inf if x > 2 else 1 + x, 1.5) > 2
+
+
+def test_the_wall_is_sized_for_its_worst_slice_not_the_envelope():
+    """Two fronts on the column: the piston's face sees the contact front (0.4) and the reflection's
+    return (to 1.0) two transits later, the floor sees them together, a step of 1.0 at one transit.
+    The floor's slice responds as a step (2, its plateau many periods long), so the wall's factor is 2,
+    while the envelope of the two histories (0.4 at contact, 1.0 at one transit: no slice's) reads
+    1 + |0.4 + 0.6 e^(i w D)| with its delay D of one transit: 1.2 at 5.5 periods (each step over one
+    sample of T / 200, whose rise lowers the sum by under 1e-4: 1 - sin(x) / x, x = pi / 200)."""
+    T, transit = 1e-4, 5.5e-4                      # a transit of 5.5 ring periods
+    t = np.linspace(0.0, 4e-3, 8001)
+    step = lambda at: np.clip((t - at) / (t[1] - t[0]), 0, 1)          # noqa: E731
+    piston = 0.4 * step(0.0) + 0.6 * step(2 * transit)
+    floor = step(transit)
+    assert wall_factor(t, np.vstack((piston, floor)), T) == pytest.approx(2.0, abs=1e-3)
+    assert wall_factor(t, np.maximum(piston, floor), T) == pytest.approx(1.2, abs=1e-3)
+    # one history alone is the oscillator's own factor
+    assert wall_factor(t, floor, T) == dynamic_factor(t, floor, T)
+
+
+def test_the_wall_holds_its_own_response_at_its_own_period():
+    """``fixture_mass``'s wall: its outer radius is the wall ``wall_for`` gives at the peak times the
+    factor at the breathing period of that radius (2 pi b / c) within SIZE_TOLERANCE, and the floor's
+    thickness likewise at its own period; on a ramp of rise 3 periods of the radius 2.5 a, a factor that
+    depends on the period (1 + |sin x| / x)."""
+    a = 0.03
+    d = {"bore_radius": a, "column": 1.0, "piston_mass": 0.2, "liquid_mass": 2.5, "pin": [[0.0, 1e-3], [1.0, 0.0]]}
+    rise = 3 * 2 * math.pi * 2.5 * a / MARAGING.bar_speed()
+    t = np.linspace(0.0, 20 * rise, 4001)
+    p = 500e6 * np.clip(t / rise, 0, 1)
+    w = fixture_mass(d, t, p, p)
+    b = w["outer_radius"]
+    # the factor is read at the root, the radius is the wall at it: they agree to the root's tolerance
+    assert w["dynamic_factor"] == pytest.approx(dynamic_factor(t, p, 2 * math.pi * b / MARAGING.bar_speed()), rel=1e-8)
+    assert b == pytest.approx(wall_for(500e6 * w["dynamic_factor"], a).outer_radius, rel=1e-8)
+    assert w["floor_thickness"] == pytest.approx(floor_for(500e6 * w["floor_dynamic_factor"], a), rel=1e-8)
+    x = math.pi * rise * MARAGING.bar_speed() / (2 * math.pi * b)
+    assert w["dynamic_factor"] == pytest.approx(1 + abs(math.sin(x)) / x, rel=1e-9)
