@@ -88,7 +88,10 @@ class ColumnLiquid:
     heat_capacity: float = 1900.0
 
     def params(self) -> np.ndarray:
-        return np.array([self.density, self.bulk_modulus, self.tait_exponent, self.vapour_pressure])
+        """The kernels' array: rho0, K, n, p_v and the vapour density (``vapour_density_of``), which every
+        sound speed reads: worked out once here rather than as a power at every face of every step."""
+        rho0, K, n, pv = self.density, self.bulk_modulus, self.tait_exponent, self.vapour_pressure
+        return np.array([rho0, K, n, pv, vapour_density_of(rho0, K, n, pv)])
 
     def sound_speed(self) -> float:
         return math.sqrt(self.bulk_modulus / self.density)
@@ -113,12 +116,17 @@ def density(p, liquid):
 
 
 @njit(cache=True)
-def vapour_density(liquid):
+def vapour_density_of(rho0, K, n, pv):
     """The density at which Tait's law reaches the vapour pressure: below it the column parts."""
-    rho0, K, n, pv = liquid[0], liquid[1], liquid[2], liquid[3]
     if n == 1.0:
         return rho0 * max(1.0 + pv / K, EMPTY)
     return rho0 * max(1.0 + n * pv / K, EMPTY) ** (1.0 / n)
+
+
+@njit(cache=True)
+def vapour_density(liquid):
+    """The vapour density of the kernels' array (``ColumnLiquid.params``)."""
+    return liquid[4]
 
 
 @njit(cache=True)
@@ -214,9 +222,9 @@ def _minmod(a, b):
 
 
 @njit(cache=True)
-def _hancock(rho, u, x, v_floor, w_end, dt, liquid):
-    """MUSCL-Hancock's face states (Toro, ch. 14.4): each cell's density and velocity with minmod slopes,
-    evolved half a step by the primitive equations rho_t + (u - w) rho_x + rho u_x = 0,
+def _hancock(rho, u, c, x, v_floor, w_end, dt, liquid):
+    """MUSCL-Hancock's face states (Toro, ch. 14.4): each cell's density and velocity (its sound speed
+    ``c``) with minmod slopes, evolved half a step by the primitive equations rho_t + (u - w) rho_x + rho u_x = 0,
     u_t + (u - w) u_x + (c^2 / rho) rho_x = 0 (c^2 = 0 in a parted cell), at its (left, right) faces:
     rows of (rho_left, u_left, rho_right, u_right).  The two end cells keep their means (first order at
     the walls, whose Riemann solutions take the cells' means)."""
@@ -232,7 +240,7 @@ def _hancock(rho, u, x, v_floor, w_end, dt, liquid):
         d_u = _minmod(u[i] - u[i - 1], u[i + 1] - u[i])
         dx = x[i + 1] - x[i]
         w = v_floor + (0.5 * (x[i] + x[i + 1]) - x[0]) / L * (w_end - v_floor)
-        c2 = sound_speed(rho[i], liquid) ** 2 if rho[i] >= rv else 0.0
+        c2 = c[i] ** 2 if rho[i] >= rv else 0.0
         half = 0.5 * dt / dx
         rho_h = rho[i] - half * ((u[i] - w) * d_rho + rho[i] * d_u)
         u_h = u[i] - half * ((u[i] - w) * d_u + c2 / rho[i] * d_rho)
@@ -261,6 +269,7 @@ def column_step(m, q, x, x_piston, area_x, area_a, liquid, law, v_floor, v_pisto
     rho = np.empty(N)
     u = np.empty(N)
     p = np.empty(N)
+    c = np.empty(N)
     A_face = np.empty(N + 1)
     for i in range(N + 1):
         A_face[i] = _interpolate(x[i] - x[0], area_x, area_a)
@@ -269,10 +278,11 @@ def column_step(m, q, x, x_piston, area_x, area_a, liquid, law, v_floor, v_pisto
         rho[i] = m[i] / volume
         u[i] = q[i] / m[i] if m[i] > 0.0 else 0.0
         p[i] = pressure(rho[i], liquid)
+        c[i] = sound_speed(rho[i], liquid)
     f_mass = np.zeros(N + 1)
     f_mom = np.zeros(N + 1)
     # the floor: a wall, or a reservoir's pressure, and the liquid's characteristic toward it
-    z0 = rho[0] * sound_speed(rho[0], liquid)
+    z0 = rho[0] * c[0]
     if math.isnan(reservoir):
         p_floor = max(p[0] + z0 * (v_floor - u[0]), liquid[3])
         f_mom[0] = p_floor * A_face[0]
@@ -287,7 +297,7 @@ def column_step(m, q, x, x_piston, area_x, area_a, liquid, law, v_floor, v_pisto
                                                + p_floor / rho_in)
     # the piston's end: attached (the orifice's face) or parted (a free surface at the vapour pressure)
     pv = liquid[3]
-    zN = rho[N - 1] * sound_speed(rho[N - 1], liquid)
+    zN = rho[N - 1] * c[N - 1]
     parted = x_piston - x[N] > GAP * L or p[N - 1] + zN * (u[N - 1] - v_piston) < pv
     mdot = 0.0
     if parted:
@@ -299,7 +309,7 @@ def column_step(m, q, x, x_piston, area_x, area_a, liquid, law, v_floor, v_pisto
         p_piston, u_star, mdot = _piston_face(rho[N - 1], u[N - 1], p[N - 1], v_piston, a_orifice, A_face[N],
                                               liquid, law)
         w_end = v_piston
-    faces = _hancock(rho, u, x, v_floor, w_end, dt, liquid)
+    faces = _hancock(rho, u, c, x, v_floor, w_end, dt, liquid)
     for i in range(1, N):
         w = v_floor + (x[i] - x[0]) / L * (w_end - v_floor)
         rho_l, u_l, rho_r, u_r = faces[i - 1, 2], faces[i - 1, 3], faces[i, 0], faces[i, 1]

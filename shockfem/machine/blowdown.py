@@ -1,6 +1,6 @@
-"""The tank's choked blowdown once the gas drive's piston has left the cylinder: nothing closes the supply, so
-the tank (volume V, at p0 and the chamber's temperature) empties through the bore (throat area A, C_d 1) into
-the test cell, and the jet's reaction is a load the foundation takes.
+"""A tank's choked blowdown: a fixed volume V at p0 and the chamber's temperature emptying through a throat of
+area A (C_d 1) into the test cell, the closed form the gas drive's control volumes are checked against
+(``machine.drive_end``, ``verify gas_drive``) and whose flow factor its ported law uses.
 
 A fixed volume emptying isentropically through a choked throat has the closed form (Shapiro, The Dynamics
 and Thermodynamics of Compressible Fluid Flow, vol. 1, ch. 4; any gas-dynamics text's "discharge of a
@@ -66,11 +66,3 @@ def blowdown(volume: float, area: float, p0: float, c0: float, gamma: float, amb
     t_u = 2 * tau / (gamma - 1) * ((p_u / p0) ** (-(gamma - 1) / (2 * gamma)) - 1)
     impulse = c_f * area * p0 * tau * 2 / (gamma + 1) * (1 - (p_u / p0) ** ((gamma + 1) / (2 * gamma)))
     return Blowdown(tau, t_u, impulse, c_f * p0 * area)
-
-
-def words(b: Blowdown, momentum: float) -> str:
-    """The blowdown in words beside the moving mass's ``momentum`` [N s]."""
-    return (f"after the piston leaves, the tank blows down through the bore for {b.choked_time * 1e3:,.0f} ms "
-            f"(choked; tau {b.time_constant * 1e3:.3g} ms): a thrust of {b.peak_thrust / 1e6:.3g} MN at first, "
-            f"{b.impulse / 1e3:,.0f} kN s in all ({b.impulse / momentum:.3g} times the moving mass's momentum), "
-            "which the foundation takes (ideal gas, isentropic tank: `machine/blowdown.py`)")

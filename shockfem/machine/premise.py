@@ -61,7 +61,7 @@ from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, gun_thrust
-from .fixture import article_length, bore_radius, design_fixture
+from .fixture import DESIGN_EVALUATIONS, article_length, bore_radius, design_fixture
 from .boundary import (MAX_MASSES, Chain, best_chain, best_pad_restitution, break_even,
                        break_even_speed, sound_speed)
 from .launcher import SIZING, Launcher, launcher_for, launcher_of
@@ -354,12 +354,14 @@ def white_paper_launcher(spec: MachineSpec, launched: float, speed: float) -> tu
     return launcher_of(d, launched), ok
 
 
-def flying_target_arrangement(spec: MachineSpec, fixture, echo=None) -> tuple[Arrangement, object]:
-    """(c): the white paper's flying target (its mass ratio to the article), the fixture designed for it,
-    fired by the white paper's gun with as long a barrel as it needs."""
+def flying_target_arrangement(spec: MachineSpec, fixture, echo=None, evaluations: int = DESIGN_EVALUATIONS
+                              ) -> tuple[Arrangement, object]:
+    """(c): the white paper's flying target (its mass ratio to the article), the fixture designed for it
+    (its search ``evaluations`` runs at most), fired by the white paper's gun with as long a barrel as it
+    needs."""
     ratio = WHITE_PAPER_TARGET * spec.article_mass / fixture.payload_mass
     try:
-        target = design_fixture(dataclasses.replace(spec, striker_ratio=ratio), echo)
+        target = design_fixture(dataclasses.replace(spec, striker_ratio=ratio), echo, evaluations)
     except ValueError as err:
         # the dashpot's own models refuse the target (its liquid outweighs it): no flying target to fire
         return _no_target(spec, fixture, ratio, str(err)), types.SimpleNamespace(striker_ratio=ratio)

@@ -38,6 +38,12 @@ with its broken limits in the machine's verdict):
   buffer takes the rest.  The water it throws out is refilled each shot.  Limit: the scoop's face carries
   the stagnation pressure 2 rho_w v0^2, at most the allowable.
 
+A body pushed on while it is stopped (the gas drive's piston, its gas behind it): the absorber must take the
+body's energy and the push's work over its stroke, F s = m v^2 / 2 + F_p s, so only a force above the push
+stops it (a buffer's stroke m v^2 / (2 (F - F_p)); a honeycomb's with sigma_c less the push over its area), and
+at rest it holds the push (a honeycomb below its crush stress, a buffer's rod bottomed on its cylinder's end).
+The water brake's force falls with the speed, so it is left out there.
+
 The stop's face: the ring the absorber presses on, from the bore that lets the next body pass out to
 a collar 1.3 times the body's diameter (the stop ring as drawn).
 
@@ -139,13 +145,16 @@ def buffer_pressure(design_pressure: float) -> float:
 
 
 def hydraulic_buffer(body: str, mass: float, speed: float, force: float, ring_area: float, pressure: float,
-                     rho_steel: float, allowable: float) -> dict:
+                     rho_steel: float, allowable: float, push: float = 0.0) -> dict | None:
     """A constant-force hydraulic buffer taking ``mass`` at ``speed`` at ``force`` at most, its bore within
-    ``ring_area``, its cylinder at ``pressure``; its size and limits."""
-    energy = 0.5 * mass * speed * speed
+    ``ring_area``, its cylinder at ``pressure``, against a steady ``push`` [N] on the body (module docstring);
+    its size and limits, None where its force cannot exceed the push."""
     area = min(force / pressure, ring_area)
     force = area * pressure
-    stroke = energy / force
+    if force <= push:
+        return None
+    stroke = 0.5 * mass * speed * speed / (force - push)
+    energy = force * stroke                      # the body's and the push's work over the stroke
     r = math.sqrt(area / math.pi)
     R = r * wall_ratio(pressure, allowable)
     length = BUFFER_LENGTH * stroke
@@ -178,14 +187,18 @@ def backing_plate(p: float, r: float, S: float) -> float:
 
 
 def crushable(body: str, mass: float, speed: float, force: float, ring_area: float, grade: str, rho_steel: float,
-              allowable: float) -> dict:
+              allowable: float, push: float = 0.0) -> dict | None:
     """An aluminium honeycomb block of ``grade`` crushed by ``mass`` at ``speed``, its peak force at most
-    ``force``, its section at most ``ring_area``; its size and limits."""
+    ``force``, its section at most ``ring_area``, against a steady ``push`` [N] on the body (module docstring);
+    its size and limits, None where its static crush force cannot exceed the push (the body never stops)."""
     rho0, sigma_c = HONEYCOMB[grade]
     k = rho0 / DENSIFICATION
     peak_stress = sigma_c + k * speed * speed
     area = min(ring_area, force / peak_stress)
-    stroke = mass * math.log(1 + k * speed * speed / sigma_c) / (2 * area * k)
+    net = sigma_c - push / area                  # the static crush stress the push leaves to stop the body
+    if net <= 0:
+        return None
+    stroke = mass * math.log(1 + k * speed * speed / net) / (2 * area * k)
     block = stroke / DENSIFICATION
     consumed = rho0 * area * block
     # a steel backing plate carrying the peak crush stress, clamped at its rim (``backing_plate``)
@@ -224,14 +237,20 @@ def water_brake(body: str, mass: float, speed: float, force: float, ring_area: f
 
 
 def design_stop(body: str, mass: float, speed: float, length: float, rho: float, allowable: float, ring_area: float,
-                pressure: float, deceleration: float | None = None, max_force: float = math.inf) -> Stop:
+                pressure: float, deceleration: float | None = None, max_force: float = math.inf,
+                push: float = 0.0) -> Stop | None:
     """The stop of a body of ``length`` [m] at ``speed``: a hydraulic buffer or a crushable, the shortest
-    whose limits hold (else the least over them)."""
+    whose limits hold (else the least over them); with a steady ``push`` [N] on the body (module docstring)
+    only those whose force exceeds it, the water brake left out (its force falls with the speed), None where
+    none does."""
     force, why = allowed_force(mass, length, rho, allowable, deceleration, max_force)
-    options = [hydraulic_buffer(body, mass, speed, force, ring_area, buffer_pressure(pressure), rho, allowable)]
-    options += [crushable(body, mass, speed, force, ring_area, g, rho, allowable) for g in HONEYCOMB]
-    if speed > buffer_pressure(pressure) / (OIL["density"] * OIL_SOUND_SPEED):
+    options = [hydraulic_buffer(body, mass, speed, force, ring_area, buffer_pressure(pressure), rho, allowable, push)]
+    options += [crushable(body, mass, speed, force, ring_area, g, rho, allowable, push) for g in HONEYCOMB]
+    if speed > buffer_pressure(pressure) / (OIL["density"] * OIL_SOUND_SPEED) and push == 0:
         options.append(water_brake(body, mass, speed, force, ring_area, buffer_pressure(pressure), rho, allowable))
+    options = [o for o in options if o is not None]
+    if not options:
+        return None
 
     def worst(o):
         return max(lim.ratio for lim in o["limits"])

@@ -21,20 +21,23 @@ search's grid printed) and on the lumped model with the same law (the difference
 model designs only where that difference is inside its own checks and the band's margin), and weighed
 whole (``housing.fixture_mass``: the wall by ASME VIII-2's rule unless another is named).  The housing
 is a constraint of the search too: a wall's peak pressure times its dynamic factor above what the steel
-holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log ratio.  A design whose
+holds at the practical wall ratio (``housing.PRACTICAL_RATIO``) adds its log ratio, and so does the
+metering pin's von Mises stress (the liquid's pressure all round it) above the steel's S.  A design whose
 checks do not all hold is reported outside, not chosen: the search's penalty pushes it in where it can,
 and where it cannot, the checks say why.
 
 The metering pin is then cut on the column (``pin_cut.cut_pin``): the handles fix the bore, the column,
 the striker and the force, and the pin's area table is iterated against the column's own force at the
 design grid, from the pin the handles were searched with; of its iterates the design keeps the one of
-the least objective (the search's: band, checks, housing) among those inside every vetoing check of the
+the least objective (the search's: band, checks, housing, pin) among those inside every vetoing check of the
 column's, so the cut never makes the design worse by that objective nor takes it out of the laws' ranges
 (its first iterate is the searched pin, its closing end held at the machinable least gap).  And the
 handles are searched with the pin they get (``search_rounds``): the first search on the quasi-steady
-pin, each next one on the last one's cut pin (its shape carried to the trial handles as a factor a pin
-point, ``carried_pin``), the pin cut again after each, until the handles settle; the round of the least
-score at the design grid is kept, never worse than the quasi-steady handles cut after.
+pin at ``SEARCH_CELLS``, each next one on the last one's cut pin (its shape carried to the trial handles
+as a factor a pin point, ``carried_pin``) at the design grid, where that pin was cut (the coarse grid
+reads a pin cut to the fine grid's waves wrongly), the pin cut again after each, until the handles or
+the score settle; the round of the least score at the design grid is kept, never worse than the
+quasi-steady handles cut after.
 
 The striker carries the housing of the design found.  The handles are searched at a start: the striker
 that carries the housing of the closed-form design at the start handles (``carried_ratio``), whose
@@ -90,8 +93,9 @@ PENALTY = 10.0
 # the pin's cut: an iterate outside a vetoing check of the column's scores this much over its objective
 OUTSIDE_SCORE = 1.0e6
 # the handle searches (``search_rounds``): the first on the quasi-steady pin, each next on the last one's
-# pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself
-PIN_ROUNDS, HANDLES_SETTLED = 3, 0.02
+# pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself or the round's
+# score (the kept quantity) by no more than SCORE_SETTLED of the last round's
+PIN_ROUNDS, HANDLES_SETTLED, SCORE_SETTLED = 3, 0.02, 0.02
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
@@ -338,17 +342,23 @@ class _Designer:
             return self.design(h, correction, ratio, bore)
 
         def search(correction, start):
+            # a round on a carried cut pin searches on the grid that pin was cut on and its score is read on:
+            # the search grid reads a pin cut at the design grid wrongly (fitted to that grid's waves)
+            grid = self.search_cells if correction is None else self.cells
+
             def objective(h):
                 if any(not lo <= x <= hi for x, (lo, hi) in zip(h, BOX)):
                     return 100.0
                 d = design(h, correction)
                 try:
-                    run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, self.search_cells, column)
+                    run = simulate_column(dashpot_lumped(d), end, LUMPED_SAMPLES, grid, column)
                 except (RuntimeError, ValueError):    # the piston reached the floor; a striker lighter than its oil
                     return 50.0
                 return design_objective(d, run, self.pulse, self.liquid, self.steel, self.rule)
-            return minimize(objective, np.array(start), method="Nelder-Mead",
-                            options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": self.max_evaluations})
+            res = minimize(objective, np.array(start), method="Nelder-Mead",
+                           options={"xatol": 1e-3, "fatol": 1e-4, "maxfev": self.max_evaluations})
+            res.cells = grid
+            return res
         t0 = time.perf_counter()
         d, handles, correction, fun, rounds = search_rounds(search, design, self.cut, self.rounds, start)
         self.search_wall += time.perf_counter() - t0
@@ -373,12 +383,15 @@ def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
     design grid); each next round searches from the last one's handles on the quasi-steady pin times the
     correction that cut found (``pin_correction``), and cuts its own design's pin from there (the first
     round from ``start``: ``START``, or the handles found at another striker).  At most
-    ``rounds``; they stop once no handle moved by more than ``HANDLES_SETTLED`` of itself.  Of the
+    ``rounds``; they stop once no handle moved by more than ``HANDLES_SETTLED`` of itself, or the round's
+    score by no more than ``SCORE_SETTLED`` of the last round's (the handles may still wander along a
+    valley of the score, which is what the rounds keep).  Of the
     rounds' cut designs the one of the least score (the cut's, the search's objective at the design grid)
     is kept: round 0 is the handles searched on the quasi-steady pin and cut after, so the kept design
     is never worse than that.  Returns the kept cut design, its handles, the correction that reproduces
-    its cut pin on them, its score, and each round's record (handles, search objective, runs, the cut's
-    score and why it stopped)."""
+    its cut pin on them, its score, and each round's record (handles, search objective, its grid if the
+    search names one, runs, the cut's score, why the cut stopped, and ``settled``: what settled after
+    it, "handles" or "score", or None)."""
     correction, kept, history = None, None, []
     for k in range(rounds):
         res = search(correction, start)
@@ -386,14 +399,17 @@ def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
         cut_d = cut(design(h, correction))
         steps, best = cut_d.get("pin_cut", {}).get("steps", []), cut_d.get("pin_cut", {}).get("best")
         score = steps[best]["score"] if best is not None else float(res.fun)
+        settled = (None if k == 0 else "handles" if np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED)
+                   else "score" if abs(score / history[-1]["cut_score"] - 1.0) <= SCORE_SETTLED else None)
         history.append({"handles": dict(zip(HANDLES, map(float, h))), "objective": float(res.fun),
-                        "evaluations": int(res.nfev), "carried": correction is not None, "cut_score": score,
-                        "cut_stop": cut_d.get("pin_cut", {}).get("stop")})
+                        "cells": getattr(res, "cells", None), "evaluations": int(res.nfev),
+                        "carried": correction is not None, "cut_score": score,
+                        "cut_stop": cut_d.get("pin_cut", {}).get("stop"), "settled": settled})
         if "pin_cut" in cut_d:             # no cut (no pin iterations): the quasi-steady pin as it is
             correction = pin_correction(cut_d, design(h, None))
         if kept is None or score < kept[3]:
             kept = (cut_d, h, correction, score)
-        if k > 0 and np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED):
+        if settled:
             break
         start = h
     return (*kept, history)
@@ -422,16 +438,20 @@ def pin_correction(cut_d: dict, d: dict) -> np.ndarray:
 def design_objective(d: dict, run, pulse: PulseSpec, liquid: DesignLiquid, steel: str = HOUSING_STEEL,
                      rule: str = WALL_RULE) -> float:
     """The search's objective of a design ``d`` on its column ``run``: the band's (narrowed by the design
-    margin), every vetoing check of the column's that fails, and the housing beyond the practical wall
-    ratio, each by its log ratio times ``PENALTY``."""
+    margin), every vetoing check of the column's that fails, the housing beyond the practical wall ratio
+    and the metering pin's von Mises stress over the steel's S (``housing.fixture_mass``'s
+    ``pin_stress_ratio``, which the verdict's "the pin does not hold it" reads), each by its log ratio
+    times ``PENALTY``."""
     _, band = pulse.band(run.t, run.acceleration, DESIGN_MARGIN)
+    weight = weigh(d, run, steel, rule)
+    beyond = (housing_ratio(weight), weight["pin_stress_ratio"])
     return (_objective_of(pulse, band, dashpot_limits(dashpot_lumped(d), run, liquid))
-            + PENALTY * math.log(max(housing_ratio(d, run, steel, rule), 1.0)))
+            + PENALTY * sum(math.log(max(ratio, 1.0)) for ratio in beyond))
 
 
 def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations: int, steel: str, rule: str) -> dict:
     """The design with its pin cut on the column (``pin_cut.cut_pin``) at ``cells``, the best iterate by
-    the search's own objective (``design_objective``: the band, the checks and the housing, not the
+    the search's own objective (``design_objective``: the band, the checks, the housing and the pin, not the
     force's match alone: a pin that flattens the force by raising the floor's pressure beyond what a
     housing holds is no better design), among the iterates inside every vetoing check of the column's if
     any is (the designer does not cut a pin into a region where its model is invalid); ``d`` itself with
@@ -496,10 +516,9 @@ def weigh(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> di
     return fixture_mass(d, run.t, np.vstack((run.pressure, run.floor_pressure)), run.floor_pressure, steel, rule)
 
 
-def housing_ratio(d: dict, run, steel: str = HOUSING_STEEL, rule: str = WALL_RULE) -> float:
-    """The wall's peak pressure times its dynamic factor over the most a wall of ``steel`` holds by
-    ``rule`` at the practical wall ratio: above 1 no housing within Y_max holds the design."""
-    weight = weigh(d, run, steel, rule)
+def housing_ratio(weight: dict) -> float:
+    """The wall's peak pressure times its dynamic factor over the most a wall holds at the practical wall
+    ratio (``weight``: ``weigh``'s fixture): above 1 no housing within Y_max holds the design."""
     return weight["peak_pressure"] * weight["dynamic_factor"] / weight["holdable_pressure"]
 
 

@@ -402,7 +402,9 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
     of the parts [kg] and their sum, ``fixture``; ``housing_carried``, the housing or, beyond the practical
     ratio, the heaviest a monobloc gives (what a striker can be asked to carry); the wall (``Wall``'s fields under ``wall_``), the floor,
     the factors, ``housing_holds`` (the wall within ``PRACTICAL_RATIO``), ``holdable_pressure`` (what
-    the wall holds at that ratio), and the pin's stress (the wall's peak: ``pin_holds`` at S)."""
+    the wall holds at that ratio), and the pin's von Mises stress (``pin_pressure``: the wall's peak or the
+    design's quasi-steady upstream pressure, the larger), its ratio to S (``pin_stress_ratio``: above 1 the
+    pin does not hold it, ``pin_holds``)."""
     s = HOUSING_STEELS[steel]
     a = design["bore_radius"]
     allowed = s.allowed_stress()
@@ -439,4 +441,5 @@ def fixture_mass(design: dict, t: np.ndarray, wall_pressure: np.ndarray, floor_p
             "floor_thick": floor / (2.0 * a) > THICK_PLATE, "allowed_stress": allowed,
             "dynamic_factor": factor, "floor_dynamic_factor": floor_factor, "peak_pressure": peak, "steel": steel,
             "steel_source": s.source, "holdable_pressure": held_pressure(PRACTICAL_RATIO, allowed, rule),
-            "pin_pressure": pin_pressure, "pin_holds": pin_pressure <= allowed}
+            "pin_pressure": pin_pressure, "pin_stress_ratio": pin_pressure / allowed,
+            "pin_holds": pin_pressure <= allowed}

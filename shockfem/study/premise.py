@@ -10,6 +10,7 @@ import dataclasses
 import time
 
 from ..machine.design import design_machine
+from ..machine.fixture import design_fixture
 from ..machine.output import write_machine
 from ..machine.spec import read_spec
 from .report import Report
@@ -32,7 +33,8 @@ def run_study(size: str = "default", out_dir: str = "results/premise", echo=prin
     rep.text(f"`shockfem study premise --size {size}`; every number below was computed by this run. The machine is "
              f"`shockfem design-machine --article \"12 lb\"` (pads at '{spec.pad_resolution}'), in `12lb/`.")
     echo("1/3 the 12 lb machine")
-    m = design_machine(spec, f"{out_dir}/12lb", echo=echo, starts=cfg["starts"])
+    fixture = design_fixture(spec, echo, evaluations=cfg["fixture_evaluations"])
+    m = design_machine(spec, f"{out_dir}/12lb", echo=echo, starts=cfg["starts"], fixture=fixture)
     write_machine(m, f"{out_dir}/12lb")
     rep.text(f"The machine: {'FEASIBLE' if m.feasible else 'NOT FEASIBLE'}; " + "; ".join(m.binding) + ".")
     echo("2/3 the premise and its map")

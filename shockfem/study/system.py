@@ -25,7 +25,7 @@ Sections of ``report.md``:
 10. The white paper's sizing claims beside the design (``machine.white_paper``).
 
 Sizes: ``smoke`` (tests: the 10 lb machine only, its coupled check on a coarse mesh, two alternative
-architectures), ``default``.
+architectures, the fixtures' searches at 40 runs instead of 120), ``default``.
 """
 from __future__ import annotations
 
@@ -37,6 +37,7 @@ import time
 from ..amplifier.chain import run_chain_scene
 from ..machine.amplifier import chain_scene
 from ..machine.design import design_machine, models
+from ..machine.fixture import DESIGN_EVALUATIONS, design_fixture
 from ..machine.launcher import SIZING
 from ..machine.layout import ROLLING_CARRIAGE_SPEED
 from ..machine.output import write_machine
@@ -52,10 +53,11 @@ from . import system_premise as sections
 
 SIZES = {
     "smoke": {"payloads": (10,), "coupled": 10, "h_article": 0.006, "h_pad": 0.03, "alternatives": ((6, 325),),
-              "starts": 1, "sabot_bores": 3,
+              "starts": 1, "sabot_bores": 3, "fixture_evaluations": 40,
               "map": {"durations": (0.2, 5.0), "peaks": (2000, 20000), "payloads": (10,)}},
     "default": {"payloads": (10, 12, 50, 100), "coupled": 12, "h_article": 0.003, "h_pad": 0.012,
                 "alternatives": ((6, 325), (7, 325), (5, 450), (6, 450), (7, 450), (7, 600)), "starts": 3,
+                "fixture_evaluations": DESIGN_EVALUATIONS,
                 "sabot_bores": 5,
                 "map": {"durations": (0.2, 1.0, 5.0), "peaks": (2000, 10000, 20000), "payloads": (10, 30, 100)}},
 }
@@ -123,7 +125,8 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
     for lb in cfg["payloads"]:
         spec = base.with_article(lb * LB)
         where = os.path.join(out_dir, f"{lb}lb")
-        m = design_machine(spec, where, echo=echo, starts=cfg["starts"])
+        fixture = design_fixture(spec, echo, evaluations=cfg["fixture_evaluations"])
+        m = design_machine(spec, where, echo=echo, starts=cfg["starts"], fixture=fixture)
         write_machine(m, where)
         machines[lb] = m
     rows = [_row(lb, m) for lb, m in machines.items()]

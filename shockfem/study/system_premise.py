@@ -8,6 +8,7 @@ import os
 
 from ..amplifier import rigid
 from ..amplifier.chain import run_chain_scene
+from ..machine import drive_end as E
 from ..machine import gas_drive as D
 from ..machine import premise as P
 from ..machine.amplifier import chain_scene
@@ -167,7 +168,7 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
-    c, target = P.flying_target_arrangement(m.spec, m.fixture)
+    c, target = P.flying_target_arrangement(m.spec, m.fixture, evaluations=cfg["fixture_evaluations"])
     echo("  (d) the closed-breech gas drive")
     drives = D.gas_drives(m.spec, m.fixture)
     d_rows = [D.arrangement(x) for x in drives]
@@ -185,10 +186,10 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
              "(`machine/gas_drive.py`, the HYGE-type actuator: the gas drives piston, carriage and article itself, "
              "no striker and no dashpot; its 'launched' column is the moving mass, its 'barrel' the stroke) in air "
              "and in helium at the spec's 5,000 psi, its pulse by the infinitely chambered gun's base pressure "
-             "with the valve's onset ramp and the fall as the piston leaves the cylinder, caught at "
-             "the spec's catch deceleration after the band's window (the model leaves out the valve's dynamics "
-             "beyond that ramp, the gas's escape after the open end, gas friction and heat loss, the seal, the "
-             "piston's elastic waves).")
+             "with the valve's onset ramp, its thrust ended by vent ports and the piston's arrest (the carriage and "
+             "article separating and caught at "
+             "the spec's catch deceleration after the band's window; the model leaves out the valve's dynamics "
+             "beyond that ramp, gas friction and heat loss, the seal, the piston's elastic waves).")
     gas_drive_table(rep, drives)
     f = m.fixture
     closed = P.closed_form(m, sabot=b.launched_mass - b.striker_mass)
@@ -226,23 +227,33 @@ def gas_drive_table(rep: Report, drives: list):
         p, mv, lu = x.pulse, x.moving, x.lumped
         rows.append([x.gas, x.sound_speed, p.specific_force / G0 if p else float("nan"), p.peak / G0 if p else
                      float("nan"), x.band.worst_excess if x.band else float("nan"),
-                     "yes" if x.in_band else "NO", mv.material if mv else "none", mv.piston_mass if mv else
+                     "yes" if x.in_band else "NO",
+                     x.recovery["band"].worst_excess if x.recovery else float("nan"),
+                     x.arrest.short if x.arrest else "-",
+                     "no" if x.arrest and broken(x.arrest.limits) else ("yes" if x.arrest else "-"),
+                     mv.material if mv else "none", mv.piston_mass if mv else
                      float("nan"), x.stop.kind if x.stop else "-", x.stop.stroke if x.stop else float("nan"),
                      f"{lu['speed_error']:+.2%}" if lu else "-", ("yes" if lu["band"].passed else "NO") if lu else "-",
-                     "CANDIDATE (stated valve and end)" if x.feasible else "NOT FEASIBLE"])
+                     "CANDIDATE (stated valve)" if x.feasible else "NOT FEASIBLE"])
     rep.table("gas_drive", ["gas", "c0 [m/s]", "k = p0 A / m [g]", "peak [g]", "band: worst excess [of peak]",
-                            "in the band", "piston", "piston [kg]", "catch", "catch stroke [m]",
+                            "in the band", "face's upper end: worst excess [of peak]", "piston's arrest",
+                            "arrest within its limits", "piston", "piston [kg]", "catch", "catch stroke [m]",
                             "lumped gun: end speed error [-]", "lumped gun: in the band", "verdict"], rows,
-              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{}", "{:.3g}", "{}", "{:.3g}", "{}", "{}", "{}"])
+              ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{:.3g}", "{}", "{}", "{}", "{:.3g}", "{}",
+               "{:.3g}", "{}", "{}", "{}"])
     rep.text("(d)'s pulse and parts (`machine/gas_drive.py`): k = p0 A / m is the one specific force that gives the "
              "trapezoid's velocity change over its duration; the peak is where the valve's ramp ends (the chambered "
-             "base pressure falls after it); the band is the fixture study's (`metrics.shapes`); the piston the "
+             "base pressure falls after it); the band is the fixture study's (`metrics.shapes`), checked at both "
+             "ends of the face pressure's bracket after the ports open (the holes' discharge coefficient "
+             f"{min(E.DISCHARGE_RANGE):g} to {max(E.DISCHARGE_RANGE):g}, the port gas keeping the column's speed or "
+             "leaving radially: `machine.drive_end.bracket`); the piston's arrest takes the piston against the gas's "
+             "push p0 A and holds it (`machine.stops`, a pushed body), a limit of the design; the piston the "
              "lightest of " + ", ".join(D.PISTON_MATERIALS) + " (a flat disc, Roark's simply supported plate under "
              f"the carriage's central load); the catch at the spec's catch deceleration; the lumped gun "
              "(`launcher.gun.fire`: the finite tank, the valve's flow, Lagrange gas, the air ahead) fires the same "
              "cylinder and tank, a check of the chambered law's tank fall and gas inertia only (it shares the "
-             "valve's opening and the fall). `shockfem verify gas_drive` checks the drive against the "
-             "chambered closed form and the constant-force limit.")
+             "valve's opening and the ported fall). `shockfem verify gas_drive` checks the drive against the "
+             "chambered closed form and the constant-force limit, and the ported end against its closed forms.")
 
 
 def boundary_table(rep: Report, k: dict):

@@ -99,3 +99,32 @@ def test_the_handles_searched_with_the_cut_pin_score_no_worse():
     assert two["objective"] == min(first["cut_score"], second["cut_score"]) == cut["steps"][cut["best"]]["score"]
     # the second round better than the first by more than the search's own tolerance (fatol 1e-4)
     assert second["cut_score"] < first["cut_score"] - 1e-3
+
+
+def test_the_rounds_stop_when_the_score_settles_though_the_handles_move():
+    """``search_rounds`` on stand-ins (no column runs): a search whose bore handle moves 5% a round (over
+    ``HANDLES_SETTLED``) while the cut's score moves 1% (under ``SCORE_SETTLED``) stops after its second
+    round, settled on the score; the same with the score moving 10% a round runs all three rounds and
+    keeps the least.  A stop on the handles alone, or a score test against the wrong round, fails here."""
+    from types import SimpleNamespace
+    from shockfem.programmer.column_design import START, search_rounds
+    stand_in = {"pin": [[0.0, 0.25]], "orifice_law": {"largest_ratio": 0.5}, "piston_area": 1.0}
+
+    def rounds_with(score_step):
+        calls = []
+
+        def search(correction, start):
+            calls.append(correction)
+            return SimpleNamespace(x=np.array(start) * np.array([1.05, 1.0, 1.0, 1.0]), fun=0.0, nfev=1)
+
+        def cut(d):
+            k = len(calls) - 1
+            return {**stand_in, "pin_cut": {"steps": [{"score": 5.0 * (1.0 - score_step) ** k}], "best": 0,
+                                            "stop": "stand-in"}}
+        return search_rounds(search, lambda h, c: stand_in, cut, 3)[3:]
+
+    score, history = rounds_with(0.01)
+    assert [r["settled"] for r in history] == [None, "score"] and score == pytest.approx(4.95, rel=1e-12)
+    assert history[1]["handles"]["bore_scale"] == pytest.approx(START[0] * 1.05 ** 2, rel=1e-12)
+    score, history = rounds_with(0.10)
+    assert [r["settled"] for r in history] == [None, None, None] and score == pytest.approx(4.05, rel=1e-12)
