@@ -166,7 +166,8 @@ def _two_fronts(t, first, delay):
     """A column's wall history: the contact front to 0.4 at ``first``, its reflection to 1.0 ``delay``
     later (each over one sample), a decay and a small ringing after."""
     p = 0.4 * np.clip((t - first) / (t[1] - t[0]), 0, 1) + 0.6 * np.clip((t - first - delay) / (t[1] - t[0]), 0, 1)
-    return p * np.exp(-np.clip(t - first - delay, 0, None) / (t[-1] - t[0])) * (1 + 0.03 * np.sin(t / (t[-1] - t[0]) * 37))
+    span = t[-1] - t[0]
+    return p * np.exp(-np.clip(t - first - delay, 0, None) / span) * (1 + 0.03 * np.sin(37 * t / span))
 
 
 @pytest.mark.parametrize("period_over_sample", [1.5, 3.0, 8.0, 16.0 * (1 - 1e-3), 16.0 * (1 + 1e-3), 40.0, 100.0])
