@@ -270,8 +270,8 @@ def fixture_limits(out: dict, weight: dict, steel) -> list[Limit]:
                             "(`programmer.column_dashpot`, `programmer.dashpot_validity`)",
                             _RANGE_SOURCE.get(lim["models"], lim["models"])))
     limits += [Limit("dashpot housing", "wall ratio b / a by ASME VIII-2 4.3.3 (P = S ln Y)", weight["wall_ratio"],
-                     PRACTICAL_RATIO, "-", "the column's largest wall pressure times its dynamic factor (from the "
-                     "pressure's own history, `programmer.housing`)", f"a monobloc forging of {steel.name}: "
+                     PRACTICAL_RATIO, "-", "the column's largest wall pressure times its dynamic factor (the worst "
+                     "slice's, the piston's face or the floor, `programmer.housing.wall_factor`)", f"a monobloc forging of {steel.name}: "
                      "Y_max (`programmer.housing.PRACTICAL_RATIO`)"),
                Limit("dashpot metering pin", "stress (von Mises, the liquid's pressure all round)",
                      weight["pin_pressure"], weight["allowed_stress"], "Pa",

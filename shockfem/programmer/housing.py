@@ -100,6 +100,7 @@ import math
 from dataclasses import asdict, dataclass
 
 import numpy as np
+from numba import njit
 from scipy.optimize import brentq
 
 from ..scene.library import initial_yield_stress, property_si
@@ -280,22 +281,52 @@ def dynamic_factor(t: np.ndarray, p: np.ndarray, period: float) -> float:
 
 
 def largest_response(t: np.ndarray, p: np.ndarray, period: float) -> float:
-    """The largest |x| [p's unit] of ``dynamic_factor``'s oscillator over the history.
-
-    Exact for the piecewise-linear load, and continuous in the period: on the interval from t_k, of
-    slope m_k, the load's own line is a particular solution, so x = p_k + m_k tau + A_k cos(w tau - phi_k)
-    (``oscillation_states``), and the interval's largest |x| is at its ends or where x' = 0
-    (``interval_extremes``)."""
-    t, p = np.asarray(t, dtype=float), np.asarray(p, dtype=float)
-    h = np.diff(t)
-    if np.any(h <= 0.0):
+    """The largest |x| [p's unit] of ``dynamic_factor``'s oscillator over the history (``_largest_response``)."""
+    t, p = np.ascontiguousarray(t, dtype=float), np.ascontiguousarray(p, dtype=float)
+    if np.any(np.diff(t) <= 0.0):
         raise ValueError("dynamic_factor: the history's times must increase strictly")
-    w = 2.0 * math.pi / period
-    slope = np.diff(p) / h
-    z = oscillation_states(t, p, slope, w)
-    last = p[-1] + (z[-1] * np.exp(-1j * w * h[-1])).real
-    ends = max(float(np.max(np.abs(p[:-1] + z.real))), abs(float(last)))
-    return max(ends, interval_extremes(p[:-1], slope, z, w, h))
+    return _largest_response(t, p, 2.0 * math.pi / period)
+
+
+@njit(cache=True)
+def _largest_response(t, p, w):
+    """Exact for the piecewise-linear load, and continuous in the period.  On the interval from t_k, of
+    slope m_k, the load's own line is a particular solution, so x = p_k + m_k tau + Re(z_k e^(-i w tau)),
+    z = (x - p) + i (x' - m) / w the free oscillation about the line: at rest at t_0, z_0 = -p_0 - i m_0 / w;
+    across an interval z turns by e^(-i w h); at a sample x and x' are continuous and the slope changes,
+    so z gains i (m_(k-1) - m_k) / w.  With z = A e^(i phi), x = p_k + m tau + A cos(w tau - phi), and the
+    interval's largest |x| is at its ends or where x' = 0: theta = w tau - phi = asin(s) + 2 pi n (x's
+    maxima) or pi - asin(s) + 2 pi n (its minima), s = m / (A w), |s| < 1 (else x is monotone there).
+    Along one branch x moves by 2 pi m / w from one root to the next, so its extreme is at the branch's
+    first or last root inside the interval: two roots a branch, whatever w h."""
+    two_pi = 2.0 * math.pi
+    slope = (p[1] - p[0]) / (t[1] - t[0])
+    zr, zi = -p[0], -slope / w
+    largest, turned, c, s = 0.0, -1.0, 1.0, 0.0
+    for k in range(len(t) - 1):
+        h = t[k + 1] - t[k]
+        m = (p[k + 1] - p[k]) / h
+        zi += (slope - m) / w
+        slope = m
+        amplitude = math.hypot(zr, zi)
+        # the interval's roots only where its bound |p_k| + |m| h + A could pass the largest so far
+        if (abs(p[k]) + abs(m) * h + amplitude > largest and amplitude > 0.0
+                and abs(m) < amplitude * w):
+            phase, base = math.atan2(zi, zr), math.asin(m / (amplitude * w))
+            for branch in (base, math.pi - base):
+                first = math.ceil((-phase - branch) / two_pi)
+                last = math.floor((w * h - phase - branch) / two_pi)
+                if first <= last:
+                    for n in (first, last):
+                        theta = branch + two_pi * n
+                        x = p[k] + m * (theta + phase) / w + amplitude * math.cos(theta)
+                        largest = max(largest, abs(x))
+        if w * h != turned:                  # a uniform sampling turns by one angle: its cos and sin once
+            turned = w * h
+            c, s = math.cos(turned), math.sin(turned)
+        zr, zi = zr * c + zi * s, zi * c - zr * s
+        largest = max(largest, abs(p[k + 1] + zr))
+    return largest
 
 
 def wall_factor(t: np.ndarray, slices: np.ndarray, period: float) -> float:
@@ -307,44 +338,6 @@ def wall_factor(t: np.ndarray, slices: np.ndarray, period: float) -> float:
     if peak <= 0.0:
         return 1.0
     return max(largest_response(t, p, period) for p in slices if np.max(np.abs(p)) > 0.0) / peak
-
-
-def oscillation_states(t: np.ndarray, p: np.ndarray, slope: np.ndarray, w: float) -> np.ndarray:
-    """The free oscillation about the load's line at the start of each sample interval, as
-    z_k = (x - p)_k + i (x' - m_k)_k / w, so that x - p_k - m_k tau = Re(z_k e^(-i w tau)) on it: at rest
-    at t_0, z_0 = -p_0 - i m_0 / w; across an interval z turns by e^(-i w h); at a sample x and x' are
-    continuous and the slope changes, so z gains i (m_(k-1) - m_k) / w.  The gains are summed at once,
-    z_k = e^(-i w t_k) sum_(j <= k) J_j e^(i w t_j) (its round-off: the sum's, a few ulp of sum |J_j|)."""
-    gains = np.empty(len(slope), dtype=complex)
-    gains[0] = -p[0] - 1j * slope[0] / w
-    gains[1:] = 1j * (slope[:-1] - slope[1:]) / w
-    tau = t[:-1] - t[0]
-    return np.cumsum(gains * np.exp(1j * w * tau)) * np.exp(-1j * w * tau)
-
-
-def interval_extremes(p0: np.ndarray, slope: np.ndarray, z: np.ndarray, w: float, h: np.ndarray) -> float:
-    """The largest |x| inside the intervals, x = p0 + m tau + A cos(w tau - phi) (z = A e^(i phi)) for
-    0 <= tau <= h: x' = 0 where theta = w tau - phi = asin(s) + 2 pi n (x's maxima) or pi - asin(s) +
-    2 pi n (its minima), s = m / (A w), |s| < 1 (else x is monotone there).  Along one branch x moves by
-    2 pi m / w from one root to the next, so its extreme is at the branch's first or last root inside the
-    interval: two roots a branch, whatever w h."""
-    amplitude = np.abs(z)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        s = np.where(amplitude > 0.0, slope / (amplitude * w), np.inf)
-    turning = np.abs(s) < 1.0
-    p0, slope, amplitude, phase, h, s = (a[turning] for a in (p0, slope, amplitude, np.angle(z), h, s))
-    largest = 0.0
-    for branch in (np.arcsin(s), math.pi - np.arcsin(s)):
-        first = np.ceil((-phase - branch) / (2.0 * math.pi))
-        last = np.floor((w * h - phase - branch) / (2.0 * math.pi))
-        inside = first <= last
-        if not np.any(inside):
-            continue
-        for n in (first[inside], last[inside]):
-            theta = branch[inside] + 2.0 * math.pi * n
-            x = p0[inside] + slope[inside] * (theta + phase[inside]) / w + amplitude[inside] * np.cos(theta)
-            largest = max(largest, float(np.max(np.abs(x))))
-    return largest
 
 
 # the scan for the least self-consistent size: a step of 3% in the size, so in the period (a front's

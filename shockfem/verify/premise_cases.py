@@ -14,9 +14,8 @@ and the break-even restitution rebuilt from those models.
   the largest tank within the limits (the machine's gun, ``machine.launcher.machine_gun``) fires the 12 lb
   striker faster than the simple-wave gun and slower than the chambered one.
 
-The case is a representative point, fixed: a 12 lb striker (the 12 lb fixture's found design at the column
-designer's start, 84.7 payloads: 498.8 kg at 412.2 m/s, its chain of 5 masses at e 0.632 launched at
-99.06 m/s), near where the premise's verdict is read.  It is not derived from the design on each run because the fixture's design that gives it
+The case is a representative point, fixed: a 12 lb striker (498.8 kg at 412.2 m/s, 84.7 payloads, its
+chain of 5 masses at e 0.632 launched at 99.06 m/s), near where the premise's verdict is read.  It is not derived from the design on each run because the fixture's design that gives it
 takes about 8 min; every check here is of a closed form against the model it stands for, which holds at
 any speed below the gas's escape speed, so the point only picks where they are checked.
 """

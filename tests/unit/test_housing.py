@@ -145,31 +145,6 @@ def test_the_carried_striker_is_a_fixed_point_with_its_housing():
                                               rel=2 * cd.STRIKER_TOLERANCE)
 
 
-def test_a_pin_over_its_steels_s_scores_worse_by_its_log_ratio():
-    """``design_objective`` weighs the metering pin as it weighs the housing: the same design on the same
-    column run, once with its pin under S and once over it, differs by ``PENALTY`` ln(sigma / S) and by
-    nothing else.  The design is a mild dashpot (2,000 g for 10 ms on 5.44 kg, 40 cells), whose peak
-    pressure is far under S and whose housing holds; its pin is put over S through the quasi-steady
-    upstream pressure ``fixture_mass`` takes for the pin's stress (1.25 S: 10 ln 1.25 = 2.23 more, by
-    hand), which nothing else of the objective reads.  An objective blind to the pin, or reading a pin
-    stress other than the verdict's, fails here."""
-    from shockfem.programmer import column_design as cd
-    from shockfem.programmer.column_dashpot import simulate_column
-    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, PulseSpec, dashpot_design, dashpot_lumped
-    from shockfem.programmer.liquids import MINERAL_OIL as oil
-    from shockfem.units import G0
-    pulse, article = PulseSpec("rectangle", 2000 * G0, 0.01), 5.44
-    d = dashpot_design(pulse, article, 1.2 * cd.closed_form_bore(pulse, article, 0.0, oil), (1.0, 1.3, 1.0, 1.0),
-                       liquid=oil)
-    run = simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, 40, oil.column())
-    under, over = d, {**d, "upstream_pressure": 1.25 * S}
-    assert cd.weigh(under, run)["pin_holds"] and cd.weigh(under, run)["housing_holds"]
-    assert not cd.weigh(over, run)["pin_holds"]
-    assert cd.weigh(over, run)["pin_stress_ratio"] == pytest.approx(1.25, rel=1e-12)
-    penalty = (cd.design_objective(over, run, pulse, oil) - cd.design_objective(under, run, pulse, oil))
-    assert penalty == pytest.approx(cd.PENALTY * math.log(1.25), rel=1e-9)
-
-
 def _node_stepped_factor(t, p, period, subdivide):
     """An independent reference for ``dynamic_factor``: the history cut into ``subdivide`` pieces a sample
     interval, the oscillator stepped in closed form (cos / sin of each piece) and |x| read at the nodes
@@ -191,7 +166,8 @@ def _two_fronts(t, first, delay):
     """A column's wall history: the contact front to 0.4 at ``first``, its reflection to 1.0 ``delay``
     later (each over one sample), a decay and a small ringing after."""
     p = 0.4 * np.clip((t - first) / (t[1] - t[0]), 0, 1) + 0.6 * np.clip((t - first - delay) / (t[1] - t[0]), 0, 1)
-    return p * np.exp(-np.clip(t - first - delay, 0, None) / (t[-1] - t[0])) * (1 + 0.03 * np.sin(t / (t[-1] - t[0]) * 37))
+    span = t[-1] - t[0]
+    return p * np.exp(-np.clip(t - first - delay, 0, None) / span) * (1 + 0.03 * np.sin(37 * t / span))
 
 
 @pytest.mark.parametrize("period_over_sample", [1.5, 3.0, 8.0, 16.0 * (1 - 1e-3), 16.0 * (1 + 1e-3), 40.0, 100.0])
@@ -270,3 +246,28 @@ def test_the_wall_holds_its_own_response_at_its_own_period():
     assert w["floor_thickness"] == pytest.approx(floor_for(500e6 * w["floor_dynamic_factor"], a), rel=1e-8)
     x = math.pi * rise * MARAGING.bar_speed() / (2 * math.pi * b)
     assert w["dynamic_factor"] == pytest.approx(1 + abs(math.sin(x)) / x, rel=1e-9)
+
+
+def test_a_pin_over_its_steels_s_scores_worse_by_its_log_ratio():
+    """``design_objective`` weighs the metering pin as it weighs the housing: the same design on the same
+    column run, once with its pin under S and once over it, differs by ``PENALTY`` ln(sigma / S) and by
+    nothing else.  The design is a mild dashpot (2,000 g for 10 ms on 5.44 kg, 40 cells), whose peak
+    pressure is far under S and whose housing holds; its pin is put over S through the quasi-steady
+    upstream pressure ``fixture_mass`` takes for the pin's stress (1.25 S: 10 ln 1.25 = 2.23 more, by
+    hand), which nothing else of the objective reads.  An objective blind to the pin, or reading a pin
+    stress other than the verdict's, fails here."""
+    from shockfem.programmer import column_design as cd
+    from shockfem.programmer.column_dashpot import simulate_column
+    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, PulseSpec, dashpot_design, dashpot_lumped
+    from shockfem.programmer.liquids import MINERAL_OIL as oil
+    from shockfem.units import G0
+    pulse, article = PulseSpec("rectangle", 2000 * G0, 0.01), 5.44
+    d = dashpot_design(pulse, article, 1.2 * cd.closed_form_bore(pulse, article, 0.0, oil), (1.0, 1.3, 1.0, 1.0),
+                       liquid=oil)
+    run = simulate_column(dashpot_lumped(d), pulse.record_end(), LUMPED_SAMPLES, 40, oil.column())
+    under, over = d, {**d, "upstream_pressure": 1.25 * S}
+    assert cd.weigh(under, run)["pin_holds"] and cd.weigh(under, run)["housing_holds"]
+    assert not cd.weigh(over, run)["pin_holds"]
+    assert cd.weigh(over, run)["pin_stress_ratio"] == pytest.approx(1.25, rel=1e-12)
+    penalty = (cd.design_objective(over, run, pulse, oil) - cd.design_objective(under, run, pulse, oil))
+    assert penalty == pytest.approx(cd.PENALTY * math.log(1.25), rel=1e-9)

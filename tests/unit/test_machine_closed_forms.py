@@ -135,9 +135,10 @@ def test_isentropic_work_and_sabot():
 
 
 def test_sabot_cone_holds_its_hoop_and_meridional_stress():
-    """The 12 lb direct gun's sabot (a 498.8 kg striker of 258.6 mm in a 36 in bore at 5,000 psi): sized on
-    the hoop stress alone (t = p r / (S cos 45)) the cone weighs 227.65 kg, and at the striker's ring, where
-    it pushes the striker's inertia less its base's own pressure force, its meridional compression is
+    """The 12 lb direct gun's sabot (the representative 12 lb striker of ``verify premise_boundary``,
+    498.8 kg of 258.6 mm, in a 36 in bore at 5,000 psi): sized on the hoop stress alone
+    (t = p r / (S cos 45)) the cone weighs 227.65 kg, and at the striker's ring, where it pushes the
+    striker's inertia less its base's own pressure force, its meridional compression is
     (M_s a - p pi r^2) / (2 pi r t cos 45) = 610 MPa against S = 160 MPa (the hostile review's hand numbers,
     recomputed here from the closed forms); sized by von Mises at every radius with its own inertia relief
     and the shot's acceleration solved with its own mass, an independent membrane integration (the review's
@@ -202,7 +203,7 @@ def test_chain_is_solved_to_the_fixture_speed_at_the_restitutions_used():
 
 
 def test_pad_bound_is_scale_free_and_comes_before_any_run():
-    """The amplifier's first check (closed forms, no finite elements): at the 12 lb design's first interface
+    """The amplifier's first check (closed forms, no finite elements): at a 12 lb chain's first interface
     (4,773 kg on 1,600 kg at 99 m/s) no pad material holds its limits, and the speed it names is the one at
     which the lightest pad's mass share is the limit (the pad sized there meets it to the printed figures,
     whatever the bodies' size); at a tenth of that speed a pad holds and the check passes."""

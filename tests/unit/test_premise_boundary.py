@@ -84,11 +84,12 @@ def test_gun_ratio_and_break_even():
 
 def test_gun_ratio_counts_the_direct_guns_sabot():
     """The direct machine the premise admits fires the striker in a sabot: its gun grows by (M + m_sabot) / M
-    and Q falls by as much.  The hostile review's be.py at the 12 lb design's 412.2 m/s and e 0.632: the best
-    chain (2 masses launched at 360.9 m/s) needs Q = 1.47 against the bare 498.8 kg striker, 1.01 against it in
-    a 227.7 kg sabot, and the air break-even falls from 0.838 to 0.637 (their digits).  That chain's one
-    interface closes at 360.9 m/s, where PU 60D (v* 59 m/s) would need a pad (361 / 59)^2 x 0.70 = 26 times
-    the struck body (the review's arithmetic)."""
+    and Q falls by as much.  The hostile review's be.py at the representative 12 lb striker's 412.2 m/s
+    (``verify premise_boundary``'s) and e 0.632: the best chain (2 masses launched at 360.9 m/s) needs
+    Q = 1.47 against the bare 498.8 kg striker, 1.01 against it in a 227.7 kg sabot, and the air
+    break-even falls from 0.838 to 0.637 (their digits).  That chain's one interface closes at 360.9 m/s,
+    where PU 60D (v* 59 m/s) would need a pad (361 / 59)^2 x 0.70 = 26 times the struck body (the
+    review's arithmetic)."""
     import types
     from shockfem.machine.premise import chain_interface_bound
     from shockfem.machine.spec import read_spec
@@ -141,8 +142,8 @@ def test_striker_law_gives_the_designed_striker_at_the_design_and_scales_as_bore
     spec = read_spec({"article": "12 lb"})
     rho = 7850.0
     r0 = bore_radius(spec, rho)
-    # a fixture of the 12 lb design's figures (docs/machine.md, The 12 lb machine): 498.8 kg, its column and
-    # depth any, its pulse the spec's
+    # a fixture of the representative 12 lb striker's figures (``verify premise_boundary``'s): 498.8 kg, its
+    # column and depth any, its pulse the spec's
     L = article_length(spec)
     fixture = types.SimpleNamespace(striker_mass=498.8, column=0.5, bore_depth=0.7 + L, article_length=L,
                                     velocity_change=411.0, duration=spec.pulse.duration, payload_mass=5.89)
@@ -267,7 +268,7 @@ def test_sabot_stop_takes_the_sabots_energy():
 
 
 def test_direct_gun_that_falls_short_shows_the_lightest_beside_the_closest():
-    """A 2 m barrel limit: no bore's gun brings the 12 lb design's striker (498.8 kg, 258 mm, 412.2 m/s) to
+    """A 2 m barrel limit: no bore's gun brings the representative 12 lb striker (498.8 kg, 258 mm, 412.2 m/s) to
     its speed; the scan keeps the closest and reports the lightest that falls short beside it."""
     import dataclasses
     from shockfem.machine import premise as P
