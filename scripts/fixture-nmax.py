@@ -12,12 +12,14 @@ the one change (and ``--pin-iterations``, the runs of the pin's cut on the colum
 default; 0 keeps the quasi-steady pin).  ``--seated`` designs the dashpot with section 3's nose seat
 (``study.fixture.nose_seat.nose_seat_design``) riding with the article.  One JSON line a design: bore, striker, the column's
 pulse and peak pressure, the housing's wall ratio and mass, the verdict, and the pin's cut on the column
-(its peak overshoot by iteration, the iterate kept, why it stopped).
+(its peak overshoot by iteration, the iterate kept, why it stopped) and the striker's fixed point
+(its trials, converged or not, why its design was kept); the designer's progress on stderr.
 """
 from __future__ import annotations
 
 import argparse
 import json
+import sys
 
 from shockfem.programmer.column_design import PIN_ROUNDS, design_on_column
 from shockfem.programmer.liquids import LIQUIDS
@@ -45,7 +47,8 @@ def main():
     out = design_on_column(SPEC_PULSE[a.shape], ARTICLE_LB * LB, nose_seat_design()["mass"] if a.seated else 0.0,
                            LIQUIDS[a.liquid], evaluations=cfg["design_evaluations"],
                            search_cells=cfg["design_cells"], largest_ratio=a.largest_ratio,
-                           pin_iterations=a.pin_iterations, pin_rounds=a.pin_rounds)
+                           pin_iterations=a.pin_iterations, pin_rounds=a.pin_rounds,
+                           echo=lambda line: print(line, file=sys.stderr, flush=True))
     d, col, w = out["design"], out["models"].get("column"), out["fixture"]
     flagged = [lim["name"] for lim in col["limits"] if not lim["holds"] and not lim["vetoes"]] if col else []
     print(json.dumps({
@@ -71,7 +74,8 @@ def main():
         "lumped_peak_g": out["models"].get("lumped", {}).get("peak", float("nan")) / G0,
         "limits": col and col["limits"], "lumped_limits": out["models"].get("lumped", {}).get("limits"),
         "fixture": w, "jet": out["jet"], "striker": out["striker"], "handles": d["handles"],
-        "pin_cut_steps": d.get("pin_cut", {}).get("steps")}, default=float), flush=True)
+        "pin_cut_steps": d.get("pin_cut", {}).get("steps"),
+        "striker_fixed_point": out["striker_fixed_point"]}, default=float), flush=True)
     if a.confirm:
         _confirm_in_finite_elements(out, a, cfg)
 
