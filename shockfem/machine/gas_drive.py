@@ -671,7 +671,7 @@ def _notes(d: GasDrive, spec: MachineSpec) -> list[str]:
     out = [f"{d.gas} at {d.pressure / PSI:,.0f} psi: the acceleration {p.peak / G0:,.0f} g after the valve's ramp, "
            f"{a_end / G0:,.0f} g as the ports open ({a_end / spec.pulse.peak:.3g} of the peak), "
            f"{p.fall.acceleration[-1] / G0:,.0f} g ({p.fall.end_ratio:.3g} p0) as the arrest separates the "
-           f"carriage and article {(p.separation_time - p.port_time) * 1e3:.3g} ms later; the pulse "
+           f"carriage and article {(p.separation_time - p.port_time) * 1e3:.3g} ms later; at the bracket's lower end the pulse "
            + _band_words(d.band)[10:],
            f"piston {mv.material} {mv.piston_thickness * 1e3:.0f} mm x {mv.bore / IN:.3g} in "
            f"({mv.piston_mass:.3g} kg), carriage {mv.carriage_mass:.3g} kg: {mv.total:.4g} kg driven over "
@@ -847,7 +847,7 @@ def _what_would_bring_it_in(d: GasDrive) -> str:
             "bracket in the band" + _margin_words(moved))
     return (f"it would need a piston arrest that takes {d.pulse.end_speed:.0f} m/s against the push p0 A = "
             f"{d.push / 1e6:.3g} MN and holds it at rest (at the {d.arrest_limit / 1e6:.3g} MN the piston carries, "
-            f"{_pushed_stroke(d, d.arrest_limit):.3g} m of stroke), which no absorber here does{band}")
+            f"{_pushed_stroke(d, d.arrest_limit):.3g} m of stroke), which no absorber here does within its own limits{band}")
 
 
 def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str:

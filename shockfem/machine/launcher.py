@@ -5,11 +5,11 @@ the spec's limits, starting from the white paper's gun; with what it stores and 
 Every gun of the machine and of the premise starts from ``machine_gun``: the white paper's gun with its
 valve opened to the full bore (``FULL_BORE``).  The white paper's own 8 in valve on its 12 in bore (2/3 of
 the bore's diameter, which the design keeps as the bore changes) throttles the gas into the bore: on the
-12 lb striker at 36 in x 20 ft x 5,000 psi it gives 402.6 m/s, the full-bore valve 484.2 m/s
-(``launcher.gun.fire``, 498.8 kg, the same 2 ms opening).  A full-bore fast valve or a double diaphragm is
-ordinary gas-gun practice, and the tank behind it is a chamber wider than the bore (chambrage): the white
-paper's valve would leave the direct gun, the faster one, the more of its reach.  Both arrangements get
-the same valve, so the comparison stays like for like."""
+representative 12 lb striker of ``verify premise_boundary`` at 36 in x 20 ft x 5,000 psi it gives
+402.6 m/s, the full-bore valve 484.2 m/s (``launcher.gun.fire``, 498.8 kg, the same 2 ms opening).  A
+full-bore fast valve or a double diaphragm is ordinary gas-gun practice, and the tank behind it is a
+chamber wider than the bore (chambrage): the white paper's valve would leave the direct gun, the faster
+one, the more of its reach.  Both arrangements get the same valve, so the comparison stays like for like."""
 from __future__ import annotations
 
 import dataclasses

@@ -17,8 +17,8 @@ from .report import Report
 from . import system_premise as sections
 from .system import SIZES as SYSTEM_SIZES
 
-# the default's sabot scan at three starts and five bores: on the 12 lb striker (498.8 kg at 412.2 m/s, the
-# full-bore valve) it takes 6.4 s (3.1 s of CPU) on the shared 2-core machine
+# the default's sabot scan at three starts and five bores: on the representative 12 lb striker of
+# ``verify premise_boundary`` (498.8 kg at 412.2 m/s, the full-bore valve) it takes 6.4 s (3.1 s of CPU) on the shared 2-core machine
 SIZES = {"smoke": {**SYSTEM_SIZES["smoke"], "pads": "estimate"},
          "default": {**SYSTEM_SIZES["default"], "pads": None, "sabot_starts": 3, "sabot_bores": 5}}
 

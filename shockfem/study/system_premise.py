@@ -235,8 +235,8 @@ def gas_drive_table(rep: Report, drives: list):
                      float("nan"), x.stop.kind if x.stop else "-", x.stop.stroke if x.stop else float("nan"),
                      f"{lu['speed_error']:+.2%}" if lu else "-", ("yes" if lu["band"].passed else "NO") if lu else "-",
                      "CANDIDATE (stated valve)" if x.feasible else "NOT FEASIBLE"])
-    rep.table("gas_drive", ["gas", "c0 [m/s]", "k = p0 A / m [g]", "peak [g]", "band: worst excess [of peak]",
-                            "in the band", "face's upper end: worst excess [of peak]", "piston's arrest",
+    rep.table("gas_drive", ["gas", "c0 [m/s]", "k = p0 A / m [g]", "peak [g]", "band at the lower end: worst excess [of peak]",
+                            "in the band at the lower end", "face's upper end: worst excess [of peak]", "piston's arrest",
                             "arrest within its limits", "piston", "piston [kg]", "catch", "catch stroke [m]",
                             "lumped gun: end speed error [-]", "lumped gun: in the band", "verdict"], rows,
               ["{}", "{:.0f}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{}", "{:.3g}", "{}", "{}", "{}", "{:.3g}", "{}",

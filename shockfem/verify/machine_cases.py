@@ -21,12 +21,12 @@ pressures and its force on the payload), sum to the gas work within 0.5%; and th
 equals the isentropic expansion work p0 V0 (1 - (V0 / V1)^(gamma - 1)) / (gamma - 1) where the gun is that
 closed form (no valve, massless gas, an evacuated barrel), and the gas stored is p0 V0 / (gamma - 1).
 
-``direct_striker``: the direct-striker gun (the 12 lb design's striker, 220.9 kg at 418.3 m/s, alone, within
+``direct_striker``: the direct-striker gun (the 12 lb design's striker, 501.5 kg at 412.0 m/s, alone, within
 the machine's limits, from the machine's full-bore-valve gun: the premise's (b0)) against the launcher
 model's own verification, the brute-force grid of ``launcher_design`` (no grid gun lighter), and its
 launch energy M V^2 / 2.  The striker is a representative point, fixed: it is the one the premise
 reports (``shockfem design-machine --article "12 lb"``), not derived on each run because the fixture's
-design that gives it takes about 8 min.  The check is of the gun's optimiser against a brute-force search
+design that gives it takes over a minute (83 s for the 12 lb design).  The check is of the gun's optimiser against a brute-force search
 of the same model within the same limits, which holds for any striker the gun can fire; this one is
 chosen because its gun is the premise's, at the limits where the verdict is read.
 """

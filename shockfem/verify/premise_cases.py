@@ -16,7 +16,7 @@ and the break-even restitution rebuilt from those models.
 
 The case is a representative point, fixed: a 12 lb striker (498.8 kg at 412.2 m/s, 84.7 payloads, its
 chain of 5 masses at e 0.632 launched at 99.06 m/s), near where the premise's verdict is read.  It is not derived from the design on each run because the fixture's design that gives it
-takes about 8 min; every check here is of a closed form against the model it stands for, which holds at
+takes over a minute (83 s for the 12 lb design); every check here is of a closed form against the model it stands for, which holds at
 any speed below the gas's escape speed, so the point only picks where they are checked.
 """
 from __future__ import annotations

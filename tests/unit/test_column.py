@@ -127,8 +127,8 @@ def test_the_oil_stiffens_at_haywards_tangent_slope_and_the_liquids_heat_as_they
 
 
 def test_ice_vi_melts_higher_at_the_compressed_waters_temperature():
-    """IAPWS R14-08 eq. 3 at 40 degC: 632.4 (1 + 1.07476 ((313.15 / 273.31)^4.6 - 1)) = 1223.8 MPa (the
-    review's 1224 MPa); the margin of a pressure is taken at the temperature compression brings it to,
+    """IAPWS R14-08 eq. 3 at 40 degC: 632.4 (1 + 1.07476 ((313.15 / 273.31)^4.6 - 1)) = 1223.8 MPa (an
+    independent 1224 MPa); the margin of a pressure is taken at the temperature compression brings it to,
     above the isothermal one; an oil has none."""
     from shockfem.programmer.liquids import MINERAL_OIL, WATER
     assert WATER.solid_pressure(313.15) == pytest.approx(1223.8e6, rel=2e-4)

@@ -184,7 +184,7 @@ def test_helium_drive_pulse_is_in_the_band_and_its_catch_below_the_stated_ratio(
 
 
 def test_air_cannot_hold_the_band(spec):
-    # at 441 m/s air's chambered base pressure has fallen to about a quarter of p0: the plateau cannot stay
+    # at 441 m/s air's chambered base pressure has fallen to 0.29 of p0: the plateau cannot stay
     # within +/- 20% of the peak, whatever the parts
     d = D.design_gas_drive(spec, "air", 12 * LB, spec.diameter, 0.25)
     assert not d.band.passed and d.band.worst_excess > 0.2

@@ -28,7 +28,7 @@ def test_lames_von_mises_at_the_bore_by_hand():
 
 def test_the_viii2_wall_is_s_ln_y():
     """VIII-2 4.3.3, t = (D / 2) (exp(P / (S E)) - 1), E = 1: P = S ln 2 gives t = D / 2 (b = 2a), P = S gives
-    b = e a (by hand); and the reviewer's independent script (a hostile review's ``housing_alt.py``: the plain
+    b = e a (by hand); and an independent script (the plain
     oil design, 645 MPa x 1.40 in a 29.2 mm bore 1.236 m long) gives Y = 3.27 and 256 kg of maraging steel."""
     a = 0.05
     assert wall_for(S * math.log(2.0), a).outer_radius == pytest.approx(2 * a, rel=1e-12)
@@ -98,7 +98,7 @@ def test_the_fixture_is_weighed_whole_and_finite_beyond_the_old_elastic_bound():
 def test_the_closed_form_limits_read_one_wall_and_one_factor():
     """``contact_pressure_limit``: the front at the limit times the reflection and the step's factor is
     what the wall holds at Y_max (S ln 4 = 1057 MPa); ``upstream_pressure_limit`` returns the speed at which
-    the quasi-steady upstream pressure is the bound.  The reviewer's independent solver: 735 MPa upstream
+    the quasi-steady upstream pressure is the bound.  An independent solver: 735 MPa upstream
     of n = 0.5625 in oil at 539.4 m/s, 595 MPa at 485.4 m/s."""
     from shockfem.programmer.column_design import contact_pressure_limit, upstream_pressure_limit, wall_holds
     from shockfem.programmer.dashpot_design import upstream_pressure

@@ -139,9 +139,9 @@ def test_sabot_cone_holds_its_hoop_and_meridional_stress():
     498.8 kg of 258.6 mm, in a 36 in bore at 5,000 psi): sized on the hoop stress alone
     (t = p r / (S cos 45)) the cone weighs 227.65 kg, and at the striker's ring, where it pushes the
     striker's inertia less its base's own pressure force, its meridional compression is
-    (M_s a - p pi r^2) / (2 pi r t cos 45) = 610 MPa against S = 160 MPa (the hostile review's hand numbers,
+    (M_s a - p pi r^2) / (2 pi r t cos 45) = 610 MPa against S = 160 MPa (independent hand numbers,
     recomputed here from the closed forms); sized by von Mises at every radius with its own inertia relief
-    and the shot's acceleration solved with its own mass, an independent membrane integration (the review's
+    and the shot's acceleration solved with its own mass, an independent membrane integration (an independent
     scipy script) gives 286 kg (1%: its radial grid and ours)."""
     from shockfem.machine.premise import sabot_cone
     from shockfem.units import IN, PSI

