@@ -24,7 +24,7 @@ from ..scene.library import LIBRARY, initial_yield_stress, property_si
 from ..units import G0, format_si
 from .amplifier import Amplifier, chain_run, check_with_first_mass, design_amplifier
 from .energy import EnergyTable, chain_record, energy_table
-from .fixture import Fixture, design_fixture
+from .fixture import DESIGN_EVALUATIONS, Fixture, design_fixture
 from ..launcher.vessel import max_pressure
 from ..programmer.fixed_point import STRIKER_TOLERANCE
 from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher
@@ -99,14 +99,15 @@ def record_of(spec: MachineSpec, amp: Amplifier):
                         f"the rigid chain at the pads' restitutions: {words}")
 
 
-def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, fixture: Fixture | None = None
-                   ) -> Machine:
+def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, fixture: Fixture | None = None,
+                   evaluations: int = DESIGN_EVALUATIONS) -> Machine:
     """The machine for ``spec``; ``fixture``: one designed already for the same article and pulse (the
-    amplifier's and the launcher's choices do not change it), to try other architectures without it."""
+    amplifier's and the launcher's choices do not change it), to try other architectures without it;
+    else designed with its column search at ``evaluations`` runs at most (``fixture.design_fixture``)."""
     t0 = time.perf_counter()
     say = echo or (lambda *a: None)
     say(f"machine for {spec.article_mass:.4g} kg: the fixture (dashpot iterated on its liquid column)")
-    fixture = fixture or design_fixture(spec, echo)
+    fixture = fixture or design_fixture(spec, echo, evaluations)
     say(f"  the amplifier (pads of real materials, restitutions from their finite-element runs at "
         f"'{spec.pad_resolution}', the rigid chain through every collision)")
     amp = design_amplifier(spec, fixture, os.path.join(out_dir, "amplifier"), echo)

@@ -10,7 +10,6 @@ import dataclasses
 import time
 
 from ..machine.design import design_machine
-from ..machine.fixture import design_fixture
 from ..machine.output import write_machine
 from ..machine.spec import read_spec
 from .report import Report
@@ -18,7 +17,8 @@ from . import system_premise as sections
 from .system import SIZES as SYSTEM_SIZES
 
 # the default's sabot scan at three starts and five bores: on the representative 12 lb striker of
-# ``verify premise_boundary`` (498.8 kg at 412.2 m/s, the full-bore valve) it takes 6.4 s (3.1 s of CPU) on the shared 2-core machine
+# ``verify premise_boundary`` (498.8 kg at 412.2 m/s, the full-bore valve) it takes 6.4 s (3.1 s of CPU) on
+# the shared 2-core machine
 SIZES = {"smoke": {**SYSTEM_SIZES["smoke"], "pads": "estimate"},
          "default": {**SYSTEM_SIZES["default"], "pads": None, "sabot_starts": 3, "sabot_bores": 5}}
 
@@ -33,8 +33,8 @@ def run_study(size: str = "default", out_dir: str = "results/premise", echo=prin
     rep.text(f"`shockfem study premise --size {size}`; every number below was computed by this run. The machine is "
              f"`shockfem design-machine --article \"12 lb\"` (pads at '{spec.pad_resolution}'), in `12lb/`.")
     echo("1/3 the 12 lb machine")
-    fixture = design_fixture(spec, echo, evaluations=cfg["fixture_evaluations"])
-    m = design_machine(spec, f"{out_dir}/12lb", echo=echo, starts=cfg["starts"], fixture=fixture)
+    m = design_machine(spec, f"{out_dir}/12lb", echo=echo, starts=cfg["starts"],
+                       evaluations=cfg["fixture_evaluations"])
     write_machine(m, f"{out_dir}/12lb")
     rep.text(f"The machine: {'FEASIBLE' if m.feasible else 'NOT FEASIBLE'}; " + "; ".join(m.binding) + ".")
     echo("2/3 the premise and its map")

@@ -37,7 +37,7 @@ import time
 from ..amplifier.chain import run_chain_scene
 from ..machine.amplifier import chain_scene
 from ..machine.design import design_machine, models
-from ..machine.fixture import DESIGN_EVALUATIONS, design_fixture
+from ..machine.fixture import DESIGN_EVALUATIONS
 from ..machine.launcher import SIZING
 from ..machine.layout import ROLLING_CARRIAGE_SPEED
 from ..machine.output import write_machine
@@ -125,8 +125,7 @@ def by_payload(rep: Report, base: MachineSpec, cfg, out_dir: str, echo) -> dict:
     for lb in cfg["payloads"]:
         spec = base.with_article(lb * LB)
         where = os.path.join(out_dir, f"{lb}lb")
-        fixture = design_fixture(spec, echo, evaluations=cfg["fixture_evaluations"])
-        m = design_machine(spec, where, echo=echo, starts=cfg["starts"], fixture=fixture)
+        m = design_machine(spec, where, echo=echo, starts=cfg["starts"], evaluations=cfg["fixture_evaluations"])
         write_machine(m, where)
         machines[lb] = m
     rows = [_row(lb, m) for lb, m in machines.items()]

@@ -123,12 +123,12 @@ def machine_energy(size: str, workdir: str) -> list[dict]:
     less searched one checks the same accounts in a quarter of the time."""
     from ..machine.design import design_machine
     from ..machine.energy import CLOSURE_TOL, isentropic_work
-    from ..machine.fixture import DESIGN_EVALUATIONS, design_fixture
+    from ..machine.fixture import DESIGN_EVALUATIONS
     from ..machine.spec import read_spec
     t0 = time.perf_counter()
     spec = dataclasses.replace(read_spec({"article": "12 lb"}), pad_resolution="estimate")
     evaluations = DESIGN_EVALUATIONS if size in ("default", "fine") else COARSE_EVALUATIONS
-    m = design_machine(spec, workdir, starts=1, fixture=design_fixture(spec, evaluations=evaluations))
+    m = design_machine(spec, workdir, starts=1, evaluations=evaluations)
     e = m.energy
     out = [check("machine_energy.parts_sum_to_the_gas_work_and_shortfall [J]", e.gas_work + e.shortfall, e.parts,
                  CLOSURE_TOL, time.perf_counter() - t0, 0)]
