@@ -180,9 +180,9 @@ def gas_step(m, q, e, x, gamma, R, breech, p0, rho0, v_piston, band_start, open_
     ``v_piston``); ``breech`` ``WALL`` or ``RESERVOIR`` (at p0, rho0); the bleed: holes open from ``band_start``
     to the face, ``open_width`` [m] of effective hole area per metre of the column per unit bore area (the
     wall's open share times the perimeter times the discharge coefficient over the bore's area), to ``ambient``,
-    its jets ``RADIAL`` or ``AXIAL``; ``at_face``: the whole open area in the last cell instead (the ported law's
-    picture, the ports' flux at the face: the comparison that isolates the bleed's spread).  Returns (the face's pressure, the breech's, the bleed's mass rate per
-    unit bore area)."""
+    its jets ``RADIAL`` or ``AXIAL``; ``at_face``: the whole open area in the last cell instead (the ported
+    law's picture, the ports' flux at the face: the comparison that isolates the bleed's spread). Returns (the
+    face's pressure, the breech's, the bleed's mass rate per unit bore area)."""
     N = len(m)
     L = x[-1] - x[0]
     rho, u, p = _primitives(m, q, e, x, gamma)

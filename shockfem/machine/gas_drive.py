@@ -309,7 +309,7 @@ class GasDrive:
     charges: list = field(default_factory=list)   # ``charge_sensitivity``
     separations: list = field(default_factory=list)   # ``arrest_sensitivity``
     range_limits: list = field(default_factory=list)  # the ported fall's own range (``drive_end.range_limits``)
-    column: dict = field(default_factory=dict)        # the bracket's check on the gas column (``drive_end.column_bracket``)
+    column: dict = field(default_factory=dict)        # the bracket on the gas column (``drive_end.column_bracket``)
     column_bands: dict = field(default_factory=dict)  # ``column_bands``
     jet_thrust: float = math.nan      # the held piston's port jets' axial momentum flux, their most [N]
     seat_stress: float = math.nan     # the carriage's seat at the peak [Pa]

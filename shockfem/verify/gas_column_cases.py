@@ -233,7 +233,8 @@ def _design_column() -> list[dict]:
         out.append(check(f"gas_column.design helium 12 lb, Cd {cd:g} {kind} jets: outside the law's bracket [p/p0, "
                          "absolute]", 0.0, outside, abs(runs[-1][1].end_ratio - runs[-2][1].end_ratio), runs[-1][2],
                          DESIGN_GRIDS[-1], absolute=True))
-        out[-1]["note"] = (f"face p/p0 at the separation {', '.join(f'{f.end_ratio:.4f} ({c} cells, {w:.3f} s)' for c, f, w in runs)}"
+        grids = ", ".join(f"{f.end_ratio:.4f} ({c} cells, {w:.3f} s)" for c, f, w in runs)
+        out[-1]["note"] = (f"face p/p0 at the separation {grids}"
                            f"; all the ports at the face {face.end_ratio:.4f}; the law's bracket {lower:.4f} to "
                            f"{upper:.4f}; no ports: column {bare.end_ratio:.4f}, law {law_bare:.4f}; the column's "
                            f"largest Mach number {runs[-1][1].inflow_mach:.3f}; its pulse "
