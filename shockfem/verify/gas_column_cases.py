@@ -226,6 +226,8 @@ def _design_column() -> list[dict]:
             f = E.column_fall(p.specific_force, ports, *args[2:], cells, jets)
             runs.append((cells, f, time.perf_counter() - t0))
         face = E.column_fall(p.specific_force, ports, *args[2:], DESIGN_GRIDS[-1], jets, at_face=True)
+        law = E.ported_fall(p.specific_force, dataclasses.replace(ports, recovery=jets == RADIAL), *args[2:5],
+                            x_end=args[5], samples=2).end_ratio
         kind = "radial" if jets == RADIAL else "axial"
         finest = runs[-1][1].end_ratio
         # inside the bracket: the distance past its nearer end, zero inside it
@@ -235,7 +237,7 @@ def _design_column() -> list[dict]:
                          DESIGN_GRIDS[-1], absolute=True))
         grids = ", ".join(f"{f.end_ratio:.4f} ({c} cells, {w:.3f} s)" for c, f, w in runs)
         out[-1]["note"] = (f"face p/p0 at the separation {grids}"
-                           f"; all the ports at the face {face.end_ratio:.4f}; the law's bracket {lower:.4f} to "
+                           f"; all the ports at the face {face.end_ratio:.4f}; the law {law:.4f}, its bracket {lower:.4f} to "
                            f"{upper:.4f}; no ports: column {bare.end_ratio:.4f}, law {law_bare:.4f}; the column's "
                            f"largest Mach number {runs[-1][1].inflow_mach:.3f}; its pulse "
                            f"{'in' if band.passed else 'OUTSIDE'} the band (worst excess {band.worst_excess:.3g})")

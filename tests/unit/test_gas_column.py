@@ -84,3 +84,16 @@ def test_column_fall_without_ports_holds_the_chambered_state_at_constant_speed()
     assert fall.end_ratio == pytest.approx(r, rel=1e-9)
     assert fall.end_time == pytest.approx((1.1 - 0.89) / 408.0, rel=1e-9)
     assert math.isclose(fall.end_travel, 1.1, rel_tol=1e-12)
+
+
+def test_bleed_at_the_face_takes_the_same_area():
+    # a uniform column: the orifice law is linear in the area, so the band's holes spread over the cells or all in
+    # the last one bleed the same on the first step (round-off, 1e-12)
+    rates = []
+    for at_face in (False, True):
+        col = G.GasColumn(HELIUM.gamma, HELIUM.R, 1.0, 40, 1e7, 293.0)
+        col.step(0.0, 1e-9, band_start=0.6, open_width=0.5, ambient=1e5, at_face=at_face)
+        rates.append(col.bleed_rate)
+    assert rates[1] == pytest.approx(rates[0], rel=1e-12)
+    assert rates[0] == pytest.approx(G.orifice_mass_flow(HELIUM.gamma, HELIUM.R, 0.5 * 0.4, 1e7, 293.0, 1e5),
+                                     rel=1e-12)
