@@ -82,6 +82,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
+from ..fluid.gas_column import RADIAL
 from ..launcher.design import LauncherDesign, weights
 from ..launcher.gas import GASES
 from ..launcher.gun import Gun, air_ahead_pressure, fire
@@ -308,6 +309,8 @@ class GasDrive:
     charges: list = field(default_factory=list)   # ``charge_sensitivity``
     separations: list = field(default_factory=list)   # ``arrest_sensitivity``
     range_limits: list = field(default_factory=list)  # the ported fall's own range (``drive_end.range_limits``)
+    column: dict = field(default_factory=dict)        # the bracket on the gas column (``drive_end.column_bracket``)
+    column_bands: dict = field(default_factory=dict)  # ``column_bands``
     jet_thrust: float = math.nan      # the held piston's port jets' axial momentum flux, their most [N]
     seat_stress: float = math.nan     # the carriage's seat at the peak [Pa]
     air_ahead: dict = field(default_factory=dict)   # ``air_ahead_bound``
@@ -364,6 +367,7 @@ def _checked(d: GasDrive, spec: MachineSpec) -> GasDrive:
     d.charges = charge_sensitivity(d, spec)
     d.separations = arrest_sensitivity(d, spec)
     d.air_ahead, d.step = air_ahead_bound(d), separation_step(d, spec)
+    d.column_bands = column_bands(d, spec)
     d.notes = _notes(d, spec)
     return d
 
@@ -522,8 +526,10 @@ def _end_limits(d: GasDrive, spec: MachineSpec, S: float) -> list[Limit]:
     mv, pulse, band, g = d.moving, d.pulse, d.port_band, GASES[d.gas]
     c_b = d.sound_speed * pulse.fall.ratio.min() ** ((g.gamma - 1) / (2 * g.gamma))
     steel = f"{spec.material} yield / {spec.safety_factor:g}"
+    d.column = E.column_bracket(pulse.specific_force, pulse.ports, pulse.port_speed, pulse.stroke, pulse.port_time,
+                                pulse.arrest_travel)
     d.range_limits = E.range_limits(band, pulse.separation_time - pulse.port_time, pulse.stroke, d.sound_speed, c_b,
-                                    pulse.fall.inflow_mach)
+                                    pulse.fall.inflow_mach, d.column)
     return [
         Limit("gas drive piston", "load on its arrest", d.arrest.force, d.arrest_limit, "N",
               "the arrest's peak force (the push reaches it only through the arrest): the annulus's bearing, the "
@@ -595,6 +601,16 @@ def recovery_check(d: GasDrive, spec: MachineSpec, ideal) -> dict:
         out[key] = {"band": _band_of(spec, pulse), "end_ratio": pulse.fall.end_ratio,
                     "speed_error": pulse.end_speed / p.end_speed - 1}
     return {**out["upper"], "radial": out["radial"]}
+
+
+def column_bands(d: GasDrive, spec: MachineSpec) -> dict:
+    """The pulse with the quasi-1D column's fall (``drive_end.column_bracket``, kept in ``d.column``) after the
+    ports' opening, each (discharge coefficient, jets) against the band: {(Cd, jets): BandCheck}."""
+    p = d.pulse
+    t = np.linspace(0.0, max(spec.pulse.record_end(), max(f.end_time for f in d.column["column"].values())), 2000)
+    before = np.interp(t, p.time, p.acceleration)
+    return {key: spec.pulse.band(t, np.where(t <= p.port_time, before, np.where(
+        t <= f.end_time, np.interp(t, f.time, f.acceleration), 0.0)))[1] for key, f in d.column["column"].items()}
 
 
 def lumped_check(d: GasDrive, spec: MachineSpec) -> dict:
@@ -747,7 +763,23 @@ def _end_notes(d: GasDrive) -> list[str]:
             f"separation, the lower end {_band_words(d.band)[4:]}, the upper ({r['speed_error']:+.2%} in speed) "
             f"{_band_words(r['band'])[4:]}; radial jets from ideal holes alone: {r['radial']['end_ratio']:.3g} p0, "
             f"{_band_words(r['radial']['band'])[4:]}; the ports' share {band.share:g}: the largest of "
-            f"{', '.join(f'{x:g}' for x in E.PORT_SHARES)} whose end holds its range"]
+            f"{', '.join(f'{x:g}' for x in E.PORT_SHARES)} whose end holds its range",
+            _column_words(d)]
+
+
+def _column_upper(d: GasDrive):
+    """(Cd, BandCheck) of the column's case the bracket's upper end stands for (the least flow, radial jets)."""
+    cd = E.DISCHARGE_RANGE[0]
+    return (cd, d.column_bands[cd, RADIAL]) if d.column_bands else None
+
+
+def _column_words(d: GasDrive) -> str:
+    """The bracket's check on the quasi-1D column (``drive_end.column_bracket``, ``column_bands``), in words."""
+    cases = "; ".join(f"Cd {cd:g} {'radial' if jets == RADIAL else 'axial'}: {f.end_ratio:.3g} p0, "
+                      f"{_band_words(d.column_bands[cd, jets])[4:]}" for (cd, jets), f in d.column["column"].items())
+    lower, upper = d.column["law"]
+    return (f"the bracket checked on the quasi-1D gas column ({E.COLUMN_CELLS} cells, the ports a bleed over the "
+            f"band, fluid.gas_column) at the separation against the law's {lower:.3g} to {upper:.3g} p0: {cases}")
 
 
 def air_ahead_bound(d: GasDrive) -> dict:
@@ -862,6 +894,11 @@ def verdict_words(drives: list[GasDrive], a: Arrangement, b: Arrangement) -> str
             why.insert(0, f"at the face pressure's upper end ({d.recovery['end_ratio']:.3g} p0 when the carriage "
                           f"and article separate) its pulse is outside the band (worst excess "
                           f"{d.recovery['band'].worst_excess:.3g} of the peak)")
+            column = _column_upper(d)
+            if column is not None:
+                why.insert(1, f"the quasi-1D gas column's fall at the same end (holes' Cd {column[0]:g}, radial jets) "
+                              f"is {'in' if column[1].passed else 'outside'} the band too (worst excess "
+                              f"{column[1].worst_excess:.3g})")
         if not d.in_band:
             why.insert(0, f"its pulse is outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
         if d.moving is not None and not d.feasible:

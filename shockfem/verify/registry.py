@@ -20,6 +20,7 @@ from .launcher_cases import launcher_design, launcher_model
 from .machine_cases import direct_striker, machine_energy, machine_geometry
 from .premise_cases import premise_boundary
 from .gas_drive_cases import gas_drive
+from .gas_column_cases import gas_column, gas_column_design
 from .gas_spring_cases import gas_spring
 from .pad_cases import pad_1d, pad_bars, pad_johnson, pad_mesh, pad_rigid
 from .slotted_cases import slotted_ring
@@ -108,6 +109,8 @@ CASES = {
     "direct_striker": direct_striker,
     "premise_boundary": premise_boundary,
     "gas_drive": gas_drive,
+    "gas_column": gas_column,
+    "gas_column_design": gas_column_design,
     "gas_spring": gas_spring,
     "pad_bars": pad_bars,
     "pad_rigid": pad_rigid,
