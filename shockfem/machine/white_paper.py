@@ -20,16 +20,28 @@ massless gas: p A L = m v^2 / 2).  Both of the white paper's guns are given by a
 (the barrel its first mass needs at the launch speed) and its flying target's, so that neither is read by
 a model that flatters it.  Its "800 lb" counts the intermediate masses only; the masses it adds to the
 article include its first mass too, so they are tabled as well.
+
+Its last collision (``last_interface``).  In the white paper the article is the chain's last mass, so the
+contact of the last intermediate mass with the article is itself the test's pulse: at its e = 0.9 a nearly
+elastic contact (a spring between two masses: a half-sine of the article's acceleration), not a dashpot's
+plateau, and it closes at the fastest speed of its chain.  Its pad is sized by the pads' own sizing
+(``machine.pads.size_pad``, each solid material at its estimated restitution, ``pads.estimated_restitution``;
+the bodies steel cylinders of ``machine.amplifier.ASPECT``, the article of the spec's diameter), so the
+white paper's arrangement is checked against the same limits as the design's interfaces, whatever striker the
+design carries.
 """
 from __future__ import annotations
 
 import math
 
-from ..amplifier.gain import chain_gain, design, stack_gain
+from ..amplifier.gain import chain_gain, collide, cylinder_size, design, stack_gain
 from ..launcher.gun import barrel_length_for, fire, white_paper_gun
 from ..launcher.simple_wave import muzzle_speed, travel
+from ..programmer.requirement import requirement
 from ..scene.library import property_si
-from ..units import FT, LB
+from ..units import FT, G0, LB
+from .amplifier import ASPECT, interfaces, share_speed
+from .pads import PAD_MASS_SHARE, estimated_restitution, size_pad, solid_pads
 
 CLAIM = {"article": 12 * LB, "masses": 5, "velocity_change": 1600 * FT, "launch": (300 * FT, 350 * FT),
          "intermediate": 800 * LB, "volume": 4 * FT ** 3, "e": 0.9, "gain": 5.0, "target": 30 * LB,
@@ -71,6 +83,31 @@ def _chain(last: float, speed: float, launch: float, e: float, n: int, rho: floa
             "eq2_gain": stack_gain(e, R, n), "chain_gain": chain_gain(e, R, n), "R": R,
             "wp_gun_muzzle": fire(white_paper_gun(d.masses[0]), samples=2).muzzle_velocity,
             **tank_free_speeds(d.masses[0])}
+
+
+def last_interface(m) -> dict:
+    """The white paper's own last collision (module docstring) for the spec of design ``m``: its chain at its
+    assumptions (the 12 lb article last, e = 0.9, the spec's launch speed and masses), the last closing speed
+    [m/s], the article's velocity change and its half-sine's peak over the spec's duration [m/s^2], and the
+    lightest solid pad there against ``PAD_MASS_SHARE`` with its estimated restitution; {} when the white
+    paper's chain has no design."""
+    rho = property_si(m.spec.material, "density", "density")
+    d = design("launched-chain", CLAIM["article"], CLAIM["velocity_change"], m.spec.launch_speed, CLAIM["e"],
+               m.spec.masses)
+    if not d.feasible:
+        return {}
+    article_area = math.pi * m.spec.diameter ** 2 / 4
+    bodies = [{"name": f"m{k + 1}", **cylinder_size(mass, rho, ASPECT)} for k, mass in enumerate(d.masses[:-1])]
+    bodies.append({"name": "article", "diameter": m.spec.diameter, "length": d.masses[-1] / (rho * article_area)})
+    last = interfaces(m.spec, d.masses, bodies, CLAIM["e"])[-1]
+    pads = {name: size_pad(last, name, estimated_restitution(name, last)) for name in solid_pads()}
+    share, lightest = min((p.mass / last.struck_mass, name) for name, p in pads.items() if p.mass > 0)
+    dv = collide(last.striker_mass, last.speed, last.struck_mass, 0.0, CLAIM["e"])[1]
+    per_peak = requirement("half-sine", 1.0, m.spec.pulse.duration, last.struck_mass).velocity_change
+    return {"interface": last.name, "striking_mass": last.striker_mass, "closing_speed": last.speed,
+            "velocity_change": dv, "half_sine_peak": dv / per_peak, "lightest_pad": lightest,
+            "pad_over_struck": share, "share_speed": share_speed(last, lightest),
+            "pad_restitution": estimated_restitution(lightest, last)}
 
 
 def claims(m) -> list[dict]:
@@ -136,6 +173,18 @@ def claims(m) -> list[dict]:
                              f"needs {own['simple_wave'] / FT:.3g} ft, the chambered gun {own['chambered'] / FT:.3g} "
                              f"ft, the constant-pressure bound {own['constant_pressure'] / FT:.3g} ft, against its "
                              "6 ft"})
+    last = last_interface(m)
+    if last:
+        rows.append({"claim": "its last collision, the last intermediate mass onto the article: closing speed [m/s]",
+                     "white_paper": math.nan, "wp_assumptions": last["closing_speed"], "design_at_0.9": math.nan,
+                     "design": math.nan,
+                     "note": f"{last['striking_mass']:.3g} kg onto its {CLAIM['article'] / LB:.0f} lb article, the "
+                             f"chain's last mass: this contact is the pulse, at e = {CLAIM['e']:g} a half-sine of "
+                             f"{last['half_sine_peak'] / G0:,.0f} g over {m.spec.pulse.duration * 1e3:g} ms for its "
+                             f"{last['velocity_change']:.0f} m/s, not a plateau; the lightest solid pad "
+                             f"({last['lightest_pad']}, its restitution about {last['pad_restitution']:.2g} against the "
+                             f"{CLAIM['e']:g} assumed) weighs {last['pad_over_struck']:.3g} times the article "
+                             f"(at most {PAD_MASS_SHARE:g}: below {last['share_speed']:.3g} m/s)"})
     g = white_paper_gun(CLAIM["target"])
     lumped = barrel_length_for(g, CLAIM["target_speed"])
     free = tank_free_barrels(CLAIM["target"], CLAIM["target_speed"])

@@ -13,7 +13,7 @@ from shockfem.machine import boundary as B
 from shockfem.machine.fixture import article_length, bore_radius
 from shockfem.machine.premise import Arrangement, StrikerLaw, _winner, verdict
 from shockfem.machine.spec import read_spec
-from shockfem.machine.white_paper import CLAIM, tank_free_barrels, tank_free_speeds
+from shockfem.machine.white_paper import CLAIM, last_interface, tank_free_barrels, tank_free_speeds
 from shockfem.units import FT, IN, PSI
 
 
@@ -60,6 +60,22 @@ def test_white_paper_gun_without_its_tank():
     barrels = tank_free_barrels(CLAIM["target"], CLAIM["target_speed"])
     assert barrels["constant_pressure"] / FT == pytest.approx(5.3, abs=0.05)
     assert barrels["simple_wave"] / FT == pytest.approx(27.2, abs=0.05)
+
+
+def test_white_paper_last_interface_is_the_pulse():
+    # an independent recomputation of the white paper's chain at its assumptions (12 lb last, e = 0.9, 5 masses
+    # launched at 325 ft/s, geometric mass ratio): m4 = 19.75 kg closes on the article at 327.4 m/s and gives it
+    # (1 + e) m4 / (m4 + m5) of that, 1600 ft/s; a half-sine of that area over 5 ms peaks at
+    # pi dv / (2 T) = 15,620 g
+    spec = read_spec({"article": "12 lb"})
+    k = last_interface(types.SimpleNamespace(spec=spec))
+    assert k["interface"] == "m4_article"
+    assert k["striking_mass"] == pytest.approx(19.75, abs=0.01)
+    assert k["closing_speed"] == pytest.approx(327.4, abs=0.1)
+    assert k["velocity_change"] == pytest.approx(CLAIM["velocity_change"], rel=1e-9)
+    assert k["half_sine_peak"] == pytest.approx(math.pi * CLAIM["velocity_change"] / (2 * 5e-3), rel=1e-6)
+    # no solid pad of the library holds that contact within the pads' mass share (the pads' first check)
+    assert k["pad_over_struck"] > 1.0 and k["share_speed"] < k["closing_speed"] / 3
 
 
 def test_gun_ratio_and_break_even():
