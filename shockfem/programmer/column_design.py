@@ -45,7 +45,8 @@ pressure is not the found design's.  The striker is then the fixed point of the 
 own housing, pin and oil (``carried_ratio_of``; ``fixed_point.striker_fixed_point``): both ways from the
 start, never below the ratio asked, to ``STRIKER_TOLERANCE``, each trial ratio the found handles designed
 again at it (their closed-form bore and collision law at that striker), searched again from them where
-that design breaks a check the found one holds.  A lighter striker closes faster and raises the
+that design breaks a check the found one holds or scores worse than the found one by more than
+``SCORE_SETTLED`` (``fixed_point.redesigned``).  A lighter striker closes faster and raises the
 pressure, so the design kept holds every vetoing check and housing limit the found design holds, where
 any trial carrying its housing does (``admissible``, ``design_checks``), and the record
 (``striker_fixed_point``) says when the search did not converge.  The confirmed design reports its
@@ -77,7 +78,7 @@ from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RAT
 from .dashpot_validity import Limit, column_holds, dashpot_limits, lumped_holds
 from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE, fixture_mass, held_pressure,
                       step_factor)
-from .fixed_point import STRIKER_TOLERANCE, striker_fixed_point
+from .fixed_point import STRIKER_TOLERANCE, redesigned, striker_fixed_point
 from .jet_load import jet_load
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
@@ -211,7 +212,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     striker is then the fixed point of the found design with its housing (``fixed_point
     .striker_fixed_point``, both ways, to ``STRIKER_TOLERANCE``): at each trial ratio the found handles
     are designed again, and searched again from them where that design breaks a check the found one holds
-    (``admissible``).
+    (``admissible``) or scores worse than it by more than ``SCORE_SETTLED`` (``fixed_point.redesigned``).
     ``carried(out)``: the ratio a confirmed design's striker must be (default ``carried_ratio_of``: its
     pressurised housing, pin and oil with the striker's structure).  Returns a dict: the design, its runs
     (``column``, ``search_column``, ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
@@ -236,10 +237,9 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
         return admissible(state.out, found.out)
 
     def needed_at(ratio):
-        state = found if ratio == start else designer.reused(found, ratio)
-        if not kept(state):
-            again = designer.searched(ratio, state.handles)
-            state = again if kept(again) or again.objective <= state.objective else state
+        state = found if ratio == start else redesigned(
+            lambda: designer.reused(found, ratio), lambda reused: designer.searched(ratio, reused.handles), kept,
+            lambda s: s.objective, found.objective, SCORE_SETTLED)
         need = carried(state.out)
         if echo:
             echo(f"  striker ratio {ratio:.4g}: its housing asks {need:.4g} ({state.how}, {state.out['verdict']})")
