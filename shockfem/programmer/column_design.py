@@ -496,6 +496,8 @@ def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int =
                         "worst_excess": float(band.worst_excess), "peak_pressure": float(np.max(run.pressure)),
                         "limits": [lim.as_dict() for lim in limits],
                         "holds": column_holds(limits) if name != "lumped" else lumped_holds(limits)}
+        if name != "lumped":             # the column's accounts and the dashpot's energy balance
+            models[name]["accounts"] = run.summary
     column = runs["column"]
     weight = weigh(d, column, steel, rule) if column is not None else None
     col = models.get("column")
