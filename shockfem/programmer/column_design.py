@@ -390,8 +390,12 @@ def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
     is kept: round 0 is the handles searched on the quasi-steady pin and cut after, so the kept design
     is never worse than that.  Returns the kept cut design, its handles, the correction that reproduces
     its cut pin on them, its score, and each round's record (handles, search objective, its grid if the
-    search names one, runs, the cut's score, why the cut stopped, and ``settled``: what settled after
-    it, "handles" or "score", or None)."""
+    search names one, runs, the cut's score, why the cut stopped, ``moved``: its largest handle's move
+    as a share of its start, ``score_change``: its cut score over the last round's less 1,
+    ``search_converged``: its search's own convergence (Nelder-Mead's tolerances met before its run
+    budget; None where the search does not say), and ``settled``: what settled after it, "handles" or
+    "score", or None).  Rounds whose searches end on their budget are restarts of one unfinished descent:
+    the last round's move and score change say how far from settled the kept design is."""
     correction, kept, history = None, None, []
     for k in range(rounds):
         res = search(correction, start)
@@ -399,10 +403,15 @@ def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
         cut_d = cut(design(h, correction))
         steps, best = cut_d.get("pin_cut", {}).get("steps", []), cut_d.get("pin_cut", {}).get("best")
         score = steps[best]["score"] if best is not None else float(res.fun)
-        settled = (None if k == 0 else "handles" if np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED)
-                   else "score" if abs(score / history[-1]["cut_score"] - 1.0) <= SCORE_SETTLED else None)
+        moved = float(np.max(np.abs(res.x / np.array(start) - 1.0)))
+        converged = getattr(res, "success", None)
+        change = None if k == 0 else float(score / history[-1]["cut_score"] - 1.0)
+        settled = (None if k == 0 else "handles" if moved <= HANDLES_SETTLED
+                   else "score" if abs(change) <= SCORE_SETTLED else None)
         history.append({"handles": dict(zip(HANDLES, map(float, h))), "objective": float(res.fun),
                         "cells": getattr(res, "cells", None), "evaluations": int(res.nfev),
+                        "moved": moved, "score_change": change,
+                        "search_converged": None if converged is None else bool(converged),
                         "carried": correction is not None, "cut_score": score,
                         "cut_stop": cut_d.get("pin_cut", {}).get("stop"), "settled": settled})
         if "pin_cut" in cut_d:             # no cut (no pin iterations): the quasi-steady pin as it is
