@@ -236,9 +236,17 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     def kept(state):
         return admissible(state.out, found.out)
 
+    def searched_again(ratio, reused):
+        again = designer.searched(ratio, reused.handles)
+        if echo:
+            echo(f"  striker ratio {ratio:.4g}: the reused handles score {reused.objective:.3f} against the found "
+                 f"design's {found.objective:.3f}{'' if kept(reused) else ', outside a check'}: searched again, "
+                 f"{again.objective:.3f}{'' if kept(again) else ', outside a check'}")
+        return again
+
     def needed_at(ratio):
         state = found if ratio == start else redesigned(
-            lambda: designer.reused(found, ratio), lambda reused: designer.searched(ratio, reused.handles), kept,
+            lambda: designer.reused(found, ratio), lambda reused: searched_again(ratio, reused), kept,
             lambda s: s.objective, found.objective, SCORE_SETTLED)
         need = carried(state.out)
         if echo:
