@@ -15,8 +15,8 @@ the jet carries out of the column (``fluid.column``'s energy out) and takes off 
 (the work of J on the payload), and the column's dissipation D (its fronts; >= 0), to the residual, the
 coupling's own error (first order in the step).  Beside it, the column's compression energy when the
 bodies first reach a common speed (the liquid spring's, at restitution 0 none would be left) and the
-bodies' kinetic energy of rebound at the end, 1/2 mu (v_p - v_s)^2 (what of it the spring gave back).  Left out: everything
-elastic in the bodies (the finite-element run has that), and what the column leaves out (its
+bodies' kinetic energy of rebound at the end, 1/2 mu (v_p - v_s)^2 (what of it the spring gave back).
+Left out: everything elastic in the bodies (the finite-element run has that), and what the column leaves out (its
 docstring: friction on the bore, liquid returning through the orifice).
 """
 from __future__ import annotations
@@ -25,8 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..fluid.column import OUT_ENERGY, ColumnLiquid, LiquidColumn
 from ..amplifier.interfaces import reduced_mass
+from ..fluid.column import OUT_ENERGY, ColumnLiquid, LiquidColumn
 from .lumped_dashpot import LumpedDashpot
 
 CELLS = 200                     # the column's cells (``verify liquid_column`` shows the pulse converged)
