@@ -96,7 +96,7 @@ OUTSIDE_SCORE = 1.0e6
 # the handle searches (``search_rounds``): the first on the quasi-steady pin, each next on the last one's
 # pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself or the round's
 # score (the kept quantity) by no more than SCORE_SETTLED of the last round's
-PIN_ROUNDS, HANDLES_SETTLED, SCORE_SETTLED = 3, 0.02, 0.02
+PIN_ROUNDS, HANDLES_SETTLED, SCORE_SETTLED = 6, 0.02, 0.02
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
