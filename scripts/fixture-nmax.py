@@ -13,7 +13,9 @@ default; 0 keeps the quasi-steady pin).  ``--seated`` designs the dashpot with s
 (``study.fixture.nose_seat.nose_seat_design``) riding with the article.  One JSON line a design: bore, striker, the column's
 pulse and peak pressure, the housing's wall ratio and mass, the verdict, and the pin's cut on the column
 (its peak overshoot by iteration, the iterate kept, why it stopped) and the striker's fixed point
-(its trials, converged or not, why its design was kept); the designer's progress on stderr.
+(its trials, converged or not, why its design was kept), and the column run's energy balance (the
+kinetic energy in against the bodies', the column's stored, the jet's and the dissipated: ``energy_balance``)
+and its checks (the rebound off the striker among the flags); the designer's progress on stderr.
 """
 from __future__ import annotations
 
@@ -72,7 +74,7 @@ def main():
         "wall_pressure_MPa": w and w["peak_pressure"] / 1e6, "dynamic_factor": w and w["dynamic_factor"],
         "liquid_kg": d["liquid_mass"], "column_m": d["column"],
         "lumped_peak_g": out["models"].get("lumped", {}).get("peak", float("nan")) / G0,
-        "limits": col and col["limits"], "lumped_limits": out["models"].get("lumped", {}).get("limits"),
+        "limits": col and col["limits"], "energy_balance": col and col["accounts"], "lumped_limits": out["models"].get("lumped", {}).get("limits"),
         "fixture": w, "jet": out["jet"], "striker": out["striker"], "handles": d["handles"],
         "pin_cut_steps": d.get("pin_cut", {}).get("steps"),
         "striker_fixed_point": out["striker_fixed_point"]}, default=float), flush=True)

@@ -482,6 +482,11 @@ class LiquidColumn:
     def energy(self) -> float:
         return column_energy(self.m, self.q, self.x, self.area_x, self.area_a, self._liquid)
 
+    def kinetic_energy(self) -> float:
+        """The column's kinetic energy [J] (``energy`` less its compression energy)."""
+        moving = self.m > 0.0
+        return float(np.sum(0.5 * self.q[moving] ** 2 / self.m[moving]))
+
     def void(self) -> float:
         """The column's cavity [m^3]: the gap at the piston and the parted cells' void."""
         return self.gap() + column_void(self.m, self.x, self.area_x, self.area_a, self._liquid)

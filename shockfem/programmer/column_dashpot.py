@@ -8,8 +8,15 @@ housing at first:
 
     (M - m_l) x_s'' = -p_floor A,     m x_p'' = p_piston A - J,     a = a(s), s = L0 - (x_p - x_s)
 
-integrated by symplectic Euler on the column's own step (its Courant limit).  Left out: everything
-elastic in the bodies (the finite-element run has that), and what the column leaves out (its
+integrated by symplectic Euler on the column's own step (its Courant limit).  The run's energy balance
+(``energy_balance``, in its summary): the kinetic energy in (the striker's, its liquid's with it) is the
+bodies' kinetic energy, the column's stored energy (its liquid's kinetic and compression energy), what
+the jet carries out of the column (``fluid.column``'s energy out) and takes off the piston by its reaction
+(the work of J on the payload), and the column's dissipation D (its fronts; >= 0), to the residual, the
+coupling's own error (first order in the step).  Beside it, the column's compression energy when the
+bodies first reach a common speed (the liquid spring's, at restitution 0 none would be left) and the
+bodies' kinetic energy of rebound at the end, 1/2 mu (v_p - v_s)^2 (what of it the spring gave back).
+Left out: everything elastic in the bodies (the finite-element run has that), and what the column leaves out (its
 docstring: friction on the bore, liquid returning through the orifice).
 """
 from __future__ import annotations
@@ -18,7 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..fluid.column import ColumnLiquid, LiquidColumn
+from ..amplifier.interfaces import reduced_mass
+from ..fluid.column import OUT_ENERGY, ColumnLiquid, LiquidColumn
 from .lumped_dashpot import LumpedDashpot
 
 CELLS = 200                     # the column's cells (``verify liquid_column`` shows the pulse converged)
@@ -34,7 +42,8 @@ class ColumnRun:
     payload_speed: np.ndarray           # [m/s]
     striker_speed: np.ndarray           # [m/s]
     cavity: np.ndarray                  # the column's void [m^3]
-    summary: dict                       # the column's accounts at the end (``LiquidColumn.summary``)
+    summary: dict                       # the column's accounts at the end (``LiquidColumn.summary``) and the
+                                        # dashpot's energy balance (``energy_balance``)
     steps: int
 
 
@@ -59,6 +68,8 @@ def simulate_column(d: LumpedDashpot, end_time: float, samples: int = 4000, cell
     rows = np.zeros((samples, 7))
     v_s, v_p, t, k, steps = d.speed, 0.0, 0.0, 0, 0
     force_p = d.initial_pressure * A
+    energy_in, jet_work = 0.5 * housing * d.speed ** 2 + column.energy(), 0.0
+    spring = None                # the column's compression energy when the bodies first reach a common speed
     while k < samples:
         stroke = L0 - column.length()
         if t >= t_out[k]:
@@ -71,9 +82,29 @@ def simulate_column(d: LumpedDashpot, end_time: float, samples: int = 4000, cell
         dt = min(column.stable_step(v_s, v_p), t_out[k] - t) if t_out[k] > t else column.stable_step(v_s, v_p)
         area = float(np.interp(stroke, pin[:, 0], pin[:, 1]))
         force_f, force_p = column.step(v_s, v_p, area, dt)
+        jet_work += dt * column.jet_force * v_p
         v_s += dt * force_f / housing
         v_p += dt * force_p / d.payload_mass
+        if spring is None and v_p >= v_s:
+            spring = column.energy() - column.kinetic_energy()
         t += dt
         steps += 1
     r = rows.T
-    return ColumnRun(t_out, r[0], r[1], r[2], r[3], r[4], r[5], r[6], column.summary(), steps)
+    summary = {**column.summary(), **energy_balance(column, energy_in, 0.5 * housing * v_s ** 2,
+                                                     0.5 * d.payload_mass * v_p ** 2, jet_work),
+               "compression energy at the common speed [J]": float("nan") if spring is None else spring,
+               "rebound's kinetic energy [J]": 0.5 * reduced_mass(housing, d.payload_mass) * max(v_p - v_s, 0.0) ** 2}
+    return ColumnRun(t_out, r[0], r[1], r[2], r[3], r[4], r[5], r[6], summary, steps)
+
+
+def energy_balance(column: LiquidColumn, energy_in: float, housing: float, payload: float, jet_work: float) -> dict:
+    """The dashpot's energy balance at the end of a run [J]: ``energy_in`` (the striker's kinetic energy
+    and its column's at contact) against the housing's and the payload's kinetic energy, the column's
+    stored energy, the jet's (its energy out of the column and ``jet_work``, its reaction's work taken off
+    the piston) and the column's dissipation; the residual what they leave (the coupling's error)."""
+    stored, jet = column.energy(), column.accounts[OUT_ENERGY] + jet_work
+    dissipated = column.dissipated()
+    return {"kinetic energy in [J]": energy_in, "housing's kinetic energy [J]": housing,
+            "payload's kinetic energy [J]": payload, "column's stored energy [J]": stored,
+            "jet's energy out [J]": jet, "jet reaction's work on the piston [J]": jet_work,
+            "energy balance residual [J]": energy_in - housing - payload - stored - jet - dissipated}

@@ -45,7 +45,8 @@ pressure is not the found design's.  The striker is then the fixed point of the 
 own housing, pin and oil (``carried_ratio_of``; ``fixed_point.striker_fixed_point``): both ways from the
 start, never below the ratio asked, to ``STRIKER_TOLERANCE``, each trial ratio the found handles designed
 again at it (their closed-form bore and collision law at that striker), searched again from them where
-that design breaks a check the found one holds.  A lighter striker closes faster and raises the
+that design breaks a check the found one holds or scores worse than the found one by more than
+``SCORE_SETTLED`` (``fixed_point.redesigned``).  A lighter striker closes faster and raises the
 pressure, so the design kept holds every vetoing check and housing limit the found design holds, where
 any trial carrying its housing does (``admissible``, ``design_checks``), and the record
 (``striker_fixed_point``) says when the search did not converge.  The confirmed design reports its
@@ -77,7 +78,7 @@ from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RAT
 from .dashpot_validity import Limit, column_holds, dashpot_limits, lumped_holds
 from .housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, WALL_RULE, fixture_mass, held_pressure,
                       step_factor)
-from .fixed_point import STRIKER_TOLERANCE, striker_fixed_point
+from .fixed_point import STRIKER_TOLERANCE, redesigned, striker_fixed_point
 from .jet_load import jet_load
 from .liquids import DesignLiquid, MINERAL_OIL
 from .lumped_dashpot import simulate
@@ -95,7 +96,7 @@ OUTSIDE_SCORE = 1.0e6
 # the handle searches (``search_rounds``): the first on the quasi-steady pin, each next on the last one's
 # pin cut at the design grid, until no handle moves by more than HANDLES_SETTLED of itself or the round's
 # score (the kept quantity) by no more than SCORE_SETTLED of the last round's
-PIN_ROUNDS, HANDLES_SETTLED, SCORE_SETTLED = 3, 0.02, 0.02
+PIN_ROUNDS, HANDLES_SETTLED, SCORE_SETTLED = 6, 0.02, 0.02
 # the handles' box: outside it the objective is flat (a design the closed form does not describe)
 BOX = ((0.2, 3.0), (1.02, 4.0), (0.3, 3.0), (0.5, 1.5))
 
@@ -211,7 +212,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     striker is then the fixed point of the found design with its housing (``fixed_point
     .striker_fixed_point``, both ways, to ``STRIKER_TOLERANCE``): at each trial ratio the found handles
     are designed again, and searched again from them where that design breaks a check the found one holds
-    (``admissible``).
+    (``admissible``) or scores worse than it by more than ``SCORE_SETTLED`` (``fixed_point.redesigned``).
     ``carried(out)``: the ratio a confirmed design's striker must be (default ``carried_ratio_of``: its
     pressurised housing, pin and oil with the striker's structure).  Returns a dict: the design, its runs
     (``column``, ``search_column``, ``lumped``), their band checks and validity checks, the fixture's mass (``housing.fixture_mass`` on
@@ -235,11 +236,18 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     def kept(state):
         return admissible(state.out, found.out)
 
+    def searched_again(ratio, reused):
+        again = designer.searched(ratio, reused.handles)
+        if echo:
+            echo(f"  striker ratio {ratio:.4g}: the reused handles score {reused.objective:.3f} against the found "
+                 f"design's {found.objective:.3f}{'' if kept(reused) else ', outside a check'}: searched again, "
+                 f"{again.objective:.3f}{'' if kept(again) else ', outside a check'}")
+        return again
+
     def needed_at(ratio):
-        state = found if ratio == start else designer.reused(found, ratio)
-        if not kept(state):
-            again = designer.searched(ratio, state.handles)
-            state = again if kept(again) or again.objective <= state.objective else state
+        state = found if ratio == start else redesigned(
+            lambda: designer.reused(found, ratio), lambda reused: searched_again(ratio, reused), kept,
+            lambda s: s.objective, found.objective, SCORE_SETTLED)
         need = carried(state.out)
         if echo:
             echo(f"  striker ratio {ratio:.4g}: its housing asks {need:.4g} ({state.how}, {state.out['verdict']})")
@@ -390,8 +398,12 @@ def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
     is kept: round 0 is the handles searched on the quasi-steady pin and cut after, so the kept design
     is never worse than that.  Returns the kept cut design, its handles, the correction that reproduces
     its cut pin on them, its score, and each round's record (handles, search objective, its grid if the
-    search names one, runs, the cut's score, why the cut stopped, and ``settled``: what settled after
-    it, "handles" or "score", or None)."""
+    search names one, runs, the cut's score, why the cut stopped, ``moved``: its largest handle's move
+    as a share of its start, ``score_change``: its cut score over the last round's less 1,
+    ``search_converged``: its search's own convergence (Nelder-Mead's tolerances met before its run
+    budget; None where the search does not say), and ``settled``: what settled after it, "handles" or
+    "score", or None).  Rounds whose searches end on their budget are restarts of one unfinished descent:
+    the last round's move and score change say how far from settled the kept design is."""
     correction, kept, history = None, None, []
     for k in range(rounds):
         res = search(correction, start)
@@ -399,10 +411,15 @@ def search_rounds(search, design, cut, rounds: int, start=START) -> tuple:
         cut_d = cut(design(h, correction))
         steps, best = cut_d.get("pin_cut", {}).get("steps", []), cut_d.get("pin_cut", {}).get("best")
         score = steps[best]["score"] if best is not None else float(res.fun)
-        settled = (None if k == 0 else "handles" if np.all(np.abs(res.x / np.array(start) - 1.0) <= HANDLES_SETTLED)
-                   else "score" if abs(score / history[-1]["cut_score"] - 1.0) <= SCORE_SETTLED else None)
+        moved = float(np.max(np.abs(res.x / np.array(start) - 1.0)))
+        converged = getattr(res, "success", None)
+        change = None if k == 0 else float(score / history[-1]["cut_score"] - 1.0)
+        settled = (None if k == 0 else "handles" if moved <= HANDLES_SETTLED
+                   else "score" if abs(change) <= SCORE_SETTLED else None)
         history.append({"handles": dict(zip(HANDLES, map(float, h))), "objective": float(res.fun),
                         "cells": getattr(res, "cells", None), "evaluations": int(res.nfev),
+                        "moved": moved, "score_change": change,
+                        "search_converged": None if converged is None else bool(converged),
                         "carried": correction is not None, "cut_score": score,
                         "cut_stop": cut_d.get("pin_cut", {}).get("stop"), "settled": settled})
         if "pin_cut" in cut_d:             # no cut (no pin iterations): the quasi-steady pin as it is
@@ -496,6 +513,8 @@ def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int =
                         "worst_excess": float(band.worst_excess), "peak_pressure": float(np.max(run.pressure)),
                         "limits": [lim.as_dict() for lim in limits],
                         "holds": column_holds(limits) if name != "lumped" else lumped_holds(limits)}
+        if name != "lumped":             # the column's accounts and the dashpot's energy balance
+            models[name]["accounts"] = run.summary
     column = runs["column"]
     weight = weigh(d, column, steel, rule) if column is not None else None
     col = models.get("column")

@@ -38,6 +38,11 @@ as resting on an extrapolation or on a condition the model's source did not cove
                       every point of the liquid needs many transits per rise, below ``LUMPED_TRANSIT``
     cavity            the lumped liquid at zero pressure while the stroke goes on (it would part), or
                       the column's cavity opening while the striker still closes on the payload
+    rebound           the article leaving the striker faster than it (v_p - v_s at the record's end) as a
+                      share of its velocity change v_p: the liquid still compressed when the bodies reach
+                      a common speed springs them apart (a liquid spring, the energy the column stored
+                      given back); the study's premise is restitution 0, so above ``REBOUND`` the pulse's
+                      velocity change rests on that return and not on the striker's closing speed; flags
 
 The lumped model (``lumped_dashpot``) is the design model only where all of its vetoing checks hold;
 else the column (``column_dashpot``) is, within its own area ratio and Mach number.
@@ -64,6 +69,9 @@ LUMPED_TRANSIT = 0.1
 # (``dashpot_design.DESIGN_MARGIN``, 3% of the band's 10%): a design aimed that far inside stays inside
 # while the coefficient's error is smaller.  Below it the error is reported, not a veto
 COEFFICIENT_ERROR = 0.03
+# the share of the article's velocity change a rebound off the striker may give: the same margin (a design
+# aimed that far inside the band at restitution 0 stays inside it with this much given back)
+REBOUND = COEFFICIENT_ERROR
 
 
 @dataclass(frozen=True)
@@ -192,7 +200,16 @@ def dashpot_limits(d: LumpedDashpot, run, liquid: DesignLiquid = MINERAL_OIL) ->
             Limit("liquid mass / payload", liquid_mass, LUMPED_LIQUID_MASS, "lumped"),
             Limit("column transit time / pulse rise", transit, LUMPED_TRANSIT, "lumped"),
             Limit("cavitation (lumped: parts while stroking; column: cavity / column volume)", cavity, PARTED,
-                  "lumped and column")]
+                  "lumped and column"),
+            Limit("rebound off the striker (v_article - v_striker) / v_article at the record's end "
+                  "(restitution 0: none)", rebound(run), REBOUND, "the premise", vetoes=False)]
+
+
+def rebound(run) -> float:
+    """The article's speed away from the striker at the end of ``run`` over its own speed [-]: 0 for
+    bodies that end together (restitution 0), negative while the striker still closes on it."""
+    v_p, v_s = float(run.payload_speed[-1]), float(run.striker_speed[-1])
+    return (v_p - v_s) / v_p if v_p > 0.0 else 0.0
 
 
 def lumped_holds(limits: list[Limit]) -> bool:

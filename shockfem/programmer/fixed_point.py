@@ -16,6 +16,12 @@ caller's ``admissible`` says which designs are inside every check, and where the
 the lightest admissible trial that carries its housing is kept (a heavier striker than it needs is
 ballast, not a fault).  The range of validity: g decreasing in r (a trial sequence where it is not still
 ends, at ``most``, on the lightest trial that carries its housing, and says it did not converge).
+
+The design at a trial ratio (``redesigned``): the found design's handles designed again at it are kept
+only where that design is admissible and scores no worse than the found one by more than the searches'
+own settle tolerance; else the handles are searched again from there, and the better of the two kept (an
+admissible one over one that is not, then the lower score): reused handles that score worse than a search
+would find are not the design at that striker.
 """
 from __future__ import annotations
 
@@ -92,6 +98,20 @@ def striker_fixed_point(needed_at: Callable, least: float, start: float | None =
             hi, side = (x, g), -1
         x = lo[0] - lo[1] * (hi[0] - lo[0]) / (hi[1] - lo[1]) if lo and hi else max(least, need)
     return _unconverged(trials, states, tol)
+
+
+def redesigned(reuse: Callable, search: Callable, admissible: Callable, score: Callable, reference: float,
+               tol: float):
+    """The design at a trial ratio: ``reuse()`` (the found handles designed again at it) where it is
+    ``admissible`` and its ``score`` is within ``tol`` of ``reference`` (the found design's score, lower
+    is better: the searches' own settle tolerance, a finer one chases their noise); else ``search(reused)``
+    from it, and of the two the admissible one, then the one of the lower score (the reused one on a tie
+    of both)."""
+    state = reuse()
+    if admissible(state) and score(state) <= reference + tol * abs(reference):
+        return state
+    again = search(state)
+    return again if (admissible(again), -score(again)) > (admissible(state), -score(state)) else state
 
 
 def _kept(trials, states, k, why, binds, tol) -> FixedPoint:

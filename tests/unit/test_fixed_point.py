@@ -63,3 +63,40 @@ def test_not_converged_says_so_and_keeps_a_striker_that_carries():
     assert fp.kept.startswith("not converged") and fp.record()["converged"] is False
     fp = striker_fixed_point(lambda r: (2.0 * r, r), 10.0, most=3)
     assert not fp.converged and fp.redesigns == 3 and "none carries" in fp.kept
+
+
+def test_reused_handles_that_score_worse_than_the_found_design_are_searched_again():
+    """The design at a trial ratio (``redesigned``): reused handles inside every check but scoring 3.03
+    against the found design's 2.37 (the seated water design's fixed point: 28% worse, past the
+    searches' 2% settle tolerance) are searched again and the search's 2.40 kept; reused handles within
+    the tolerance (2.40 against 2.37, 1.3%) are kept unsearched; a search that leaves a check is not kept
+    over reused handles inside them all, however it scores."""
+    from shockfem.programmer.column_design import SCORE_SETTLED
+    from shockfem.programmer.fixed_point import redesigned
+    searched = []
+
+    def design(reused_score, searched_score, searched_admissible=True):
+        searched.clear()
+
+        def search(reused):
+            searched.append(reused)
+            return ("searched", searched_score, searched_admissible)
+        return redesigned(lambda: ("reused", reused_score, True), search, lambda s: s[2], lambda s: s[1], 2.37,
+                          SCORE_SETTLED)
+    assert design(3.03, 2.40) == ("searched", 2.40, True) and searched == [("reused", 3.03, True)]
+    assert design(2.40, 2.30) == ("reused", 2.40, True) and not searched
+    assert design(3.03, 2.00, searched_admissible=False) == ("reused", 3.03, True)
+    assert design(3.03, 3.10) == ("reused", 3.03, True)
+
+
+def test_reused_handles_outside_a_check_are_searched_again_and_the_admissible_design_kept():
+    """Reused handles outside a check the found design holds: searched again; the search's design kept
+    where it is admissible (whatever its score) or scores lower, else the reused one."""
+    from shockfem.programmer.fixed_point import redesigned
+
+    def design(searched):
+        return redesigned(lambda: ("reused", 2.0, False), lambda reused: searched, lambda s: s[2], lambda s: s[1],
+                          2.37, TOL)
+    assert design(("searched", 2.5, True)) == ("searched", 2.5, True)
+    assert design(("searched", 1.9, False)) == ("searched", 1.9, False)
+    assert design(("searched", 2.1, False)) == ("reused", 2.0, False)

@@ -128,3 +128,7 @@ def test_the_rounds_stop_when_the_score_settles_though_the_handles_move():
     assert history[1]["handles"]["bore_scale"] == pytest.approx(START[0] * 1.05 ** 2, rel=1e-12)
     score, history = rounds_with(0.10)
     assert [r["settled"] for r in history] == [None, None, None] and score == pytest.approx(4.05, rel=1e-12)
+    # each round's record says how far from settled it was: its largest handle move and score change
+    assert [r["moved"] for r in history] == pytest.approx([0.05] * 3, rel=1e-12)
+    assert history[0]["score_change"] is None and history[2]["score_change"] == pytest.approx(-0.10, rel=1e-12)
+    assert history[2]["search_converged"] is None
