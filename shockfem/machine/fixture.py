@@ -106,7 +106,7 @@ class Fixture:
     housing_steel: str = HOUSING_STEEL
     pin_mass: float = 0.0         # the metering pin, carried by the striker [kg]
     limits: list = field(default_factory=list)      # of ``machine.limits.Limit``: the laws' ranges, the housing
-    verdict: str = ""             # the column designer's ("inside", "outside the laws' ranges", ...)
+    verdict: str = ""             # the column designer's ("inside", "outside the laws' ranges", "the article yields", ...)
     # the outer radius the wall rule needs and the one at which the housing weighs the striker [m] (the
     # housing is drawn at the larger); the column designer's own striker (it carries its pressurised
     # housing only, ``column_design.carried_ratio``) [kg]

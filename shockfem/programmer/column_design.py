@@ -219,8 +219,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     ``steel`` by ``rule``), the striker (``striker``) and its fixed point's record (``striker_fixed_point``:
     the trials, whether it converged and why its design was kept), the wall times, and ``verdict``: "inside" (band
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
-    pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
-    "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
+    pin holds, and with an ``article`` its base within yield), "outside the laws' ranges", "no housing within
+    Y_max", "the pin does not hold it", "fails the band" or "the article yields".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
     the law is extrapolated, which the checks flag).  ``pin_iterations``: the column runs the pin's cut
     on the column may take after the search (``pin_cut.cut_pin``, at ``cells``; 0: the quasi-steady pin);
     the design's ``pin_cut`` holds its convergence.  ``pin_rounds``: the handle searches, each after the
@@ -474,15 +474,19 @@ def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations
 
 def _check_article(out: dict, article: Article):
     """The article's peak base stress on the design's column run into ``out["article_base"]``, and the
-    verdict "the article yields" where every other check holds and it does not."""
+    verdict "the article yields" where every other check holds and it does not ("outside the laws'
+    ranges" where the estimate is outside its own)."""
     run = out["runs"]["column"]
     if run is None:
         out["article_base"] = None
         return
     out["article_base"] = base_stress(run.t, run.acceleration, out["design"]["article_mass"], article,
                                       out["design"]["bore_radius"])
-    if out["verdict"] == "inside" and not out["article_base"]["holds"]:
-        out["verdict"] = "the article yields"
+    if out["verdict"] == "inside":
+        # an estimate outside its own range checks nothing: the design is outside a law's range
+        base = out["article_base"]
+        out["verdict"] = ("outside the laws' ranges" if not base["in_range"] else
+                          "the article yields" if not base["holds"] else "inside")
 
 
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,

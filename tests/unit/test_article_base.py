@@ -51,3 +51,19 @@ def test_a_narrower_bore_bears_on_its_plunger_and_the_broken_check_says_so():
     assert not out["holds"]
     broken = [lim for lim in out["limits"] if not lim["holds"]]
     assert [lim["name"].split(" (")[0] for lim in broken] == ["article base stress over its yield"]
+
+
+def test_the_designers_verdict_lists_the_broken_article_check():
+    """``column_design``'s verdict on the previous test's step: "inside" becomes "the article yields"; a
+    verdict another check set stays (its first cause), the article's check beside it."""
+    from types import SimpleNamespace
+
+    from shockfem.programmer.column_design import _check_article
+    run = SimpleNamespace(t=np.array([0.0, 1e-12, 20 * PERIOD]), acceleration=np.array([0.0, 1e4 * G0, 1e4 * G0]))
+    for verdict, kept in (("inside", "the article yields"), ("fails the band", "fails the band")):
+        out = {"runs": {"column": run}, "design": {"article_mass": MASS, "bore_radius": 0.015}, "verdict": verdict}
+        _check_article(out, ARTICLE)
+        assert out["verdict"] == kept and out["article_base"]["ratio"] == pytest.approx(1511 / 792, rel=1e-3)
+    wide = {"runs": {"column": run}, "design": {"article_mass": MASS, "bore_radius": 0.040}, "verdict": "inside"}
+    _check_article(wide, ARTICLE)
+    assert wide["verdict"] == "inside"               # 378 MPa on the 30 mm base: 0.48 of yield
