@@ -38,6 +38,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
+from ..programmer.article_base import RAYLEIGH_LOVE, Article
 from ..programmer.column_design import design_on_column
 from ..programmer.dashpot_design import DASHPOT
 from ..programmer.housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, THICK_PLATE, floor_for,
@@ -105,7 +106,7 @@ class Fixture:
     housing_steel: str = HOUSING_STEEL
     pin_mass: float = 0.0         # the metering pin, carried by the striker [kg]
     limits: list = field(default_factory=list)      # of ``machine.limits.Limit``: the laws' ranges, the housing
-    verdict: str = ""             # the column designer's ("inside", "outside the laws' ranges", ...)
+    verdict: str = ""             # the column designer's ("inside", "outside the laws' ranges", "the article yields", ...)
     # the outer radius the wall rule needs and the one at which the housing weighs the striker [m] (the
     # housing is drawn at the larger); the column designer's own striker (it carries its pressurised
     # housing only, ``column_design.carried_ratio``) [kg]
@@ -193,7 +194,8 @@ def design_fixture(spec: MachineSpec, echo=None, evaluations: int = DESIGN_EVALU
     def carried(out):
         return housing_of(out).wall_mass / out["design"]["payload_mass"]
     out = design_on_column(spec.pulse, spec.article_mass, 0.0, LIQUID, spec.striker_ratio, evaluations, search_cells,
-                           steel=steel, echo=echo, pin_iterations=PIN_ITERATIONS, carried=carried)
+                           steel=steel, echo=echo, pin_iterations=PIN_ITERATIONS, carried=carried,
+                           article=Article(spec.diameter / 2, L_article, REFERENCE_ARTICLE["library"]))
     # the column runs of every design made: the search's and each confirmation's two on the column
     runs = out["evaluations"] + 2 * (1 + out["striker_fixed_point"]["redesigns"])
     return _fixture(spec, out, housing_of(out), runs, L_article, steel)
@@ -280,6 +282,15 @@ def fixture_limits(out: dict, weight: dict, steel) -> list[Limit]:
                Limit("dashpot housing floor", "thickness over diameter", weight["floor_over_diameter"], THICK_PLATE,
                      "-", "VIII-2 4.6's integral flat head at the floor's peak pressure times its factor",
                      "the flat-head formula's thin-plate range (`programmer.housing.THICK_PLATE`)")]
+    base = out.get("article_base")
+    if base is not None:
+        limits.append(Limit("article base on the piston", "stress (mean over the bearing)", base["stress"],
+                            base["yield_stress"], "Pa", "the column's payload force m a over the bearing times the "
+                            "article's first axial mode's dynamic factor (`programmer.article_base`)",
+                            "the article's initial yield stress (`scene.library`)"))
+        limits.append(Limit("article base on the piston", "Rayleigh-Love correction to its first axial period",
+                            base["rayleigh_love"], RAYLEIGH_LOVE, "-", "the article as a bar of its length",
+                            "the base-stress estimate's bar range (`programmer.article_base.RAYLEIGH_LOVE`)"))
     return limits
 
 

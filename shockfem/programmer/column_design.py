@@ -72,6 +72,7 @@ from scipy.optimize import brentq, minimize
 from ..amplifier.interfaces import reduced_mass
 from ..fluid.orifice import AREA_RATIO, VALID_AREA_RATIO, OrificeLaw, jet_reaction, mass_flow, piston_force
 from ..metrics.shapes import TOLERANCE
+from .article_base import Article, base_stress
 from .column_dashpot import CELLS, simulate_column
 from .dashpot_design import (DASHPOT, DESIGN_MARGIN, LUMPED_SAMPLES, STRIKER_RATIO, PulseSpec, carrier_density,
                              dashpot_design, dashpot_lumped, striker_carrying, striker_speed, upstream_pressure)
@@ -203,7 +204,7 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
                      evaluations: int = 120, search_cells: int = SEARCH_CELLS, cells: int = CELLS,
                      steel: str = HOUSING_STEEL, rule: str = WALL_RULE, echo=None,
                      largest_ratio: float = VALID_AREA_RATIO, pin_iterations: int = PIN_ITERATIONS,
-                     pin_rounds: int = PIN_ROUNDS, carried=None) -> dict:
+                     pin_rounds: int = PIN_ROUNDS, carried=None, article: Article | None = None) -> dict:
     """The dashpot for ``pulse`` on an article of ``article_mass`` [kg] (a ``seat_mass`` riding with it)
     filled with ``liquid``, iterated on the column (``evaluations`` runs at most, ``search_cells``
     cells) and confirmed on it at ``cells``, with the lumped model's run of the same design beside it.
@@ -219,14 +220,17 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     ``steel`` by ``rule``), the striker (``striker``) and its fixed point's record (``striker_fixed_point``:
     the trials, whether it converged and why its design was kept), the wall times, and ``verdict``: "inside" (band
     passed, every check of the column holds, a housing within the practical wall ratio holds it, the
-    pin holds), "outside the laws' ranges", "no housing within Y_max", "the pin does not hold it", or
-    "fails the band".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
+    pin holds, and with an ``article`` its base within yield), "outside the laws' ranges", "no housing within
+    Y_max", "the pin does not hold it", "fails the band" or "the article yields".  ``largest_ratio``: the widest the pin may open (n_max; beyond ``VALID_AREA_RATIO``
     the law is extrapolated, which the checks flag).  ``pin_iterations``: the column runs the pin's cut
     on the column may take after the search (``pin_cut.cut_pin``, at ``cells``; 0: the quasi-steady pin);
     the design's ``pin_cut`` holds its convergence.  ``pin_rounds``: the handle searches, each after the
     first on the last one's pin cut at ``cells`` (``search_rounds``; 1: the handles searched on the
     quasi-steady pin alone, the pin cut after); ``search_rounds`` in the result holds each round's record,
-    ``objective`` the kept design's score."""
+    ``objective`` the kept design's score.  ``article`` (``article_base.Article``): the article standing on the
+    piston, whose peak base stress on the kept design's column run is ``article_base`` in the result
+    (``article_base.base_stress``) and a check of the verdict: "the article yields" where it is the one
+    that fails."""
     law, carried = OrificeLaw(largest_ratio=largest_ratio), carried or carried_ratio_of
     start = carried_ratio(pulse, article_mass, seat_mass, liquid, striker_ratio, search_cells, steel, rule, law)
     designer = _Designer(pulse, article_mass, seat_mass, liquid, law, evaluations, search_cells, cells, steel, rule,
@@ -257,6 +261,8 @@ def design_on_column(pulse: PulseSpec, article_mass: float, seat_mass: float = 0
     out.update(closed_form_bore=fp.state.bore, evaluations=designer.evaluations, search_wall=designer.search_wall,
                objective=fp.state.objective, search_rounds=fp.state.rounds, confirm_wall=designer.confirm_wall,
                striker_fixed_point=fp.record())
+    if article is not None:
+        _check_article(out, article)
     if echo:
         echo(f"  dashpot on the column ({liquid.name}): {out['evaluations']} runs, {designer.search_wall:.0f} s, "
              f"{out['verdict']}; striker {fp.ratio:.4g} payloads in {fp.redesigns} redesigns ({fp.kept})")
@@ -481,6 +487,23 @@ def _cut(d: dict, pulse: PulseSpec, liquid: DesignLiquid, cells: int, iterations
         inside = column_holds(dashpot_limits(dashpot_lumped(trial), run, liquid))
         return design_objective(trial, run, pulse, liquid, steel, rule) + (0.0 if inside else OUTSIDE_SCORE)
     return cut_pin(d, pulse, liquid, cells, iterations, score=score)[0]
+
+
+def _check_article(out: dict, article: Article):
+    """The article's peak base stress on the design's column run into ``out["article_base"]``, and the
+    verdict "the article yields" where every other check holds and it does not ("outside the laws'
+    ranges" where the estimate is outside its own)."""
+    run = out["runs"]["column"]
+    if run is None:
+        out["article_base"] = None
+        return
+    out["article_base"] = base_stress(run.t, run.acceleration, out["design"]["article_mass"], article,
+                                      out["design"]["bore_radius"])
+    if out["verdict"] == "inside":
+        # an estimate outside its own range checks nothing: the design is outside a law's range
+        base = out["article_base"]
+        out["verdict"] = ("outside the laws' ranges" if not base["in_range"] else
+                          "the article yields" if not base["holds"] else "inside")
 
 
 def confirm(d: dict, pulse: PulseSpec, liquid: DesignLiquid, search_cells: int = SEARCH_CELLS,
