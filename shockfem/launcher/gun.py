@@ -24,7 +24,12 @@ Each loss is a switch, so a user sees what it costs:
   infinitely chambered gun is), or ``"chambered"`` (that gun's base pressure: an infinitely large
   chamber at the reservoir's initial state, ``simple_wave.chambered_pressure_ratio``).  Lagrange counts all the gas behind the projectile:
   the barrel's with a valve, the whole chamber's without one, so a chamber much longer than
-  the barrel (or of a wider section) makes it too heavy; use a valve there.
+  the barrel (or of a wider section) makes it too heavy; use a valve there.  Its column is at
+  rest at the breech, so with a valve it leaves out the speed of the gas crossing it and that
+  gas's kinetic energy: where the barrel gas outweighs the projectile several times, a gun fed
+  through a full-bore valve passes the infinitely chambered gun, which no finite tank can
+  (``shockfem verify premise_boundary``: the machine's gun on 220.9 kg, its barrel gas 3.3 times
+  the projectile at the muzzle, by 3.7e-4, its rtol not the cause).
 
 Energy balance (lumped model): gas internal energy (+ C v^2 / 6 with Lagrange) + projectile
 kinetic energy + friction work + work on the air ahead = the gas's initial internal energy.
