@@ -209,16 +209,6 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
         p_r = gas.pressure(m_r, U_r, Vr) if m_r > 0 else 0.0
         p_b = gas.pressure(m_b, U_b, V_b) if m_b > 0 else 0.0
         T_r, T_b = gas.temperature(m_r, U_r), gas.temperature(m_b, U_b)
-        mdot, h = 0.0, 0.0
-        if not no_valve and not simple:
-            opening = 1.0 if t_open <= 0 else min(t / t_open, 1.0)
-            a_eff = gun.discharge_coefficient * gun.valve_area * opening
-            if p_r >= p_b:
-                mdot = orifice_flow(gas, a_eff, p_r, T_r, p_b)
-                h = gas.cp * T_r
-            else:
-                mdot = -orifice_flow(gas, a_eff, p_b, T_b, p_r)
-                h = gas.cp * T_b
         if simple:
             p_base = pr0 * law(v, c0, gas.gamma)
             p_mean, m_eff = p_base, gun.projectile_mass
@@ -239,8 +229,23 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
             acc = (drive - friction_now) / m_eff
         if lagrange:
             p_base = (gun.projectile_mass * acc + p_face * A + friction_now) / A
+        mdot, h, p_breech = 0.0, 0.0, p_b
+        if not no_valve and not simple:
+            # the valve discharges into the column's breech end: on Lagrange's profile (uniform density, the
+            # speed linear from rest at the breech) the pressure there is the mean's plus C a / (6 A), the part of
+            # the gradient that accelerates the column ahead of it
+            if lagrange:
+                p_breech = p_b + m_b * acc / (6 * A)
+            opening = 1.0 if t_open <= 0 else min(t / t_open, 1.0)
+            a_eff = gun.discharge_coefficient * gun.valve_area * opening
+            if p_r >= p_breech:
+                mdot = orifice_flow(gas, a_eff, p_r, T_r, p_breech)
+                h = gas.cp * T_r
+            else:
+                mdot = -orifice_flow(gas, a_eff, p_breech, T_b, p_r)
+                h = gas.cp * T_b
         return dict(p_r=p_r, p_b=p_b, p_base=p_base, p_face=p_face, mdot=mdot, h=h, acc=acc, V_b=V_b,
-                    friction=friction_now, p_mean=p_mean)
+                    friction=friction_now, p_mean=p_mean, p_breech=p_breech)
 
     def rhs(t, y):
         s = state(y, t)
