@@ -17,7 +17,7 @@ Equations, per unit bore area, on a grid whose faces move at w:
 the brackets the differences across a cell of the face fluxes, mdot' the bleed's mass rate per unit bore area
 over the cell: the holes' open area in it (the wall's open share times the perimeter times the length of the
 cell past the band's start, times the holes' discharge coefficient) through the orifice law (``orifice_mass_flow``,
-the compiled twin of ``launcher.gas.orifice_flow``, the cell's static p and T its upstream state, as the ported
+the gas models' one, the cell's static p and T its upstream state, as the ported
 law takes the face's) to the ambient.  The gas leaving takes its stagnation enthalpy h + u^2 / 2 (the wall does
 no work on it); its axial speed v_ax is a choice: ``RADIAL`` jets (v_ax = 0, the cylinder takes no axial thrust,
 the momentum they do not carry staying in the column) or ``AXIAL`` jets (v_ax = u, keeping the column's speed):
@@ -55,15 +55,24 @@ from .column import _minmod
 COURANT = 0.8                # MUSCL-Hancock with HLLC is stable up to 1 (Toro sec. 14.4); 0.8 keeps the margin
 RADIAL, AXIAL = 0, 1         # the bleed's jets: no axial momentum, or the column's
 WALL, RESERVOIR = 0, 1       # the breech's kinds
-# below this relative pressure difference the orifice's flow is taken linear in it (``launcher.gas.EQUAL``)
+# below this relative pressure difference the orifice's flow is taken linear in it (``orifice_mass_flow``)
 EQUAL = 1e-4
 
 
 @njit(cache=True)
 def orifice_mass_flow(gamma, R, area, p_up, T_up, p_down):
-    """The mass flow [kg/s] through the effective ``area`` from (p_up, T_up) to p_down: the compiled twin of
-    ``launcher.gas.orifice_flow`` (its equations and its linear equalisation below ``EQUAL``), which is its test
-    oracle."""
+    """The mass flow [kg/s] through the effective ``area`` (Cd A) from (p_up, T_up) to p_down <= p_up, an isentropic
+    nozzle from the source's stagnation state (zero if p_down >= p_up: which side is upstream is the caller's):
+
+        choked, p_down / p_up <= (2 / (gamma + 1))^(gamma / (gamma - 1)):
+            mdot = area p_up sqrt(gamma / (R T_up)) (2 / (gamma + 1))^((gamma + 1) / (2 (gamma - 1)))
+        otherwise, r = p_down / p_up:
+            mdot = area p_up sqrt(2 gamma / ((gamma - 1) R T_up) (r^(2 / gamma) - r^((gamma + 1) / gamma)))
+
+    Unchoked, the flow goes as sqrt(p_up - p_down) as the pressures equalise, whose slope is infinite: below a
+    difference of ``EQUAL`` of p_up it is taken linear in the difference (continuous at EQUAL), so an ODE solver
+    does not crawl through the equalisation.  The one orifice law of the gas models (``launcher.gas.orifice_flow``
+    calls it); compiled, so the column's bleed calls it inside its step."""
     if area <= 0.0 or p_down >= p_up or p_up <= 0.0 or T_up <= 0.0:
         return 0.0
     ratio = max(p_down / p_up, 0.0)
