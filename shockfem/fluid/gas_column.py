@@ -31,8 +31,8 @@ over the step, at ``COURANT``.  The piston's face is a reflecting wall at its sp
 contact moves with it, its p* the face's pressure); a still breech is the same wall at rest; a reservoir at
 (p0, T0) feeds the first face steadily and isentropically, c^2 + (gamma - 1) u^2 / 2 = c0^2, the face's state on
 that isentrope joined to the first cell's by a contact and the wave it sends into the column, a shock or a
-rarefaction (Toro's pressure function, sec. 4.2: so a tank opened on still gas far below its pressure drives the
-shock it does, where the first cell's characteristic alone would hold the face at rest), choked at the sonic
+rarefaction (Toro's pressure function, sec. 4.2: so a tank opened on still gas far below its pressure drives its
+shock into it), choked at the sonic
 state past it (the infinitely chambered gun's entry, ``launcher.simple_wave``), a wall at p0 if the gas would
 flow back.
 

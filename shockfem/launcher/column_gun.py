@@ -3,8 +3,8 @@ the lumped gun's gas model (``gun.fire``'s Lagrange column) behind a full-bore v
 
 The barrel gas is the column from the breech to the projectile's base, its dead volume at the ambient state to
 start; the tank feeds the breech through the full bore, steadily and isentropically (``gas_column``'s reservoir
-breech: the first face's state on the tank's stagnation state and the first cell's characteristic, choked at
-the sonic state).  The tank is the lumped gun's: well mixed, adiabatic, so it empties isentropically,
+breech: the first face's state on the tank's steady isentrope, joined to the first cell by the shock or
+rarefaction it sends, choked at the sonic state).  The tank is the lumped gun's: well mixed, adiabatic, so it empties isentropically,
 
     p_r = p_r0 (m_r / m_r0)^gamma,   rho_r = m_r / V_r,
 
