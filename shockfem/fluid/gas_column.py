@@ -17,7 +17,7 @@ Equations, per unit bore area, on a grid whose faces move at w:
 the brackets the differences across a cell of the face fluxes, mdot' the bleed's mass rate per unit bore area
 over the cell: the holes' open area in it (the wall's open share times the perimeter times the length of the
 cell past the band's start, times the holes' discharge coefficient) through the orifice law (``orifice_mass_flow``,
-the compiled twin of ``launcher.gas.orifice_flow``, the cell's static p and T its upstream state, as the ported
+the gas models' one, the cell's static p and T its upstream state, as the ported
 law takes the face's) to the ambient.  The gas leaving takes its stagnation enthalpy h + u^2 / 2 (the wall does
 no work on it); its axial speed v_ax is a choice: ``RADIAL`` jets (v_ax = 0, the cylinder takes no axial thrust,
 the momentum they do not carry staying in the column) or ``AXIAL`` jets (v_ax = u, keeping the column's speed):
@@ -29,9 +29,12 @@ by the Galilean transform), on MUSCL-Hancock's face states (minmod slopes of rho
 the primitive equations; Toro sec. 14.4: second order where the flow is smooth, first at shocks), forward Euler
 over the step, at ``COURANT``.  The piston's face is a reflecting wall at its speed (the mirror state: HLLC's
 contact moves with it, its p* the face's pressure); a still breech is the same wall at rest; a reservoir at
-(p0, T0) feeds the first face steadily and isentropically, c^2 + (gamma - 1) u^2 / 2 = c0^2, its speed from the
-characteristic u - 2 c / (gamma - 1) of the first cell (subsonic inflow), choked at the sonic state past it
-(the infinitely chambered gun's entry, ``launcher.simple_wave``), a wall at p0 if the gas would flow back.
+(p0, T0) feeds the first face steadily and isentropically, c^2 + (gamma - 1) u^2 / 2 = c0^2, the face's state on
+that isentrope joined to the first cell's by a contact and the wave it sends into the column, a shock or a
+rarefaction (Toro's pressure function, sec. 4.2: so a tank opened on still gas far below its pressure drives its
+shock into it), choked at the sonic
+state past it (the infinitely chambered gun's entry, ``launcher.simple_wave``), a wall at p0 if the gas would
+flow back.
 
 Range of validity: a perfect gas (no covolume), a constant bore, no friction or heat transfer to the wall, the
 bleed quasi-steady (each hole's flow the orifice law's at the cell's state: the gas's transit through the wall
@@ -52,15 +55,24 @@ from .column import _minmod
 COURANT = 0.8                # MUSCL-Hancock with HLLC is stable up to 1 (Toro sec. 14.4); 0.8 keeps the margin
 RADIAL, AXIAL = 0, 1         # the bleed's jets: no axial momentum, or the column's
 WALL, RESERVOIR = 0, 1       # the breech's kinds
-# below this relative pressure difference the orifice's flow is taken linear in it (``launcher.gas.EQUAL``)
+# below this relative pressure difference the orifice's flow is taken linear in it (``orifice_mass_flow``)
 EQUAL = 1e-4
 
 
 @njit(cache=True)
 def orifice_mass_flow(gamma, R, area, p_up, T_up, p_down):
-    """The mass flow [kg/s] through the effective ``area`` from (p_up, T_up) to p_down: the compiled twin of
-    ``launcher.gas.orifice_flow`` (its equations and its linear equalisation below ``EQUAL``), which is its test
-    oracle."""
+    """The mass flow [kg/s] through the effective ``area`` (Cd A) from (p_up, T_up) to p_down <= p_up, an isentropic
+    nozzle from the source's stagnation state (zero if p_down >= p_up: which side is upstream is the caller's):
+
+        choked, p_down / p_up <= (2 / (gamma + 1))^(gamma / (gamma - 1)):
+            mdot = area p_up sqrt(gamma / (R T_up)) (2 / (gamma + 1))^((gamma + 1) / (2 (gamma - 1)))
+        otherwise, r = p_down / p_up:
+            mdot = area p_up sqrt(2 gamma / ((gamma - 1) R T_up) (r^(2 / gamma) - r^((gamma + 1) / gamma)))
+
+    Unchoked, the flow goes as sqrt(p_up - p_down) as the pressures equalise, whose slope is infinite: below a
+    difference of ``EQUAL`` of p_up it is taken linear in the difference (continuous at EQUAL), so an ODE solver
+    does not crawl through the equalisation.  The one orifice law of the gas models (``launcher.gas.orifice_flow``
+    calls it); compiled, so the column's bleed calls it inside its step."""
     if area <= 0.0 or p_down >= p_up or p_up <= 0.0 or T_up <= 0.0:
         return 0.0
     ratio = max(p_down / p_up, 0.0)
@@ -112,21 +124,46 @@ def _moving_flux(rho_l, u_l, p_l, rho_r, u_r, p_r, w, gamma):
 
 
 @njit(cache=True)
+def _right_wave_speed(p, rho_r, u_r, p_r, gamma):
+    """The gas's speed at pressure ``p`` on the left of a right-facing wave into the state (rho_r, u_r, p_r):
+    u_r + f_R(p), Toro's pressure function (Riemann Solvers, sec. 4.2, eqs. 4.6-4.7): a shock above p_r, a
+    rarefaction below."""
+    if p > p_r:
+        a_r, b_r = 2.0 / ((gamma + 1.0) * rho_r), (gamma - 1.0) / (gamma + 1.0) * p_r
+        return u_r + (p - p_r) * math.sqrt(a_r / (p + b_r))
+    c_r = math.sqrt(gamma * p_r / rho_r)
+    return u_r + 2.0 * c_r / (gamma - 1.0) * ((p / p_r) ** ((gamma - 1.0) / (2.0 * gamma)) - 1.0)
+
+
+@njit(cache=True)
 def _reservoir_inflow(rho, u, p, p0, rho0, gamma):
-    """The first face's state (rho, u, p) fed from a reservoir at rest at (p0, rho0) (module docstring): the
-    steady isentropic energy c^2 + (gamma - 1) u^2 / 2 = c0^2 with the first cell's characteristic
-    u - 2 c / (gamma - 1), choked at the sonic state, a wall at p0 if the gas would flow back."""
+    """The first face's state (rho, u, p) fed from a reservoir at rest at (p0, rho0) (module docstring): on the
+    reservoir's steady isentrope, u_b(p)^2 = 2 (c0^2 - c(p)^2) / (gamma - 1), c(p) = c0 (p / p0)^((gamma - 1) /
+    (2 gamma)), joined to the first cell's state by a contact and the right-facing wave (``_right_wave_speed``):
+    the p where u_b(p) = u + f_R(p), by bisection (u_b falls and u + f_R rises with p); choked at the sonic
+    state where the cell would take more than it, a wall at p0 where the gas would flow back."""
     c0 = math.sqrt(gamma * p0 / rho0)
-    J = u - 2.0 * math.sqrt(gamma * p / rho) / (gamma - 1.0)
-    a = (gamma + 1.0) / (gamma - 1.0)
-    c_b = (-J + math.sqrt(max(J * J - a * (0.5 * (gamma - 1.0) * J * J - c0 * c0), 0.0))) / a
-    u_b = J + 2.0 * c_b / (gamma - 1.0)
-    if u_b <= 0.0:
+    k = (gamma - 1.0) / (2.0 * gamma)
+    if _right_wave_speed(p0, rho, u, p, gamma) <= 0.0:
         return rho0, 0.0, p0
-    if u_b > c_b:
-        c_b = u_b = c0 * math.sqrt(2.0 / (gamma + 1.0))
-    r = c_b / c0
-    return rho0 * r ** (2.0 / (gamma - 1.0)), u_b, p0 * r ** (2.0 * gamma / (gamma - 1.0))
+    p_low = p0 * (2.0 / (gamma + 1.0)) ** (0.5 / k)
+    c_star = c0 * math.sqrt(2.0 / (gamma + 1.0))
+    if _right_wave_speed(p_low, rho, u, p, gamma) >= c_star:
+        p_b = p_low
+    else:
+        lo, hi = p_low, p0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            c = c0 * (mid / p0) ** k
+            if math.sqrt(max(2.0 * (c0 * c0 - c * c) / (gamma - 1.0), 0.0)) > _right_wave_speed(mid, rho, u, p,
+                                                                                                 gamma):
+                lo = mid
+            else:
+                hi = mid
+        p_b = 0.5 * (lo + hi)
+    r = (p_b / p0) ** k
+    u_b = c0 * math.sqrt(max(2.0 * (1.0 - r * r) / (gamma - 1.0), 0.0))
+    return rho0 * r ** (2.0 / (gamma - 1.0)), u_b, p_b
 
 
 @njit(cache=True)

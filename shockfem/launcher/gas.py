@@ -5,17 +5,15 @@ Noble-Abel (the ``real`` option, for pressures where the molecules' own volume m
 p (V - m b) = m R T, covolume b; its internal energy is still c_v T, so p = (gamma - 1) U / (V - m b).
 
 Mass flow through an orifice of effective area Cd A from a source (p0, T0) to a back pressure p
-(isentropic nozzle; the source's stagnation state):
-
-    choked, p / p0 <= (2 / (gamma + 1))^(gamma / (gamma - 1)):
-        mdot = Cd A p0 sqrt(gamma / (R T0)) (2 / (gamma + 1))^((gamma + 1) / (2 (gamma - 1)))
-    otherwise:
-        mdot = Cd A p0 sqrt(2 gamma / ((gamma - 1) R T0) ((p/p0)^(2/gamma) - (p/p0)^((gamma + 1)/gamma)))
+(isentropic nozzle; the source's stagnation state): ``orifice_flow``, which calls the compiled law
+``fluid.gas_column.orifice_mass_flow`` (its equations there), the one the gas column's bleed calls.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+from ..fluid.gas_column import orifice_mass_flow
 
 
 @dataclass(frozen=True)
@@ -61,25 +59,8 @@ GASES = {"air": Gas("air", 1.4, 287.05), "nitrogen": Gas("nitrogen", 1.4, 296.8)
 COVOLUMES = {"air": 1.26e-3, "nitrogen": 1.38e-3, "helium": 5.95e-3}
 
 
-# Relative pressure difference below which orifice flow is taken linear in the difference.
-EQUAL = 1e-4
-
-
 def orifice_flow(gas: Gas, area: float, p_up: float, T_up: float, p_down: float) -> float:
     """Mass flow [kg/s] from upstream (p_up, T_up) to p_down <= p_up through effective area
-    ``area`` (Cd A).  Which side is upstream is the caller's to decide."""
-    if area <= 0 or p_down >= p_up or p_up <= 0 or T_up <= 0:
-        return 0.0
-    g = gas.gamma
-    ratio = max(p_down / p_up, 0.0)
-    critical = (2 / (g + 1)) ** (g / (g - 1))
-    if ratio <= critical:
-        return area * p_up * math.sqrt(g / (gas.R * T_up)) * (2 / (g + 1)) ** ((g + 1) / (2 * (g - 1)))
-    scale = 1.0
-    if ratio > 1 - EQUAL:
-        # the flow goes as sqrt(p_up - p_down) as the pressures equalise, whose derivative is
-        # infinite: below a difference of EQUAL it is taken linear (continuous), so the ODE
-        # solver does not crawl through the equalisation
-        scale, ratio = (1 - ratio) / EQUAL, 1 - EQUAL
-    return scale * area * p_up * math.sqrt(2 * g / ((g - 1) * gas.R * T_up)
-                                           * (ratio ** (2 / g) - ratio ** ((g + 1) / g)))
+    ``area`` (Cd A) (``fluid.gas_column.orifice_mass_flow``: choked or not, linear in the pressure
+    difference below ``EQUAL`` of it).  Which side is upstream is the caller's to decide."""
+    return orifice_mass_flow(gas.gamma, gas.R, area, p_up, T_up, p_down)
