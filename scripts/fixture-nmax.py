@@ -17,7 +17,7 @@ pulse and peak pressure, the housing's wall ratio and mass, the article's base-s
 (its peak overshoot by iteration, the iterate kept, why it stopped) and the striker's fixed point
 (its trials, converged or not, why its design was kept), and the column run's energy balance (the
 kinetic energy in against the bodies', the column's stored, the jet's and the dissipated: ``energy_balance``)
-and its checks (the rebound off the striker among the flags); the designer's progress on stderr.
+and its checks (the rebound off the striker among them); the designer's progress on stderr.
 ``--grid 100,200,400`` runs the design found on the column at those cells, one more JSON line
 (``grid``: each grid's pulse, band excess, peak pressure, rebound and wall), the design grid's error by
 cells. ``--speed-tail-slap`` (with ``--confirm``) goes on as the study does after 4.7: its sections 5 (speed
