@@ -17,8 +17,10 @@ pulse and peak pressure, the housing's wall ratio and mass, the article's base-s
 (its peak overshoot by iteration, the iterate kept, why it stopped) and the striker's fixed point
 (its trials, converged or not, why its design was kept), and the column run's energy balance (the
 kinetic energy in against the bodies', the column's stored, the jet's and the dissipated: ``energy_balance``)
-and its checks (the rebound off the striker among the flags); the designer's progress on stderr.
-``--speed-tail-slap`` (with ``--confirm``) goes on as the study does after 4.7: its sections 5 (speed
+and its checks (the rebound off the striker among them); the designer's progress on stderr.
+``--grid 100,200,400`` runs the design found on the column at those cells, one more JSON line
+(``grid``: each grid's pulse, band excess, peak pressure, rebound and wall), the design grid's error by
+cells. ``--speed-tail-slap`` (with ``--confirm``) goes on as the study does after 4.7: its sections 5 (speed
 against error) and 6 (tail-slap initiation) on that design (``study.fixture.speed``,
 ``study.fixture.tail_slap``), into the same report.
 """
@@ -53,6 +55,8 @@ def main():
                     help="handle searches, each after the first on the last one's cut pin (1: the quasi-steady pin's) [-]")
     ap.add_argument("--pin-iterations", type=int, default=PIN_ITERATIONS,
                     help="column runs of the pin's cut on the column (0: the quasi-steady pin) [-]")
+    ap.add_argument("--grid", metavar="CELLS", help="and run the design found on the column at these cells, "
+                    "comma-separated (a grid study of the cut design)")
     a = ap.parse_args()
     if a.speed_tail_slap and not a.confirm:
         ap.error("--speed-tail-slap: sections 5 and 6 run on 4.7's confirmed design; add --confirm OUT_DIR")
@@ -89,8 +93,28 @@ def main():
         "fixture": w, "jet": out["jet"], "striker": out["striker"], "handles": d["handles"],
         "pin_cut_steps": d.get("pin_cut", {}).get("steps"),
         "article_base": out["article_base"], "striker_fixed_point": out["striker_fixed_point"]}, default=float), flush=True)
+    if a.grid:
+        print(json.dumps({"grid": _grid(out, a, [int(n) for n in a.grid.split(",")])}, default=float), flush=True)
     if a.confirm:
         _confirm_in_finite_elements(out, a, cfg)
+
+
+def _grid(out: dict, a, cells: list[int]) -> list[dict]:
+    """The design found on the column at each of ``cells``, as ``column_design.confirm`` runs it."""
+    from shockfem.programmer.column_dashpot import simulate_column
+    from shockfem.programmer.dashpot_design import LUMPED_SAMPLES, dashpot_lumped
+    from shockfem.programmer.dashpot_validity import rebound
+    pulse, liquid, rows = SPEC_PULSE[a.shape], LIQUIDS[a.liquid], []
+    for n in cells:
+        started = time.perf_counter()
+        run = simulate_column(dashpot_lumped(out["design"]), pulse.record_end(), LUMPED_SAMPLES, n, liquid.column())
+        metrics, band = pulse.band(run.t, run.acceleration)
+        rows.append({"cells": n, "peak_g": metrics.peak / G0, "duration_ms": metrics.duration * 1e3,
+                     "velocity_change_m_s": metrics.velocity_change, "worst_excess": band.worst_excess,
+                     "peak_pressure_MPa": float(max(run.pressure)) / 1e6,
+                     "floor_pressure_MPa": float(max(run.floor_pressure)) / 1e6, "rebound": rebound(run),
+                     "wall_s": time.perf_counter() - started})
+    return rows
 
 
 def _confirm_in_finite_elements(out: dict, a, cfg: dict):

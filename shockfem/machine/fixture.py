@@ -298,4 +298,5 @@ _RANGE_SOURCE = {"the orifice law": "Idelchik's sharp-edged orifice within ISO 5
                                     "number (`fluid.orifice`)",
                  "the liquid": "the liquid's state (`programmer.liquids`)",
                  "column": "the column's linearised wall faces (`fluid.column`)",
-                 "lumped and column": "a column that does not part while the stroke goes on (`fluid.column`)"}
+                 "lumped and column": "a column that does not part while the stroke goes on (`fluid.column`)",
+                 "the premise": "restitution 0 within the design margin (`programmer.dashpot_validity.REBOUND`)"}
