@@ -10,7 +10,12 @@ catcher.
   its limits) at the force its inertia allows (a body stopped at one end at deceleration a carries
   rho L a at the stop, at most the allowable S); the payload's catcher at the spec's deceleration (half
   the test pulse's peak by default: the arrest must not be the harsher shock).  Each absorber takes its
-  own length on the axis, after the previous one.
+  own length on the axis, after the previous one.  The gun's slug (the first body) leaves its travel with
+  its front at the muzzle and the barrel full of gas behind it: where its base is still in the bore when
+  it meets its stop, the stop is designed against that gas's push (``stops.pushed_stop``; the push the
+  gun's base pressure at the end of its travel on the bore, ``launcher.muzzle_state``, held over the
+  stroke: it falls as the barrel vents and rises toward the tank's pressure where the stopped body closes
+  the bore with the valve open).
 * Guides: two rails under every body, sliding shoes under it (its weight their load): catalogue
   rolling carriages run at most ``ROLLING_CARRIAGE_SPEED`` (item Industrietechnik, PS 4 bearing carriages:
   v max 5 m/s), far below the bodies' speeds, so the shoes slide (wear strips on hardened rails).

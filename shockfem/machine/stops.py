@@ -38,11 +38,14 @@ with its broken limits in the machine's verdict):
   buffer takes the rest.  The water it throws out is refilled each shot.  Limit: the scoop's face carries
   the stagnation pressure 2 rho_w v0^2, at most the allowable.
 
-A body pushed on while it is stopped (the gas drive's piston, its gas behind it): the absorber must take the
-body's energy and the push's work over its stroke, F s = m v^2 / 2 + F_p s, so only a force above the push
-stops it (a buffer's stroke m v^2 / (2 (F - F_p)); a honeycomb's with sigma_c less the push over its area), and
-at rest it holds the push (a honeycomb below its crush stress, a buffer's rod bottomed on its cylinder's end).
-The water brake's force falls with the speed, so it is left out there.
+A body pushed on while it is stopped (the gas drive's piston, its gas behind it; a gun's slug or a sabot
+stopped at the muzzle, the barrel's gas behind it): the absorber must take the body's energy and the push's
+work over its stroke, F s = m v^2 / 2 + F_p s, so only a force above the push stops it (a buffer's stroke
+m v^2 / (2 (F - F_p)); a honeycomb's with sigma_c less the push over its area), and at rest it holds the push
+(a honeycomb below its crush stress, a buffer's rod bottomed on its cylinder's end).  The water brake's force
+falls with the speed, so it is left out there.  ``pushed_stop`` puts the push against the absorber's least
+force (``Stop.hold``: a buffer's force, a block's static crush) among the stop's limits; where no absorber's
+force exceeds it the body never stops, and that limit is broken.
 
 The stop's face: the ring the absorber presses on, from the bore that lets the next body pass out to
 a collar 1.3 times the body's diameter (the stop ring as drawn).

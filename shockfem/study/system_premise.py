@@ -160,8 +160,9 @@ def _arrangement_row(x) -> list:
             x.machine_mass, x.machine_length, "yes" if x.gun_feasible else "NO", "; ".join(x.notes)]
 
 
-def premise(rep: Report, m, cfg, echo) -> tuple:
-    """The three arrangements for the same pulse through the same fixture, and the verdict."""
+def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
+    """The three arrangements for the same pulse through the same fixture, and the verdict; the answer boxed
+    (``answer_box``) after it, or at the report's top with ``answer_at_top`` (the premise's own study)."""
     lb = round(m.spec.article_mass / LB)
     rep.heading(f"8. The premise: the amplifier against a direct striker and a flying target ({lb} lb)")
     echo("  (b) the striker fired directly")
@@ -219,7 +220,8 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
                              for x, y in zip(drives, d_rows)])
     rep.value("premise_closed_form_at_spec", closed_spec)
     rep.value("direct_remedies_at_spec", remedies_spec)
-    rep.lead(answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec))
+    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec)
+    rep.lead(box) if answer_at_top else rep.text(box)
     return a, b, b0, c, target
 
 
@@ -273,7 +275,7 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict) -> st
             (b0, "a lower bound, not a machine" + (" (its gun within the limits)" if b0.gun_feasible else ""),
              P.limit_words(b0)), (c, machine(c), P.limit_words(c))]
     for x, d in drives:
-        why = P.limit_words(x)
+        why = P.limit_words(x) if d.moving is not None else [f"no design: {d.notes[0]}"]
         if d.band is not None and not d.in_band:
             why.insert(0, f"its pulse outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
         if d.recovery and not d.recovery["band"].passed:
@@ -308,13 +310,16 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict) -> st
                       f"{face['elastic_limit_speed']:.0f} m/s, a pad {face['pad_over_struck']:.3g} times its struck "
                       f"body) and a restitution above {w['break_even']['chambered']:.3f} (the chambered break-even "
                       f"against (b)) where the chain has {k['restitution']:.3f}")
+    sabot_broken = [lim for lim in broken(b.limits) if lim.component.startswith("stop of sabot")]
+    push = next((lim for lim in b.limits if lim.component == "stop of sabot"), None)
+    if sabot_broken and push is not None:
+        change.append(f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push "
+                      f"(the one designed breaks {len(sabot_broken)}, the worst its {sabot_broken[0].quantity} "
+                      f"{sabot_broken[0].ratio:.3g} times), or a barrel vented before the sabot meets it")
     for lim in broken(b.limits):
-        if lim.component == "stop of sabot":
-            change.append(f"for (b), a sabot stop that holds the gas's {lim.value / 1e6:.3g} MN push (its absorber's "
-                          f"least force is {lim.limit / 1e6:.3g} MN), or a barrel vented before the sabot meets it")
-        elif lim.component.startswith("launcher's gas on the striker"):
-            change.append(f"for (b), the gas off the striker before the pulse ({lim.value / 1e6:.3g} MN on it "
-                          f"against the {lim.limit / 1e6:.3g} MN the column run may leave out): vents ahead of the "
+        if lim.component.startswith("launcher's gas on the striker"):
+            change.append(f"for (b), the gas off the striker before the pulse ({lim.value:.3g} times the pulse's "
+                          f"force on it, where the column run may leave out {lim.limit:.3g}): vents ahead of the "
                           "muzzle, or the payload a striker's length further out and the gun's travel cut by as much")
     if not centre["air_fires_sabot"]:
         r = centre["remedies"]
@@ -602,7 +607,8 @@ def _map_models(m, e: float, target, bd: dict) -> str:
             "need is the column beside it). The map leaves the models' checked range everywhere but the design's "
             "point: the dashpot is designed and its validity checked only there (the striker's law carries its wall "
             "ratio, floor and column over stroke), the amplifier's pads are not sized or run at the other points "
-            "(their restitution is carried over), its stresses and stops are not checked; the flying target is the "
+            "(their restitution is carried over), its stresses and stops are not checked, nor the gun's gas on the "
+            "striker and its sabot after the muzzle (section 8); the flying target is the "
             "fixture designer's target scaled by the same law, its dashpot not designed at the map's points"
             + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
                "its oil outweighs it; the oil's mass over the payload grows with the stroke, so at shorter, lower "
