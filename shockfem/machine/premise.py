@@ -65,7 +65,7 @@ from ..programmer.dashpot_design import DASHPOT, PulseSpec, striker_speed
 from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
-from .design import Machine, gun_thrust
+from .design import Machine, design_machine, gun_thrust
 from .fixture import DESIGN_EVALUATIONS, article_length, bore_radius, design_fixture
 from .boundary import (MAX_MASSES, Chain, best_chain, best_pad_restitution, break_even,
                        break_even_speed, sound_speed)
@@ -221,6 +221,22 @@ def amplifier_arrangement(m: Machine) -> Arrangement:
     out.feasible = m.feasible
     out.limits = list(m.limits)
     out.fixture_problems = fixture_problems(m)
+    return out
+
+
+def best_chain_arrangement(m: Machine, out_dir: str, starts: int = 3) -> Arrangement:
+    """(a*): the amplifier at its best, the machine designed again (``design.design_machine``, the same
+    fixture, its files in ``out_dir``) for the closed form's best chain (``boundary.best_chain``: the launch
+    speed and mass count of least gun) at the design's effective e and the fixture's striker speed; its own
+    pads then set its own effective e."""
+    e = m.amplifier.restitution
+    c = best_chain(e, m.fixture.striker_speed, m.spec.gas)
+    star = design_machine(dataclasses.replace(m.spec, masses=c.masses, launch_speed=c.launch_speed), out_dir,
+                          starts=starts, fixture=m.fixture)
+    out = amplifier_arrangement(star)
+    out.name = "(a*) amplifier, the best chain"
+    out.notes.insert(0, f"the closed form's best chain at e {e:.4f}: {c.masses} masses launched at "
+                        f"{c.launch_speed:.4g} m/s (Q {c.gun_ratio:.3g} against the bare striker)")
     return out
 
 

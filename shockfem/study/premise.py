@@ -20,8 +20,8 @@ from .system import SIZES as SYSTEM_SIZES
 # the default's sabot scan at three starts and five bores: on the representative 12 lb striker of
 # ``verify premise_boundary`` (498.8 kg at 412.2 m/s, the full-bore valve) it takes 6.4 s (3.1 s of CPU) on
 # the shared 2-core machine
-SIZES = {"smoke": {**SYSTEM_SIZES["smoke"], "pads": "estimate"},
-         "default": {**SYSTEM_SIZES["default"], "pads": None, "sabot_starts": 3, "sabot_bores": 5}}
+SIZES = {"smoke": {**SYSTEM_SIZES["smoke"], "pads": "estimate", "best_chain": True},
+         "default": {**SYSTEM_SIZES["default"], "pads": None, "sabot_starts": 3, "sabot_bores": 5, "best_chain": True}}
 
 
 def run_study(size: str = "default", out_dir: str = "results/premise", echo=print) -> str:

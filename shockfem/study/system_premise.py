@@ -167,6 +167,10 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     rep.heading(f"8. The premise: the amplifier against a direct striker and a flying target ({lb} lb)")
     echo("  (b) the striker fired directly")
     a = P.amplifier_arrangement(m)
+    stars = []
+    if cfg.get("best_chain"):
+        echo("  (a*) the amplifier at its best chain")
+        stars = [P.best_chain_arrangement(m, rep.path("best_chain"), cfg["starts"])]
     b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
@@ -177,7 +181,8 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     header = ARRANGEMENT_HEADER[:-2] + [f"gun reaches it (at the fixture's {m.fixture.striker_speed:.4g} m/s"
                                         + ("" if m.fixture.band_passed else ", a pulse that fails the band") + ")",
                                         "notes"]
-    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, b, b0, c, *d_rows)], ARRANGEMENT_FORMATS)
+    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, b0, c, *d_rows)],
+              ARRANGEMENT_FORMATS)
     rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
@@ -220,7 +225,7 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
                              for x, y in zip(drives, d_rows)])
     rep.value("premise_closed_form_at_spec", closed_spec)
     rep.value("direct_remedies_at_spec", remedies_spec)
-    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec)
+    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars)
     rep.lead(box) if answer_at_top else rep.text(box)
     return a, b, b0, c, target
 
@@ -262,20 +267,24 @@ def band_table(rep: Report, m, band: dict):
                                for label, x in band["rows"].items()} | {"flips": flips})
 
 
-def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict) -> str:
+def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars: list = ()) -> str:
     """The premise's answer, boxed, for the top of the report (``premise.answer``), from the arrangements'
-    numbers: each arrangement's verdict and what it breaks, what every arrangement with the fixture breaks,
-    and what would change it."""
+    numbers (``stars``: the amplifier at its best chain, (a*), where designed): each arrangement's verdict
+    and what it breaks, what every arrangement with the fixture breaks, and what would change it."""
     a, b, b0, c = abc
     fixture_ok = not a.fixture_problems
 
     def machine(x):
         return "FEASIBLE" if x.gun_feasible and x.feasible and fixture_ok else "NOT FEASIBLE"
-    rows = [(a, machine(a), P.limit_words(a)), (b, machine(b), P.limit_words(b)),
+    amplifiers = [a, *stars]
+    rows = [(x, machine(x), P.limit_words(x)) for x in amplifiers] + [(b, machine(b), P.limit_words(b)),
             (b0, "a lower bound, not a machine" + (" (its gun within the limits)" if b0.gun_feasible else ""),
              P.limit_words(b0)), (c, machine(c), P.limit_words(c))]
     for x, d in drives:
-        why = P.limit_words(x) if d.moving is not None else [f"no design: {d.notes[0]}"]
+        if d.moving is None:
+            rows.append((x, "NOT FEASIBLE", [f"no design: {d.notes[0]}"]))
+            continue
+        why = P.limit_words(x)
         if d.band is not None and not d.in_band:
             why.insert(0, f"its pulse outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
         if d.recovery and not d.recovery["band"].passed:
@@ -287,7 +296,8 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict) -> st
     ok = [x.name for x, word, _ in rows if word in ("FEASIBLE", "CANDIDATE")]
     centre = band["rows"]["the band's centre"]
     pays = centre["amplification"]
-    headline = (f"Velocity amplification does {'not ' if machine(a) != 'FEASIBLE' else ''}make a compact "
+    amplified = any(machine(x) == "FEASIBLE" for x in amplifiers)
+    headline = (f"Velocity amplification does {'' if amplified else 'not '}make a compact "
                 f"non-pyrotechnic tester feasible for the {lb} lb spec ({s.pulse.peak / G0:,.0f} g x "
                 f"{s.pulse.duration * 1e3:.3g} ms, within {s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, "
                 f"{s.max_pressure / PSI:,.0f} psi): "
