@@ -671,14 +671,17 @@ def _feasibility(a: Arrangement, b: Arrangement, bound: Arrangement | None, reme
     lim = (remedies or {}).get("limits")
     within = (f" ({lim['barrel'] / FT:.3g} ft, {lim['bore'] / IN:.3g} in, {lim['pressure'] / PSI:,.0f} psi)"
               if lim else "")
+    direct = (f"the direct gun (b) fires the striker at its {b.striker_speed:.4g} m/s but breaks its own limits ("
+              + "; ".join(limit_words(b)) + ")" if b.gun_feasible else
+              f"the direct gun (b) reaches {b.launch_speed:.4g} of the {b.striker_speed:.4g} m/s asked "
+              f"({b.launch_energy / 1e6:.4g} of {b.required_energy / 1e6:.4g} MJ)")
     words = [f"NEITHER arrangement is feasible within the limits{within}: the amplifier (a) misses its launch energy "
-             f"{_times(a.required_energy, a.launch_energy)} ({a.notes[-1]}); the direct gun (b) reaches "
-             f"{b.launch_speed:.4g} of the {b.striker_speed:.4g} m/s asked ({b.launch_energy / 1e6:.4g} of "
-             f"{b.required_energy / 1e6:.4g} MJ)"]
+             f"{_times(a.required_energy, a.launch_energy)} ({a.notes[-1]}); " + direct]
     if bound is not None:
-        words.append(f"only the lower bound (b0) is within them ({bound.machine_mass / 1e3:.3g} t, "
-                     f"{bound.machine_length:.3g} m long)" if bound.gun_feasible else
-                     "not even the lower bound (b0) is within them")
+        words.append(f"only the lower bound (b0)'s gun is within them ({bound.machine_mass / 1e3:.3g} t, "
+                     f"{bound.machine_length:.3g} m long" + (", its other limits broken: " + "; ".join(
+                         limit_words(bound)) if broken(bound.limits) else "") + ")" if bound.gun_feasible else
+                     "not even the lower bound (b0)'s gun is within them")
     if remedies:
         air, he = remedies["air"], remedies["helium"]
         words.append(f"what would change it for (b), the striker in its sabot ({remedies['launched']:.4g} kg) at the "

@@ -208,7 +208,7 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     remedies_spec, closed_spec = centre["remedies"], centre["closed"]
     boundary_table(rep, closed)
     band_table(rep, m, band)
-    gas_spring_section(rep, m, b.launched_mass - b.striker_mass)
+    springs = gas_spring_section(rep, m, b.launched_mass - b.striker_mass)
     words = (P.verdict(a, b, c, b0, closed, remedies, (closed_spec, remedies_spec, f.band_passed))[:-1] + "; "
              + D.verdict_words(drives, a, b) + ".")
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
@@ -225,7 +225,7 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
                              for x, y in zip(drives, d_rows)])
     rep.value("premise_closed_form_at_spec", closed_spec)
     rep.value("direct_remedies_at_spec", remedies_spec)
-    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars)
+    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars, springs)
     rep.lead(box) if answer_at_top else rep.text(box)
     return a, b, b0, c, target
 
@@ -267,10 +267,12 @@ def band_table(rep: Report, m, band: dict):
                                for label, x in band["rows"].items()} | {"flips": flips})
 
 
-def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars: list = ()) -> str:
+def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars: list = (),
+               springs: dict | None = None) -> str:
     """The premise's answer, boxed, for the top of the report (``premise.answer``), from the arrangements'
-    numbers (``stars``: the amplifier at its best chain, (a*), where designed): each arrangement's verdict
-    and what it breaks, what every arrangement with the fixture breaks, and what would change it."""
+    numbers (``stars``: the amplifier at its best chain, (a*), where designed; ``springs``: the chain with gas
+    springs, ``gas_spring_chain``): each arrangement's verdict and what it breaks, what every arrangement with
+    the fixture breaks, and what would change it."""
     a, b, b0, c = abc
     fixture_ok = not a.fixture_problems
 
@@ -320,6 +322,16 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
                       f"{face['elastic_limit_speed']:.0f} m/s, a pad {face['pad_over_struck']:.3g} times its struck "
                       f"body) and a restitution above {w['break_even']['chambered']:.3f} (the chambered break-even "
                       f"against (b)) where the chain has {k['restitution']:.3f}")
+    best = (springs or {}).get("best_chain") or {}
+    if best.get("feasible") and best.get("guns"):
+        q_sw, q_ch = best["guns"]["simple_wave"]["Q"], best["guns"]["chambered"]["Q"]
+        shares = [i["mass_share"] for i in best.get("interfaces", [])]
+        change.append(f"for (a), gas springs at every interface: their best chain needs {q_sw:.3g} (simple-wave) "
+                      f"and {q_ch:.3g} (chambered) of (b)'s gun"
+                      + (f", with sleeves {min(shares):.3g} to {max(shares):.3g} times their struck bodies, which "
+                         "the chain's masses leave out" if shares else "")
+                      + (", and springs that break their limits (section 8's gas-spring table)"
+                         if any(i["broken"] for i in best.get("interfaces", [])) else ""))
     sabot_broken = [lim for lim in broken(b.limits) if lim.component.startswith("stop of sabot")]
     push = next((lim for lim in b.limits if lim.component == "stop of sabot"), None)
     if sabot_broken and push is not None:
@@ -453,6 +465,7 @@ def gas_spring_section(rep: Report, m, sabot: float):
                       "{}"])
     rep.value("gas_spring_chain", k)
     rep.text(_gas_spring_words(k, direct, rows))
+    return k
 
 
 def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
