@@ -797,6 +797,7 @@ def _specified_words(k: dict, remedies: dict, band_passed: bool, fixture_speed: 
     air, he = remedies["air"], remedies["helium"]
     bare = remedies.get("bare", {}).get("air", {})
     fits = max(air["chambered_speed"], air["speed"]) >= k["striker_speed"]
+    bare_fits = bool(bare) and max(bare["chambered_speed"], bare["speed"]) >= k["striker_speed"]
     words = (f"the comparison above is at the designed fixture's {fixture_speed:.4g} m/s"
              + (", a pulse that fails the band" if not band_passed else "")
              + f"; at the speed the specification asks ({k['striker_speed']:.4g} m/s, the rigid collision law for "
@@ -805,7 +806,9 @@ def _specified_words(k: dict, remedies: dict, band_passed: bool, fixture_speed: 
              f"{air['chambered_speed']:.4g} m/s" + (f" and the bare striker {bare['chambered_speed']:.4g} m/s"
                                                     if bare else "")
              + (": an air gun within the limits could fire it" if fits else
-                f": no air gun within the limits fires it; in helium the infinitely chambered gun gives "
+                ": no air gun within the limits fires it in its sabot"
+                + (" (the bare striker, the lower bound (b0), it would)" if bare_fits else "")
+                + f"; in helium the infinitely chambered gun gives "
                 f"{he['chambered_speed']:.4g} m/s (the simple-wave gun {he['speed']:.4g}), "
                 + ("enough" if he["chambered_speed"] >= k["striker_speed"] else "short of it too")
                 + f", and in air a barrel of {air['chambered_barrel'] / FT:.3g} ft (chambered) would fire it"))
