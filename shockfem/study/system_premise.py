@@ -320,8 +320,10 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
         change.append(f"for (a), interfaces that return their energy at {face['closing_speed']:.0f} m/s (the best "
                       f"chain's fastest at the band's centre; the library's best solid does so only to "
                       f"{face['elastic_limit_speed']:.0f} m/s, a pad {face['pad_over_struck']:.3g} times its struck "
-                      f"body) and a restitution above {w['break_even']['chambered']:.3f} (the chambered break-even "
-                      f"against (b)) where the chain has {k['restitution']:.3f}")
+                      f"body) that keep a restitution above {w['break_even']['chambered']:.3f} (the chambered "
+                      f"break-even against (b)): the chain's {k['restitution']:.3f} is its pads' estimate, and their "
+                      f"runs at 99 m/s restitute {min(P.MEASURED_RESTITUTIONS.values()):.2f} to "
+                      f"{max(P.MEASURED_RESTITUTIONS.values()):.2f}")
     best = (springs or {}).get("best_chain") or {}
     if best.get("feasible") and best.get("guns"):
         q_sw, q_ch = best["guns"]["simple_wave"]["Q"], best["guns"]["chambered"]["Q"]
