@@ -428,3 +428,44 @@ def test_gas_spring_chains_q_carries_the_direct_guns_sabot():
     assert g["Q"] == pytest.approx(g["Q_bare"] / load, rel=1e-12)
     assert g["direct"] == pytest.approx(load * g["direct_bare"], rel=1e-12)
     assert B.best_chain(0.632, 412.2, direct_load=load).gun_ratio == pytest.approx(g["Q"], rel=1e-6)
+
+
+def _lone_slug_layout(striker_travel: float, push: float):
+    """``layout.place`` for one body (the premise's direct striker) on a hand-built gun: a 36 in x 20 ft gun
+    firing a 500 kg, 1.5 m striker; the fixture's figures any that place reads."""
+    import dataclasses
+    from shockfem.launcher.design import LauncherDesign, weights
+    from shockfem.launcher.gun import fire
+    from shockfem.machine.launcher import SIZING, launcher_of, machine_gun
+    from shockfem.machine.layout import place
+    g = dataclasses.replace(machine_gun(500.0, "air"), bore=0.9144, length=6.096, reservoir_pressure=34.47e6,
+                            reservoir_volume=20.0)
+    shot = fire(g, samples=2)
+    wb, wt = weights(g, SIZING)
+    L = launcher_of(LauncherDesign(g, wb + wt, wb, wt, shot.muzzle_velocity, shot.muzzle_velocity,
+                                   shot.peak_acceleration, shot.efficiency, True), 500.0)
+    fixture = types.SimpleNamespace(
+        housing_steel_mass=400.0, housing_steel="high_strength_steel", floor_thickness=0.05, column=1.0,
+        liquid_mass=20.0, pin_mass=0.0, bore_radius=0.036, piston_mass=0.5, article_length=0.2,
+        article_diameter=0.066, article_mass=5.44, striker_mass=500.0, after_speed_striker=400.0,
+        striker_travel=striker_travel, payload_mass=5.9, after_speed_payload=20.0, payload_travel=2.0,
+        striker_speed=412.0)
+    body = {"name": "striker", "shape": "carrier", "diameter": 0.26, "length": 1.5, "bore": 0.072, "bore_depth": 1.3}
+    amp = types.SimpleNamespace(bodies=[body], masses=[500.0], stages=[], gaps=[])
+    return place(L, amp, fixture, 7850.0, 460e6, 5000 * 9.81, "high_strength_steel", [], 120e6, 1e8, push)
+
+
+def test_lone_slugs_payload_waits_at_the_muzzle_and_its_stop_is_pushed_while_its_base_is_in_the_bore():
+    """A lone slug (the direct striker) reaches the payload at the muzzle: the piston 0.05 m past the barrel's end
+    (``GAP_TO_PAYLOAD``), not inside the barrel; its stop carries the push only where its base is still in the bore
+    when it meets it (the stop its travel over the record plus ``STOP_MARGIN``, 0.05 m, past the muzzle, against
+    its 1.5 m length: in for a 0.1 m travel, out for a 3 m one)."""
+    from shockfem.machine.layout import GAP_TO_PAYLOAD
+    lay = _lone_slug_layout(0.1, 2e6)
+    items = {i.name: i for i in lay.items}
+    muzzle = items["barrel"].x0 + items["barrel"].length
+    assert items["piston"].x0 == pytest.approx(muzzle + GAP_TO_PAYLOAD, rel=1e-12)
+    stop = next(s for s in lay.stops if s.body == "striker")
+    assert stop.push == 2e6 and stop.limits[-1].value == 2e6
+    far = next(s for s in _lone_slug_layout(3.0, 2e6).stops if s.body == "striker")
+    assert far.push == 0.0 and all("push" not in lim.quantity for lim in far.limits)
