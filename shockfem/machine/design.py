@@ -27,7 +27,7 @@ from .energy import EnergyTable, chain_record, energy_table
 from .fixture import DESIGN_EVALUATIONS, Fixture, design_fixture
 from ..launcher.vessel import max_pressure
 from ..programmer.fixed_point import STRIKER_TOLERANCE
-from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher
+from .launcher import SIZING as LAUNCHER_SIZING, Launcher, design_launcher, muzzle_state
 from .layout import GUIDES_PER_BODY, Layout, frame_force, place, rail_section, shoe_length
 from .limits import Limit, broken, model_range
 from .spec import REFERENCE_ARTICLE, MachineSpec
@@ -131,7 +131,7 @@ def design_machine(spec: MachineSpec, out_dir: str, echo=None, starts: int = 3, 
     record = record_of(spec, amp) if amp.masses else None
     speeds = [record.final_speeds[b["name"]] for b in amp.bodies] if record else []
     layout = place(launcher, amp, fixture, rho, S, spec.catch, spec.material, speeds, spec.oil_pressure,
-                   gun_thrust(launcher))
+                   gun_thrust(launcher), muzzle_state(launcher.design.gun).push)
     loads = operating_loads(spec, fixture, amp, launcher, layout, S)
     limits = part_limits(spec, fixture, amp, layout, loads) + stored_gas_limits(launcher)
     energy = energy_table(launcher, amp, fixture, layout.stops, record)

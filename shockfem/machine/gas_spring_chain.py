@@ -11,8 +11,9 @@ again at that e until it settles.  The same is done for the best chain of the cl
 (``boundary.best_chain``: its launch speed and mass count at the settled e, then settled again at those), by
 the simple-wave gun and by the infinitely chambered gun (the bound on any gun).
 What it gains is then read as the premise reads it: the first mass and the launch energy against the
-direct gun's (the striker alone, (b0)), and each gun's p0 A L = KE / eta (``boundary.gun_efficiency``,
-simple-wave and infinitely chambered) and Q.  Range: the gas spring's (its e an upper bound, its limits
+direct gun's, and each gun's p0 A L = KE / eta (``boundary.gun_efficiency``, simple-wave and infinitely
+chambered) and Q, against the direct machine the premise admits (the striker in its sabot, (b): its gun
+(M + m_sabot) / M times the bare striker's) and against the bare striker ((b0), the lower bound).  Range: the gas spring's (its e an upper bound, its limits
 each interface's), the closed form's (rigid bodies, the first pass), and the springs' sleeves left out of
 the chain's masses (their mass over the struck body's is among each spring's limits).
 """
@@ -78,42 +79,50 @@ def _interface(f, run: dict, pad) -> dict:
             "broken": over}
 
 
-def guns(striker: float, speed: float, launched: float, launch_speed: float, gas: str) -> dict:
-    """Each gun's p0 A L [J] (KE over the ideal gun's efficiency), simple-wave and chambered, and Q."""
+def guns(striker: float, speed: float, launched: float, launch_speed: float, gas: str, direct_load: float = 1.0) -> dict:
+    """Each gun's p0 A L [J] (KE over the ideal gun's efficiency), simple-wave and chambered, and Q: against the
+    direct gun firing the bare striker (``Q_bare``, ``direct_bare``) and against the direct machine the premise
+    admits, which fires the striker in its sabot (``Q``, ``direct``: the bare one times ``direct_load`` =
+    (M + m_sabot) / M, as ``premise.closed_form``'s "with_sabot"; the chain's masses fill the bore)."""
     K, E1 = 0.5 * striker * speed ** 2, 0.5 * launched * launch_speed ** 2
     out = {}
     for law, chambered in (("simple_wave", False), ("chambered", True)):
-        direct = K / gun_efficiency(speed, gas, chambered)
+        bare = K / gun_efficiency(speed, gas, chambered)
         amp = E1 / gun_efficiency(launch_speed, gas, chambered)
-        out[law] = {"direct": direct, "amplifier": amp, "Q": amp / direct}
+        out[law] = {"direct_bare": bare, "direct": bare * direct_load, "amplifier": amp, "Q_bare": amp / bare,
+                    "Q": amp / (bare * direct_load), "direct_load": direct_load}
     return out
 
 
-def gas_spring_chain(m, white_paper_e: float = 0.9) -> dict:
+def gas_spring_chain(m, white_paper_e: float = 0.9, sabot: float = 0.0) -> dict:
     """The design's chain and the best chain with gas springs (module docstring), and the design's chain at
-    ``white_paper_e`` for comparison."""
+    ``white_paper_e`` for comparison; Q against the direct gun firing the striker in its ``sabot`` [kg] (the
+    premise's (b)) and bare (``guns``)."""
     s, f = m.spec, m.fixture
     M, V = f.striker_mass, f.striker_speed
+    load = (M + sabot) / M
     spec_chain = settle(s, f)
-    out = {"striker_mass": M, "striker_speed": V, "striker_energy": 0.5 * M * V * V, "spec_chain": spec_chain}
+    out = {"striker_mass": M, "striker_speed": V, "striker_energy": 0.5 * M * V * V, "spec_chain": spec_chain,
+           "sabot": sabot, "direct_load": load}
     if spec_chain["feasible"]:
-        spec_chain["guns"] = guns(M, V, spec_chain["first_mass"], s.launch_speed, s.gas)
+        spec_chain["guns"] = guns(M, V, spec_chain["first_mass"], s.launch_speed, s.gas, load)
         c = best_chain(spec_chain["restitution"], V, s.gas)
         best = settle(dataclasses.replace(s, masses=c.masses, launch_speed=c.launch_speed), f,
                       spec_chain["restitution"])
         if best["feasible"]:
-            best["guns"] = guns(M, V, best["first_mass"], c.launch_speed, s.gas)
-            best["best_chain_Q"] = best_chain(best["restitution"], V, s.gas).gun_ratio
-            best["best_chain_Q_chambered"] = best_chain(best["restitution"], V, s.gas, chambered=True).gun_ratio
+            best["guns"] = guns(M, V, best["first_mass"], c.launch_speed, s.gas, load)
+            best["best_chain_Q"] = best_chain(best["restitution"], V, s.gas, direct_load=load).gun_ratio
+            best["best_chain_Q_chambered"] = best_chain(best["restitution"], V, s.gas, chambered=True,
+                                                        direct_load=load).gun_ratio
         out["best_chain"] = best
         # the chambered gun's own best chain at the settled e, settled again on its own closing speeds
         cc = best_chain(spec_chain["restitution"], V, s.gas, chambered=True)
         chambered = settle(dataclasses.replace(s, masses=cc.masses, launch_speed=cc.launch_speed), f,
                            spec_chain["restitution"])
         if chambered["feasible"]:
-            chambered["guns"] = guns(M, V, chambered["first_mass"], cc.launch_speed, s.gas)
+            chambered["guns"] = guns(M, V, chambered["first_mass"], cc.launch_speed, s.gas, load)
         out["best_chain_chambered"] = chambered
     d = design(s.architecture, M, V, s.launch_speed, white_paper_e, s.masses)
     out["at_white_paper_e"] = {"restitution": white_paper_e, "first_mass": d.masses[0] if d.feasible else math.nan,
-                               "guns": guns(M, V, d.masses[0], s.launch_speed, s.gas) if d.feasible else None}
+                               "guns": guns(M, V, d.masses[0], s.launch_speed, s.gas, load) if d.feasible else None}
     return out

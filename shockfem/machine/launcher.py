@@ -13,12 +13,13 @@ one, the more of its reach.  Both arrangements get the same valve, so the compar
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from dataclasses import dataclass
 
 from ..launcher.design import Limits, Sizing, lightest_launcher
 from ..launcher.gas import GASES
-from ..launcher.gun import Gun, white_paper_gun
+from ..launcher.gun import Gun, fire, white_paper_gun
 from ..launcher.output import sizing
 from .spec import MachineSpec
 
@@ -72,3 +73,24 @@ def launcher_of(d, launched: float) -> Launcher:
                     gas.mass_for(g.reservoir_pressure, g.reservoir_temperature, g.reservoir_volume),
                     g.reservoir_pressure * g.reservoir_volume / (gas.gamma - 1),
                     0.5 * launched * d.muzzle_velocity ** 2)
+
+
+@dataclass(frozen=True)
+class MuzzleState:
+    """The gas when the gun's projectile ends its travel, from the gun's own shot (``launcher.gun.fire``)."""
+    base_pressure: float          # on the projectile's base [Pa] (the lumped gun's, Lagrange's gradient applied)
+    reservoir_pressure: float     # the tank's, its valve still open (no valve: the barrel's) [Pa]
+    push: float                   # the base pressure on the bore's area [N]
+
+
+@functools.lru_cache(maxsize=64)
+def muzzle_state(gun: Gun) -> MuzzleState:
+    """The gas at the end of ``gun``'s travel: the pressure that still pushes whatever fills the bore there.
+    The barrel is full of gas at that pressure and the valve is open, so a body stopped at the muzzle is
+    pushed on (``stops``' pushed body); the push falls only as the barrel vents (past the muzzle, through a
+    stripped sabot's ring) and rises toward the tank's pressure where the stopped body closes the bore."""
+    shot = fire(gun, samples=2)
+    p = float(shot.history["p_base"][-1])
+    # with no valve the reservoir is the barrel's own gas
+    tank = shot.history["p_barrel" if gun.valve_area is None else "p_reservoir"][-1]
+    return MuzzleState(p, float(tank), p * gun.area)

@@ -10,7 +10,12 @@ catcher.
   its limits) at the force its inertia allows (a body stopped at one end at deceleration a carries
   rho L a at the stop, at most the allowable S); the payload's catcher at the spec's deceleration (half
   the test pulse's peak by default: the arrest must not be the harsher shock).  Each absorber takes its
-  own length on the axis, after the previous one.
+  own length on the axis, after the previous one.  The gun's slug (the first body) leaves its travel with
+  its front at the muzzle and the barrel full of gas behind it: where its base is still in the bore when
+  it meets its stop, the stop is designed against that gas's push (``stops.pushed_stop``; the push the
+  gun's base pressure at the end of its travel on the bore, ``launcher.muzzle_state``, held over the
+  stroke: it falls as the barrel vents and rises toward the tank's pressure where the stopped body closes
+  the bore with the valve open).
 * Guides: two rails under every body, sliding shoes under it (its weight their load): catalogue
   rolling carriages run at most ``ROLLING_CARRIAGE_SPEED`` (item Industrietechnik, PS 4 bearing carriages:
   v max 5 m/s), far below the bodies' speeds, so the shoes slide (wear strips on hardened rails).
@@ -24,7 +29,7 @@ from dataclasses import asdict, dataclass, field
 
 from ..programmer.dashpot_design import DASHPOT, OIL
 from ..programmer.housing import HOUSING_STEELS
-from .stops import Stop, design_stop
+from .stops import Stop, design_stop, pushed_stop
 
 ROLLING_CARRIAGE_SPEED = 5.0       # [m/s], item PS 4 bearing carriages (catalogue)
 GUIDES_PER_BODY = 2               # rails under a body, one sliding shoe on each
@@ -109,11 +114,15 @@ def frame_force(stops: list[Stop], recoil: float) -> float:
 
 
 def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, material: str,
-          final_speeds: list[float], pressure: float, max_force: float = math.inf) -> Layout:
+          final_speeds: list[float], pressure: float, max_force: float = math.inf, push: float = 0.0) -> Layout:
     """Every component's place on the axis, the stops, the guides and the frame.  ``final_speeds``: each
     amplifier mass's speed after the chain (the striker's is the fixture's after the pulse); ``pressure``:
     the dashpot's design pressure (the hydraulic buffers' at most); ``max_force``: the most a stop may ask of
-    the frame."""
+    the frame; ``push``: the gun's gas on the bore at the end of its travel [N] (``launcher.muzzle_state``),
+    which the gun's slug (the first body) carries at its stop where its base is still in the bore when it
+    meets it (``stops.pushed_stop``).  The slug's front reaches the muzzle at the end of the gun's travel; a
+    lone slug (the premise's direct striker) finds the payload waiting there, ``GAP_TO_PAYLOAD`` past the
+    muzzle."""
     g, size = launcher.design.gun, launcher.sizing
     items: list[Item] = []
     tank = size["tank"]
@@ -158,7 +167,9 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         else:
             items.append(Item(b["name"], "mass", rear, b["length"], b["diameter"], 0.0, m, material))
         fronts.append(rear + b["length"])
-    mouth = fronts[-1]
+    muzzle = x_breech + L_barrel
+    # the striker's mouth at first contact: at rest ahead of the chain, or a lone slug's front at the muzzle
+    mouth = fronts[-1] if len(bodies) > 1 else muzzle
     piston_x = mouth + GAP_TO_PAYLOAD
     t_piston = DASHPOT["piston_thickness"]
     items.append(Item("piston", "piston", piston_x, t_piston, 2 * fixture.bore_radius, 0.0, fixture.piston_mass,
@@ -178,21 +189,28 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         stops.append(s)
         stop_end[s.body] = x + s.length
         return stop_end[s.body]
+
+    def slug_push(k: int, x: float) -> float:
+        """The gas's push on body ``k`` at its stop at ``x``: the first body's, its base still in the bore."""
+        return push if k == 0 and x - slug["length"] < muzzle else 0.0
+    why = "the gun's gas at the end of its travel on the bore (its base pressure, launcher.muzzle_state)"
     # each amplifier mass's ring just past the next body, after the previous ring's absorber
     ring_end = 0.0
     for k, b in enumerate(bodies[:-1]):
         inner = bodies[k + 1]["diameter"] + RING_CLEARANCE
         # the collar the stop meets reaches past the ring's bore even where the next body is the wider
         outer = RING_OUTER * max(b["diameter"], inner)
-        s = design_stop(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable,
-                        ring_area(outer, inner), pressure, None, max_force)
-        ring_end = add_stop(s, f"stop_{b['name']}", max(fronts[k + 1] + STOP_MARGIN, ring_end), outer, inner)
+        x = max(fronts[k + 1] + STOP_MARGIN, ring_end)
+        s = pushed_stop(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable,
+                        ring_area(outer, inner), pressure, slug_push(k, x), why, None, max_force)
+        ring_end = add_stop(s, f"stop_{b['name']}", x, outer, inner)
     striker = bodies[-1]
     inner = 2 * fixture.bore_radius + RING_CLEARANCE
-    s = design_stop("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable,
-                    ring_area(RING_OUTER * striker["diameter"], inner), pressure, None, max_force)
-    ring_end = add_stop(s, "stop_striker", max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end),
-                        RING_OUTER * striker["diameter"], inner)
+    x = max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end)
+    s = pushed_stop("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable,
+                    ring_area(RING_OUTER * striker["diameter"], inner), pressure, slug_push(len(bodies) - 1, x), why,
+                    None, max_force)
+    ring_end = add_stop(s, "stop_striker", x, RING_OUTER * striker["diameter"], inner)
     c = design_stop("payload", fixture.payload_mass, fixture.after_speed_payload, fixture.article_length, rho,
                     allowable, ring_area(RING_OUTER * 2 * fixture.bore_radius, 0.0), pressure, catch, max_force)
     add_stop(c, "catcher", max(payload_front + fixture.payload_travel + STOP_MARGIN, ring_end),

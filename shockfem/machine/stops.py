@@ -38,11 +38,14 @@ with its broken limits in the machine's verdict):
   buffer takes the rest.  The water it throws out is refilled each shot.  Limit: the scoop's face carries
   the stagnation pressure 2 rho_w v0^2, at most the allowable.
 
-A body pushed on while it is stopped (the gas drive's piston, its gas behind it): the absorber must take the
-body's energy and the push's work over its stroke, F s = m v^2 / 2 + F_p s, so only a force above the push
-stops it (a buffer's stroke m v^2 / (2 (F - F_p)); a honeycomb's with sigma_c less the push over its area), and
-at rest it holds the push (a honeycomb below its crush stress, a buffer's rod bottomed on its cylinder's end).
-The water brake's force falls with the speed, so it is left out there.
+A body pushed on while it is stopped (the gas drive's piston, its gas behind it; a gun's slug or a sabot
+stopped at the muzzle, the barrel's gas behind it): the absorber must take the body's energy and the push's
+work over its stroke, F s = m v^2 / 2 + F_p s, so only a force above the push stops it (a buffer's stroke
+m v^2 / (2 (F - F_p)); a honeycomb's with sigma_c less the push over its area), and at rest it holds the push
+(a honeycomb below its crush stress, a buffer's rod bottomed on its cylinder's end).  The water brake's force
+falls with the speed, so it is left out there.  ``pushed_stop`` puts the push against the absorber's least
+force (``Stop.hold``: a buffer's force, a block's static crush) among the stop's limits; where no absorber's
+force exceeds it the body never stops, and that limit is broken.
 
 The stop's face: the ring the absorber presses on, from the bore that lets the next body pass out to
 a collar 1.3 times the body's diameter (the stop ring as drawn).
@@ -111,6 +114,8 @@ class Stop:
     consumed: float = 0.0      # mass used up each shot [kg]
     detail: str = ""
     limits: list = field(default_factory=list)   # ``Limit``s of the absorber
+    hold: float = math.nan     # the least force with which it stops the body: a buffer's, a block's static crush [N]
+    push: float = 0.0          # a steady force on the body while it is stopped (``pushed_stop``) [N]
 
     def as_dict(self) -> dict:
         d = asdict(self)
@@ -174,7 +179,7 @@ def hydraulic_buffer(body: str, mass: float, speed: float, force: float, ring_ar
               "E / (rho A x c_p): the swept oil keeps the energy", OIL_TEMPERATURE_SOURCE,
               sized=heating >= OIL_TEMPERATURE_RISE * (1 - 1e-9)),
     ]
-    return {"kind": "hydraulic buffer", "stroke": stroke, "force": force, "length": length,
+    return {"kind": "hydraulic buffer", "stroke": stroke, "force": force, "hold": force, "length": length,
             "absorber_mass": steel + oil, "consumed": 0.0, "limits": limits,
             "detail": f"bore {2e3 * r:.0f} mm at {pressure / 1e6:.0f} MPa, wall {1e3 * (R - r):.0f} mm, oil {oil:.3g} kg"}
 
@@ -209,6 +214,7 @@ def crushable(body: str, mass: float, speed: float, force: float, ring_area: flo
               "the steady-shock crush model's range", f"Reid and Peng 1997; {HONEYCOMB_SOURCE}"),
     ]
     return {"kind": f"crushable ({grade} aluminium honeycomb)", "stroke": stroke, "force": area * peak_stress,
+            "hold": area * sigma_c,
             "length": block + plate, "absorber_mass": consumed + rho_steel * area * plate, "consumed": consumed,
             "limits": limits,
             "detail": f"{area * 1e4:.3g} cm^2 x {block:.3g} m, crush {sigma_c / 1e6:.3g} MPa static, "
@@ -230,6 +236,7 @@ def water_brake(body: str, mass: float, speed: float, force: float, ring_area: f
     limits += buffer["limits"]
     water = WATER_DENSITY * scoop * trough
     return {"kind": "water brake, then a hydraulic buffer", "stroke": trough + buffer["stroke"], "force": force,
+            "hold": buffer["hold"],
             "length": trough + buffer["length"], "absorber_mass": buffer["absorber_mass"], "consumed": water,
             "limits": limits,
             "detail": f"scoop {scoop * 1e4:.3g} cm^2, trough {trough:.3g} m to {v_b:.0f} m/s, {water:.3g} kg of water "
@@ -258,4 +265,24 @@ def design_stop(body: str, mass: float, speed: float, length: float, rho: float,
     best = min(held, key=lambda o: o["length"]) if held else min(options, key=worst)
     a = best["force"] / mass
     return Stop(body, mass, speed, a, best["stroke"], best["force"], 0.5 * mass * speed * speed, rho * length * a, why,
-                best["kind"], best["length"], best["absorber_mass"], best["consumed"], best["detail"], best["limits"])
+                best["kind"], best["length"], best["absorber_mass"], best["consumed"], best["detail"], best["limits"],
+                best["hold"], push)
+
+
+def pushed_stop(body: str, mass: float, speed: float, length: float, rho: float, allowable: float, ring_area: float,
+                pressure: float, push: float, why: str, deceleration: float | None = None,
+                max_force: float = math.inf) -> Stop:
+    """The stop of a body pushed on by ``push`` [N] while it is stopped (``why``: where the push comes from):
+    ``design_stop`` with the push, and the push against the absorber's least force (``Stop.hold``) among its
+    limits; where no absorber's force exceeds the push, the body never stops: the stop designed without it,
+    that limit broken by the push over its force.  No push: ``design_stop``'s stop, no limit added."""
+    args = (body, mass, speed, length, rho, allowable, ring_area, pressure, deceleration, max_force)
+    if push <= 0:
+        return design_stop(*args)
+    s = design_stop(*args, push) or design_stop(*args)
+    s.push = push
+    s.limits = list(s.limits) + [
+        Limit(f"stop of {body}", "the push on the body over its absorber's least force", push, s.hold, "N",
+              f"{why}, held over the stroke: below the absorber's least force the body never stops",
+              "a pushed body (machine.stops, module docstring)")]
+    return s

@@ -75,11 +75,20 @@ class PulseSpec:
         """The record a band check needs after first contact: the pulse and the window after it."""
         return self.duration * (1.0 + TOLERANCE["after"]) * 1.2
 
+    def band_velocity_change(self) -> float:
+        """The velocity change [m/s] at the centre of what the band accepts: the checked shape's ideal pulse's
+        (a rectangle's is MIL-STD-810's trapezoid's, 0.9 A T), not the specified shape's own (A T)."""
+        return shapes.specified(self.checked_shape, self.peak, self.duration).velocity_change
+
+    def band_velocity_range(self) -> tuple[float, float]:
+        """The least and the largest velocity change [m/s] the band accepts: its centre
+        (``band_velocity_change``) less and plus the band's tolerance."""
+        dv, tol = self.band_velocity_change(), TOLERANCE["velocity_change"]
+        return (1.0 - tol) * dv, (1.0 + tol) * dv
+
     def least_velocity_change(self) -> float:
-        """The least velocity change [m/s] the band accepts: the checked shape's (a rectangle's is
-        MIL-STD-810's trapezoid's, 0.9 A T) less the band's tolerance, not the specified shape's own."""
-        ideal = shapes.specified(self.checked_shape, self.peak, self.duration)
-        return (1.0 - TOLERANCE["velocity_change"]) * ideal.velocity_change
+        """The least velocity change [m/s] the band accepts (``band_velocity_range``)."""
+        return self.band_velocity_range()[0]
 
     def placed_ideal(self, t, a, pulse):
         """The specified pulse placed on a measured one."""

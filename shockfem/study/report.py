@@ -49,6 +49,15 @@ class Report:
             self.lines += [p, ""]
         self.write()
 
+    def lead(self, *paragraphs: str):
+        """Paragraphs at the top of the report, under its title: a study's answer, written once the sections
+        below have computed its numbers."""
+        at = 2
+        for p in paragraphs:
+            self.lines[at:at] = [p, ""]
+            at += 2
+        self.write()
+
     def heading(self, title: str, level: int = 2):
         self.lines += [f"{'#' * level} {title}", ""]
 

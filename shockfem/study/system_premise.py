@@ -4,6 +4,7 @@ side by side (``study/system.py`` runs them after the machines are designed)."""
 from __future__ import annotations
 
 import copy
+import math
 import os
 
 from ..amplifier import rigid
@@ -159,12 +160,17 @@ def _arrangement_row(x) -> list:
             x.machine_mass, x.machine_length, "yes" if x.gun_feasible else "NO", "; ".join(x.notes)]
 
 
-def premise(rep: Report, m, cfg, echo) -> tuple:
-    """The three arrangements for the same pulse through the same fixture, and the verdict."""
+def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
+    """The three arrangements for the same pulse through the same fixture, and the verdict; the answer boxed
+    (``answer_box``) after it, or at the report's top with ``answer_at_top`` (the premise's own study)."""
     lb = round(m.spec.article_mass / LB)
     rep.heading(f"8. The premise: the amplifier against a direct striker and a flying target ({lb} lb)")
     echo("  (b) the striker fired directly")
     a = P.amplifier_arrangement(m)
+    stars = []
+    if cfg.get("best_chain"):
+        echo("  (a*) the amplifier at its best chain")
+        stars = [P.best_chain_arrangement(m, rep.path("best_chain"), cfg["starts"])]
     b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
@@ -175,7 +181,8 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     header = ARRANGEMENT_HEADER[:-2] + [f"gun reaches it (at the fixture's {m.fixture.striker_speed:.4g} m/s"
                                         + ("" if m.fixture.band_passed else ", a pulse that fails the band") + ")",
                                         "notes"]
-    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, b, b0, c, *d_rows)], ARRANGEMENT_FORMATS)
+    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, b0, c, *d_rows)],
+              ARRANGEMENT_FORMATS)
     rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
@@ -194,13 +201,14 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
     f = m.fixture
     closed = P.closed_form(m, sabot=b.launched_mass - b.striker_mass)
     remedies = P.direct_remedies(m.spec, f.striker_mass, f.striker_speed, 2 * f.housing_outer_radius)
-    # the premise at the speed the specification asks (the map's law at the spec's point), its direct
-    # machine the striker in the sabot the limits' bore and pressure need
-    V_spec = P.specified_striker_speed(m)
-    remedies_spec = P.direct_remedies(m.spec, f.striker_mass, V_spec, 2 * f.housing_outer_radius)
-    closed_spec = P.closed_form(m, sabot=remedies_spec["launched"] - f.striker_mass, speed=V_spec)
+    # the premise at the speed the specification asks (the band's centre, the map's law at the spec's point)
+    # and across the band's range, its direct machine the striker in the sabot the limits' bore and pressure need
+    band = P.band_verdicts(m)
+    centre = band["rows"]["the band's centre"]
+    remedies_spec, closed_spec = centre["remedies"], centre["closed"]
     boundary_table(rep, closed)
-    gas_spring_section(rep, m)
+    band_table(rep, m, band)
+    springs = gas_spring_section(rep, m, b.launched_mass - b.striker_mass)
     words = (P.verdict(a, b, c, b0, closed, remedies, (closed_spec, remedies_spec, f.band_passed))[:-1] + "; "
              + D.verdict_words(drives, a, b) + ".")
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
@@ -217,7 +225,137 @@ def premise(rep: Report, m, cfg, echo) -> tuple:
                              for x, y in zip(drives, d_rows)])
     rep.value("premise_closed_form_at_spec", closed_spec)
     rep.value("direct_remedies_at_spec", remedies_spec)
+    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars, springs)
+    rep.lead(box) if answer_at_top else rep.text(box)
     return a, b, b0, c, target
+
+
+def band_table(rep: Report, m, band: dict):
+    """The premise at the velocity changes the band accepts (``premise.band_verdicts``)."""
+    rows = []
+    for label, x in band["rows"].items():
+        r, k = x["remedies"], x["closed"]
+        best, w, face = k["best"] or {}, k["with_sabot"]["best"] or {}, k["interface"] or {}
+        rows.append([label, x["velocity_change"], x["striker_speed"], r["air"]["chambered_speed"],
+                     r["bare"]["air"]["chambered_speed"], r["helium"]["chambered_speed"],
+                     "yes" if x["air_fires_sabot"] else "no", "yes" if x["air_fires_bare"] else "no",
+                     best.get("gun_ratio", float("nan")), w.get("gun_ratio", float("nan")),
+                     face.get("closing_speed", float("nan")), face.get("pad_over_struck", float("nan")),
+                     x["amplification"] or "-"])
+    rep.table("premise_band", ["velocity change", "dv [m/s]", "striker speed [m/s]",
+                               "chambered air gun at every limit, striker in its sabot [m/s]",
+                               "the same, bare striker [m/s]", "chambered helium gun, in its sabot [m/s]",
+                               "an air gun within the limits fires it in its sabot", "... bare",
+                               "Q, bare striker [-]", "Q, in its sabot [-]", "fastest interface [m/s]",
+                               "pad that held it over struck body [-]", "amplification"], rows,
+              ["{}", "{:.1f}", "{:.1f}", "{:.4g}", "{:.4g}", "{:.4g}", "{}", "{}", "{:.3g}", "{:.3g}", "{:.0f}",
+               "{:.3g}", "{}"])
+    lo, hi = m.spec.pulse.band_velocity_range()
+    names = {"air_fires_sabot": "whether an air gun within the limits fires the striker in its sabot",
+             "air_fires_bare": "whether it fires the bare striker ((b0), the lower bound)",
+             "amplification": "whether amplification pays"}
+    flips = band["flips"]
+    rep.text(f"The speed the specification asks is the one for the velocity change of the pulse the band accepts: "
+             f"the band's centre, the checked shape's ideal ({m.spec.pulse.checked_shape}, "
+             f"{m.spec.pulse.band_velocity_change():.4g} m/s; `PulseSpec.band_velocity_change`), not the specified "
+             f"{m.spec.pulse.shape}'s own area ({rows[-1][1]:.4g} m/s, the last row, outside the band's range); the "
+             f"band accepts {lo:.4g} to {hi:.4g} m/s. Across that range "
+             + ("no verdict flips" if not flips else "these flip between its two ends: " + "; ".join(names[k] for k in flips))
+             + " (the table: each row the rigid collision law's striker speed at the fixture's restitution, the "
+             "ideal guns of `direct_remedies` and the closed form of `closed_form` at it).")
+    rep.value("premise_band", {label: {k: v for k, v in x.items() if k not in ("remedies", "closed")}
+                               for label, x in band["rows"].items()} | {"flips": flips})
+
+
+def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars: list = (),
+               springs: dict | None = None) -> str:
+    """The premise's answer, boxed, for the top of the report (``premise.answer``), from the arrangements'
+    numbers (``stars``: the amplifier at its best chain, (a*), where designed; ``springs``: the chain with gas
+    springs, ``gas_spring_chain``): each arrangement's verdict and what it breaks, what every arrangement with
+    the fixture breaks, and what would change it."""
+    a, b, b0, c = abc
+    fixture_ok = not a.fixture_problems
+
+    def machine(x):
+        return "FEASIBLE" if x.gun_feasible and x.feasible and fixture_ok else "NOT FEASIBLE"
+    amplifiers = [a, *stars]
+    rows = [(x, machine(x), P.limit_words(x)) for x in amplifiers] + [(b, machine(b), P.limit_words(b)),
+            (b0, "a lower bound, not a machine" + (" (its gun within the limits)" if b0.gun_feasible else ""),
+             P.limit_words(b0)), (c, machine(c), P.limit_words(c))]
+    for x, d in drives:
+        if d.moving is None:
+            rows.append((x, "NOT FEASIBLE", [f"no design: {d.notes[0]}"]))
+            continue
+        why = P.limit_words(x)
+        if d.band is not None and not d.in_band:
+            why.insert(0, f"its pulse outside the band (worst excess {d.band.worst_excess:.3g} of the peak)")
+        if d.recovery and not d.recovery["band"].passed:
+            why.insert(0, f"its pulse outside the band at the face pressure's upper end (worst excess "
+                          f"{d.recovery['band'].worst_excess:.3g} of the peak)")
+        rows.append((x, "CANDIDATE" if d.feasible else "NOT FEASIBLE", why))
+    s, f = m.spec, m.fixture
+    lb = round(s.article_mass / LB)
+    ok = [x.name for x, word, _ in rows if word in ("FEASIBLE", "CANDIDATE")]
+    centre = band["rows"]["the band's centre"]
+    pays = centre["amplification"]
+    amplified = any(machine(x) == "FEASIBLE" for x in amplifiers)
+    headline = (f"Velocity amplification does {'' if amplified else 'not '}make a compact "
+                f"non-pyrotechnic tester feasible for the {lb} lb spec ({s.pulse.peak / G0:,.0f} g x "
+                f"{s.pulse.duration * 1e3:.3g} ms, within {s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, "
+                f"{s.max_pressure / PSI:,.0f} psi): "
+                + (("FEASIBLE: " + ", ".join(ok)) if ok else "no arrangement is FEASIBLE")
+                + (f", and by the closed form amplification {pays}" if pays else "") + ". "
+                f"The rows are at the designed fixture's striker speed ({f.striker_speed:.4g} m/s"
+                + ("" if f.band_passed else ", a pulse that fails the band")
+                + f"); the band's centre asks {centre['striker_speed']:.4g} m/s (section 8's band table), where "
+                + ("an air gun within the limits fires the striker in its sabot" if centre["air_fires_sabot"] else
+                   "no air gun within the limits fires the striker in its sabot")
+                + ". Every number here is this run's.")
+    common = ([f"(a) to (c) carry the same fixture, and it breaks its own limits: {'; '.join(a.fixture_problems)}."]
+              if a.fixture_problems else [])
+    change = []
+    k = closed_spec
+    face, w = k.get("interface") or {}, k["with_sabot"]
+    if face:
+        change.append(f"for (a), interfaces that return their energy at {face['closing_speed']:.0f} m/s (the best "
+                      f"chain's fastest at the band's centre; the library's best solid does so only to "
+                      f"{face['elastic_limit_speed']:.0f} m/s, a pad {face['pad_over_struck']:.3g} times its struck "
+                      f"body) that keep a restitution above {w['break_even']['chambered']:.3f} (the chambered "
+                      f"break-even against (b)): the chain's {k['restitution']:.3f} is its pads' estimate, and their "
+                      f"runs at 99 m/s restitute {min(P.MEASURED_RESTITUTIONS.values()):.2f} to "
+                      f"{max(P.MEASURED_RESTITUTIONS.values()):.2f}")
+    best = (springs or {}).get("best_chain") or {}
+    if best.get("feasible") and best.get("guns"):
+        q_sw, q_ch = best["guns"]["simple_wave"]["Q"], best["guns"]["chambered"]["Q"]
+        shares = [i["mass_share"] for i in best.get("interfaces", [])]
+        change.append(f"for (a), gas springs at every interface: their best chain needs {q_sw:.3g} (simple-wave) "
+                      f"and {q_ch:.3g} (chambered) of (b)'s gun"
+                      + (f", with sleeves {min(shares):.3g} to {max(shares):.3g} times their struck bodies, which "
+                         "the chain's masses leave out" if shares else "")
+                      + (", and springs that break their limits (section 8's gas-spring table)"
+                         if any(i["broken"] for i in best.get("interfaces", [])) else ""))
+    sabot_broken = [lim for lim in broken(b.limits) if lim.component.startswith("stop of sabot")]
+    push = next((lim for lim in b.limits if lim.component == "stop of sabot"), None)
+    if sabot_broken and push is not None:
+        change.append(f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push "
+                      f"(the one designed breaks {len(sabot_broken)}, the worst its {sabot_broken[0].quantity} "
+                      f"{sabot_broken[0].ratio:.3g} times), or a barrel vented before the sabot meets it")
+    for lim in broken(b.limits):
+        if lim.component.startswith("launcher's gas on the striker"):
+            change.append(f"for (b), the gas off the striker before the pulse ({lim.value:.3g} times the pulse's "
+                          f"force on it, where the column run may leave out {lim.limit:.3g}): vents ahead of the "
+                          "muzzle, or the payload a striker's length further out and the gun's travel cut by as much")
+    if not centre["air_fires_sabot"]:
+        r = centre["remedies"]
+        change.append(f"at the band's centre, a gun past the limits for (b): an air barrel of "
+                      f"{r['air']['chambered_barrel'] / FT:.3g} ft (the chambered gun) or helium "
+                      f"({r['helium']['chambered_speed']:.4g} m/s at every limit, chambered)")
+    if a.fixture_problems:
+        change.append("and for (a) to (c) a fixture within its own limits")
+    for x, d in drives:
+        if d.moving is not None and not d.feasible:
+            change.append(f"for (d) in {d.gas}, " + D._what_would_bring_it_in(d))
+    return P.answer(rows, common, change, headline)
 
 
 def gas_drive_table(rep: Report, drives: list):
@@ -290,17 +428,19 @@ def boundary_table(rep: Report, k: dict):
 
 def _chain_row(label: str, c: dict) -> list:
     if not c.get("feasible", True) or c.get("guns") is None:
-        return [label, c.get("restitution"), None, None, None, None, None, None, None, None, c.get("reason", "")]
+        return [label, c.get("restitution"), None, None, None, None, None, None, None, None, None, None,
+                c.get("reason", "")]
     sw, ch = c["guns"]["simple_wave"], c["guns"]["chambered"]
     sleeves = sum(i["sleeve_mass"] for i in c.get("interfaces", []))
     return [label, c["restitution"], c.get("masses"), c.get("launch_speed"), c["first_mass"], sleeves,
             0.5 * c["first_mass"] * c.get("launch_speed", 0.0) ** 2 / 1e6, sw["amplifier"] / 1e6, sw["Q"],
-            ch["amplifier"] / 1e6, ch["Q"]]
+            sw["Q_bare"], ch["amplifier"] / 1e6, ch["Q"], ch["Q_bare"]]
 
 
-def gas_spring_section(rep: Report, m):
-    """What the design's chain gains with a gas spring at every interface (``machine.gas_spring_chain``)."""
-    k = gas_spring_chain(m, CLAIM["e"])
+def gas_spring_section(rep: Report, m, sabot: float):
+    """What the design's chain gains with a gas spring at every interface (``machine.gas_spring_chain``), Q
+    against the direct gun firing the striker in its ``sabot`` [kg] and bare."""
+    k = gas_spring_chain(m, CLAIM["e"], sabot)
     sc, best, wp = k["spec_chain"], k.get("best_chain", {}), k["at_white_paper_e"]
     wp_row = {**wp, "masses": m.spec.masses, "launch_speed": m.spec.launch_speed, "feasible": True}
     rows = [_chain_row("the design's masses and launch speed, a gas spring at every interface", sc),
@@ -310,8 +450,11 @@ def gas_spring_section(rep: Report, m):
             _chain_row(f"the design's masses and launch speed at the white paper's e {CLAIM['e']:g}", wp_row)]
     rep.table("gas_spring_chain", ["chain", "e [-]", "masses", "launch [m/s]", "first mass [kg]",
                                    "gas springs' sleeves [kg]", "launch energy [MJ]", "gun p0 A L, simple-wave [MJ]",
-                                   "Q simple-wave [-]", "gun p0 A L, chambered [MJ]", "Q chambered [-]"], rows,
-              ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.4g}", "{:.3g}", "{:.4g}", "{:.3g}"])
+                                   "Q simple-wave, against (b) [-]", "Q simple-wave, the bare striker [-]",
+                                   "gun p0 A L, chambered [MJ]", "Q chambered, against (b) [-]",
+                                   "Q chambered, the bare striker [-]"], rows,
+              ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.4g}", "{:.3g}", "{:.3g}", "{:.4g}",
+               "{:.3g}", "{:.3g}"])
     direct = (sc.get("guns") or wp["guns"])
     iface = [[i["name"], i["closing_speed"], i["restitution"], i["closed_form_restitution"], i["bore"] * 1e3,
               i["column"], i["peak_pressure"] / 1e6, i["run_peak_pressure"] / 1e6, i["sleeve_mass"], i["mass_share"],
@@ -324,6 +467,7 @@ def gas_spring_section(rep: Report, m):
                       "{}"])
     rep.value("gas_spring_chain", k)
     rep.text(_gas_spring_words(k, direct, rows))
+    return k
 
 
 def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
@@ -334,12 +478,16 @@ def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
              f"auto-ignition, its restitution from its gas column's run, the shocks and their reverberations "
              f"resolved, with the heat and seal friction) "
              f"is the one interface not bound by a solid's v*. The direct gun fires the striker's "
-             f"{k['striker_energy'] / 1e6:.4g} MJ from p0 A L = {direct['simple_wave']['direct'] / 1e6:.4g} MJ "
-             f"(simple-wave) or {direct['chambered']['direct'] / 1e6:.4g} MJ (chambered).")
+             f"{k['striker_energy'] / 1e6:.4g} MJ in its {k['sabot']:.4g} kg sabot ((b), the direct machine the "
+             f"premise admits: its gun {k['direct_load']:.4g} times the bare striker's, as the closed form's) from "
+             f"p0 A L = {direct['simple_wave']['direct'] / 1e6:.4g} MJ (simple-wave) or "
+             f"{direct['chambered']['direct'] / 1e6:.4g} MJ (chambered); the bare striker from "
+             f"{direct['simple_wave']['direct_bare'] / 1e6:.4g} and {direct['chambered']['direct_bare'] / 1e6:.4g} MJ. "
+             "Each Q below is against (b), the bare striker's beside it (the table).")
     if sc["feasible"]:
         words += (f" With gas springs the design's chain settles at e {sc['restitution']:.4f}, its first mass "
                   f"{sc['first_mass']:,.0f} kg launching {rows[0][6]:.4g} MJ from a gun of {rows[0][7]:.4g} MJ "
-                  f"(Q {rows[0][8]:.3g}) or {rows[0][9]:.4g} MJ chambered (Q {rows[0][10]:.3g}); its sleeves weigh "
+                  f"(Q {rows[0][8]:.3g}) or {rows[0][10]:.4g} MJ chambered (Q {rows[0][11]:.3g}); its sleeves weigh "
                   f"{min(shares):.3g} to {max(shares):.3g} times their struck bodies, and its springs "
                   + ("hold every limit." if held else "do not hold their limits (the table above)."))
     best = k.get("best_chain") or {}
@@ -347,13 +495,13 @@ def _gas_spring_words(k: dict, direct: dict, rows: list) -> str:
         words += (f" The best chain at that e, settled again with its own springs, is {best['masses']} masses launched "
                   f"at {best['launch_speed']:.4g} m/s at e {best['restitution']:.4f}: its first mass "
                   f"{best['first_mass']:,.0f} kg launches {rows[1][6]:.4g} MJ from a gun of {rows[1][7]:.4g} MJ "
-                  f"(Q {rows[1][8]:.3g}) or {rows[1][9]:.4g} MJ chambered (Q {rows[1][10]:.3g}), with "
+                  f"(Q {rows[1][8]:.3g}) or {rows[1][10]:.4g} MJ chambered (Q {rows[1][11]:.3g}), with "
                   f"{rows[1][5]:,.0f} kg of sleeves the chain's masses leave out.")
     ch = k.get("best_chain_chambered") or {}
     if ch.get("feasible"):
         words += (f" The chambered gun's own best chain, settled: {ch['masses']} masses launched at "
-                  f"{ch['launch_speed']:.4g} m/s at e {ch['restitution']:.4f}, {rows[2][9]:.4g} MJ of chambered gun "
-                  f"(Q {rows[2][10]:.3g}).")
+                  f"{ch['launch_speed']:.4g} m/s at e {ch['restitution']:.4f}, {rows[2][10]:.4g} MJ of chambered gun "
+                  f"(Q {rows[2][11]:.3g}).")
     wp = k["at_white_paper_e"]
     if wp["guns"]:
         words += (f" At the white paper's e {wp['restitution']:g} the design's chain launches {rows[3][6]:.4g} MJ "
@@ -370,6 +518,8 @@ def _map_rows(points) -> list:
                      p.striker_speed, c["masses"], c["launch_speed"], c["gun_ratio"], ch["gun_ratio"],
                      "yes" if p.eligible else "no", p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"],
                      p.direct["launch_energy"] / 1e6, p.direct["machine_mass"], p.direct["sabot_estimate"],
+                     p.direct_load, p.gun_ratio_sabot, p.interface.get("closing_speed", float("nan")),
+                     p.interface.get("pad_over_struck", float("nan")),
                      p.flying["barrel"] / FT, p.flying["machine_mass"], p.winner, p.note or p.amplifier["note"]])
     return rows
 
@@ -377,10 +527,13 @@ def _map_rows(points) -> list:
 MAP_HEADER = ["payload [lb]", "duration [ms]", "peak [g]", "velocity change [m/s]", "striker over payload [-]",
               "striker speed [m/s]", "best chain: masses", "best chain: launch [m/s]", "Q simple-wave [-]",
               "Q chambered [-]", "amplifier designed", "(a) launch [MJ]", "(a) gun and masses [kg]", "(b0) launch [MJ]",
-              "(b0) gun and striker [kg]", "(b) its sabot [kg]", "(c) barrel [ft]", "(c) gun and target [kg]",
+              "(b0) gun and striker [kg]", "(b) its sabot [kg]", "direct load (M + sabot) / M [-]",
+              "Q against (b), the lower law's [-]", "best chain's fastest interface [m/s]",
+              "pad that held it over struck body [-]", "(c) barrel [ft]", "(c) gun and target [kg]",
               "lightest", "note"]
 MAP_FORMATS = ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{:.3g}", "{:.0f}", "{}", "{:.0f}", "{:.3g}", "{:.3g}", "{}",
-               "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{}", "{}"]
+               "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.3g}", "{:.0f}", "{:.3g}", "{:.3g}",
+               "{:,.0f}", "{}", "{}"]
 
 
 def _map_lines(points, e: float, gas: str, at) -> dict:
@@ -417,6 +570,10 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     echo("  the map again at the designed striker ratio at every point")
     fixed = P.boundary(P.premise_map(m.spec, m.fixture, e, target, *axes, fixed_ratio=True))
     bd["fixed_ratio"] = fixed
+    if cfg.get("band_ends", True):
+        echo("  the map again at the two ends of the band's range of velocity change")
+        ends = {k: P.premise_map(m.spec, m.fixture, e, target, *axes, band_end=k) for k in (-1, 1)}
+        bd["band_ends"] = _band_end_flips(rep, points, ends)
     rep.value("map_boundary", bd)
     extra = [["the amplifier designed (the lower Q < 1)", "eligible"],
              ["Q < 1 with simple-wave guns", "eligible_simple_wave"], ["Q < 1 with chambered guns", "eligible_chambered"],
@@ -433,6 +590,27 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     rep.text(_map_models(m, e, target, bd))
     _restitution_effect(rep, m, target)
     return points
+
+
+def _band_end_flips(rep: Report, points, ends: dict) -> dict:
+    """The map's points whose lightest feasible machine differs between the band's two ends of velocity change
+    (``premise_map``'s ``band_end``), tabled with the centre's."""
+    lo, hi = ends[-1], ends[1]
+    rows = [[p.article / LB, p.duration * 1e3, p.peak / G0, a.velocity_change, a.winner, p.velocity_change, p.winner,
+             b.velocity_change, b.winner] for p, a, b in zip(points, lo, hi) if a.winner != b.winner]
+    counts = {k: P.boundary(v)["counts"] for k, v in (("least", lo), ("largest", hi))}
+    if rows:
+        rep.table("map_band_ends", ["payload [lb]", "duration [ms]", "peak [g]", "the band's least dv [m/s]",
+                                    "lightest there", "its centre [m/s]", "lightest there", "its largest [m/s]",
+                                    "lightest there"], rows,
+                  ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{}", "{:.0f}", "{}", "{:.0f}", "{}"])
+    rep.text(f"The map at the two ends of the band's range of velocity change (each point's dv its centre's less "
+             f"and plus the band's tolerance, {lo[0].velocity_change / points[0].velocity_change:.2f} and "
+             f"{hi[0].velocity_change / points[0].velocity_change:.2f} times it): {len(rows)} of the {len(points)} points change their lightest feasible machine between the "
+             "two ends" + (" (the table)" if rows else "") + "; the counts at the least: "
+             + ", ".join(f"{k} {v}" for k, v in counts["least"].items()) + "; at the largest: "
+             + ", ".join(f"{k} {v}" for k, v in counts["largest"].items()) + ".")
+    return {"flips": len(rows), "counts": counts}
 
 
 def _map_models(m, e: float, target, bd: dict) -> str:
@@ -454,7 +632,8 @@ def _map_models(m, e: float, target, bd: dict) -> str:
             "need is the column beside it). The map leaves the models' checked range everywhere but the design's "
             "point: the dashpot is designed and its validity checked only there (the striker's law carries its wall "
             "ratio, floor and column over stroke), the amplifier's pads are not sized or run at the other points "
-            "(their restitution is carried over), its stresses and stops are not checked; the flying target is the "
+            "(their restitution is carried over), its stresses and stops are not checked, nor the gun's gas on the "
+            "striker and its sabot after the muzzle (section 8); the flying target is the "
             "fixture designer's target scaled by the same law, its dashpot not designed at the map's points"
             + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
                "its oil outweighs it; the oil's mass over the payload grows with the stroke, so at shorter, lower "
@@ -492,10 +671,14 @@ def _restitution_effect(rep: Report, m, target):
               ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{}", "{:,.0f}", "{}"])
     rep.value("map_restitution", [{"e": r[1], "launch_energy": r[3] * 1e6, "machine_mass": r[4], "winner": r[7]}
                                   for r in rows])
+    def amp(r):
+        """The amplifier's gun and masses at a row, or why it has none."""
+        if math.isfinite(r[4]):
+            return f"{r[4]:,.0f} kg of gun and masses ({r[3]:.4g} MJ launched)"
+        return f"no design ({r[2]})"
     rep.text(f"The {lb} lb point of the map at the design's effective e ({rows[0][1]:.4f}, {_pads_source(m)}) "
-             f"and at the white paper's e = {CLAIM['e']:g}: the "
-             f"amplifier's gun and masses weigh {rows[0][4]:,.0f} kg against {rows[1][4]:,.0f} kg "
-             f"({rows[0][3]:.4g} MJ launched against {rows[1][3]:.4g}); the lightest arrangement there is "
+             f"and at the white paper's e = {CLAIM['e']:g}: the amplifier has {amp(rows[0])} at the design's e, and "
+             f"{amp(rows[1])} at e = {CLAIM['e']:g}; the lightest arrangement there is "
              f"'{rows[0][7]}' at the design's e and '{rows[1][7]}' at e = {CLAIM['e']:g}.")
 
 

@@ -279,6 +279,21 @@ def test_premise_arrangements_and_map(machine):
     effect = results["values"]["map_restitution"]
     assert [p["e"] for p in effect] == pytest.approx([m["amplifier"]["restitution"], 0.9], rel=1e-12)
     assert f"{m['amplifier']['restitution']:.4f}" in (out.parent / "report.md").read_text()
+    # the answer is boxed (at the top of the premise study's own report; in section 8 here), a row per arrangement
+    lines = report.splitlines()
+    start = next(k for k, ln in enumerate(lines) if ln.startswith("> **The answer.**"))
+    box = [ln for ln in lines[start:start + 40] if ln.startswith("> | (")]
+    assert len(box) == len(results["tables"]["arrangements"]["rows"])
+    # the speed the specification asks is the band's centre's: its velocity change the checked trapezoid's 0.9 A T
+    # (ramps of 0.1 T each), the band's range 0.9 and 1.1 times it; the rectangle's own A T is the last row
+    band = {r[0]: r for r in results["tables"]["premise_band"]["rows"]}
+    AT = m["spec"]["pulse"]["peak"] * m["spec"]["pulse"]["duration"]
+    assert band["the band's centre"][1] == pytest.approx(0.9 * AT, rel=1e-12)
+    assert band["the band's least"][1] == pytest.approx(0.81 * AT, rel=1e-12)
+    assert band["the band's largest"][1] == pytest.approx(0.99 * AT, rel=1e-12)
+    assert band["the specified rectangle's own area"][1] == pytest.approx(AT, rel=1e-12)
+    # the direct gun's striker carries the gas's push through the pulse's start: its limit is in (b)'s row
+    assert "pushes the striker with" in b[-1] and "push on it" in b[-1]
     # a lower restitution asks more masses for the same gain: its launch energy is higher, or it has no design
     # (null: its best chain needs more gun than the direct one, and Q only falls as e rises)
     lo, hi = effect

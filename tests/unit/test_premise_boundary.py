@@ -10,6 +10,7 @@ from shockfem.amplifier.gain import chain_efficiency
 from shockfem.launcher.gas import GASES
 from shockfem.launcher.simple_wave import efficiency, muzzle_speed, travel
 from shockfem.machine import boundary as B
+from shockfem.machine import stops
 from shockfem.machine.fixture import article_length, bore_radius
 from shockfem.machine.premise import Arrangement, StrikerLaw, _winner, verdict
 from shockfem.machine.spec import read_spec
@@ -306,20 +307,82 @@ def test_elastic_limit_speeds_and_the_scale_free_bound():
     assert max(v.values()) < 100.0 and v["pu_60d"] == pytest.approx(59.4, rel=0.01)
 
 
-def test_sabot_stop_takes_the_sabots_energy():
+def _open_gun(mass=726.4, bore=0.9144, p0=34.47e6, volume=20.0, length=6.096):
+    """A gun with no valve and massless gas, the air ahead evacuated: its gas expands adiabatically behind the
+    projectile, so its pressure at the end of the travel is p0 (V0 / (V0 + A L))^gamma exactly."""
+    from shockfem.launcher.gun import Gun
+    return Gun(reservoir_volume=volume, reservoir_pressure=p0, bore=bore, length=length, projectile_mass=mass,
+               valve_area=None, air_ahead="evacuated", gas_inertia="none")
+
+
+def test_muzzle_push_is_the_gas_pressure_at_the_end_of_the_travel_on_the_bore():
+    """The push a body at the muzzle carries (``launcher.muzzle_state``) from first principles: the open gun of
+    massless gas expands adiabatically, p = p0 (V0 / (V0 + A L))^gamma on A = pi D^2 / 4 (the integrator's rtol
+    1e-9 sets the match)."""
+    from shockfem.machine.launcher import muzzle_state
+    g = _open_gun()
+    A = math.pi * 0.9144 ** 2 / 4
+    gamma = GASES["air"].gamma
+    p = 34.47e6 * (20.0 / (20.0 + A * 6.096)) ** gamma
+    state = muzzle_state(g)
+    assert state.base_pressure == pytest.approx(p, rel=1e-6)
+    assert state.push == pytest.approx(p * A, rel=1e-6)
+    # no valve: the tank is the barrel's own gas; with the full-bore valve the tank stays above the base
+    from shockfem.machine.launcher import machine_gun
+    import dataclasses
+    valved = dataclasses.replace(machine_gun(726.4, "air"), bore=0.9144, length=6.096, reservoir_pressure=34.47e6,
+                                 reservoir_volume=20.0)
+    s = muzzle_state(valved)
+    assert 0 < s.base_pressure < s.reservoir_pressure < 34.47e6
+
+
+def test_pushed_stop_fails_when_the_push_exceeds_its_absorbers_force():
+    """A body pushed while it is stopped (``stops.pushed_stop``): below the absorber's least force it stops,
+    the buffer's stroke m v^2 / (2 (F - F_p)) (the module docstring's balance, by hand) and the push's limit
+    holds; above every absorber's force (``max_force`` caps each at 1 MN: the chosen honeycomb's static crush is
+    0.96 MN) it never stops: the stop is the unpushed one, its push limit broken by the push over the
+    absorber's least force."""
+    rho, S = 7850.0, 460e6
+    free = stops.design_stop("m1", 4000.0, 40.0, 0.9, rho, S, 0.5, 120e6, max_force=1e6)
+    held = stops.pushed_stop("m1", 4000.0, 40.0, 0.9, rho, S, 0.5, 120e6, 0.2e6, "a test push", max_force=1e6)
+    push_limit = held.limits[-1]
+    assert held.push == 0.2e6 and push_limit.value == 0.2e6 and push_limit.holds
+    assert push_limit.limit == pytest.approx(held.hold, rel=1e-12) and held.hold > 0.2e6
+    if held.kind == "hydraulic buffer":
+        assert held.stroke == pytest.approx(0.5 * 4000 * 40 ** 2 / (held.force - 0.2e6), rel=1e-12)
+    assert held.stroke > free.stroke                      # the push's work is taken too
+    never = stops.pushed_stop("m1", 4000.0, 40.0, 0.9, rho, S, 0.5, 120e6, 5e6, "a test push", max_force=1e6)
+    lim = never.limits[-1]
+    assert not lim.holds and lim.ratio == pytest.approx(5e6 / never.hold, rel=1e-12)
+    assert never.stroke == pytest.approx(free.stroke, rel=1e-12)      # the unpushed design, flagged
+    # no push: design_stop's stop, no limit added
+    assert len(stops.pushed_stop("m1", 4000.0, 40.0, 0.9, rho, S, 0.5, 120e6, 0.0, "none", max_force=1e6).limits) \
+        == len(free.limits)
+
+
+def test_sabot_stop_takes_the_sabots_energy_against_the_gas():
     """The sabot's stop absorbs its kinetic energy at the muzzle, m v^2 / 2 (to round-off), at a force within the
-    gun's thrust (the frame carries no more) and its inertia's rho L a at most the aluminium's allowable."""
+    gun's thrust (the frame carries no more) and its inertia's rho L a at most the aluminium's allowable,
+    pushed by the gun's base pressure at the end of its travel on the sabot's face outside the striker,
+    p pi (D^2 - d^2) / 4 (the open gun's adiabatic pressure, by hand)."""
     from types import SimpleNamespace
     from shockfem.machine.premise import SABOT_MATERIAL, SABOT_SAFETY, sabot_stop
     from shockfem.machine.spec import read_spec
     from shockfem.scene.library import initial_yield_stress
-    gun = SimpleNamespace(bore=0.9144)
+    gun = _open_gun()
     launcher = SimpleNamespace(design=SimpleNamespace(gun=gun, muzzle_velocity=412.2, peak_acceleration=2e4),
                                projectile_mass=726.4)
     stop = sabot_stop(read_spec({"article": "12 lb"}), launcher, 227.7, 0.258)
+    A = math.pi * 0.9144 ** 2 / 4
+    p = 34.47e6 * (20.0 / (20.0 + A * 6.096)) ** GASES["air"].gamma
+    assert stop.push == pytest.approx(p * math.pi * (0.9144 ** 2 - 0.258 ** 2) / 4, rel=1e-6)
     assert stop.energy == pytest.approx(0.5 * 227.7 * 412.2 ** 2, rel=1e-12)
     assert stop.force <= 726.4 * 2e4 * (1 + 1e-12)
     assert stop.stress <= initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY * (1 + 1e-9)
+    # 26.7 MPa on 0.60 m^2 (16.1 MN) against the block's 2.49 MN static crush (its area cut so that its impact
+    # peak stays within the 14.5 MN thrust): the sabot never stops
+    assert not stop.limits[-1].holds and stop.limits[-1].value == stop.push
+    assert stop.limits[-1].ratio == pytest.approx(stop.push / stop.hold, rel=1e-12) and stop.hold < stop.force
 
 
 def test_direct_gun_that_falls_short_shows_the_lightest_beside_the_closest():
@@ -337,3 +400,80 @@ def test_direct_gun_that_falls_short_shows_the_lightest_beside_the_closest():
     assert light.design.muzzle_velocity < L.design.muzzle_velocity < 412.2
     words = P._short_words(L, sabot, light, light_sabot)
     assert "kept the closest" in words and "the lightest that falls short" in words
+
+
+def test_specified_striker_speed_is_for_the_band_centres_velocity_change():
+    """The speed the specification asks is for the velocity change the band accepts at its centre: a rectangle
+    is checked as MIL-STD-810's trapezoid (ramps of 0.1 T each), area A (T - 0.1 T) = 0.9 A T (by hand: 441.3 m/s
+    at 10,000 g x 5 ms, not the rectangle's 490.3), the band's range 0.9 and 1.1 times that
+    (``metrics.shapes.TOLERANCE``); at e = 0 the rigid collision law gives V = dv (M + m) / M (momentum)."""
+    from shockfem.machine.premise import specified_striker_speed
+    from shockfem.programmer.dashpot_design import PulseSpec
+    from shockfem.units import G0
+    pulse = PulseSpec("rectangle", 10_000 * G0, 5e-3)
+    AT = 10_000 * G0 * 5e-3
+    assert pulse.band_velocity_change() == pytest.approx(0.9 * AT, rel=1e-12)
+    assert pulse.band_velocity_range() == pytest.approx((0.81 * AT, 0.99 * AT), rel=1e-12)
+    assert pulse.least_velocity_change() == pytest.approx(0.81 * AT, rel=1e-12)
+    m = types.SimpleNamespace(spec=types.SimpleNamespace(pulse=pulse),
+                              fixture=types.SimpleNamespace(payload_mass=5.89, striker_mass=501.5, restitution=0.0))
+    assert specified_striker_speed(m) == pytest.approx(0.9 * AT * (501.5 + 5.89) / 501.5, rel=1e-9)
+    assert specified_striker_speed(m, AT) == pytest.approx(AT * (501.5 + 5.89) / 501.5, rel=1e-9)
+
+
+def test_gas_spring_chains_q_carries_the_direct_guns_sabot():
+    """``gas_spring_chain.guns`` against the direct machine the premise admits: its gun the bare striker's times
+    (M + m_sabot) / M, so Q is the bare Q over that load; and for the closed form's own launched chain (its
+    geometric masses, ``amplifier.gain.design``) the bare Q is ``boundary.best_chain``'s, eta(V) / (chi eta(u))
+    (two routes to one number: the first mass's energy against chi; the root-finding of the design sets 1e-6)."""
+    from shockfem.amplifier.gain import design
+    from shockfem.machine.gas_spring_chain import guns
+    c = B.best_chain(0.632, 412.2)
+    d = design("launched-chain", 498.8, 412.2, c.launch_speed, 0.632, c.masses)
+    load = (498.8 + 227.7) / 498.8
+    g = guns(498.8, 412.2, d.masses[0], c.launch_speed, "air", load)["simple_wave"]
+    assert g["Q_bare"] == pytest.approx(c.gun_ratio, rel=1e-6)
+    assert g["Q"] == pytest.approx(g["Q_bare"] / load, rel=1e-12)
+    assert g["direct"] == pytest.approx(load * g["direct_bare"], rel=1e-12)
+    assert B.best_chain(0.632, 412.2, direct_load=load).gun_ratio == pytest.approx(g["Q"], rel=1e-6)
+
+
+def _lone_slug_layout(striker_travel: float, push: float):
+    """``layout.place`` for one body (the premise's direct striker) on a hand-built gun: a 36 in x 20 ft gun
+    firing a 500 kg, 1.5 m striker; the fixture's figures any that place reads."""
+    import dataclasses
+    from shockfem.launcher.design import LauncherDesign, weights
+    from shockfem.launcher.gun import fire
+    from shockfem.machine.launcher import SIZING, launcher_of, machine_gun
+    from shockfem.machine.layout import place
+    g = dataclasses.replace(machine_gun(500.0, "air"), bore=0.9144, length=6.096, reservoir_pressure=34.47e6,
+                            reservoir_volume=20.0)
+    shot = fire(g, samples=2)
+    wb, wt = weights(g, SIZING)
+    L = launcher_of(LauncherDesign(g, wb + wt, wb, wt, shot.muzzle_velocity, shot.muzzle_velocity,
+                                   shot.peak_acceleration, shot.efficiency, True), 500.0)
+    fixture = types.SimpleNamespace(
+        housing_steel_mass=400.0, housing_steel="high_strength_steel", floor_thickness=0.05, column=1.0,
+        liquid_mass=20.0, pin_mass=0.0, bore_radius=0.036, piston_mass=0.5, article_length=0.2,
+        article_diameter=0.066, article_mass=5.44, striker_mass=500.0, after_speed_striker=400.0,
+        striker_travel=striker_travel, payload_mass=5.9, after_speed_payload=20.0, payload_travel=2.0,
+        striker_speed=412.0)
+    body = {"name": "striker", "shape": "carrier", "diameter": 0.26, "length": 1.5, "bore": 0.072, "bore_depth": 1.3}
+    amp = types.SimpleNamespace(bodies=[body], masses=[500.0], stages=[], gaps=[])
+    return place(L, amp, fixture, 7850.0, 460e6, 5000 * 9.81, "high_strength_steel", [], 120e6, 1e8, push)
+
+
+def test_lone_slugs_payload_waits_at_the_muzzle_and_its_stop_is_pushed_while_its_base_is_in_the_bore():
+    """A lone slug (the direct striker) reaches the payload at the muzzle: the piston 0.05 m past the barrel's end
+    (``GAP_TO_PAYLOAD``), not inside the barrel; its stop carries the push only where its base is still in the bore
+    when it meets it (the stop its travel over the record plus ``STOP_MARGIN``, 0.05 m, past the muzzle, against
+    its 1.5 m length: in for a 0.1 m travel, out for a 3 m one)."""
+    from shockfem.machine.layout import GAP_TO_PAYLOAD
+    lay = _lone_slug_layout(0.1, 2e6)
+    items = {i.name: i for i in lay.items}
+    muzzle = items["barrel"].x0 + items["barrel"].length
+    assert items["piston"].x0 == pytest.approx(muzzle + GAP_TO_PAYLOAD, rel=1e-12)
+    stop = next(s for s in lay.stops if s.body == "striker")
+    assert stop.push == 2e6 and stop.limits[-1].value == 2e6
+    far = next(s for s in _lone_slug_layout(3.0, 2e6).stops if s.body == "striker")
+    assert far.push == 0.0 and all("push" not in lim.quantity for lim in far.limits)
