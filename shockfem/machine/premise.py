@@ -341,8 +341,11 @@ def _push_words(push: dict) -> str:
     return (f"the gun's gas ({push['pressure'] / 1e6:.3g} MPa at the end of its travel, the tank at "
             f"{push['reservoir_pressure'] / 1e6:.3g} MPa) pushes the striker with {push['force'] / 1e6:.3g} MN for "
             f"the first {push['time_in_bore'] * 1e3:.3g} ms of the pulse, its base still in the bore, "
-            f"{push['force'] / push['pulse_force']:.3g} times the pulse's {push['pulse_force'] / 1e6:.3g} MN; it adds "
-            f"{push['speed_added']:.3g} m/s to the striker, which the fixture's column run leaves out")
+            f"{push['force'] / push['pulse_force']:.3g} times the pulse's {push['pulse_force'] / 1e6:.3g} MN on the "
+            f"payload; it adds {push['speed_added']:.3g} m/s to the striker and its sabot, "
+            f"{push['speed_added'] / push['velocity_change']:.3g} of the {push['velocity_change']:.4g} m/s velocity "
+            f"change at the band's centre ({push['limit'].ratio:.3g} of the band's tolerance), which the fixture's "
+            "column run leaves out")
 
 
 def _short_words(closest: Launcher, sabot: float, light: Launcher, light_sabot: float) -> str:
@@ -375,9 +378,20 @@ def sabot_stop(spec: MachineSpec, launcher: Launcher, sabot: float, diameter: fl
                        "the striker (its base pressure, launcher.muzzle_state)", max_force=gun_thrust(launcher))
 
 
-# the most of the pulse's force a force on the striker which the fixture's column run leaves out may be: the
-# band's velocity-change tolerance (``metrics.shapes.TOLERANCE``), the share of the pulse it may move
+# the most a speed the fixture's column run leaves out may add to the striker, as a share of the velocity
+# change: the band's tolerance on it (``metrics.shapes.TOLERANCE``)
 STRIKER_PUSH_SHARE = TOLERANCE["velocity_change"]
+
+
+def gas_speed_limit(speed_added: float, velocity_change: float, basis: str) -> Limit:
+    """The gas's push on a striker during the pulse as a limit on the fixture's column run's range: the speed
+    it adds to the striker, at most the band's tolerance on the velocity change (``STRIKER_PUSH_SHARE``
+    times ``velocity_change``).  The striker is many times the payload, so a force on it reaches the payload
+    through the striker's speed (its impulse over the striker's mass), not force for force."""
+    return Limit("launcher's gas on the striker during the pulse", "the speed the gas adds to the striker",
+                 speed_added, STRIKER_PUSH_SHARE * velocity_change, "m/s", basis,
+                 "the fixture's column run's range: a speed it leaves out, at most the band's tolerance on the "
+                 "velocity change (metrics.shapes.TOLERANCE) times the band's centre")
 
 
 def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 0.0) -> dict:
@@ -385,26 +399,25 @@ def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 
     past the muzzle (``layout.place``) and the striker's front reaches the muzzle at the end of the gun's
     travel, so its base (and its sabot, there) is in the bore for the first (L_s - gap) / V_s of the pulse,
     pushed by the base pressure at the end of the travel (``launcher.muzzle_state``) on the whole bore: a
-    force F_g = p A on the striker that the fixture's column run leaves out.  It is held against the pulse's
-    force on the payload, m_p A_peak (``Limit``: at most ``STRIKER_PUSH_SHARE`` of it), and the speed it adds
-    to the striker and its sabot over that time, F_g t / (M + m_sabot), is given beside it.  After the base
-    clears the muzzle the jet through the stripped sabot's ring (or the open muzzle) pushes the base on, less
-    (left out).  Range: the pressure held at its value at the end of the travel (it falls as the base moves
-    on while the tank still feeds the barrel)."""
+    force F_g = p A on the striker that the fixture's column run leaves out.  It adds F_g t / (M + m_sabot)
+    to the striker and its sabot over that time, held against the band's tolerance on the velocity change at
+    the band's centre (``gas_speed_limit``); the force is given beside the pulse's force on the payload,
+    m_p A_peak.  After the base clears the muzzle the jet through the stripped sabot's ring (or the open
+    muzzle) pushes the base on, less (left out).  Range: the pressure held at its value at the end of the
+    travel (it falls as the base moves on while the tank still feeds the barrel; the barrel is unvented,
+    as laid out: ports over the striker's length past the travel would take most of it)."""
     g = launcher.design.gun
     state = muzzle_state(g)
     V = fixture.striker_speed
     in_bore = min(max(fixture.housing_length - GAP_TO_PAYLOAD, 0.0) / V, spec.pulse.duration)
-    pulse_force = fixture.payload_mass * spec.pulse.peak
-    limit = Limit("launcher's gas on the striker during the pulse", "the gas's force over the pulse's force",
-                  state.push / pulse_force, STRIKER_PUSH_SHARE, "-",
-                  "the gun's base pressure at the end of its travel on the bore, on the striker's base for "
-                  f"{in_bore * 1e3:.3g} ms of the pulse (launcher.muzzle_state)",
-                  "the fixture's column run's range: a force on the striker it leaves out, at most the band's "
-                  "velocity-change tolerance times the pulse's force")
+    added = state.push * in_bore / (fixture.striker_mass + sabot)
+    dv = spec.pulse.band_velocity_change()
+    limit = gas_speed_limit(added, dv, "the gun's base pressure at the end of its travel on the bore, on the "
+                                       f"striker and its sabot for {in_bore * 1e3:.3g} ms of the pulse "
+                                       "(launcher.muzzle_state; the barrel unvented)")
     return {"pressure": state.base_pressure, "reservoir_pressure": state.reservoir_pressure, "force": state.push,
-            "pulse_force": pulse_force, "time_in_bore": in_bore, "speed_added": state.push * in_bore / (fixture.striker_mass + sabot),
-            "limit": limit}
+            "pulse_force": fixture.payload_mass * spec.pulse.peak, "time_in_bore": in_bore, "speed_added": added,
+            "velocity_change": dv, "limit": limit}
 
 
 def white_paper_launcher(spec: MachineSpec, launched: float, speed: float) -> tuple[Launcher, bool]:

@@ -342,9 +342,9 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
                       f"{sabot_broken[0].ratio:.3g} times), or a barrel vented before the sabot meets it")
     for lim in broken(b.limits):
         if lim.component.startswith("launcher's gas on the striker"):
-            change.append(f"for (b), the gas off the striker before the pulse ({lim.value:.3g} times the pulse's "
-                          f"force on it, where the column run may leave out {lim.limit:.3g}): vents ahead of the "
-                          "muzzle, or the payload a striker's length further out and the gun's travel cut by as much")
+            change.append(f"for (b), the gas off the striker before the pulse (it adds {lim.value:.3g} m/s, where "
+                          f"the column run may leave out {lim.limit:.3g}): ports over the barrel's last striker "
+                          "length, past the gun's travel")
     if not centre["air_fires_sabot"]:
         r = centre["remedies"]
         change.append(f"at the band's centre, a gun past the limits for (b): an air barrel of "

@@ -477,3 +477,30 @@ def test_lone_slugs_payload_waits_at_the_muzzle_and_its_stop_is_pushed_while_its
     assert stop.push == 2e6 and stop.limits[-1].value == 2e6
     far = next(s for s in _lone_slug_layout(3.0, 2e6).stops if s.body == "striker")
     assert far.push == 0.0 and all("push" not in lim.quantity for lim in far.limits)
+
+
+def test_striker_push_limit_is_the_speed_the_gas_adds_over_the_bands_tolerance():
+    """The gas on a directly fired striker during the pulse (``premise.striker_push``), from first principles:
+    the open gun's adiabatic base pressure p on the bore A for t = (L_s - gap) / V of the pulse adds
+    p A t / (M + m_sabot) to the striker and its sabot, held against the band's tolerance (0.1, MIL-STD-810's
+    velocity change) times the band's centre, 0.9 A_peak T (the rectangle checked as the 10%-ramp trapezoid)."""
+    from types import SimpleNamespace
+    from shockfem.machine.layout import GAP_TO_PAYLOAD
+    from shockfem.machine.premise import striker_push
+    spec = read_spec({"article": "12 lb"})
+    launcher = SimpleNamespace(design=SimpleNamespace(gun=_open_gun()))
+    fixture = SimpleNamespace(striker_speed=412.0, housing_length=1.288, striker_mass=501.5, payload_mass=5.919)
+    push = striker_push(spec, launcher, fixture, sabot=286.3)
+    A = math.pi * 0.9144 ** 2 / 4
+    p = 34.47e6 * (20.0 / (20.0 + A * 6.096)) ** GASES["air"].gamma
+    t = (1.288 - GAP_TO_PAYLOAD) / 412.0
+    added = p * A * t / (501.5 + 286.3)
+    dv = 0.9 * spec.pulse.peak * spec.pulse.duration
+    lim = push["limit"]
+    assert push["time_in_bore"] == pytest.approx(t, rel=1e-12)
+    assert lim.value == pytest.approx(added, rel=1e-6) and lim.unit == "m/s"
+    assert lim.limit == pytest.approx(0.1 * dv, rel=1e-12)
+    assert lim.ratio == pytest.approx(added / (0.1 * dv), rel=1e-6)
+    # the same force on a striker a tenth as heavy adds ten times the speed
+    light = striker_push(spec, launcher, SimpleNamespace(**{**vars(fixture), "striker_mass": 50.15}), sabot=28.63)
+    assert light["limit"].value == pytest.approx(10 * added, rel=1e-6)
