@@ -311,7 +311,10 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     left = bool(len(sol.t_events[0]))
     ts = np.linspace(0.0, t_end, samples)
     ys = sol.sol(ts)
-    hist = {"time": ts, "x": ys[4], "v": ys[5], "p_reservoir": [], "p_barrel": [], "p_base": [], "acceleration": []}
+    # the gas states too (mass [kg], internal energy [J] of the reservoir and the barrel): where a caller
+    # continues the shot past the travel (``machine.launcher.ported_push``)
+    hist = {"time": ts, "x": ys[4], "v": ys[5], "p_reservoir": [], "p_barrel": [], "p_base": [], "acceleration": [],
+            "m_reservoir": ys[0], "U_reservoir": ys[1], "m_barrel": ys[2], "U_barrel": ys[3]}
     for k, t in enumerate(ts):
         s = state(ys[:, k], t)
         hist["p_reservoir"].append(s["p_r"])

@@ -69,7 +69,7 @@ from .design import Machine, design_machine, gun_thrust
 from .fixture import DESIGN_EVALUATIONS, article_length, bore_radius, design_fixture
 from .boundary import (MAX_MASSES, Chain, best_chain, best_pad_restitution, break_even,
                        break_even_speed, sound_speed)
-from .launcher import SIZING, Launcher, launcher_for, launcher_of, muzzle_state
+from .launcher import SIZING, Launcher, launcher_for, launcher_of, muzzle_state, ported_push
 from .layout import GAP_TO_PAYLOAD, RING_CLEARANCE, Layout, place, ring_area
 from .pad_materials import PAD_MATERIALS
 from .limits import Limit, broken, by_cause, cause
@@ -305,22 +305,34 @@ def direct_launcher(spec: MachineSpec, striker: float, speed: float, diameter: f
     return best[1], best[2]
 
 
-def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: bool = True,
-                       bores: int = SABOT_BORES) -> Arrangement:
-    """(b): the same striker fired directly by the lightest gun within the same limits, in its sabot;
-    ``with_sabot`` False: in a massless sabot (the direct gun's lower bound, (b0))."""
-    diameter = 2 * fixture.housing_outer_radius if with_sabot else None
+@functools.lru_cache(maxsize=8)
+def _direct_design(spec: MachineSpec, striker: float, speed: float, diameter: float | None, starts: int,
+                   bores: int) -> tuple:
+    """``direct_launcher``'s gun and sabot, and its lightest gun that falls short (or ()), designed once for
+    both of (b)'s barrels (unvented and vented: the same gun)."""
     short = []
-    L, sabot = direct_launcher(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores=bores,
-                               lightest_short=short)
+    L, sabot = direct_launcher(spec, striker, speed, diameter, starts, bores=bores, lightest_short=short)
+    return L, sabot, tuple(short)
+
+
+def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: bool = True,
+                       bores: int = SABOT_BORES, vented: bool = False) -> Arrangement:
+    """(b): the same striker fired directly by the lightest gun within the same limits, in its sabot;
+    ``with_sabot`` False: in a massless sabot (the direct gun's lower bound, (b0)); ``vented``: the barrel's
+    last striker length ported (``launcher.ported_push``), else as laid out, unvented: the gas's push on the
+    striker during the pulse (``striker_push``) and on the sabot at its stop (``sabot_stop``) follow from it."""
+    diameter = 2 * fixture.housing_outer_radius if with_sabot else None
+    L, sabot, short = _direct_design(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores)
     layout = _layout(spec, L, fixture)
-    stop = sabot_stop(spec, L, sabot, diameter) if sabot else None
-    notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle by a "
-             f"{stop.kind} ({stop.absorber_mass:.3g} kg, {stop.stroke:.3g} m of stroke at {stop.force / 1e6:.3g} MN; "
-             "counted in the machine's mass, not laid on its axis) against the gas's "
-             f"{stop.push / 1e6:.3g} MN push on it" if stop else
+    push = striker_push(spec, L, fixture, sabot, vented, diameter)
+    stop = sabot_stop(spec, L, sabot, diameter, vented, fixture) if sabot else None
+    notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle at "
+             f"{stop.speed:.4g} m/s (the muzzle's {L.design.muzzle_velocity:.4g} and the gas's push after it) by a "
+             f"{stop.kind} ({stop.absorber_mass:.3g} kg, {stop.stroke:.3g} m of stroke at {stop.force / 1e6:.3g} MN, "
+             f"holding {stop.hold / 1e6:.3g} MN at rest; counted in the machine's mass, not laid on its axis) "
+             f"against the gas's {stop.push / 1e6:.3g} MN push on it there ({_barrel_words(vented)})"
+             if stop else
              ("no sabot: the striker fills the bore" if with_sabot else "the sabot's mass left out (a lower bound)")]
-    push = striker_push(spec, L, fixture, sabot)
     limits = (stop.limits if stop else []) + [push["limit"]]
     notes.append(_push_words(push))
     notes += [f"breaks its limit: {lim.describe()}" for lim in broken(limits)]
@@ -328,7 +340,8 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
         notes.append(L.design.note)
     if short:
         notes.append(_short_words(L, sabot, *short))
-    name = "(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot"
+    name = ("(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot") + (
+        ", vented" if vented else "")
     out = _arrangement(name, L, fixture, layout, L.design.feasible, notes,
                        sabot + (stop.absorber_mass if stop else 0.0))
     out.limits = limits
@@ -336,16 +349,21 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     return out
 
 
+def _barrel_words(vented: bool) -> str:
+    return ("the barrel's last striker length ported, launcher.ported_push" if vented else
+            "the barrel as laid out, unvented, launcher.ported_push with its ports shut")
+
+
 def _push_words(push: dict) -> str:
     """The gun's gas on the striker during the pulse (``striker_push``), in words."""
-    return (f"the gun's gas ({push['pressure'] / 1e6:.3g} MPa at the end of its travel, the tank at "
-            f"{push['reservoir_pressure'] / 1e6:.3g} MPa) pushes the striker with {push['force'] / 1e6:.3g} MN for "
-            f"the first {push['time_in_bore'] * 1e3:.3g} ms of the pulse, its base still in the bore, "
-            f"{push['force'] / push['pulse_force']:.3g} times the pulse's {push['pulse_force'] / 1e6:.3g} MN on the "
-            f"payload; it adds {push['speed_added']:.3g} m/s to the striker and its sabot, "
-            f"{push['speed_added'] / push['velocity_change']:.3g} of the {push['velocity_change']:.4g} m/s velocity "
-            f"change at the band's centre ({push['limit'].ratio:.3g} of the band's tolerance), which the fixture's "
-            "column run leaves out")
+    lim = push["limit"]
+    return (f"the gun's gas ({_barrel_words(push['vented'])}; the tank at {push['reservoir_pressure'] / 1e6:.3g} MPa "
+            f"at the end of the travel) pushes the striker and its sabot on the bore for the first "
+            f"{push['time_in_bore'] * 1e3:.3g} ms of the pulse, its base still in the bore, with {push['force'] / 1e6:.3g} "
+            f"MN on the mean (the base pressure {push['pressure'] / 1e6:.3g} to {push['end_pressure'] / 1e6:.3g} MPa): "
+            f"it adds {push['speed_added']:.3g} m/s to the striker, {lim.ratio:.3g} of the band's tolerance "
+            f"({lim.limit:.3g} m/s on the {push['velocity_change']:.4g} m/s velocity change), which the fixture's "
+            f"column run leaves out")
 
 
 def _short_words(closest: Launcher, sabot: float, light: Launcher, light_sabot: float) -> str:
@@ -359,65 +377,108 @@ def _short_words(closest: Launcher, sabot: float, light: Launcher, light_sabot: 
             f"the lightest that falls short: {gun(light, light_sabot)}")
 
 
-def sabot_stop(spec: MachineSpec, launcher: Launcher, sabot: float, diameter: float):
-    """The sabot's stop (``stops.pushed_stop``): the sabot leaves the muzzle at the striker's speed and is
-    stripped by a ring that lets the striker pass (from its diameter to the bore's), its absorber at the force
-    the sabot's inertia allows over its axial length (the 45 degree cone's, R - r), at most the gun's thrust,
-    against the gas's push on the sabot's face outside the striker's base: the gun's base pressure at the end
-    of its travel (``launcher.muzzle_state``) on pi (D^2 - d^2) / 4, held over the stroke.  Range of that
-    push: the barrel is full of gas at that pressure and the valve is open, so where the stopped sabot closes
-    the bore the tank refills the barrel toward its own pressure (``MuzzleState.reservoir_pressure``, the
-    larger push), and where the sabot runs out of the bore's end the jet pushes it less."""
+# how long the gas is followed with a sabot held at the muzzle (``launcher.ported_push``): past the stroke
+# time of its stop (at constant deceleration 2 x / v: the 12 lb premise's 2-3 m at about 430 m/s take 9 to
+# 14 ms), the largest barrel pressure over it held over the stroke
+SABOT_HOLD = 0.03
+
+
+def _ported(launcher: Launcher, fixture, diameter: float | None, vented: bool):
+    """The gas behind the direct gun's striker past the end of its travel (``launcher.ported_push``): the
+    striker fills the barrel's last ``housing_length``, its stripped sabot leaves its own section open."""
+    hole = math.pi * diameter ** 2 / 4 if diameter else 0.0
+    return ported_push(launcher.design.gun, fixture.housing_length, hole, SABOT_HOLD, vented)
+
+
+def sabot_stop(spec: MachineSpec, launcher: Launcher, sabot: float, diameter: float, vented: bool = False,
+               fixture=None):
+    """The sabot's stop (``stops.pushed_stop``): the sabot leaves the muzzle at the striker's speed there (the
+    gun's muzzle speed and what the gas adds after it, ``launcher.ported_push``) and is stripped by a ring that
+    lets the striker pass (from its diameter to the bore's), its absorber at the force the sabot's inertia
+    allows over its axial length (the 45 degree cone's, R - r), at most the gun's thrust, against the gas's
+    push on the sabot's face outside the striker's base: the largest barrel pressure while it is held at the
+    muzzle (``SABOT_HOLD``; the tank feeding the barrel through the open valve, the barrel venting through the
+    stripped sabot's hole and, ``vented``, the ported last striker length) on pi (D^2 - d^2) / 4, held over the
+    stroke.  ``fixture`` None: the striker taken as long as the barrel's slug (the launcher's own) is not
+    known, so the push is the end of the travel's base pressure (``launcher.muzzle_state``)."""
     g = launcher.design.gun
     rho = property_si(SABOT_MATERIAL, "density", "density")
     S = initial_yield_stress(SABOT_MATERIAL) / SABOT_SAFETY
     ring = ring_area(g.bore, diameter + RING_CLEARANCE)
-    push = muzzle_state(g).base_pressure * ring_area(g.bore, diameter)
-    return pushed_stop("sabot", sabot, launcher.design.muzzle_velocity, (g.bore - diameter) / 2, rho, S, ring,
-                       spec.oil_pressure, push, "the gun's gas at the end of its travel on the sabot's face outside "
-                       "the striker (its base pressure, launcher.muzzle_state)", max_force=gun_thrust(launcher))
+    if fixture is None:
+        speed, p = launcher.design.muzzle_velocity, muzzle_state(g).base_pressure
+        why = "the gun's gas at the end of its travel on the sabot's face outside the striker (launcher.muzzle_state)"
+    else:
+        r = _ported(launcher, fixture, diameter, vented)
+        speed, p = r.muzzle_speed, r.held_pressure
+        why = (f"the gun's gas on the sabot's face outside the striker while it is held at the muzzle, the largest "
+               f"barrel pressure over {SABOT_HOLD * 1e3:.3g} ms ({_barrel_words(vented)})")
+    return pushed_stop("sabot", sabot, speed, (g.bore - diameter) / 2, rho, S, ring, spec.oil_pressure,
+                       p * ring_area(g.bore, diameter), why, max_force=gun_thrust(launcher))
 
 
-# the most a speed the fixture's column run leaves out may add to the striker, as a share of the velocity
-# change: the band's tolerance on it (``metrics.shapes.TOLERANCE``)
+# the share of the velocity change a speed the fixture's column run leaves out may add to the striker: the
+# band's tolerance on the velocity change (``metrics.shapes.TOLERANCE``)
 STRIKER_PUSH_SHARE = TOLERANCE["velocity_change"]
 
 
 def gas_speed_limit(speed_added: float, velocity_change: float, basis: str) -> Limit:
-    """The gas's push on a striker during the pulse as a limit on the fixture's column run's range: the speed
-    it adds to the striker, at most the band's tolerance on the velocity change (``STRIKER_PUSH_SHARE``
-    times ``velocity_change``).  The striker is many times the payload, so a force on it reaches the payload
-    through the striker's speed (its impulse over the striker's mass), not force for force."""
+    """The gas's push on a striker during the pulse as a model-range limit: the speed it adds, F t / (M +
+    m_sabot), at most the band's tolerance on the velocity change (``STRIKER_PUSH_SHARE`` times
+    ``velocity_change``).  The striker is many times the payload, so a force on it changes the payload's
+    pulse through the striker's speed, not force for force."""
     return Limit("launcher's gas on the striker during the pulse", "the speed the gas adds to the striker",
                  speed_added, STRIKER_PUSH_SHARE * velocity_change, "m/s", basis,
                  "the fixture's column run's range: a speed it leaves out, at most the band's tolerance on the "
                  "velocity change (metrics.shapes.TOLERANCE) times the band's centre")
 
 
-def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 0.0) -> dict:
+def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 0.0, vented: bool = False,
+                 diameter: float | None = None) -> dict:
     """The gun's gas on a striker it fires directly while the pulse runs.  The payload waits ``GAP_TO_PAYLOAD``
     past the muzzle (``layout.place``) and the striker's front reaches the muzzle at the end of the gun's
     travel, so its base (and its sabot, there) is in the bore for the first (L_s - gap) / V_s of the pulse,
-    pushed by the base pressure at the end of the travel (``launcher.muzzle_state``) on the whole bore: a
-    force F_g = p A on the striker that the fixture's column run leaves out.  It adds F_g t / (M + m_sabot)
-    to the striker and its sabot over that time, held against the band's tolerance on the velocity change at
-    the band's centre (``gas_speed_limit``); the force is given beside the pulse's force on the payload,
-    m_p A_peak.  After the base clears the muzzle the jet through the stripped sabot's ring (or the open
-    muzzle) pushes the base on, less (left out).  Range: the pressure held at its value at the end of the
-    travel (it falls as the base moves on while the tank still feeds the barrel; the barrel is unvented,
-    as laid out: ports over the striker's length past the travel would take most of it)."""
+    pushed on the whole bore by the base pressure past the end of the travel (``launcher.ported_push``: the
+    barrel as laid out, unvented, or ``vented``, its last striker length ported): a force the fixture's column
+    run leaves out.  Its impulse over that time F t over the striker and its sabot, M + m_sabot, is the
+    speed it adds, held against the band's tolerance on the velocity change at the band's centre
+    (``gas_speed_limit``).  After the base clears the muzzle the jet through the stripped sabot's ring (or the
+    open muzzle) pushes the base on, less (left out)."""
     g = launcher.design.gun
-    state = muzzle_state(g)
-    V = fixture.striker_speed
-    in_bore = min(max(fixture.housing_length - GAP_TO_PAYLOAD, 0.0) / V, spec.pulse.duration)
-    added = state.push * in_bore / (fixture.striker_mass + sabot)
+    r = _ported(launcher, fixture, diameter, vented)
+    t0 = r.time_at(GAP_TO_PAYLOAD)
+    t1 = min(r.at_muzzle, t0 + spec.pulse.duration)
+    impulse = r.impulse(g.area, t0, t1)
+    added = impulse / (fixture.striker_mass + sabot)
     dv = spec.pulse.band_velocity_change()
-    limit = gas_speed_limit(added, dv, "the gun's base pressure at the end of its travel on the bore, on the "
-                                       f"striker and its sabot for {in_bore * 1e3:.3g} ms of the pulse "
-                                       "(launcher.muzzle_state; the barrel unvented)")
-    return {"pressure": state.base_pressure, "reservoir_pressure": state.reservoir_pressure, "force": state.push,
-            "pulse_force": fixture.payload_mass * spec.pulse.peak, "time_in_bore": in_bore, "speed_added": added,
-            "velocity_change": dv, "limit": limit}
+    limit = gas_speed_limit(added, dv, f"the gun's base pressure past the end of its travel on the bore, for "
+                                       f"{(t1 - t0) * 1e3:.3g} ms of the pulse, over the striker and its sabot "
+                                       f"({_barrel_words(vented)})")
+    k0, k1 = (int(np.searchsorted(r.time, t)) for t in (t0, t1))
+    return {"vented": vented, "pressure": float(np.interp(t0, r.time, r.base_pressure)),
+            "end_pressure": float(r.base_pressure[max(k1 - 1, k0)]), "reservoir_pressure": float(r.reservoir_pressure[0]),
+            "force": impulse / (t1 - t0), "impulse": impulse, "time_in_bore": t1 - t0, "speed_added": added,
+            "velocity_change": dv, "pulse_force": fixture.payload_mass * spec.pulse.peak, "limit": limit}
+
+
+def direct_at_speed(spec: MachineSpec, fixture, speed: float, starts: int = 3, bores: int = SABOT_BORES) -> dict:
+    """(b) and (b0) designed again for the striker at ``speed`` [m/s] (the band's centre): the lightest lumped
+    gun within the limits firing it in its sabot (``direct_launcher``: the closest where none reaches it), in
+    air and in helium, and bare ((b0)); the launch energy asked, the muzzle speed each reaches and, where the
+    air gun falls short, the travel that gun (its bore, pressure and tank) needs to reach the speed
+    (``launcher.gun.barrel_length_for``)."""
+    d, M = 2 * fixture.housing_outer_radius, fixture.striker_mass
+    out = {"speed": speed}
+    for label, s, diameter in (("air", spec, d), ("helium", dataclasses.replace(spec, gas="helium"), d),
+                               ("bare", spec, None)):
+        L, sabot, _ = _direct_design(s, M, speed, diameter, starts, bores)
+        g = L.design.gun
+        out[label] = {"feasible": bool(L.design.feasible), "muzzle_velocity": L.design.muzzle_velocity,
+                      "sabot": sabot, "launch_energy": 0.5 * (M + sabot) * speed ** 2, "bore": g.bore,
+                      "travel": g.length, "pressure": g.reservoir_pressure, "tank": g.reservoir_volume,
+                      "gun_mass": L.design.weight,
+                      "travel_to_reach": g.length if L.design.feasible else barrel_length_for(g, speed)}
+    return out
 
 
 def white_paper_launcher(spec: MachineSpec, launched: float, speed: float) -> tuple[Launcher, bool]:
