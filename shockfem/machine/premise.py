@@ -9,7 +9,8 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
   fires the same striker (the dashpot's housing and its oil, in a sabot where the bore is wider than the
   housing) at the same speed; the payload waits at the muzzle, so the gun's gas still pushes the striker
   (its base in the bore) through the pulse's start and its sabot at its stop (``striker_push``,
-  ``sabot_stop``: the gun's base pressure at the end of its travel, ``launcher.muzzle_state``);
+  ``sabot_stop``: the gun's shot continued past its travel, ``launcher.ported_push``), its barrel as laid
+  out (unvented) or, the same gun, with its last striker length ported (``vented``);
 * (c) **flying target** as the white paper sizes it: a target of the white paper's mass ratio (30 lb for
   a 12 lb article), the fixture designed for it (``fixture.design_fixture``: the housing's wall may ask
   more), fired by the white paper's own gun (12 in bore, 2000 psi, 20 ft^3, ``launcher.gun.white_paper_gun``)
@@ -21,7 +22,8 @@ Each is laid out with its stops designed as absorbers (``layout.place``) and wei
 arrangements' numbers, which holds within the limits; when neither does, by how much and what would
 change it for the direct gun (``direct_remedies``: the barrel in air and in helium); and what the closed
 form (``closed_form``, ``boundary``) says: the restitution above which any chain needs less gun than the
-direct one, against the chain's and the best pad's.
+direct one, against the chain's and the best pad's.  The rows are at the designed fixture's striker speed;
+``direct_at_speed`` and ``amplifier_at_speed`` give the guns again at the speed the band's centre asks.
 
 ``premise_map`` then asks where each wins over pulse durations, peaks and payloads, cheaply: the striker
 scaled from the designed one by what its housing's mass scales with (``StrikerLaw``: the bore squared
@@ -481,6 +483,25 @@ def direct_at_speed(spec: MachineSpec, fixture, speed: float, starts: int = 3, b
     return out
 
 
+
+def amplifier_at_speed(spec: MachineSpec, x: Arrangement, speed: float, starts: int = 3) -> dict:
+    """An amplifier arrangement ((a), (a*)) for the striker at ``speed`` [m/s] (the band's centre): the same
+    chain, whose rigid gain is fixed, so its launch speed scales as the striker's and its launch energy as
+    the square; its gun designed again (``launcher_for``) only where the answer is not already known (a gun
+    short at a lower speed is short at a higher one, a gun that reaches a higher speed reaches a lower)."""
+    ratio = speed / x.striker_speed
+    required = math.sqrt(2 * x.required_energy / x.launched_mass) if x.launched_mass > 0 else math.nan
+    out = {"speed": speed, "launch_speed": required * ratio, "launch_energy": x.required_energy * ratio ** 2}
+    if (not x.gun_feasible and ratio >= 1) or (x.gun_feasible and ratio <= 1):
+        out.update(gun_reaches=x.gun_feasible, how="as at the fixture's speed (a gun short at a lower speed is "
+                   "short at a higher one)" if not x.gun_feasible else "as at the fixture's higher speed")
+    else:
+        L = launcher_for(spec, x.launched_mass, out["launch_speed"], starts, report_binding=False)
+        out.update(gun_reaches=bool(L.design.feasible), how="its gun designed again at that launch speed",
+                   muzzle_velocity=L.design.muzzle_velocity, gun_mass=L.design.weight)
+    return out
+
+
 def white_paper_launcher(spec: MachineSpec, launched: float, speed: float) -> tuple[Launcher, bool]:
     """The white paper's gun (12 in, 2000 psi, 20 ft^3, its valve) with the barrel ``speed`` needs."""
     g = white_paper_gun(launched, spec.gas)
@@ -934,19 +955,33 @@ def limit_words(x: Arrangement) -> list[str]:
     return out
 
 
-def answer(rows: list[tuple], common: list[str], change: list[str], headline: str) -> str:
+def answer(rows: list[tuple], common: list[str], change: list[str], headline: str, centre: dict | None = None) -> str:
     """The premise's answer as a boxed paragraph (a Markdown block quote) for the top of a report: ``headline``,
     then per arrangement (``rows``: (arrangement, verdict, what it breaks)) its verdict, what it breaks and by
-    how much, its launch energy and its machine's mass and length side by side, then ``common`` (what every
-    arrangement with the fixture breaks) and ``change`` (what would change the answer)."""
+    how much, its launch energy, its machine's mass and length side by side (``centre``: {"speed", "cells":
+    name -> (launch energy, gun reaches it or None)} adds each row's launch energy at the band's centre and
+    whether its gun reaches it there), then ``common`` (what every arrangement with the fixture breaks) and
+    ``change`` (what would change the answer)."""
     def number(x, scale, fmt):
         return format(x / scale, fmt) if math.isfinite(x) else "-"
-    lines = [f"> **The answer.** {headline}", ">",
-             "> | arrangement | verdict | what it breaks, by how much | launch energy asked [MJ] | machine [t] | "
-             "length [m] |", "> |---|---|---|---|---|---|"]
+
+    def at_centre(x):
+        if not centre:
+            return ""
+        energy, reaches = centre["cells"].get(x.name, (math.nan, None))
+        return (f" {number(energy, 1e6, '.4g')} | "
+                f"{'-' if reaches is None else 'yes' if reaches else 'NO'} |")
+    head = ("> | arrangement | verdict | what it breaks, by how much | launch energy asked [MJ] | machine [t] | "
+            "length [m] |")
+    rule = "> |---|---|---|---|---|---|"
+    if centre:
+        head += (f" at the band's centre ({centre['speed']:.4g} m/s): launch energy asked [MJ] | a gun within the "
+                 "limits reaches it |")
+        rule += "---|---|"
+    lines = [f"> **The answer.** {headline}", ">", head, rule]
     for x, word, why in rows:
         lines.append(f"> | {x.name} | {word} | {'; '.join(why) or 'nothing'} | {number(x.required_energy, 1e6, '.4g')} | "
-                     f"{number(x.machine_mass, 1e3, '.4g')} | {number(x.machine_length, 1.0, '.3g')} |")
+                     f"{number(x.machine_mass, 1e3, '.4g')} | {number(x.machine_length, 1.0, '.3g')} |{at_centre(x)}")
     lines += [">", "> " + " ".join(common + [("What would change it: " + "; ".join(change) + ".") if change else ""])]
     return "\n".join(lines)
 

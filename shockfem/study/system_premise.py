@@ -171,7 +171,9 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     if cfg.get("best_chain"):
         echo("  (a*) the amplifier at its best chain")
         stars = [P.best_chain_arrangement(m, rep.path("best_chain"), cfg["starts"])]
-    b = P.direct_arrangement(m.spec, m.fixture, cfg.get("sabot_starts", cfg["starts"]), bores=cfg["sabot_bores"])
+    sabot_starts = cfg.get("sabot_starts", cfg["starts"])
+    b = P.direct_arrangement(m.spec, m.fixture, sabot_starts, bores=cfg["sabot_bores"])
+    bv = P.direct_arrangement(m.spec, m.fixture, sabot_starts, bores=cfg["sabot_bores"], vented=True)
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
     c, target = P.flying_target_arrangement(m.spec, m.fixture, evaluations=cfg["fixture_evaluations"])
@@ -181,12 +183,14 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     header = ARRANGEMENT_HEADER[:-2] + [f"gun reaches it (at the fixture's {m.fixture.striker_speed:.4g} m/s"
                                         + ("" if m.fixture.band_passed else ", a pulse that fails the band") + ")",
                                         "notes"]
-    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, b0, c, *d_rows)],
+    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, bv, b0, c, *d_rows)],
               ARRANGEMENT_FORMATS)
     rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
              "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
              "psi) with the striker in an aluminium sabot (its mass grows with the bore, so the bore is scanned); "
+             "its barrel as laid out, unvented, and (b, vented) the same gun with its last striker length ported "
+             "into the atmosphere (`launcher.ported_push`: the valve stays open on the tank, as in the gun model); "
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
              "target (30 lb for a 12 lb article, the fixture designed for it) fired by the white paper's own gun "
              "(12 in, 2,000 psi, 20 ft^3) with as long a barrel as it needs; (d) the closed-breech gas drive "
@@ -209,6 +213,11 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     boundary_table(rep, closed)
     band_table(rep, m, band)
     springs = gas_spring_section(rep, m, b.launched_mass - b.striker_mass)
+    echo("  (b), (b0) and the amplifiers' guns again at the band's centre")
+    speed = centre["striker_speed"]
+    guns = {"direct": P.direct_at_speed(m.spec, f, speed, sabot_starts, cfg["sabot_bores"]),
+            "amplifiers": {x.name: P.amplifier_at_speed(m.spec, x, speed, cfg["starts"]) for x in (a, *stars)}}
+    centre_table(rep, guns)
     words = (P.verdict(a, b, c, b0, closed, remedies, (closed_spec, remedies_spec, f.band_passed))[:-1] + "; "
              + D.verdict_words(drives, a, b) + ".")
     rep.text("**Verdict.** " + words[0].upper() + words[1:])
@@ -225,7 +234,10 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
                              for x, y in zip(drives, d_rows)])
     rep.value("premise_closed_form_at_spec", closed_spec)
     rep.value("direct_remedies_at_spec", remedies_spec)
-    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars, springs)
+    rep.value("at_the_band_centre", guns)
+    rep.value("direct", b.as_dict())
+    rep.value("direct_vented", bv.as_dict())
+    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars, springs, bv, guns)
     rep.lead(box) if answer_at_top else rep.text(box)
     return a, b, b0, c, target
 
@@ -267,21 +279,112 @@ def band_table(rep: Report, m, band: dict):
                                for label, x in band["rows"].items()} | {"flips": flips})
 
 
+def centre_table(rep: Report, guns: dict):
+    """The guns again at the band's centre (``premise.direct_at_speed``, ``premise.amplifier_at_speed``)."""
+    d, rows = guns["direct"], []
+    for label, key in (("(b) direct striker, air", "air"), ("(b) direct striker, helium", "helium"),
+                       ("(b0) bare striker, air", "bare")):
+        x = d[key]
+        rows.append([label, x["launch_energy"] / 1e6, x["muzzle_velocity"], "yes" if x["feasible"] else "NO",
+                     x["bore"] / IN, x["travel"] / FT, x["pressure"] / PSI, x["tank"], (x["gun_mass"] + x["sabot"]) / 1e3,
+                     x["travel_to_reach"] / FT, "the lightest gun within the limits designed again (its bore scanned "
+                     "with its sabot)" if key != "bare" else "the lightest gun within the limits designed again"])
+    for name, x in guns["amplifiers"].items():
+        rows.append([name, x["launch_energy"] / 1e6, x.get("muzzle_velocity", math.nan),
+                     "yes" if x["gun_reaches"] else "NO", math.nan, math.nan, math.nan, math.nan,
+                     x.get("gun_mass", math.nan) / 1e3, math.nan,
+                     f"the same chain, its first mass at {x['launch_speed']:.4g} m/s: {x['how']}"])
+    rep.table("premise_at_centre", [f"at the band's centre ({d['speed']:.4g} m/s)", "launch energy asked [MJ]",
+                                    "muzzle speed reached [m/s]", "reaches it", "bore [in]", "travel [ft]",
+                                    "reservoir [psi]", "tank [m^3]", "gun and sabot [t]",
+                                    "travel the air gun needs, its other variables kept (lumped gun) [ft]", "how"],
+              rows, ["{}", "{:.4g}", "{:.4g}", "{}", "{:.3g}", "{:.3g}", "{:,.0f}", "{:.3g}", "{:.4g}", "{:.3g}", "{}"])
+    rep.text("The arrangements' table above is at the designed fixture's striker speed; the band's centre asks "
+             "more. This table designs (b)'s and (b0)'s guns again for it (`premise.direct_at_speed`; the lumped "
+             "gun of `launcher.gun.fire`, its valve the full bore) and scales the amplifiers' chains (their rigid "
+             "gain fixed, so the launch energy goes as the speed squared), their guns designed again where the "
+             "answer is not already known (`premise.amplifier_at_speed`).")
+
+
+def _worst(x) -> tuple[float, str]:
+    """What keeps an arrangement from being a machine most, as (the ratio, its words): the gun's shortfall in
+    launch energy, else its worst broken limit beyond the fixture's (common to (a) to (c))."""
+    if not x.gun_feasible:
+        if x.launch_energy > 0 and math.isfinite(x.launch_energy) and math.isfinite(x.required_energy):
+            r = x.required_energy / x.launch_energy
+            return r, f"its gun at every limit is {r:.3g} times short of the launch energy"
+        return math.inf, "its gun never reaches the speed"
+    worst = [lim for lim in broken(x.limits) if not lim.component.startswith(("dashpot", "striker housing",
+                                                                             "piston", "article"))]
+    if not worst:
+        return 1.0, "nothing of its own broken"
+    w = worst[0]
+    return w.ratio, f"its {w.component}'s {w.quantity} is {w.ratio:.3g} times its limit"
+
+
+def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine) -> str:
+    """The premise's answer in two sentences: whether amplification makes the tester feasible and by how much
+    each amplifier misses (Q at the band's centre beside it, and what decides when Q is at parity); then the
+    direct gun it would replace, with its margins at the band's centre."""
+    s = m.spec
+    lb = round(s.article_mass / LB)
+    amplified = [x.name for x in amplifiers if machine(x) == "FEASIBLE"]
+    first = (f"Velocity amplification does {'' if amplified else 'not '}make a compact non-pyrotechnic tester "
+             f"feasible for the {lb} lb spec ({s.pulse.peak / G0:,.0f} g x {s.pulse.duration * 1e3:.3g} ms, within "
+             f"{s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, {s.max_pressure / PSI:,.0f} psi): "
+             + ("FEASIBLE: " + ", ".join(amplified) if amplified else
+                "; ".join(f"{x.name.split(' ')[0]} {_worst(x)[1]}" for x in amplifiers)))
+    w, face = (closed_spec.get("with_sabot") or {}).get("best"), closed_spec.get("interface") or {}
+    if w:
+        q = w["gun_ratio"]
+        first += (f"; at the band's centre the closed form's best chain needs Q = {q:.3g} of the direct gun's "
+                  f"p0 A L" + (f", at parity, so the interfaces decide: its fastest closes at "
+                               f"{face['closing_speed']:.0f} m/s, where the library's best solid returns its energy "
+                               f"only up to {face['elastic_limit_speed']:.0f} m/s" if q <= P.PARITY and face else
+                               ", more gun than the direct machine"))
+    built = [x for x in amplifiers if x.gun_feasible and math.isfinite(x.gun_mass)]
+    if built and b.gun_feasible:
+        x = min(built, key=lambda y: y.gun_mass)
+        first += (f" (the designed guns, tanks included: {x.name.split(' ')[0]}'s {x.gun_mass / 1e3:.4g} t against "
+                  f"(b)'s {b.gun_mass / 1e3:.4g} t at the fixture's speed, {x.gun_mass / b.gun_mass:.3g} times)")
+    air, he, V = guns["direct"]["air"], guns["direct"]["helium"], guns["direct"]["speed"]
+    ratio_b, _ = _worst(b)
+    nearer = all(ratio_b < _worst(x)[0] for x in amplifiers)
+    gun = (f"its air gun within the limits reaches it ({air['launch_energy'] / 1e6:.4g} MJ)" if air["feasible"] else
+           f"its air gun at every limit reaches {air['muzzle_velocity']:.4g} m/s, "
+           f"{100 * (1 - air['muzzle_velocity'] / V):.1f}% short (a {air['travel_to_reach'] / FT:.3g} ft travel would "
+           f"reach it" + (", or helium within the limits" if he["feasible"] else "") + ")")
+    stops = []
+    for x, how in ((b, "as laid out"), (bv, "with its last striker length ported")):
+        r, words = _worst(x)
+        stops.append(f"{how}, {words if r > 1 else 'nothing of its own is broken'}")
+    second = (f"The direct gun it would replace, (b), is {machine(b)}" + (" and misses by less" if nearer and
+                                                                          machine(b) != "FEASIBLE" else "")
+              + f": at the band's centre ({V:.4g} m/s, {air['launch_energy'] / 1e6:.4g} MJ) {gun}; "
+              + "; ".join(stops) + " (the valve left open on the tank, as the gun model has it).")
+    return first + ". " + second
+
+
 def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars: list = (),
-               springs: dict | None = None) -> str:
+               springs: dict | None = None, vented=None, guns: dict | None = None) -> str:
     """The premise's answer, boxed, for the top of the report (``premise.answer``), from the arrangements'
     numbers (``stars``: the amplifier at its best chain, (a*), where designed; ``springs``: the chain with gas
-    springs, ``gas_spring_chain``): each arrangement's verdict and what it breaks, what every arrangement with
-    the fixture breaks, and what would change it."""
+    springs, ``gas_spring_chain``; ``vented``: (b) with its last striker length ported; ``guns``: the guns at
+    the band's centre, ``centre_table``): a two-sentence answer, each arrangement's verdict and what it
+    breaks, its launch energy at the fixture's speed and at the band's centre, what every arrangement with the
+    fixture breaks, and what would change it."""
     a, b, b0, c = abc
+    bv = vented or b
     fixture_ok = not a.fixture_problems
 
     def machine(x):
         return "FEASIBLE" if x.gun_feasible and x.feasible and fixture_ok else "NOT FEASIBLE"
     amplifiers = [a, *stars]
-    rows = [(x, machine(x), P.limit_words(x)) for x in amplifiers] + [(b, machine(b), P.limit_words(b)),
-            (b0, "a lower bound, not a machine" + (" (its gun within the limits)" if b0.gun_feasible else ""),
-             P.limit_words(b0)), (c, machine(c), P.limit_words(c))]
+    rows = [(x, machine(x), P.limit_words(x)) for x in amplifiers] + [(b, machine(b), P.limit_words(b))]
+    if vented is not None:
+        rows.append((vented, machine(vented), P.limit_words(vented)))
+    rows += [(b0, "a lower bound, not a machine" + (" (its gun within the limits)" if b0.gun_feasible else ""),
+              P.limit_words(b0)), (c, machine(c), P.limit_words(c))]
     for x, d in drives:
         if d.moving is None:
             rows.append((x, "NOT FEASIBLE", [f"no design: {d.notes[0]}"]))
@@ -293,26 +396,38 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
             why.insert(0, f"its pulse outside the band at the face pressure's upper end (worst excess "
                           f"{d.recovery['band'].worst_excess:.3g} of the peak)")
         rows.append((x, "CANDIDATE" if d.feasible else "NOT FEASIBLE", why))
-    s, f = m.spec, m.fixture
-    lb = round(s.article_mass / LB)
-    ok = [x.name for x, word, _ in rows if word in ("FEASIBLE", "CANDIDATE")]
+    f = m.fixture
     centre = band["rows"]["the band's centre"]
-    pays = centre["amplification"]
-    amplified = any(machine(x) == "FEASIBLE" for x in amplifiers)
-    headline = (f"Velocity amplification does {'' if amplified else 'not '}make a compact "
-                f"non-pyrotechnic tester feasible for the {lb} lb spec ({s.pulse.peak / G0:,.0f} g x "
-                f"{s.pulse.duration * 1e3:.3g} ms, within {s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, "
-                f"{s.max_pressure / PSI:,.0f} psi): "
-                + (("FEASIBLE: " + ", ".join(ok)) if ok else "no arrangement is FEASIBLE")
-                + (f", and by the closed form amplification {pays}" if pays else "") + ". "
-                f"The rows are at the designed fixture's striker speed ({f.striker_speed:.4g} m/s"
-                + ("" if f.band_passed else ", a pulse that fails the band")
-                + f"); the band's centre asks {centre['striker_speed']:.4g} m/s (section 8's band table), where "
-                + ("an air gun within the limits fires the striker in its sabot" if centre["air_fires_sabot"] else
-                   "no air gun within the limits fires the striker in its sabot")
-                + ". Every number here is this run's.")
-    common = ([f"(a) to (c) carry the same fixture, and it breaks its own limits: {'; '.join(a.fixture_problems)}."]
-              if a.fixture_problems else [])
+    centre_cells = _centre_cells(guns, (a, *stars), (b, bv), b0, c, [x for x, _ in drives]) if guns else None
+    headline = (_headline(m, amplifiers, b, bv, closed_spec, guns, machine) if guns else
+                f"Velocity amplification does {'' if any(machine(x) == 'FEASIBLE' for x in amplifiers) else 'not '}"
+                "make a compact non-pyrotechnic tester feasible.")
+    common = [f"The rows' first energy is at the designed fixture's striker speed ({f.striker_speed:.4g} m/s"
+              + ("" if f.band_passed else ", a pulse that fails the band")
+              + f"), the second at the band's centre ({centre['striker_speed']:.4g} m/s, the speed the specification "
+              "asks; section 8's band and centre tables). Every number here is this run's."]
+    if a.fixture_problems:
+        common.append(f"(a) to (c) carry the same fixture, and it breaks its own limits: {'; '.join(a.fixture_problems)}.")
+    return P.answer(rows, common, _changes(a, b, bv, centre, closed_spec, springs, drives), headline,
+                    centre_cells)
+
+
+def _centre_cells(guns: dict, amplifiers: tuple, directs: tuple, b0, c, drives: list) -> dict:
+    """Each row's launch energy at the band's centre and whether its gun reaches it, by name."""
+    cells = {x.name: (guns["amplifiers"][x.name]["launch_energy"], guns["amplifiers"][x.name]["gun_reaches"])
+             for x in amplifiers}
+    air, bare = guns["direct"]["air"], guns["direct"]["bare"]
+    cells.update({x.name: (air["launch_energy"], air["feasible"]) for x in directs})
+    cells[b0.name] = (bare["launch_energy"], bare["feasible"])
+    # the flying target's gun short at the fixture's (lower) speed is short at the centre's; the gas drives are
+    # designed at the band's centre already
+    cells[c.name] = (math.nan, c.gun_feasible if c.gun_feasible is False else None)
+    cells.update({x.name: (x.required_energy, x.gun_feasible) for x in drives})
+    return {"speed": guns["direct"]["speed"], "cells": cells}
+
+
+def _changes(a, b, bv, centre: dict, closed_spec: dict, springs: dict | None, drives: list) -> list[str]:
+    """What would change the premise's answer, from the run's numbers."""
     change = []
     k = closed_spec
     face, w = k.get("interface") or {}, k["with_sabot"]
@@ -334,28 +449,40 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
                          "the chain's masses leave out" if shares else "")
                       + (", and springs that break their limits (section 8's gas-spring table)"
                          if any(i["broken"] for i in best.get("interfaces", [])) else ""))
-    sabot_broken = [lim for lim in broken(b.limits) if lim.component.startswith("stop of sabot")]
-    push = next((lim for lim in b.limits if lim.component == "stop of sabot"), None)
-    if sabot_broken and push is not None:
-        change.append(f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push "
-                      f"(the one designed breaks {len(sabot_broken)}, the worst its {sabot_broken[0].quantity} "
-                      f"{sabot_broken[0].ratio:.3g} times), or a barrel vented before the sabot meets it")
+    change += _sabot_changes(b, bv)
     for lim in broken(b.limits):
         if lim.component.startswith("launcher's gas on the striker"):
             change.append(f"for (b), the gas off the striker before the pulse (it adds {lim.value:.3g} m/s, where "
-                          f"the column run may leave out {lim.limit:.3g}): ports over the barrel's last striker "
-                          "length, past the gun's travel")
+                          f"the column run may leave out {lim.limit:.3g})")
     if not centre["air_fires_sabot"]:
         r = centre["remedies"]
         change.append(f"at the band's centre, a gun past the limits for (b): an air barrel of "
-                      f"{r['air']['chambered_barrel'] / FT:.3g} ft (the chambered gun) or helium "
-                      f"({r['helium']['chambered_speed']:.4g} m/s at every limit, chambered)")
+                      f"{r['air']['chambered_barrel'] / FT:.3g} ft (the ideal chambered gun; the lumped gun's in the "
+                      f"centre table) or helium ({r['helium']['chambered_speed']:.4g} m/s at every limit, chambered)")
     if a.fixture_problems:
         change.append("and for (a) to (c) a fixture within its own limits")
     for x, d in drives:
         if d.moving is not None and not d.feasible:
             change.append(f"for (d) in {d.gas}, " + D._what_would_bring_it_in(d))
-    return P.answer(rows, common, change, headline)
+    return change
+
+
+def _sabot_changes(b, bv) -> list[str]:
+    """For (b), the sabot's stop against the gas's push, as laid out and ported."""
+    def stop(x):
+        return ([lim for lim in broken(x.limits) if lim.component.startswith("stop of sabot")],
+                next((lim for lim in x.limits if lim.component == "stop of sabot"), None))
+    (shut, push), (open_, push_v) = stop(b), stop(bv)
+    if not shut or push is None:
+        return []
+    words = (f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push (the one "
+             f"designed breaks {len(shut)}, the worst its {shut[0].quantity} {shut[0].ratio:.3g} times)")
+    if bv is not b and push_v is not None:
+        words += (f"; porting the barrel's last striker length cuts the push to {push_v.value / 1e6:.3g} MN"
+                  + (f", and its stop still breaks {len(open_)} (the worst {open_[0].ratio:.3g} times): the open "
+                     "valve refills the barrel from the tank; a valve that shuts after the shot (not modelled "
+                     "here) or a catch that takes the push at rest" if open_ else ", and its stop holds"))
+    return [words]
 
 
 def gas_drive_table(rep: Report, drives: list):

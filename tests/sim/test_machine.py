@@ -293,7 +293,19 @@ def test_premise_arrangements_and_map(machine):
     assert band["the band's largest"][1] == pytest.approx(0.99 * AT, rel=1e-12)
     assert band["the specified rectangle's own area"][1] == pytest.approx(AT, rel=1e-12)
     # the direct gun's striker carries the gas's push through the pulse's start: its limit is in (b)'s row
-    assert "pushes the striker with" in b[-1] and "push on it" in b[-1]
+    assert "pushes the striker and its sabot" in b[-1] and "push on it" in b[-1]
+    # the ported barrel is the same gun (launched mass, bore, travel, pressure, tank), its last striker length
+    # ported: the gas pushes its stopped sabot no harder than the shut barrel's
+    vented = rows["(b) direct striker, vented"]
+    assert vented[1:11] == b[1:11] and "ported" in vented[-1]
+    push = {name: next(lim["value"] for lim in results["values"][key]["limits"] if lim["component"] == "stop of sabot")
+            for name, key in (("shut", "direct"), ("ported", "direct_vented"))}
+    assert push["ported"] <= push["shut"]
+    # the guns again at the band's centre: the striker in its sabot at the centre's speed, M V^2 / 2
+    centre = results["values"]["at_the_band_centre"]["direct"]
+    assert centre["air"]["launch_energy"] == pytest.approx(
+        0.5 * (f["striker_mass"] + centre["air"]["sabot"]) * centre["speed"] ** 2, rel=1e-12)
+    assert centre["bare"]["launch_energy"] == pytest.approx(0.5 * f["striker_mass"] * centre["speed"] ** 2, rel=1e-12)
     # a lower restitution asks more masses for the same gain: its launch energy is higher, or it has no design
     # (null: its best chain needs more gun than the direct one, and Q only falls as e rises)
     lo, hi = effect
