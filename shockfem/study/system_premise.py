@@ -185,22 +185,24 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
                                         "notes"]
     rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, bv, b0, c, *d_rows)],
               ARRANGEMENT_FORMATS)
+    s = m.spec
     rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
              "pulse through the same dashpot; each is laid out with its stops designed as absorbers and weighed the "
-             "same way (`machine/premise.py`). (b) is the lightest gun within the same limits (20 ft, 36 in, 5,000 "
+             f"same way (`machine/premise.py`). (b) is the lightest gun within the same limits "
+             f"({s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, {s.max_pressure / PSI:,.0f} "
              "psi) with the striker in an aluminium sabot (its mass grows with the bore, so the bore is scanned); "
              "its barrel as laid out, unvented, and (b, vented) the same gun with its last striker length ported "
              "into the atmosphere (`launcher.ported_push`: the valve stays open on the tank, as in the gun model); "
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
-             "target (30 lb for a 12 lb article, the fixture designed for it) fired by the white paper's own gun "
+             f"target (its 30 lb for a 12 lb article in proportion: {P.WHITE_PAPER_TARGET * s.article_mass / LB:.3g} "
+             "lb here, the fixture designed for it) fired by the white paper's own gun "
              "(12 in, 2,000 psi, 20 ft^3) with as long a barrel as it needs; (d) the closed-breech gas drive "
              "(`machine/gas_drive.py`, the HYGE-type actuator: the gas drives piston, carriage and article itself, "
              "no striker and no dashpot; its 'launched' column is the moving mass, its 'barrel' the stroke) in air "
-             "and in helium at the spec's 5,000 psi, its pulse by the infinitely chambered gun's base pressure "
-             "with the valve's onset ramp, its thrust ended by vent ports and the piston's arrest (the carriage and "
-             "article separating and caught at "
-             "the spec's catch deceleration after the band's window; the model leaves out the valve's dynamics "
-             "beyond that ramp, gas friction and heat loss, the seal, the piston's elastic waves).")
+             f"and in helium at the spec's {s.max_pressure / PSI:,.0f} psi, its pulse by the infinitely chambered "
+             "gun's base pressure with the valve's onset ramp, its thrust ended by vent ports and the piston's "
+             "arrest (the carriage and article separating and caught at the spec's catch deceleration after the "
+             "band's window; the model leaves out the valve's dynamics beyond that ramp, gas friction and heat loss, the seal, the piston's elastic waves).")
     gas_drive_table(rep, drives)
     f = m.fixture
     closed = P.closed_form(m, sabot=b.launched_mass - b.striker_mass)
