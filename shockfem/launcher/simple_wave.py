@@ -28,7 +28,9 @@ gas flows steadily and isentropically from a chamber at rest into the bore at th
 where the bore's entry chokes (the gas there at its sound speed c* = u*, p* = p0 (2 / (gamma + 1))^(gamma /
 (gamma - 1))); above u* the bore's gas expands from that sonic state in a simple wave,
 p = p* [1 - (gamma - 1) (u - u*) / (2 c*)]^(2 gamma / (gamma - 1)), to the escape speed u* + 2 c* / (gamma - 1).
-Its I(u) is integrated by quadrature.  No gun of that gas, temperature and pressure gives a higher base
+Below u* its I(u) is closed too: with v = 1 - (gamma - 1) u^2 / (2 c0^2), d(v^(-1 / (gamma - 1)))/du = 2 u
+v^(-gamma / (gamma - 1)) / c0^2, so I(u) = c0^2 (v^(-1 / (gamma - 1)) - 1); above it the sonic state's
+I(u*) plus the simple wave's from there.  No gun of that gas, temperature and pressure gives a higher base
 pressure at any speed than a chamber of unlimited size and section: eta of the chambered gun is the upper
 bound the simple-wave gun is not.
 
@@ -39,7 +41,6 @@ from __future__ import annotations
 
 import math
 
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 
@@ -81,16 +82,21 @@ def _integral(u: float, c0: float, gamma: float, chambered: bool = False) -> flo
     return (-math.expm1((1 - k) * ln_w) / (1 - k) + math.expm1((2 - k) * ln_w) / (2 - k)) / (a * a)
 
 
+def _steady_integral(u: float, c0: float, gamma: float) -> float:
+    """I(u) of the infinitely chambered gun up to u* (the steady inflow), c0^2 (v^(-1 / (gamma - 1)) - 1),
+    v = 1 - (gamma - 1) u^2 / (2 c0^2) (module docstring), formed as expm1 of log1p for round-off at small u."""
+    return c0 * c0 * math.expm1(-math.log1p(-(gamma - 1) * u * u / (2 * c0 * c0)) / (gamma - 1))
+
+
 def _chambered_integral(u: float, c0: float, gamma: float) -> float:
-    """I(u) of the infinitely chambered gun: by quadrature up to u* (a smooth integrand there), then the
-    simple wave from the sonic state in closed form, int_u*^u s / pi ds = (I_c*(u - u*) + u* J(u - u*)) / p*,
+    """I(u) of the infinitely chambered gun: the steady inflow's closed form up to u* (``_steady_integral``),
+    then the simple wave from the sonic state, int_u*^u s / pi ds = (I_c*(u - u*) + u* J(u - u*)) / p*,
     I_c* the simple-wave integral with c0 = c* and J(x) = int_0^x w^(-k) ds = (w^(1 - k) - 1) / (a (k - 1)),
     w = 1 - a x; inf past the escape speed."""
     star = sonic_speed(c0, gamma)
     if u >= escape_speed(c0, gamma, True):
         return math.inf
-    low = quad(lambda s: s / chambered_pressure_ratio(s, c0, gamma), 0.0, min(u, star), epsabs=0.0,
-               epsrel=1e-12)[0]
+    low = _steady_integral(min(u, star), c0, gamma)
     if u <= star:
         return low
     x = u - star
