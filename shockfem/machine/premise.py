@@ -213,17 +213,73 @@ def _arrangement(name: str, launcher: Launcher, fixture, layout: Layout, feasibl
 
 
 def amplifier_arrangement(m: Machine) -> Arrangement:
-    """(a): the designed machine (its pads' restitutions measured, ``machine.amplifier``)."""
+    """(a): the designed machine (its pads' restitutions measured, ``machine.amplifier``), with the gun's gas
+    on its first mass while that mass strikes the second (``first_mass_push``) as a limit."""
     a = m.amplifier
     notes = [f"{len(a.masses)} masses, effective e {a.restitution:.4f} (the rigid chain at its pads' "
              "restitutions: " + ", ".join(f"{e:.3f}" for e in a.restitutions) + ")"]
+    push = first_mass_push(m)
+    if push is not None:
+        notes.append(_first_push_words(push))
     if not m.feasible:
         notes.append(f"the machine is NOT FEASIBLE: {len(m.problems)} problems, the first: {m.problems[0]}")
     out = _arrangement("(a) amplifier", m.launcher, m.fixture, m.layout, m.launcher.design.feasible, notes)
-    out.feasible = m.feasible
-    out.limits = list(m.limits)
+    out.limits = list(m.limits) + ([push["limit"]] if push is not None else [])
+    out.feasible = m.feasible and (push is None or push["limit"].holds)
     out.fixture_problems = fixture_problems(m)
     return out
+
+
+def first_mass_push(m: Machine) -> dict | None:
+    """The gun's gas on the amplifier's first mass while it strikes the second, None where the gun does not
+    reach its launch speed (its push there is not the design's) or the chain is not launched from the gun.
+    The first mass's front reaches the muzzle at the end of the gun's travel and the first pad waits
+    ``gaps[0]`` past it (``layout.place``), so where the mass is longer than that gap its base is still in the
+    bore when the contact starts: the gun's shot continued past its travel over the mass's length
+    (``launcher.ported_push``, the barrel as laid out, unvented) gives the base pressure on the bore from
+    the contact's start for the stage's estimated contact duration, or until the base leaves the muzzle.
+    The two masses move together through the contact, so its impulse J adds J / (m1 + m2) to the second
+    (Newton's restitution: the impulse leaves the masses' relative speeds alone), and the chain ahead, linear
+    in that speed, carries it to the striker times V_s / v2 (the rigid chain's own speeds at the measured
+    restitutions): the speed added to the striker, held against the band's tolerance (``gas_speed_limit``).
+    Left out: the base pressure's rise as the mass slows in the contact (the push is the free shot's, a
+    little low), the push after the contact (the first mass, pushed on, may strike the second again: not
+    followed) and the muzzle's blast once the base is out."""
+    a, L = m.amplifier, m.launcher
+    if a.architecture != "launched-chain" or not a.stages or not L.design.feasible:
+        return None
+    g, stage = L.design.gun, a.stages[0]
+    slug, gap = a.bodies[0]["length"], a.gaps[0]
+    m1, m2 = a.masses[0], a.masses[1]
+    v1 = L.design.muzzle_velocity
+    v2 = (1 + a.restitutions[0]) * m1 * v1 / (m1 + m2)
+    dv = m.spec.pulse.band_velocity_change()
+    if gap >= slug:
+        added, t0, t1, impulse = 0.0, 0.0, 0.0, 0.0
+        basis = (f"the first mass's base out of the bore before it meets the pad ({slug:.3g} m long, the pad "
+                 f"{gap:.3g} m past the muzzle): the muzzle's blast left out")
+    else:
+        r = ported_push(g, slug, 0.0, 1e-6, False)
+        t0 = r.time_at(gap)
+        t1 = min(r.at_muzzle, t0 + stage.contact_duration)
+        impulse = r.impulse(g.area, t0, t1)
+        added = impulse / (m1 + m2) * a.striker_speed / v2
+        basis = (f"the gun's base pressure past the end of its travel on the bore, for {(t1 - t0) * 1e3:.3g} ms of "
+                 f"the {stage.pair} contact, shared by the two masses and carried to the striker by the chain")
+    return {"pair": stage.pair, "impulse": impulse, "time_in_bore": t1 - t0,
+            "contact_duration": stage.contact_duration, "force": impulse / (t1 - t0) if t1 > t0 else 0.0,
+            "speed_added": added, "velocity_change": dv, "limit": gas_speed_limit(added, dv, basis)}
+
+
+def _first_push_words(push: dict) -> str:
+    if push["time_in_bore"] <= 0:
+        return f"the first mass's base leaves the bore before its {push['pair']} contact (no push in it)"
+    lim = push["limit"]
+    return (f"the gun's gas (the barrel as laid out, unvented, launcher.ported_push) pushes the first mass for "
+            f"{push['time_in_bore'] * 1e3:.3g} ms of its {push['contact_duration'] * 1e3:.3g} ms {push['pair']} "
+            f"contact, its base still in the bore, with {push['force'] / 1e6:.3g} MN on the mean: it adds "
+            f"{push['speed_added']:.3g} m/s to the striker, {lim.ratio:.3g} of the band's tolerance "
+            f"({lim.limit:.3g} m/s), which the chain's rigid law leaves out")
 
 
 def best_chain_arrangement(m: Machine, out_dir: str, starts: int = 3) -> Arrangement:
@@ -714,6 +770,20 @@ def direct_remedies(spec: MachineSpec, striker: float, speed: float, diameter: f
     # the bare striker at the same limits (a massless sabot): what no sabot could beat
     out["bare"] = _ideal_guns(striker, speed, p, A, L)
     return out
+
+
+def barrel_as_laid_out(spec: MachineSpec, fixture, x: Arrangement) -> dict:
+    """The spec's barrel limit is read as the gun's travel (``launcher_for``'s ``max_length``); the barrel as
+    laid out (``layout.place``) adds the slug it holds at rest, for a directly fired striker its housing's
+    length.  Its length [m] and, with the whole barrel within the limit (the travel shortened by the
+    striker), the speed the infinitely chambered gun (the ideal upper bound, ``launcher.simple_wave``) of
+    ``x``'s bore and pressure in the spec's gas gives ``x``'s launched mass [m/s]."""
+    g = GASES[spec.gas]
+    travel_within = spec.max_barrel_length - fixture.housing_length
+    return {"barrel": x.barrel + fixture.housing_length, "travel_within": travel_within,
+            "chambered_speed_within": muzzle_speed(travel_within, x.launched_mass, x.reservoir_pressure,
+                                                   math.pi * x.bore ** 2 / 4, sound_speed(spec.gas), g.gamma,
+                                                   chambered=True)}
 
 
 def _ideal_guns(M: float, speed: float, p: float, A: float, L: float) -> dict:

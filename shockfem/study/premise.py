@@ -31,11 +31,13 @@ def run_study(size: str = "default", out_dir: str = "results/premise", echo=prin
     spec = read_spec({"article": "12 lb"})
     if cfg["pads"]:
         spec = dataclasses.replace(spec, pad_resolution=cfg["pads"])
-    rep.text(f"`shockfem study premise --size {size}`; every number below was computed by this run. The machine is "
-             f"`shockfem design-machine --article \"12 lb\"` (pads at '{spec.pad_resolution}'), in `12lb/`.")
     echo("1/3 the 12 lb machine")
     m = design_machine(spec, f"{out_dir}/12lb", echo=echo, starts=cfg["starts"],
                        evaluations=cfg["fixture_evaluations"])
+    ran = sum(st.measured for st in m.amplifier.stages)
+    rep.text(f"`shockfem study premise --size {size}`; every number below was computed by this run. The machine is "
+             f"`shockfem design-machine --article \"12 lb\"` (pads meshed at '{spec.pad_resolution}': {ran} of its "
+             f"{len(m.amplifier.stages)} pads run, the others at their material's estimate), in `12lb/`.")
     write_machine(m, f"{out_dir}/12lb")
     rep.text(f"The machine: {'FEASIBLE' if m.feasible else 'NOT FEASIBLE'}; " + "; ".join(m.binding) + ".")
     echo("2/3 the premise and its map")

@@ -15,6 +15,8 @@ from ..machine import premise as P
 from ..machine.amplifier import chain_scene
 from ..machine.gas_spring_chain import gas_spring_chain
 from ..machine.limits import broken, by_cause, counted, verdict_line
+from ..machine.stops import OIL_SOUND_SPEED
+from ..programmer.dashpot_design import OIL
 from ..machine.white_paper import CLAIM, claims
 from ..units import FT, G0, IN, LB, PSI
 from .report import Report
@@ -324,10 +326,11 @@ def _worst(x) -> tuple[float, str]:
     return w.ratio, f"its {w.component}'s {w.quantity} is {w.ratio:.3g} times its limit"
 
 
-def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine) -> str:
+def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine, least: float) -> str:
     """The premise's answer in two sentences: whether amplification makes the tester feasible and by how much
-    each amplifier misses (Q at the band's centre beside it, and what decides when Q is at parity); then the
-    direct gun it would replace, with its margins at the band's centre."""
+    each amplifier misses, with the fixture every arrangement shares (Q at the band's centre beside it, and
+    what decides when Q is at parity); then the direct gun it would replace, with its margins at the band's
+    centre and its least speed (``least`` [m/s])."""
     s = m.spec
     lb = round(s.article_mass / LB)
     amplified = [x.name for x in amplifiers if machine(x) == "FEASIBLE"]
@@ -336,11 +339,18 @@ def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine
              f"{s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, {s.max_pressure / PSI:,.0f} psi): "
              + ("FEASIBLE: " + ", ".join(amplified) if amplified else
                 "; ".join(f"{x.name.split(' ')[0]} {_worst(x)[1]}" for x in amplifiers)))
+    f = m.fixture
+    if amplifiers[0].fixture_problems:
+        first += (f"; and every arrangement with a striker carries the designed fixture, which sets it at "
+                  f"{f.striker_ratio:.3g} times the payload ({s.striker_ratio:.3g} asked) and breaks its own limits "
+                  f"({len(amplifiers[0].fixture_problems)}, the first: {amplifiers[0].fixture_problems[0]}), so "
+                  "none is FEASIBLE until it is: the comparison holds it equal")
     w, face = (closed_spec.get("with_sabot") or {}).get("best"), closed_spec.get("interface") or {}
     if w:
         q = w["gun_ratio"]
         first += (f"; at the band's centre the closed form's best chain needs Q = {q:.3g} of the direct gun's "
-                  f"p0 A L" + (f", at parity, so the interfaces decide: its fastest closes at "
+                  f"p0 A L" + (f", within {P.PARITY - 1:.0%} of parity (Q is a ratio of ideal guns), so the "
+                               f"interfaces decide: its fastest closes at "
                                f"{face['closing_speed']:.0f} m/s, where the library's best solid returns its energy "
                                f"only up to {face['elastic_limit_speed']:.0f} m/s" if q <= P.PARITY and face else
                                ", more gun than the direct machine"))
@@ -350,18 +360,17 @@ def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine
         first += (f" (the designed guns, tanks included: {x.name.split(' ')[0]}'s {x.gun_mass / 1e3:.4g} t against "
                   f"(b)'s {b.gun_mass / 1e3:.4g} t at the fixture's speed, {x.gun_mass / b.gun_mass:.3g} times)")
     air, he, V = guns["direct"]["air"], guns["direct"]["helium"], guns["direct"]["speed"]
-    ratio_b, _ = _worst(b)
-    nearer = all(ratio_b < _worst(x)[0] for x in amplifiers)
     gun = (f"its air gun within the limits reaches it ({air['launch_energy'] / 1e6:.4g} MJ)" if air["feasible"] else
            f"its air gun at every limit reaches {air['muzzle_velocity']:.4g} m/s, "
            f"{100 * (1 - air['muzzle_velocity'] / V):.1f}% short (a {air['travel_to_reach'] / FT:.3g} ft travel would "
-           f"reach it" + (", or helium within the limits" if he["feasible"] else "") + ")")
+           f"reach it" + (", or helium within the limits" if he["feasible"] else "") + "; the band's least "
+           f"velocity change asks {least:.4g} m/s, which it " + ("reaches" if air["muzzle_velocity"] >= least
+                                                                 else "does not reach either") + ")")
     stops = []
     for x, how in ((b, "as laid out"), (bv, "with its last striker length ported")):
         r, words = _worst(x)
         stops.append(f"{how}, {words if r > 1 else 'nothing of its own is broken'}")
-    second = (f"The direct gun it would replace, (b), is {machine(b)}" + (" and misses by less" if nearer and
-                                                                          machine(b) != "FEASIBLE" else "")
+    second = (f"The direct gun it would replace, (b), is {machine(b)}"
               + f": at the band's centre ({V:.4g} m/s, {air['launch_energy'] / 1e6:.4g} MJ) {gun}; "
               + "; ".join(stops) + " (the valve left open on the tank, as the gun model has it).")
     return first + ". " + second
@@ -401,13 +410,23 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
     f = m.fixture
     centre = band["rows"]["the band's centre"]
     centre_cells = _centre_cells(guns, (a, *stars), (b, bv), b0, c, [x for x, _ in drives]) if guns else None
-    headline = (_headline(m, amplifiers, b, bv, closed_spec, guns, machine) if guns else
+    least = band["rows"]["the band's least"]["striker_speed"]
+    headline = (_headline(m, amplifiers, b, bv, closed_spec, guns, machine, least) if guns else
                 f"Velocity amplification does {'' if any(machine(x) == 'FEASIBLE' for x in amplifiers) else 'not '}"
                 "make a compact non-pyrotechnic tester feasible.")
     common = [f"The rows' first energy is at the designed fixture's striker speed ({f.striker_speed:.4g} m/s"
               + ("" if f.band_passed else ", a pulse that fails the band")
               + f"), the second at the band's centre ({centre['striker_speed']:.4g} m/s, the speed the specification "
-              "asks; section 8's band and centre tables). Every number here is this run's."]
+              "asks; section 8's band and centre tables). Every number here is this run's but the pads' measured "
+              "restitutions quoted below (`scripts/pad-interface.py`'s runs, docs/machine.md's Pads)."]
+    if b.gun_feasible or guns:
+        laid = P.barrel_as_laid_out(m.spec, f, b)
+        common.append(f"The spec's {m.spec.max_barrel_length / FT:.3g} ft is read as the gun's travel: (b)'s barrel "
+                      f"as laid out holds the striker too, {laid['barrel'] / FT:.3g} ft; with the whole barrel within "
+                      f"{m.spec.max_barrel_length / FT:.3g} ft (a {laid['travel_within'] / FT:.3g} ft travel) the "
+                      f"infinitely chambered gun, the ideal upper bound, fires (b)'s {b.launched_mass:.4g} kg at "
+                      f"{laid['chambered_speed_within']:.4g} m/s. (b)'s length leaves out its sabot's stop, which its "
+                      "mass counts (not laid on the axis).")
     if a.fixture_problems:
         common.append(f"(a) to (c) carry the same fixture, and it breaks its own limits: {'; '.join(a.fixture_problems)}.")
     return P.answer(rows, common, _changes(a, b, bv, centre, closed_spec, springs, drives), headline,
@@ -480,10 +499,19 @@ def _sabot_changes(b, bv) -> list[str]:
     words = (f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push (the one "
              f"designed breaks {len(shut)}, the worst its {shut[0].quantity} {shut[0].ratio:.3g} times)")
     if bv is not b and push_v is not None:
-        words += (f"; porting the barrel's last striker length cuts the push to {push_v.value / 1e6:.3g} MN"
-                  + (f", and its stop still breaks {len(open_)} (the worst {open_[0].ratio:.3g} times): the open "
-                     "valve refills the barrel from the tank; a valve that shuts after the shot (not modelled "
-                     "here) or a catch that takes the push at rest" if open_ else ", and its stop holds"))
+        words += (f"; porting the barrel's last striker length cuts the push to {push_v.value / 1e6:.3g} MN (the "
+                  "open valve keeps refilling the barrel from the tank)"
+                  + (f", and its stop still breaks {len(open_)} (the worst {open_[0].quantity} "
+                     f"{open_[0].ratio:.3g} times)" if open_ else ", and its stop holds"))
+    impact = next((lim for lim in (open_ or shut) if lim.quantity == "impact pressure rho c v"), None)
+    if impact is not None:
+        v_max = impact.limit / (OIL["density"] * OIL_SOUND_SPEED)
+        words += (f": the sabot's speed decides that, not the push (an oil buffer's impact pressure rho c v reaches "
+                  f"its cylinder's {impact.limit / 1e6:.3g} MPa above {v_max:.0f} m/s, pushed or not), so the stop "
+                  "needs an absorber that takes the muzzle's speed and whose static force exceeds the push (a "
+                  "crushable with a push below its crush force: a valve that shuts after the shot, not modelled "
+                  "here), or the sabot kept on the striker through the pulse and stopped with it (its mass then "
+                  "part of the striker the fixture is designed for)")
     return [words]
 
 

@@ -550,3 +550,40 @@ def test_striker_push_limit_is_the_speed_the_gas_adds_over_the_bands_tolerance()
                          vented=False, diameter=0.2574)
     assert light["limit"].value == pytest.approx(10 * lim.value, rel=1e-9)
 
+
+
+def _chain_machine(gap: float, contact: float):
+    """A two-mass launched chain fired by ``_valved_gun`` (the first mass 787.8 kg, 0.3 m long, its pad ``gap``
+    past the muzzle, a ``contact`` [s] contact at e 0.6 with a 400 kg striker), as ``premise.first_mass_push``
+    reads it."""
+    import types
+    from shockfem.machine.spec import read_spec
+    gun = _valved_gun()
+    stage = types.SimpleNamespace(pair="m1_striker", contact_duration=contact, restitution=0.6)
+    m1, m2, v1 = 787.8, 400.0, 412.0
+    v2 = 1.6 * m1 * v1 / (m1 + m2)
+    amp = types.SimpleNamespace(architecture="launched-chain", stages=[stage], bodies=[{"length": 0.3}],
+                                gaps=[gap], masses=[m1, m2], restitutions=[0.6], striker_speed=v2)
+    design = types.SimpleNamespace(feasible=True, gun=gun, muzzle_velocity=v1)
+    return types.SimpleNamespace(amplifier=amp, launcher=types.SimpleNamespace(design=design),
+                                 spec=read_spec({"article": "12 lb"}))
+
+
+def test_first_mass_push_is_the_end_of_travel_base_pressure_over_a_short_contact():
+    """The gun's gas on the amplifier's first mass while it strikes the second (``premise.first_mass_push``):
+    over a contact of 0.1 ms starting as the mass leaves the end of its travel (no gap) the base pressure is the
+    gun's own at the end of its travel (``launcher.muzzle_state``, from ``launcher.gun.fire``), so the speed
+    added is p A t / (m1 + m2) (a two-mass chain: the second mass is the striker), within the pressure's fall
+    over 0.1 ms (0.5%); with the pad as far past the muzzle as the mass is long its base is out of the bore
+    when the contact starts, and nothing is added."""
+    from shockfem.machine.launcher import muzzle_state
+    from shockfem.machine.premise import first_mass_push
+    m = _chain_machine(0.0, 1e-4)
+    push = first_mass_push(m)
+    g = m.launcher.design.gun
+    by_hand = muzzle_state(g).base_pressure * g.area * 1e-4 / (787.8 + 400.0)
+    assert push["time_in_bore"] == pytest.approx(1e-4, rel=1e-9)
+    assert push["speed_added"] == pytest.approx(by_hand, rel=5e-3) and push["speed_added"] < by_hand
+    assert push["limit"].value == push["speed_added"]
+    out = first_mass_push(_chain_machine(0.3, 1e-3))
+    assert out["speed_added"] == 0.0 and out["time_in_bore"] == 0.0 and out["limit"].holds
