@@ -33,14 +33,16 @@ What it leaves out: the bodies' elasticity (the fixture study's finite-element r
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
 from ..parts.catalog import solid_ogive_length
 from ..programmer.article_base import RAYLEIGH_LOVE, Article
+from ..programmer.column_dashpot import CELLS, StrikerPush, simulate_column
 from ..programmer.column_design import design_on_column
-from ..programmer.dashpot_design import DASHPOT
+from ..programmer.dashpot_design import DASHPOT, LUMPED_SAMPLES, dashpot_lumped, design_liquid
 from ..programmer.housing import (HOUSING_STEEL, HOUSING_STEELS, PRACTICAL_RATIO, THICK_PLATE, floor_for,
                                   held_pressure)
 from ..programmer.liquids import MINERAL_OIL
@@ -234,6 +236,24 @@ def _fixture(spec, out: dict, housing: Housing, runs: int, L_article: float, ste
     fixture.housing_wall_radius, fixture.housing_mass_radius = housing.wall_radius, housing.mass_radius
     fixture.design_striker_mass = d["striker_mass"]
     return fixture
+
+
+def pulse_with_push(spec: MachineSpec, fixture: Fixture, push: StrikerPush) -> dict:
+    """The fixture's pulse on its column (``programmer.column_dashpot``, the design's liquid at ``CELLS``,
+    as the fixture's own run) with ``push`` on the striker: its peak [m/s^2], duration [s], velocity change
+    [m/s] and band check, the striker's speed at the record's end [m/s], the run's energy balance residual
+    over the energy in and its wall time [s]."""
+    d = fixture.design
+    start = time.perf_counter()
+    run = simulate_column(dashpot_lumped(d), spec.pulse.record_end(), LUMPED_SAMPLES, CELLS,
+                          design_liquid(d).column(), push)
+    pulse, band = spec.pulse.band(run.t, run.acceleration)
+    s = run.summary
+    energy_in = s["kinetic energy in [J]"] + s["push's work on the striker [J]"]
+    return {"peak": pulse.peak, "duration": pulse.duration, "velocity_change": pulse.velocity_change,
+            "band_passed": bool(band.passed), "worst_excess": float(band.worst_excess),
+            "striker_speed_after": float(run.striker_speed[-1]),
+            "energy_residual": s["energy balance residual [J]"] / energy_in, "wall_time": time.perf_counter() - start}
 
 
 def oil_work(run, d: dict) -> float:

@@ -8,8 +8,9 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
 * (b) **direct striker**: the lightest gun within the same limits (``launcher.design.lightest_launcher``)
   fires the same striker (the dashpot's housing and its oil, in a sabot where the bore is wider than the
   housing) at the same speed; the payload waits at the muzzle, so the gun's gas still pushes the striker
-  (its base in the bore) through the pulse's start and its sabot at its stop (``striker_push``,
-  ``sabot_stop``: the gun's shot continued past its travel, ``launcher.ported_push``), its barrel as laid
+  (its base in the bore) through the pulse's start, in the fixture's column run with it (``striker_push``,
+  ``pushed_pulse``), and its sabot at its stop (``sabot_stop``: the gun's shot continued past its travel,
+  ``launcher.ported_push``), its barrel as laid
   out (unvented) or, the same gun, with its last striker length ported (``vented``);
 * (c) **flying target** as the white paper sizes it: a target of the white paper's mass ratio (30 lb for
   a 12 lb article), the fixture designed for it (``fixture.design_fixture``: the housing's wall may ask
@@ -63,12 +64,13 @@ from ..metrics.shapes import TOLERANCE
 from ..launcher.design import LauncherDesign, weights
 from ..launcher.gun import barrel_length_for, fire, white_paper_gun
 from ..launcher.simple_wave import muzzle_speed, travel
-from ..programmer.dashpot_design import DASHPOT, PulseSpec, striker_speed
+from ..programmer.column_dashpot import StrikerPush
+from ..programmer.dashpot_design import DASHPOT, DESIGN_MARGIN, PulseSpec, striker_speed
 from ..programmer.requirement import requirement
 from ..scene.library import initial_yield_stress, property_si
 from ..units import FT, G0, IN, LB, PSI
 from .design import Machine, design_machine, gun_thrust
-from .fixture import DESIGN_EVALUATIONS, article_length, bore_radius, design_fixture
+from .fixture import DESIGN_EVALUATIONS, article_length, bore_radius, design_fixture, pulse_with_push
 from .boundary import (MAX_MASSES, Chain, best_chain, best_pad_restitution, break_even,
                        break_even_speed, sound_speed)
 from .launcher import SIZING, Launcher, launcher_for, launcher_of, muzzle_state, ported_push
@@ -383,6 +385,7 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     L, sabot, short = _direct_design(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores)
     layout = _layout(spec, L, fixture)
     push = striker_push(spec, L, fixture, sabot, vented, diameter)
+    pulse = pushed_pulse(spec, fixture, push)
     stop = sabot_stop(spec, L, sabot, diameter, vented, fixture) if sabot else None
     notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle at "
              f"{stop.speed:.4g} m/s (the muzzle's {L.design.muzzle_velocity:.4g} and the gas's push after it) by a "
@@ -391,8 +394,8 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
              f"against the gas's {stop.push / 1e6:.3g} MN push on it there ({_barrel_words(vented)})"
              if stop else
              ("no sabot: the striker fills the bore" if with_sabot else "the sabot's mass left out (a lower bound)")]
-    limits = (stop.limits if stop else []) + [push["limit"]]
-    notes.append(_push_words(push))
+    limits = (stop.limits if stop else []) + [pulse["limit"]]
+    notes.append(_push_words(push, pulse, fixture))
     notes += [f"breaks its limit: {lim.describe()}" for lim in broken(limits)]
     if not L.design.feasible:
         notes.append(L.design.note)
@@ -412,16 +415,25 @@ def _barrel_words(vented: bool) -> str:
             "the barrel as laid out, unvented, launcher.ported_push with its ports shut")
 
 
-def _push_words(push: dict) -> str:
-    """The gun's gas on the striker during the pulse (``striker_push``), in words."""
-    lim = push["limit"]
+def _push_words(push: dict, pulse: dict, fixture) -> str:
+    """The gun's gas on the striker during the pulse (``striker_push``) and the pulse with it
+    (``pushed_pulse``), in words."""
+    lim = pulse["limit"]
+
+    def said(peak, duration, dv, passed, excess):
+        return (f"{peak / G0:,.0f} g for {duration * 1e3:.3g} ms, {dv:.4g} m/s, "
+                + ("in the band" if passed else f"outside the band (worst excess {excess:.3g} of the peak)"))
     return (f"the gun's gas ({_barrel_words(push['vented'])}; the tank at {push['reservoir_pressure'] / 1e6:.3g} MPa "
             f"at the end of the travel) pushes the striker and its sabot on the bore for the first "
             f"{push['time_in_bore'] * 1e3:.3g} ms of the pulse, its base still in the bore, with {push['force'] / 1e6:.3g} "
-            f"MN on the mean (the base pressure {push['pressure'] / 1e6:.3g} to {push['end_pressure'] / 1e6:.3g} MPa): "
-            f"it adds {push['speed_added']:.3g} m/s to the striker, {lim.ratio:.3g} of the band's tolerance "
-            f"({lim.limit:.3g} m/s on the {push['velocity_change']:.4g} m/s velocity change), which the fixture's "
-            f"column run leaves out")
+            f"MN on the mean (the base pressure {push['pressure'] / 1e6:.3g} to {push['end_pressure'] / 1e6:.3g} MPa; "
+            f"{push['force'] / push['pulse_force']:.3g} times the pulse's force on the payload), its impulse worth "
+            f"{push['speed_added']:.3g} m/s to the striker and its sabot; the fixture's column run with it: "
+            f"{said(pulse['peak'], pulse['duration'], pulse['velocity_change'], pulse['band_passed'], pulse['worst_excess'])}, "
+            f"against its own {said(fixture.peak, fixture.duration, fixture.velocity_change, fixture.band_passed, fixture.worst_excess)}: "
+            f"the push adds {lim.value:.3g} of the peak to the band's worst excess, "
+            + ("within" if lim.holds else f"{lim.ratio:.3g} times")
+            + f" the fixture designer's margin ({lim.limit:.3g}), which its design leaves out")
 
 
 def _short_words(closest: Launcher, sabot: float, light: Launcher, light_sabot: float) -> str:
@@ -497,26 +509,52 @@ def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 
     past the muzzle (``layout.place``) and the striker's front reaches the muzzle at the end of the gun's
     travel, so its base (and its sabot, there) is in the bore for the first (L_s - gap) / V_s of the pulse,
     pushed on the whole bore by the base pressure past the end of the travel (``launcher.ported_push``: the
-    barrel as laid out, unvented, or ``vented``, its last striker length ported): a force the fixture's column
-    run leaves out.  Its impulse over that time F t over the striker and its sabot, M + m_sabot, is the
-    speed it adds, held against the band's tolerance on the velocity change at the band's centre
-    (``gas_speed_limit``).  After the base clears the muzzle the jet through the stripped sabot's ring (or the
-    open muzzle) pushes the base on, less (left out)."""
+    barrel as laid out, unvented, or ``vented``, its last striker length ported): the force history from
+    first contact and the sabot it carries until its base leaves the muzzle (``push``, a
+    ``programmer.column_dashpot.StrikerPush`` for the fixture's column run, ``pushed_pulse``), its mean, and
+    the speed its impulse adds to the striker and its sabot, F t / (M + m_sabot).  The base pressure is the
+    free shot's (the striker slowed by the dashpot, or sped by the push, moves the base pressure little: the
+    striker is many times the payload).  After the base clears the muzzle the jet through the stripped
+    sabot's ring (or the open muzzle) pushes the base on, less (left out)."""
     g = launcher.design.gun
     r = _ported(launcher, fixture, diameter, vented)
     t0 = r.time_at(GAP_TO_PAYLOAD)
     t1 = min(r.at_muzzle, t0 + spec.pulse.duration)
     impulse = r.impulse(g.area, t0, t1)
-    added = impulse / (fixture.striker_mass + sabot)
-    dv = spec.pulse.band_velocity_change()
-    limit = gas_speed_limit(added, dv, f"the gun's base pressure past the end of its travel on the bore, for "
-                                       f"{(t1 - t0) * 1e3:.3g} ms of the pulse, over the striker and its sabot "
-                                       f"({_barrel_words(vented)})")
+    inside = (r.time > t0) & (r.time < t1)
+    times = np.concatenate([[t0], r.time[inside], [t1]])
+    force = g.area * np.interp(times, r.time, r.base_pressure)
     k0, k1 = (int(np.searchsorted(r.time, t)) for t in (t0, t1))
     return {"vented": vented, "pressure": float(np.interp(t0, r.time, r.base_pressure)),
             "end_pressure": float(r.base_pressure[max(k1 - 1, k0)]), "reservoir_pressure": float(r.reservoir_pressure[0]),
-            "force": impulse / (t1 - t0), "impulse": impulse, "time_in_bore": t1 - t0, "speed_added": added,
-            "velocity_change": dv, "pulse_force": fixture.payload_mass * spec.pulse.peak, "limit": limit}
+            "force": impulse / (t1 - t0), "impulse": impulse, "time_in_bore": t1 - t0,
+            "speed_added": impulse / (fixture.striker_mass + sabot), "velocity_change": spec.pulse.band_velocity_change(),
+            "pulse_force": fixture.payload_mass * spec.pulse.peak,
+            "push": StrikerPush(times - t0, force, sabot, t1 - t0)}
+
+
+def pushed_pulse(spec: MachineSpec, fixture, push: dict) -> dict:
+    """The fixture's pulse with the gas's push on the striker (``striker_push``) in its column run
+    (``fixture.pulse_with_push``), beside the fixture's own, and the limit it is held to
+    (``pushed_pulse_limit``)."""
+    pushed = pulse_with_push(spec, fixture, push["push"])
+    added = pushed["worst_excess"] - fixture.worst_excess
+    basis = (f"the fixture's column run with the gun's base pressure on the bore for {push['time_in_bore'] * 1e3:.3g} "
+             f"ms of the pulse and the sabot carried that long ({_barrel_words(push['vented'])}): the band's worst "
+             f"excess {pushed['worst_excess']:.3g} of the peak against the fixture's own {fixture.worst_excess:.3g}")
+    return {**pushed, "excess_added": added, "limit": pushed_pulse_limit(added, basis)}
+
+
+def pushed_pulse_limit(excess_added: float, basis: str) -> Limit:
+    """The gas's push on a striker during the pulse as a model-range limit: the band's worst excess the push
+    adds to the fixture's pulse (its column run with the push, against its own), at most the design margin
+    the fixture's designer keeps inside the band for what its model leaves out
+    (``programmer.dashpot_design.DESIGN_MARGIN``).  The fixture is designed without the push: past the margin
+    it no longer stands for a pushed striker (a fixture designed with the push would be)."""
+    return Limit("launcher's gas on the striker during the pulse", "the band's worst excess the push adds",
+                 excess_added, DESIGN_MARGIN, "of the peak", basis,
+                 "the fixture designer's range: its design margin inside the band "
+                 "(programmer.dashpot_design.DESIGN_MARGIN), for what its model leaves out")
 
 
 def direct_at_speed(spec: MachineSpec, fixture, speed: float, starts: int = 3, bores: int = SABOT_BORES) -> dict:

@@ -473,8 +473,10 @@ def _changes(a, b, bv, centre: dict, closed_spec: dict, springs: dict | None, dr
     change += _sabot_changes(b, bv)
     for lim in broken(b.limits):
         if lim.component.startswith("launcher's gas on the striker"):
-            change.append(f"for (b), the gas off the striker before the pulse (it adds {lim.value:.3g} m/s, where "
-                          f"the column run may leave out {lim.limit:.3g})")
+            change.append(f"for (b), a fixture designed with the gas's push on the striker (it adds {lim.value:.3g} "
+                          f"of the peak to the pulse's worst excess, past the fixture designer's {lim.limit:.3g} "
+                          f"margin), or the gas off the striker before the pulse (the payload a striker length past "
+                          f"the muzzle)")
     if not centre["air_fires_sabot"]:
         r = centre["remedies"]
         change.append(f"at the band's centre, a gun past the limits for (b): an air barrel of "
