@@ -542,7 +542,7 @@ def pushed_pulse(spec: MachineSpec, fixture, push: dict) -> dict:
     basis = (f"the fixture's column run with the gun's base pressure on the bore for {push['time_in_bore'] * 1e3:.3g} "
              f"ms of the pulse and the sabot carried that long ({_barrel_words(push['vented'])}): the band's worst "
              f"excess {pushed['worst_excess']:.3g} of the peak against the fixture's own {fixture.worst_excess:.3g}")
-    return {**pushed, "excess_added": added, "limit": pushed_pulse_limit(added, basis)}
+    return {**pushed, "limit": pushed_pulse_limit(added, basis)}
 
 
 def pushed_pulse_limit(excess_added: float, basis: str) -> Limit:

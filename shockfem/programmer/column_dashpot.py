@@ -69,19 +69,17 @@ class StrikerPush:
         return self.carried if t < self.release else 0.0
 
 
-NO_PUSH = StrikerPush(np.zeros(2), np.zeros(2))
-
-
 def column_liquid(d: LumpedDashpot) -> ColumnLiquid:
     """The column's liquid with the lumped dashpot's density, modulus and Tait exponent."""
     return ColumnLiquid(density=d.density, bulk_modulus=d.bulk_modulus, tait_exponent=d.tait_exponent)
 
 
 def simulate_column(d: LumpedDashpot, end_time: float, samples: int = 4000, cells: int = CELLS,
-                    liquid: ColumnLiquid | None = None, push: StrikerPush = NO_PUSH) -> ColumnRun:
+                    liquid: ColumnLiquid | None = None, push: StrikerPush | None = None) -> ColumnRun:
     """The dashpot ``d`` from first contact to ``end_time`` with its liquid as a column of ``cells``
     finite volumes, sampled at ``samples`` even times (the state of the step that reaches each); ``push``
-    a force on the striker and the mass it carries (none by default)."""
+    a force on the striker and the mass it carries (none by default; without one the step skips it: the
+    design searches run the column hundreds of times)."""
     liquid = liquid or column_liquid(d)
     L0, A = d.column, d.piston_area
     column = LiquidColumn(liquid, 0.0, L0, A, cells, d.orifice_law(), d.initial_pressure, d.speed)
@@ -94,7 +92,8 @@ def simulate_column(d: LumpedDashpot, end_time: float, samples: int = 4000, cell
     rows = np.zeros((samples, 7))
     v_s, v_p, t, k, steps = d.speed, 0.0, 0.0, 0, 0
     force_p = d.initial_pressure * A
-    energy_in, jet_work = 0.5 * (housing + push.mass(0.0)) * d.speed ** 2 + column.energy(), 0.0
+    carried_at = push.mass if push is not None else lambda _: 0.0
+    energy_in, jet_work = 0.5 * (housing + carried_at(0.0)) * d.speed ** 2 + column.energy(), 0.0
     push_work = carried_out = 0.0
     spring = None                # the column's compression energy when the bodies first reach a common speed
     while k < samples:
@@ -110,18 +109,21 @@ def simulate_column(d: LumpedDashpot, end_time: float, samples: int = 4000, cell
         area = float(np.interp(stroke, pin[:, 0], pin[:, 1]))
         force_f, force_p = column.step(v_s, v_p, area, dt)
         jet_work += dt * column.jet_force * v_p
-        pushed, carried = push.at(t), push.mass(t)
-        push_work += dt * pushed * v_s
-        v_s += dt * (force_f + pushed) / (housing + carried)
-        if carried and push.mass(t + dt) == 0.0:
-            carried_out = 0.5 * carried * v_s ** 2
+        if push is None:
+            v_s += dt * force_f / housing
+        else:
+            pushed, carried = push.at(t), push.mass(t)
+            push_work += dt * pushed * v_s
+            v_s += dt * (force_f + pushed) / (housing + carried)
+            if carried and push.mass(t + dt) == 0.0:
+                carried_out = 0.5 * carried * v_s ** 2
         v_p += dt * force_p / d.payload_mass
         if spring is None and v_p >= v_s:
             spring = column.energy() - column.kinetic_energy()
         t += dt
         steps += 1
     r = rows.T
-    balance = energy_balance(column, energy_in, 0.5 * (housing + push.mass(t)) * v_s ** 2,
+    balance = energy_balance(column, energy_in, 0.5 * (housing + carried_at(t)) * v_s ** 2,
                              0.5 * d.payload_mass * v_p ** 2, jet_work, push_work, carried_out)
     summary = {**column.summary(), **balance,
                "compression energy at the common speed [J]": float("nan") if spring is None else spring,
