@@ -11,7 +11,9 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
   (its base in the bore) through the pulse's start, in the fixture's column run with it (``striker_push``,
   ``pushed_pulse``), and its sabot at its stop (``sabot_stop``: the gun's shot continued past its travel,
   ``launcher.ported_push``), its barrel as laid
-  out (unvented) or, the same gun, with its last striker length ported (``vented``);
+  out (unvented) or, the same gun, with its last striker length ported (``vented``), or that ported gun with
+  the sabot kept on the striker through the pulse and stopped with it (``kept``: no sabot stop, the sabot's
+  mass on the striker in the column run);
 * (c) **flying target** as the white paper sizes it: a target of the white paper's mass ratio (30 lb for
   a 12 lb article), the fixture designed for it (``fixture.design_fixture``: the housing's wall may ask
   more), fired by the white paper's own gun (12 in bore, 2000 psi, 20 ft^3, ``launcher.gun.white_paper_gun``)
@@ -50,6 +52,7 @@ designed, and the amplifier's pads and stresses are not checked (only its gain).
 """
 from __future__ import annotations
 
+import copy
 import dataclasses
 import functools
 import math
@@ -191,11 +194,20 @@ def striker_body(fixture) -> dict:
             "length": fixture.housing_length, "bore": 2 * fixture.bore_radius, "bore_depth": fixture.bore_depth}
 
 
-def _layout(spec: MachineSpec, launcher: Launcher, fixture) -> Layout:
-    """The one-body machine: the gun fires the striker (its slug), the payload at the muzzle."""
+def _layout(spec: MachineSpec, launcher: Launcher, fixture, pulse: dict | None = None, kept: float = 0.0
+            ) -> Layout:
+    """The one-body machine: the gun fires the striker (its slug), the payload at the muzzle.  ``pulse``: the
+    fixture's run with the gas's push on the striker (``pushed_pulse``), whose speeds after it the striker's
+    stop and the payload's catcher take (else the fixture's own); ``kept``: a sabot kept on the striker [kg],
+    stopped with it."""
     rho = property_si(spec.material, "density", "density")
     S = initial_yield_stress(spec.material) / spec.safety_factor
     body = striker_body(fixture)
+    if pulse is not None:
+        fixture = copy.copy(fixture)
+        fixture.striker_mass += kept
+        fixture.after_speed_striker = pulse["after_speed_striker"]
+        fixture.after_speed_payload = pulse["after_speed_payload"]
     amp = types.SimpleNamespace(bodies=[body], masses=[fixture.striker_mass], stages=[], gaps=[])
     return place(launcher, amp, fixture, rho, S, spec.catch, spec.material, [], spec.oil_pressure,
                  gun_thrust(launcher), muzzle_state(launcher.design.gun).push)
@@ -376,25 +388,31 @@ def _direct_design(spec: MachineSpec, striker: float, speed: float, diameter: fl
 
 
 def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: bool = True,
-                       bores: int = SABOT_BORES, vented: bool = False) -> Arrangement:
+                       bores: int = SABOT_BORES, vented: bool = False, kept: bool = False) -> Arrangement:
     """(b): the same striker fired directly by the lightest gun within the same limits, in its sabot;
     ``with_sabot`` False: in a massless sabot (the direct gun's lower bound, (b0)); ``vented``: the barrel's
     last striker length ported (``launcher.ported_push``), else as laid out, unvented: the gas's push on the
-    striker during the pulse (``striker_push``) and on the sabot at its stop (``sabot_stop``) follow from it."""
+    striker during the pulse (``striker_push``) and on the sabot at its stop (``sabot_stop``) follow from it;
+    ``kept``: the sabot not stripped at the muzzle but kept on the striker through the pulse and stopped with
+    it by the striker's stop (no stop of its own, so no push on a held sabot; its mass rides on the striker
+    in the fixture's column run)."""
     diameter = 2 * fixture.housing_outer_radius if with_sabot else None
     L, sabot, short = _direct_design(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores)
-    layout = _layout(spec, L, fixture)
-    push = striker_push(spec, L, fixture, sabot, vented, diameter)
+    kept = kept and sabot > 0
+    push = striker_push(spec, L, fixture, sabot, vented, diameter, kept)
     pulse = pushed_pulse(spec, fixture, push)
-    stop = sabot_stop(spec, L, sabot, diameter, vented, fixture) if sabot else None
-    notes = [f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle at "
+    layout = _layout(spec, L, fixture, pulse, sabot if kept else 0.0)
+    stop = sabot_stop(spec, L, sabot, diameter, vented, fixture) if sabot and not kept else None
+    notes = [_kept_words(sabot, pulse, layout, vented) if kept else
+             f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle at "
              f"{stop.speed:.4g} m/s (the muzzle's {L.design.muzzle_velocity:.4g} and the gas's push after it) by a "
              f"{stop.kind} ({stop.absorber_mass:.3g} kg, {stop.stroke:.3g} m of stroke at {stop.force / 1e6:.3g} MN, "
              f"holding {stop.hold / 1e6:.3g} MN at rest; counted in the machine's mass, not laid on its axis) "
              f"against the gas's {stop.push / 1e6:.3g} MN push on it there ({_barrel_words(vented)})"
              if stop else
              ("no sabot: the striker fills the bore" if with_sabot else "the sabot's mass left out (a lower bound)")]
-    limits = (stop.limits if stop else []) + [pulse["limit"]]
+    # its own stops' limits (the striker's, with a kept sabot on it, and the payload's catcher), the sabot's
+    limits = [lim for st in layout.stops for lim in st.limits] + (stop.limits if stop else []) + [pulse["limit"]]
     notes.append(_push_words(push, pulse, fixture))
     notes += [f"breaks its limit: {lim.describe()}" for lim in broken(limits)]
     if not L.design.feasible:
@@ -402,12 +420,22 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     if short:
         notes.append(_short_words(L, sabot, *short))
     name = ("(b) direct striker" if with_sabot else "(b0) direct striker, massless sabot") + (
-        ", vented" if vented else "")
+        ", vented" if vented else "") + (", its sabot kept" if kept else "")
     out = _arrangement(name, L, fixture, layout, L.design.feasible, notes,
                        sabot + (stop.absorber_mass if stop else 0.0))
     out.limits = limits
     out.feasible = L.design.feasible and not broken(limits)
     return out
+
+
+def _kept_words(sabot: float, pulse: dict, layout: Layout, vented: bool) -> str:
+    """A sabot kept on the striker (``direct_arrangement``'s ``kept``), in words."""
+    stop = next(s for s in layout.stops if s.body == "striker")
+    return (f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine) kept on the striker through the pulse "
+            f"({_barrel_words(vented)}) and stopped with it by the striker's {stop.kind} ({stop.stroke:.3g} m of "
+            f"stroke at {stop.force / 1e6:.3g} MN, from {pulse['after_speed_striker']:.4g} m/s): no sabot stop, so no "
+            f"push on a held sabot; the cone at that stop carries its own inertia at a deceleration below the "
+            f"shot's acceleration (the stop's force at most the gun's thrust), not checked further")
 
 
 def _barrel_words(vented: bool) -> str:
@@ -429,7 +457,8 @@ def _push_words(push: dict, pulse: dict, fixture) -> str:
             f"MN on the mean (the base pressure {push['pressure'] / 1e6:.3g} to {push['end_pressure'] / 1e6:.3g} MPa; "
             f"{push['force'] / push['pulse_force']:.3g} times the pulse's force on the payload), its impulse worth "
             f"{push['speed_added']:.3g} m/s to the striker and its sabot; the fixture's column run with it: "
-            f"{said(pulse['peak'], pulse['duration'], pulse['velocity_change'], pulse['band_passed'], pulse['worst_excess'])}, "
+            f"{said(pulse['peak'], pulse['duration'], pulse['velocity_change'], pulse['band_passed'], pulse['worst_excess'])} "
+            f"(its energy balance closes to {pulse['energy_residual']:.2g} of the energy in), "
             f"against its own {said(fixture.peak, fixture.duration, fixture.velocity_change, fixture.band_passed, fixture.worst_excess)}: "
             f"the push adds {lim.value:.3g} of the peak to the band's worst excess, "
             + ("within" if lim.holds else f"{lim.ratio:.3g} times")
@@ -504,13 +533,14 @@ def gas_speed_limit(speed_added: float, velocity_change: float, basis: str) -> L
 
 
 def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 0.0, vented: bool = False,
-                 diameter: float | None = None) -> dict:
+                 diameter: float | None = None, kept: bool = False) -> dict:
     """The gun's gas on a striker it fires directly while the pulse runs.  The payload waits ``GAP_TO_PAYLOAD``
     past the muzzle (``layout.place``) and the striker's front reaches the muzzle at the end of the gun's
     travel, so its base (and its sabot, there) is in the bore for the first (L_s - gap) / V_s of the pulse,
     pushed on the whole bore by the base pressure past the end of the travel (``launcher.ported_push``: the
     barrel as laid out, unvented, or ``vented``, its last striker length ported): the force history from
-    first contact and the sabot it carries until its base leaves the muzzle (``push``, a
+    first contact and the sabot it carries until its base leaves the muzzle, or, ``kept``, through the whole
+    pulse (``push``, a
     ``programmer.column_dashpot.StrikerPush`` for the fixture's column run, ``pushed_pulse``), its mean, and
     the speed its impulse adds to the striker and its sabot, F t / (M + m_sabot).  The base pressure is the
     free shot's (the striker slowed by the dashpot, or sped by the push, moves the base pressure little: the
@@ -525,12 +555,12 @@ def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 
     times = np.concatenate([[t0], r.time[inside], [t1]])
     force = g.area * np.interp(times, r.time, r.base_pressure)
     k0, k1 = (int(np.searchsorted(r.time, t)) for t in (t0, t1))
-    return {"vented": vented, "pressure": float(np.interp(t0, r.time, r.base_pressure)),
+    return {"vented": vented, "kept": kept, "pressure": float(np.interp(t0, r.time, r.base_pressure)),
             "end_pressure": float(r.base_pressure[max(k1 - 1, k0)]), "reservoir_pressure": float(r.reservoir_pressure[0]),
             "force": impulse / (t1 - t0), "impulse": impulse, "time_in_bore": t1 - t0,
             "speed_added": impulse / (fixture.striker_mass + sabot), "velocity_change": spec.pulse.band_velocity_change(),
             "pulse_force": fixture.payload_mass * spec.pulse.peak,
-            "push": StrikerPush(times - t0, force, sabot, t1 - t0)}
+            "push": StrikerPush(times - t0, force, sabot, math.inf if kept else t1 - t0)}
 
 
 def pushed_pulse(spec: MachineSpec, fixture, push: dict) -> dict:
@@ -539,8 +569,9 @@ def pushed_pulse(spec: MachineSpec, fixture, push: dict) -> dict:
     (``pushed_pulse_limit``)."""
     pushed = pulse_with_push(spec, fixture, push["push"])
     added = pushed["worst_excess"] - fixture.worst_excess
+    carried = "through the pulse" if push["kept"] else "that long"
     basis = (f"the fixture's column run with the gun's base pressure on the bore for {push['time_in_bore'] * 1e3:.3g} "
-             f"ms of the pulse and the sabot carried that long ({_barrel_words(push['vented'])}): the band's worst "
+             f"ms of the pulse and the sabot carried {carried} ({_barrel_words(push['vented'])}): the band's worst "
              f"excess {pushed['worst_excess']:.3g} of the peak against the fixture's own {fixture.worst_excess:.3g}")
     return {**pushed, "limit": pushed_pulse_limit(added, basis)}
 

@@ -176,6 +176,7 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     sabot_starts = cfg.get("sabot_starts", cfg["starts"])
     b = P.direct_arrangement(m.spec, m.fixture, sabot_starts, bores=cfg["sabot_bores"])
     bv = P.direct_arrangement(m.spec, m.fixture, sabot_starts, bores=cfg["sabot_bores"], vented=True)
+    bk = P.direct_arrangement(m.spec, m.fixture, sabot_starts, bores=cfg["sabot_bores"], vented=True, kept=True)
     b0 = P.direct_arrangement(m.spec, m.fixture, cfg["starts"], with_sabot=False)
     echo("  (c) the white paper's flying target")
     c, target = P.flying_target_arrangement(m.spec, m.fixture, evaluations=cfg["fixture_evaluations"])
@@ -185,7 +186,7 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     header = ARRANGEMENT_HEADER[:-2] + [f"gun reaches it (at the fixture's {m.fixture.striker_speed:.4g} m/s"
                                         + ("" if m.fixture.band_passed else ", a pulse that fails the band") + ")",
                                         "notes"]
-    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, bv, b0, c, *d_rows)],
+    rep.table("arrangements", header, [_arrangement_row(x) for x in (a, *stars, b, bv, bk, b0, c, *d_rows)],
               ARRANGEMENT_FORMATS)
     s = m.spec
     rep.text("(a) to (c) deliver the striker the fixture designer chose to the payload at rest, the same "
@@ -194,7 +195,10 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
              f"({s.max_barrel_length / FT:.3g} ft, {s.max_bore / IN:.3g} in, {s.max_pressure / PSI:,.0f} "
              "psi) with the striker in an aluminium sabot (its mass grows with the bore, so the bore is scanned); "
              "its barrel as laid out, unvented, and (b, vented) the same gun with its last striker length ported "
-             "into the atmosphere (`launcher.ported_push`: the valve stays open on the tank, as in the gun model); "
+             "into the atmosphere (`launcher.ported_push`: the valve stays open on the tank, as in the gun model), "
+             "and (b, its sabot kept) that ported gun with the sabot kept on the striker through the pulse and "
+             "stopped with it by the striker's stop (no sabot stop; its mass on the striker in the fixture's column "
+             "run); "
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
              f"target (its 30 lb for a 12 lb article in proportion: {P.WHITE_PAPER_TARGET * s.article_mass / LB:.3g} "
              "lb here, the fixture designed for it) fired by the white paper's own gun "
@@ -241,7 +245,8 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
     rep.value("at_the_band_centre", guns)
     rep.value("direct", b.as_dict())
     rep.value("direct_vented", bv.as_dict())
-    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars, springs, bv, guns)
+    rep.value("direct_kept", bk.as_dict())
+    box = answer_box(m, (a, b, b0, c), list(zip(d_rows, drives)), band, closed_spec, stars, springs, bv, guns, bk)
     rep.lead(box) if answer_at_top else rep.text(box)
     return a, b, b0, c, target
 
@@ -322,11 +327,11 @@ def _worst(x) -> tuple[float, str]:
                                                                              "piston", "article"))]
     if not worst:
         return 1.0, "nothing of its own broken"
-    w = worst[0]
+    w = max(worst, key=lambda lim: lim.ratio)
     return w.ratio, f"its {w.component}'s {w.quantity} is {w.ratio:.3g} times its limit"
 
 
-def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine, least: float) -> str:
+def _headline(m, amplifiers: list, b, bv, bk, closed_spec: dict, guns: dict, machine, least: float) -> str:
     """The premise's answer in two sentences: whether amplification makes the tester feasible and by how much
     each amplifier misses, with the fixture every arrangement shares (Q at the band's centre beside it, and
     what decides when Q is at parity); then the direct gun it would replace, with its margins at the band's
@@ -367,7 +372,8 @@ def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine
            f"velocity change asks {least:.4g} m/s, which it " + ("reaches" if air["muzzle_velocity"] >= least
                                                                  else "does not reach either") + ")")
     stops = []
-    for x, how in ((b, "as laid out"), (bv, "with its last striker length ported")):
+    for x, how in ((b, "as laid out"), (bv, "with its last striker length ported"),
+                   (bk, "ported with its sabot kept on the striker")):
         r, words = _worst(x)
         stops.append(f"{how}, {words if r > 1 else 'nothing of its own is broken'}")
     second = (f"The direct gun it would replace, (b), is {machine(b)}"
@@ -377,23 +383,23 @@ def _headline(m, amplifiers: list, b, bv, closed_spec: dict, guns: dict, machine
 
 
 def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars: list = (),
-               springs: dict | None = None, vented=None, guns: dict | None = None) -> str:
+               springs: dict | None = None, vented=None, guns: dict | None = None, kept=None) -> str:
     """The premise's answer, boxed, for the top of the report (``premise.answer``), from the arrangements'
     numbers (``stars``: the amplifier at its best chain, (a*), where designed; ``springs``: the chain with gas
-    springs, ``gas_spring_chain``; ``vented``: (b) with its last striker length ported; ``guns``: the guns at
+    springs, ``gas_spring_chain``; ``vented``: (b) with its last striker length ported; ``kept``: that with its
+    sabot kept on the striker; ``guns``: the guns at
     the band's centre, ``centre_table``): a two-sentence answer, each arrangement's verdict and what it
     breaks, its launch energy at the fixture's speed and at the band's centre, what every arrangement with the
     fixture breaks, and what would change it."""
     a, b, b0, c = abc
-    bv = vented or b
+    bv, bk = vented or b, kept or vented or b
     fixture_ok = not a.fixture_problems
 
     def machine(x):
         return "FEASIBLE" if x.gun_feasible and x.feasible and fixture_ok else "NOT FEASIBLE"
     amplifiers = [a, *stars]
     rows = [(x, machine(x), P.limit_words(x)) for x in amplifiers] + [(b, machine(b), P.limit_words(b))]
-    if vented is not None:
-        rows.append((vented, machine(vented), P.limit_words(vented)))
+    rows += [(x, machine(x), P.limit_words(x)) for x in (vented, kept) if x is not None]
     rows += [(b0, "a lower bound, not a machine" + (" (its gun within the limits)" if b0.gun_feasible else ""),
               P.limit_words(b0)), (c, machine(c), P.limit_words(c))]
     for x, d in drives:
@@ -409,11 +415,11 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
         rows.append((x, "CANDIDATE" if d.feasible else "NOT FEASIBLE", why))
     f = m.fixture
     centre = band["rows"]["the band's centre"]
-    centre_cells = _centre_cells(guns, (a, *stars), (b, bv), b0, c, [x for x, _ in drives]) if guns else None
+    centre_cells = _centre_cells(guns, (a, *stars), (b, bv, bk), b0, c, [x for x, _ in drives]) if guns else None
     least = band["rows"]["the band's least"]["striker_speed"]
-    headline = (_headline(m, amplifiers, b, bv, closed_spec, guns, machine, least) if guns else
+    headline = (_headline(m, amplifiers, b, bv, bk, closed_spec, guns, machine, least) if guns else
                 f"Velocity amplification does {'' if any(machine(x) == 'FEASIBLE' for x in amplifiers) else 'not '}"
-                "make a compact non-pyrotechnic tester feasible.")
+                "make a compact non-pyrotechnic tester feasible.") + _nearest(rows, centre_cells)
     common = [f"The rows' first energy is at the designed fixture's striker speed ({f.striker_speed:.4g} m/s"
               + ("" if f.band_passed else ", a pulse that fails the band")
               + f"), the second at the band's centre ({centre['striker_speed']:.4g} m/s, the speed the specification "
@@ -426,11 +432,28 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
                       f"{m.spec.max_barrel_length / FT:.3g} ft (a {laid['travel_within'] / FT:.3g} ft travel) the "
                       f"infinitely chambered gun, the ideal upper bound, fires (b)'s {b.launched_mass:.4g} kg at "
                       f"{laid['chambered_speed_within']:.4g} m/s. (b)'s length leaves out its sabot's stop, which its "
-                      "mass counts (not laid on the axis).")
+                      "mass counts (not laid on the axis); with its sabot kept the striker's stop, longer, takes both.")
     if a.fixture_problems:
         common.append(f"(a) to (c) carry the same fixture, and it breaks its own limits: {'; '.join(a.fixture_problems)}.")
-    return P.answer(rows, common, _changes(a, b, bv, centre, closed_spec, springs, drives), headline,
+    return P.answer(rows, common, _changes(a, b, bv, bk, centre, closed_spec, springs, drives), headline,
                     centre_cells)
+
+
+def _nearest(rows: list, centre: dict | None) -> str:
+    """The lightest machine of the answer's ``rows`` whose gun reaches the band's centre (``centre``, where
+    given; else the fixture's speed): what it weighs, its length, its launch energy and what keeps it from
+    being a machine, in one sentence (empty where none reaches it)."""
+    def reaches(x):
+        energy, ok = (centre or {"cells": {}})["cells"].get(x.name, (math.nan, None))
+        return x.gun_feasible if ok is None else ok
+    machines = [r for r in rows if "lower bound" not in r[1] and math.isfinite(r[0].machine_mass) and reaches(r[0])]
+    if not machines:
+        return ""
+    x, word, why = min(machines, key=lambda r: r[0].machine_mass)
+    where = "the band's centre" if centre else "the fixture's speed"
+    return (f" The lightest machine here whose gun reaches {where} is {x.name}: {x.machine_mass / 1e3:.4g} t, "
+            f"{x.machine_length:.3g} m long, {x.required_energy / 1e6:.4g} MJ of launch energy; "
+            + ("FEASIBLE" if word == "FEASIBLE" else f"{word}: " + "; ".join(why)) + ".")
 
 
 def _centre_cells(guns: dict, amplifiers: tuple, directs: tuple, b0, c, drives: list) -> dict:
@@ -447,7 +470,7 @@ def _centre_cells(guns: dict, amplifiers: tuple, directs: tuple, b0, c, drives: 
     return {"speed": guns["direct"]["speed"], "cells": cells}
 
 
-def _changes(a, b, bv, centre: dict, closed_spec: dict, springs: dict | None, drives: list) -> list[str]:
+def _changes(a, b, bv, bk, centre: dict, closed_spec: dict, springs: dict | None, drives: list) -> list[str]:
     """What would change the premise's answer, from the run's numbers."""
     change = []
     k = closed_spec
@@ -470,13 +493,16 @@ def _changes(a, b, bv, centre: dict, closed_spec: dict, springs: dict | None, dr
                          "the chain's masses leave out" if shares else "")
                       + (", and springs that break their limits (section 8's gas-spring table)"
                          if any(i["broken"] for i in best.get("interfaces", [])) else ""))
-    change += _sabot_changes(b, bv)
-    for lim in broken(b.limits):
-        if lim.component.startswith("launcher's gas on the striker"):
-            change.append(f"for (b), a fixture designed with the gas's push on the striker (it adds {lim.value:.3g} "
-                          f"of the peak to the pulse's worst excess, past the fixture designer's {lim.limit:.3g} "
-                          f"margin), or the gas off the striker before the pulse (the payload a striker length past "
-                          f"the muzzle)")
+    change += _sabot_changes(b, bv, bk)
+    pushed = [(x, lim) for x in ([b] if bk is b else [b, bk]) for lim in broken(x.limits)
+              if lim.component.startswith("launcher's gas on the striker")]
+    if pushed:
+        change.append("for (b), a fixture designed with the gas's push on the striker ("
+                      + "; ".join(f"{_variant(x)} it adds {lim.value:.3g} of the peak to the pulse's worst excess"
+                                  for x, lim in pushed)
+                      + f", past the fixture designer's {pushed[0][1].limit:.3g} margin), or the gas off the striker "
+                      "before the pulse (the payload a striker length past the muzzle; the muzzle's jet on the "
+                      "striker's base, which the model leaves out, would still push it there)")
     if not centre["air_fires_sabot"]:
         r = centre["remedies"]
         change.append(f"at the band's centre, a gun past the limits for (b): an air barrel of "
@@ -490,8 +516,19 @@ def _changes(a, b, bv, centre: dict, closed_spec: dict, springs: dict | None, dr
     return change
 
 
-def _sabot_changes(b, bv) -> list[str]:
-    """For (b), the sabot's stop against the gas's push, as laid out and ported."""
+def _variant(x) -> str:
+    """A (b) row's variant, in words."""
+    return ("with its sabot kept" if x.name.endswith("its sabot kept") else "ported" if "vented" in x.name
+            else "as laid out")
+
+
+def _worst_of(limits: list):
+    return max(limits, key=lambda lim: lim.ratio)
+
+
+def _sabot_changes(b, bv, bk) -> list[str]:
+    """For (b), the sabot's stop against the gas's push, as laid out and ported, and the sabot kept on the
+    striker instead."""
     def stop(x):
         return ([lim for lim in broken(x.limits) if lim.component.startswith("stop of sabot")],
                 next((lim for lim in x.limits if lim.component == "stop of sabot"), None))
@@ -499,12 +536,12 @@ def _sabot_changes(b, bv) -> list[str]:
     if not shut or push is None:
         return []
     words = (f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push (the one "
-             f"designed breaks {len(shut)}, the worst its {shut[0].quantity} {shut[0].ratio:.3g} times)")
+             f"designed breaks {len(shut)}, the worst {_worst_of(shut).quantity}, {_worst_of(shut).ratio:.3g} times)")
     if bv is not b and push_v is not None:
         words += (f"; porting the barrel's last striker length cuts the push to {push_v.value / 1e6:.3g} MN (the "
                   "open valve keeps refilling the barrel from the tank)"
-                  + (f", and its stop still breaks {len(open_)} (the worst {open_[0].quantity} "
-                     f"{open_[0].ratio:.3g} times)" if open_ else ", and its stop holds"))
+                  + (f", and its stop still breaks {len(open_)} (the worst {_worst_of(open_).quantity} "
+                     f"{_worst_of(open_).ratio:.3g} times)" if open_ else ", and its stop holds"))
     impact = next((lim for lim in (open_ or shut) if lim.quantity == "impact pressure rho c v"), None)
     if impact is not None:
         v_max = impact.limit / (OIL["density"] * OIL_SOUND_SPEED)
@@ -512,8 +549,17 @@ def _sabot_changes(b, bv) -> list[str]:
                   f"its cylinder's {impact.limit / 1e6:.3g} MPa above {v_max:.0f} m/s, pushed or not), so the stop "
                   "needs an absorber that takes the muzzle's speed and whose static force exceeds the push (a "
                   "crushable with a push below its crush force: a valve that shuts after the shot, not modelled "
-                  "here), or the sabot kept on the striker through the pulse and stopped with it (its mass then "
-                  "part of the striker the fixture is designed for)")
+                  "here), or no sabot stop")
+    if bk is not bv:
+        own = [lim for lim in broken(bk.limits) if not lim.component.startswith("launcher's gas on the striker")]
+        pulse = next(lim for lim in bk.limits if lim.component.startswith("launcher's gas on the striker"))
+        words += ("; kept on the striker through the pulse and stopped with it by the striker's stop (the ported "
+                  "gun), the sabot needs no stop of its own, "
+                  + (f"the striker's stop breaks {len(own)} (the worst its {_worst_of(own).quantity} "
+                     f"{_worst_of(own).ratio:.3g} times)" if own else "its stops hold their limits")
+                  + f", and the push with the sabot's mass on the striker adds {pulse.value:.3g} of the peak to the "
+                  f"band's worst excess, " + ("within" if pulse.holds else f"{pulse.ratio:.3g} times")
+                  + f" the fixture designer's {pulse.limit:.3g} margin")
     return [words]
 
 

@@ -301,6 +301,12 @@ def test_premise_arrangements_and_map(machine):
     push = {name: next(lim["value"] for lim in results["values"][key]["limits"] if lim["component"] == "stop of sabot")
             for name, key in (("shut", "direct"), ("ported", "direct_vented"))}
     assert push["ported"] <= push["shut"]
+    # the sabot kept on the striker: the ported gun again, no sabot stop, the striker's stop takes both
+    kept = rows["(b) direct striker, vented, its sabot kept"]
+    assert kept[1:11] == b[1:11] and "kept on the striker" in kept[-1]
+    stopped = {lim["component"] for lim in results["values"]["direct_kept"]["limits"]}
+    assert any(c.startswith("stop of striker") for c in stopped)
+    assert not any(c.startswith("stop of sabot") for c in stopped)
     # the guns again at the band's centre: the striker in its sabot at the centre's speed, M V^2 / 2
     centre = results["values"]["at_the_band_centre"]["direct"]
     assert centre["air"]["launch_energy"] == pytest.approx(

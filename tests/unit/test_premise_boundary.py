@@ -519,13 +519,14 @@ def test_a_gun_continued_past_its_travel_with_its_ports_shut_is_the_longer_gun()
         ported_push(_open_gun(), 1.288, 0.052, 0.03)
 
 
-def test_striker_push_is_the_longer_guns_base_pressure_from_first_contact_with_its_sabot_carried():
+def test_striker_push_is_the_longer_guns_base_pressure_from_first_contact_with_its_sabot_carried_or_kept():
     """The gas on a directly fired striker during the pulse (``premise.striker_push``), from first principles:
     on Lagrange's profile the base pressure on the bore is the projectile's own mass times its acceleration, so
     the impulse over the striker and its sabot is the speed the longer gun's projectile gains between its base
     at the end of the travel plus the gap to the payload and at the muzzle (``launcher.gun.fire``'s history,
     the barrel 1.288 m longer, its air ahead evacuated); the push handed to the fixture's column run has that
-    impulse from first contact and carries the sabot until the base leaves the muzzle."""
+    impulse from first contact and carries the sabot until the base leaves the muzzle, or, kept on the
+    striker, through the whole pulse."""
     import dataclasses
     from types import SimpleNamespace
     from shockfem.launcher.gun import fire
@@ -545,6 +546,10 @@ def test_striker_push_is_the_longer_guns_base_pressure_from_first_contact_with_i
     assert p.carried == 286.3 and p.mass(0.99 * p.release) == 286.3 and p.mass(1.01 * p.release) == 0.0
     # the series' impulse is the one the speed was taken from (the trapezoid on the run's own samples)
     assert np.trapz(p.force, p.time) == pytest.approx(push["impulse"], rel=1e-3)
+    # kept on the striker, the sabot rides through the whole pulse under the same push
+    kept = striker_push(spec, launcher, fixture, sabot=286.3, vented=False, diameter=0.2574, kept=True)
+    assert kept["kept"] and kept["push"].release == math.inf and kept["push"].mass(1.0) == 286.3
+    assert np.array_equal(kept["push"].force, p.force) and kept["speed_added"] == push["speed_added"]
     # the same impulse on a striker and sabot a tenth as heavy adds ten times the speed
     light = striker_push(spec, launcher, SimpleNamespace(**{**vars(fixture), "striker_mass": 50.15}), sabot=28.63,
                          vented=False, diameter=0.2574)
