@@ -240,8 +240,8 @@ def _fixture(spec, out: dict, housing: Housing, runs: int, L_article: float, ste
 def pulse_with_push(spec: MachineSpec, fixture: Fixture, push: StrikerPush) -> dict:
     """The fixture's pulse on its column (``programmer.column_dashpot``, the design's liquid at ``CELLS``,
     as the fixture's own run) with ``push`` on the striker: its peak [m/s^2], duration [s], velocity change
-    [m/s], band check, the bodies' speeds when the record ends [m/s] and the run's energy balance residual
-    over the energy in (the kinetic energy at contact and the push's work)."""
+    [m/s], band check, the bodies' speeds when the record ends [m/s] and their travels over it [m], and the
+    run's energy balance residual over the energy in (the kinetic energy at contact and the push's work)."""
     d = fixture.design
     run = simulate_column(dashpot_lumped(d), spec.pulse.record_end(), LUMPED_SAMPLES, CELLS,
                           design_liquid(d).column(), push)
@@ -251,6 +251,8 @@ def pulse_with_push(spec: MachineSpec, fixture: Fixture, push: StrikerPush) -> d
     return {"peak": pulse.peak, "duration": pulse.duration, "velocity_change": pulse.velocity_change,
             "band_passed": bool(band.passed), "worst_excess": float(band.worst_excess),
             "after_speed_striker": float(run.striker_speed[-1]), "after_speed_payload": float(run.payload_speed[-1]),
+            "striker_travel": float(np.trapz(run.striker_speed, run.t)),
+            "payload_travel": float(np.trapz(run.payload_speed, run.t)),
             "energy_residual": e["energy balance residual [J]"] / energy_in}
 
 

@@ -114,13 +114,16 @@ def frame_force(stops: list[Stop], recoil: float) -> float:
 
 
 def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, material: str,
-          final_speeds: list[float], pressure: float, max_force: float = math.inf, push: float = 0.0) -> Layout:
+          final_speeds: list[float], pressure: float, max_force: float = math.inf, push: float = 0.0,
+          jet: float = 0.0) -> Layout:
     """Every component's place on the axis, the stops, the guides and the frame.  ``final_speeds``: each
     amplifier mass's speed after the chain (the striker's is the fixture's after the pulse); ``pressure``:
     the dashpot's design pressure (the hydraulic buffers' at most); ``max_force``: the most a stop may ask of
     the frame; ``push``: the gun's gas on the bore at the end of its travel [N] (``launcher.muzzle_state``),
     which the gun's slug (the first body) carries at its stop where its base is still in the bore when it
-    meets it (``stops.pushed_stop``).  The slug's front reaches the muzzle at the end of the gun's travel; a
+    meets it (``stops.pushed_stop``); ``jet``: the muzzle's jet on the slug once its base has left the bore
+    [N] (a lone slug that fills the bore, the premise's kept sabot; else left out), which its stop carries
+    there instead.  The slug's front reaches the muzzle at the end of the gun's travel; a
     lone slug (the premise's direct striker) finds the payload waiting there, ``GAP_TO_PAYLOAD`` past the
     muzzle."""
     g, size = launcher.design.gun, launcher.sizing
@@ -190,10 +193,15 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         stop_end[s.body] = x + s.length
         return stop_end[s.body]
 
-    def slug_push(k: int, x: float) -> float:
-        """The gas's push on body ``k`` at its stop at ``x``: the first body's, its base still in the bore."""
-        return push if k == 0 and x - slug["length"] < muzzle else 0.0
-    why = "the gun's gas at the end of its travel on the bore (its base pressure, launcher.muzzle_state)"
+    def slug_push(k: int, x: float) -> tuple[float, str]:
+        """The gas's push on body ``k`` at its stop at ``x`` and where it comes from: the first body's, its
+        base still in the bore, or the muzzle's jet on it past the muzzle."""
+        if k != 0:
+            return 0.0, ""
+        if x - slug["length"] < muzzle:
+            return push, "the gun's gas at the end of its travel on the bore (its base pressure, launcher.muzzle_state)"
+        return jet, ("the muzzle's jet on the body that fills the bore: the base pressure on the bore as its base "
+                     "leaves the muzzle, held (its fall as the barrel empties and the body moves off not modelled)")
     # each amplifier mass's ring just past the next body, after the previous ring's absorber
     ring_end = 0.0
     for k, b in enumerate(bodies[:-1]):
@@ -202,13 +210,13 @@ def place(launcher, amp, fixture, rho: float, allowable: float, catch: float, ma
         outer = RING_OUTER * max(b["diameter"], inner)
         x = max(fronts[k + 1] + STOP_MARGIN, ring_end)
         s = pushed_stop(b["name"], amp.masses[k], final_speeds[k], b["length"], rho, allowable,
-                        ring_area(outer, inner), pressure, slug_push(k, x), why, None, max_force)
+                        ring_area(outer, inner), pressure, *slug_push(k, x), None, max_force)
         ring_end = add_stop(s, f"stop_{b['name']}", x, outer, inner)
     striker = bodies[-1]
     inner = 2 * fixture.bore_radius + RING_CLEARANCE
     x = max(mouth + fixture.striker_travel + STOP_MARGIN, ring_end)
     s = pushed_stop("striker", fixture.striker_mass, fixture.after_speed_striker, striker["length"], rho, allowable,
-                    ring_area(RING_OUTER * striker["diameter"], inner), pressure, slug_push(len(bodies) - 1, x), why,
+                    ring_area(RING_OUTER * striker["diameter"], inner), pressure, *slug_push(len(bodies) - 1, x),
                     None, max_force)
     ring_end = add_stop(s, "stop_striker", x, RING_OUTER * striker["diameter"], inner)
     c = design_stop("payload", fixture.payload_mass, fixture.after_speed_payload, fixture.article_length, rho,

@@ -36,11 +36,13 @@ times the bore's depth), its speed from the rigid collision law (``programmer.da
 study runs the map again at the two ends of the band's range); the amplifier as the launched chain at its launch
 speed and mass count of least gun (``boundary.best_chain``, by the simple-wave and the infinitely
 chambered gun, the lower Q kept), its masses by the closed form (``amplifier.gain.design``), designed only
-where it needs less gun than the direct one (elsewhere the direct gun, where it is feasible and lightest,
-wins the point, its note 'nothing to amplify'); each gun by the lightest-launcher design (one start) or,
-for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The direct gun there carries the
-striker in a massless sabot (its lower bound); the sabot its bore and pressure would need (``sabot_mass``)
-is reported beside it, and a point the direct gun wins only without it is marked so.  (c) counts only
+where it needs less gun than the direct one in its sabot (elsewhere the direct gun, where it is feasible
+and lightest, wins the point, its note 'nothing to amplify'), and feasible only where its pads can be, by
+the closed form (``pads_hold``: its fastest interface's pad of the library's best solid within the share
+of the struck body a pad may weigh, the pads' first check); each gun by the lightest-launcher design (one
+start) or, for (c), the white paper's gun with its barrel solved (``launcher.gun.barrel_length_for``).  The
+direct gun there fires the striker in its sabot (``_with_sabot`` at the bare striker's gun's bore, or the
+striker's diameter: one bore where (b) scans five), the bare striker's gun (b0, the lower bound) beside it.  (c) counts only
 where its barrel is within the spec's barrel limit.  The restitution the map's amplifier runs at is the
 caller's (the system study passes the designed amplifier's effective e, carried over to every point: a pad
 sized and run at another point would restitute otherwise).  A machine's figure of merit there is its gun
@@ -48,7 +50,8 @@ sized and run at another point would restitute otherwise).  A machine's figure o
 Range: the fixture is designed (and its validity checked) only at the spec's point; elsewhere its striker
 is the law's and its restitution carried over (``premise_map``'s ``fixed_ratio`` runs the designed ratio
 at every point instead, the verdict's sensitivity to the law), the flying target's dashpot is not
-designed, and the amplifier's pads and stresses are not checked (only its gain).
+designed, the amplifier's pads checked only by that closed form at its fastest interface and its stresses
+not at all, and the gas's push on the direct gun's striker after the muzzle not run.
 """
 from __future__ import annotations
 
@@ -79,6 +82,7 @@ from .boundary import (MAX_MASSES, Chain, best_chain, best_pad_restitution, brea
 from .launcher import SIZING, Launcher, launcher_for, launcher_of, muzzle_state, ported_push
 from .layout import GAP_TO_PAYLOAD, RING_CLEARANCE, Layout, place, ring_area
 from .pad_materials import PAD_MATERIALS
+from .pads import PAD_MASS_SHARE
 from .limits import Limit, broken, by_cause, cause
 from .stops import pushed_stop
 from .spec import MachineSpec
@@ -194,23 +198,26 @@ def striker_body(fixture) -> dict:
             "length": fixture.housing_length, "bore": 2 * fixture.bore_radius, "bore_depth": fixture.bore_depth}
 
 
-def _layout(spec: MachineSpec, launcher: Launcher, fixture, pulse: dict | None = None, kept: float = 0.0
-            ) -> Layout:
+def _layout(spec: MachineSpec, launcher: Launcher, fixture, pulse: dict | None = None, kept: float = 0.0,
+            jet: float = 0.0) -> Layout:
     """The one-body machine: the gun fires the striker (its slug), the payload at the muzzle.  ``pulse``: the
-    fixture's run with the gas's push on the striker (``pushed_pulse``), whose speeds after it the striker's
-    stop and the payload's catcher take (else the fixture's own); ``kept``: a sabot kept on the striker [kg],
-    stopped with it."""
+    fixture's run with the gas's push on the striker (``pushed_pulse``), whose speeds after it and travels over
+    it the striker's stop and the payload's catcher take (else the fixture's own); ``kept``: a sabot kept on
+    the striker [kg], stopped with it, the body then as wide as the bore, and ``jet`` the muzzle's jet on it
+    past the muzzle [N] (``striker_push``), which its stop carries."""
     rho = property_si(spec.material, "density", "density")
     S = initial_yield_stress(spec.material) / spec.safety_factor
     body = striker_body(fixture)
     if pulse is not None:
         fixture = copy.copy(fixture)
         fixture.striker_mass += kept
-        fixture.after_speed_striker = pulse["after_speed_striker"]
-        fixture.after_speed_payload = pulse["after_speed_payload"]
+        for k in ("after_speed_striker", "after_speed_payload", "striker_travel", "payload_travel"):
+            setattr(fixture, k, pulse[k])
+    if kept:
+        body["diameter"] = launcher.design.gun.bore
     amp = types.SimpleNamespace(bodies=[body], masses=[fixture.striker_mass], stages=[], gaps=[])
     return place(launcher, amp, fixture, rho, S, spec.catch, spec.material, [], spec.oil_pressure,
-                 gun_thrust(launcher), muzzle_state(launcher.design.gun).push)
+                 gun_thrust(launcher), muzzle_state(launcher.design.gun).push, jet)
 
 
 def _arrangement(name: str, launcher: Launcher, fixture, layout: Layout, feasible: bool, notes: list[str],
@@ -401,7 +408,7 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     kept = kept and sabot > 0
     push = striker_push(spec, L, fixture, sabot, vented, diameter, kept)
     pulse = pushed_pulse(spec, fixture, push)
-    layout = _layout(spec, L, fixture, pulse, sabot if kept else 0.0)
+    layout = _layout(spec, L, fixture, pulse, sabot if kept else 0.0, push["jet"])
     stop = sabot_stop(spec, L, sabot, diameter, vented, fixture) if sabot and not kept else None
     notes = [_kept_words(sabot, pulse, layout, vented) if kept else
              f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine), stopped at the muzzle at "
@@ -431,11 +438,14 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
 def _kept_words(sabot: float, pulse: dict, layout: Layout, vented: bool) -> str:
     """A sabot kept on the striker (``direct_arrangement``'s ``kept``), in words."""
     stop = next(s for s in layout.stops if s.body == "striker")
+    jet = (f", against the muzzle's jet on it, {stop.push / 1e6:.3g} MN held over the stroke" if stop.push else "")
     return (f"sabot {sabot:.3g} kg (aluminium cone; counted in the machine) kept on the striker through the pulse "
             f"({_barrel_words(vented)}) and stopped with it by the striker's {stop.kind} ({stop.stroke:.3g} m of "
-            f"stroke at {stop.force / 1e6:.3g} MN, from {pulse['after_speed_striker']:.4g} m/s): no sabot stop, so no "
-            f"push on a held sabot; the cone at that stop carries its own inertia at a deceleration below the "
-            f"shot's acceleration (the stop's force at most the gun's thrust), not checked further")
+            f"stroke, {stop.force / 1e6:.3g} MN at most, from {pulse['after_speed_striker']:.4g} m/s{jet}): no sabot "
+            f"stop of its own, the gas's push a stripped sabot takes at the muzzle moved onto the striker's stop as "
+            f"the muzzle's jet; the cone at that stop carries its own inertia at a deceleration of at most the shot's "
+            f"peak acceleration (the stop's force at most the gun's thrust), its junction with the striker and the "
+            f"ring's bearing not checked")
 
 
 def _barrel_words(vented: bool) -> str:
@@ -456,7 +466,11 @@ def _push_words(push: dict, pulse: dict, fixture) -> str:
             f"{push['time_in_bore'] * 1e3:.3g} ms of the pulse, its base still in the bore, with {push['force'] / 1e6:.3g} "
             f"MN on the mean (the base pressure {push['pressure'] / 1e6:.3g} to {push['end_pressure'] / 1e6:.3g} MPa; "
             f"{push['force'] / push['pulse_force']:.3g} times the pulse's force on the payload), its impulse worth "
-            f"{push['speed_added']:.3g} m/s to the striker and its sabot; the fixture's column run with it: "
+            f"{push['speed_added']:.3g} m/s to the striker and its sabot"
+            + (f", then the muzzle's jet on the kept sabot, {push['jet'] / 1e6:.3g} MN held (an estimate) over the "
+               f"record's last {push['jet_time'] * 1e3:.3g} ms, worth {push['jet_speed_added']:.3g} m/s more"
+               if push.get("jet_time") else "")
+            + "; the fixture's column run with it: "
             f"{said(pulse['peak'], pulse['duration'], pulse['velocity_change'], pulse['band_passed'], pulse['worst_excess'])} "
             f"(its energy balance closes to {pulse['energy_residual']:.2g} of the energy in), "
             f"against its own {said(fixture.peak, fixture.duration, fixture.velocity_change, fixture.band_passed, fixture.worst_excess)}: "
@@ -545,7 +559,11 @@ def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 
     the speed its impulse adds to the striker and its sabot, F t / (M + m_sabot).  The base pressure is the
     free shot's (the striker slowed by the dashpot, or sped by the push, moves the base pressure little: the
     striker is many times the payload).  After the base clears the muzzle the jet through the stripped
-    sabot's ring (or the open muzzle) pushes the base on, less (left out)."""
+    sabot's ring (or the open muzzle) pushes the base on, less (left out).  A sabot ``kept`` on the striker
+    fills the bore: the muzzle's jet then pushes it on, taken as the base pressure on the bore as the base
+    leaves the muzzle (``jet``), held to the record's end (its fall as the barrel empties through the
+    muzzle, and the share of the jet a body moving off intercepts, not modelled: an estimate, not a
+    bound)."""
     g = launcher.design.gun
     r = _ported(launcher, fixture, diameter, vented)
     t0 = r.time_at(GAP_TO_PAYLOAD)
@@ -555,11 +573,17 @@ def striker_push(spec: MachineSpec, launcher: Launcher, fixture, sabot: float = 
     times = np.concatenate([[t0], r.time[inside], [t1]])
     force = g.area * np.interp(times, r.time, r.base_pressure)
     k0, k1 = (int(np.searchsorted(r.time, t)) for t in (t0, t1))
+    # the base pressure as the base leaves (the sample at the muzzle itself is the held face's)
+    jet = g.area * float(r.base_pressure[r.time < r.at_muzzle][-1]) if kept else 0.0
+    jet_time = max(spec.pulse.record_end() - (t1 - t0), 0.0) if kept and t1 >= r.at_muzzle else 0.0
+    if jet_time > 0:
+        times, force = np.append(times, t1 + jet_time), np.append(force, jet)
     return {"vented": vented, "kept": kept, "pressure": float(np.interp(t0, r.time, r.base_pressure)),
             "end_pressure": float(r.base_pressure[max(k1 - 1, k0)]), "reservoir_pressure": float(r.reservoir_pressure[0]),
             "force": impulse / (t1 - t0), "impulse": impulse, "time_in_bore": t1 - t0,
             "speed_added": impulse / (fixture.striker_mass + sabot), "velocity_change": spec.pulse.band_velocity_change(),
-            "pulse_force": fixture.payload_mass * spec.pulse.peak,
+            "pulse_force": fixture.payload_mass * spec.pulse.peak, "jet": jet, "jet_time": jet_time,
+            "jet_speed_added": jet * jet_time / (fixture.striker_mass + sabot),
             "push": StrikerPush(times - t0, force, sabot, math.inf if kept else t1 - t0)}
 
 
@@ -1128,7 +1152,7 @@ def answer(rows: list[tuple], common: list[str], change: list[str], headline: st
 # --- the map -------------------------------------------------------------------------------------------
 
 # what a point can come to: the lightest feasible arrangement, or none
-WINNERS = ("amplifier", "direct", "direct, if its sabot is light", "flying target", "none")
+WINNERS = ("amplifier", "direct", "flying target", "none")
 # the gun laws of the map's closed form (``boundary``): the simple-wave (constant-area) gun, and the
 # infinitely chambered gun, the bound on any gun of the gas
 LAWS = {"simple-wave": False, "chambered": True}
@@ -1144,9 +1168,10 @@ class MapPoint:
     striker_mass: float
     striker_speed: float
     chain: dict                   # the closed form's best chain, simple-wave guns (``boundary.best_chain``)
-    eligible: bool                # a chain needs less gun than the direct one (Q < 1 by either law): designed
+    eligible: bool                # a chain needs less gun than the direct one in its sabot (Q / direct_load < 1 by
+                                  # either law): designed
     amplifier: dict               # launch energy, first mass, gun mass, machine mass, feasible, note
-    direct: dict
+    direct: dict                  # the striker in its sabot, (b)
     flying: dict
     winner: str                   # WINNERS
     chain_chambered: dict = field(default_factory=dict)   # the same with both guns the infinitely chambered one
@@ -1155,6 +1180,7 @@ class MapPoint:
     direct_load: float = 1.0      # (M + m_sabot) / M: the direct gun with the sabot its bore would need
     gun_ratio_sabot: float = math.nan   # the kept law's Q against that direct gun (Q / direct_load)
     interface: dict = field(default_factory=dict)   # the kept chain's fastest interface (``chain_interface_bound``)
+    bare: dict = field(default_factory=dict)        # the striker alone, (b0): the direct gun's lower bound
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -1191,10 +1217,30 @@ def _winner(amp: dict, direct: dict, flying: dict) -> str:
     feasible = {k: v for k, v in options.items() if v["feasible"]}
     if not feasible:
         return "none"
-    winner = min(feasible, key=lambda k: feasible[k]["machine_mass"])
-    if winner == "direct" and amp["feasible"] and direct["machine_mass"] + direct["sabot_estimate"] > amp["machine_mass"]:
-        return "direct, if its sabot is light"
-    return winner
+    return min(feasible, key=lambda k: feasible[k]["machine_mass"])
+
+
+def pads_hold(interface: dict) -> bool:
+    """The map's amplifier's pads, by the closed form: its fastest interface's pad of the library's best solid
+    (``chain_interface_bound``) within the share of the struck body a pad may weigh (``pads.PAD_MASS_SHARE``,
+    the pads' first check, ``amplifier.pad_bound``)."""
+    return interface["pad_over_struck"] <= PAD_MASS_SHARE
+
+
+def pads_hold_below(spec: MachineSpec, e: float) -> float:
+    """The striker speed [m/s] above which no chain at restitution ``e`` passes ``pads_hold``, whatever its
+    gain and number of masses: its last interface closes at V_s / g, its mass ratio 1 + q = (1 + e) / g, so
+    the pad over the struck body is (V_s / v*)^2 / (g (1 + e)), least at the largest stage gain g = 1 + e;
+    within the share below v* (1 + e) sqrt(PAD_MASS_SHARE), v* the library's best solid's
+    (``elastic_limit_speeds``)."""
+    return (1 + e) * max(elastic_limit_speeds(spec).values()) * math.sqrt(PAD_MASS_SHARE)
+
+
+def _pad_words(interface: dict) -> str:
+    return (f"no pad: its fastest interface closes at {interface['closing_speed']:.0f} m/s, where a pad of the "
+            f"library's best solid ({interface['best_solid']}, elastic to {interface['elastic_limit_speed']:.0f} m/s) "
+            f"that held it would weigh {interface['pad_over_struck']:.3g} times the struck body (at most "
+            f"{PAD_MASS_SHARE:g})")
 
 
 @dataclass(frozen=True)
@@ -1261,27 +1307,33 @@ def map_point(spec: MachineSpec, duration: float, peak: float, article: float, s
     M = strikers[0].striker(s, r, dv, spec.striker_ratio * payload)
     V = striker_speed(payload, M, dv, fixture_e)
     Lb, _ = direct_launcher(s, M, V, None, starts=1, report_binding=False)
-    gb = Lb.design.gun
-    sabot = sabot_mass(gb.bore, gb.reservoir_pressure, 2 * r * wall, M)
-    direct = _gun_entry(Lb, M, Lb.design.feasible, f"massless sabot; its sabot would weigh {sabot:.3g} kg")
-    direct["sabot_estimate"] = sabot
+    bare = _gun_entry(Lb, M, Lb.design.feasible, "the striker alone (a massless sabot): the lower bound")
+    # the striker in its sabot at the bare gun's bore (the premise's own (b) scans the bore; a point, one bore)
+    L, sabot = _with_sabot(s, M, V, 2 * r * wall, max(Lb.design.gun.bore, 2 * r * wall), 1, False)
+    direct = _gun_entry(L, M + sabot, L.design.feasible, f"in its {sabot:.3g} kg sabot")
+    direct["sabot"] = sabot
+    load = (M + sabot) / M
     chains = _chains(amp_e, V, s.gas)
     law = min(chains, key=lambda k: chains[k].gun_ratio)
     chain = chains[law]
-    eligible = chain.gun_ratio < 1
+    q = chain.gun_ratio / load
+    eligible = q < 1
     note = "" if eligible else (f"nothing to amplify: the best chain ({chain.masses} masses launched at "
-                                f"{chain.launch_speed:.0f} m/s) needs {chain.gun_ratio:.3g} times the direct gun's "
-                                f"p0 A L ({law} guns, the lower Q of the two laws)")
+                                f"{chain.launch_speed:.0f} m/s) needs {q:.3g} times the gun of the direct one in its "
+                                f"sabot (p0 A L, {law} guns, the lower Q of the two laws)")
+    interface = chain_interface_bound(types.SimpleNamespace(spec=s), chain)
     amp = _amplifier_entry(s, M, V, chain) if eligible else _no_gun(note)
+    if eligible and not pads_hold(interface):
+        amp["feasible"] = False
+        amp["note"] = (amp["note"] + "; " if amp["note"] else "") + _pad_words(interface)
     Mc = strikers[1].striker(s, r, dv, WHITE_PAPER_TARGET * article)
     Vc = striker_speed(payload, Mc, dv, fixture_e)
     Lc, ok = white_paper_launcher(s, Mc, Vc)
     flying = _gun_entry(Lc, Mc, ok and Lc.design.gun.length <= s.max_barrel_length,
                         f"barrel {Lc.design.gun.length / FT:.3g} ft" if ok else "never reaches the speed")
-    load = (M + sabot) / M
     return MapPoint(duration, peak, article, payload, dv, M, V, chains["simple-wave"].as_dict(), eligible, amp,
                     direct, flying, _winner(amp, direct, flying), chains["chambered"].as_dict(), M / payload, note,
-                    load, chain.gun_ratio / load, chain_interface_bound(types.SimpleNamespace(spec=s), chain))
+                    load, q, interface, bare)
 
 
 def premise_map(spec: MachineSpec, fixture, amp_e: float, target, durations, peaks, payloads, echo=None,
@@ -1301,8 +1353,8 @@ def premise_map(spec: MachineSpec, fixture, amp_e: float, target, durations, pea
                 out.append(p)
                 if echo:
                     echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "
-                         f"striker {p.striker_ratio:.3g} x payload, Q {p.chain['gun_ratio']:.3g} (simple-wave) "
-                         f"{p.chain_chambered['gun_ratio']:.3g} (chambered), winner {p.winner}")
+                         f"striker {p.striker_ratio:.3g} x payload, Q against (b) {p.chain['gun_ratio'] / p.direct_load:.3g} "
+                         f"(simple-wave) {p.chain_chambered['gun_ratio'] / p.direct_load:.3g} (chambered), winner {p.winner}")
     return out
 
 
@@ -1326,18 +1378,21 @@ def _fixed(spec: MachineSpec, fixture, target, article: float, T: float, A: floa
 
 def boundary(points: list[MapPoint]) -> dict:
     """The map's counts: each outcome's points, the direct wins where no chain needs less gun (the amplifier
-    not designed), the points where the amplifier was eligible (designed), each arrangement's points within
-    the limits, and the smallest velocity change the amplifier wins at against the largest the direct gun
+    not designed), the points where the amplifier was eligible (designed; by each gun law, and against the
+    bare striker's gun instead), where it was designed but its pads cannot be (``pads_hold``), each
+    arrangement's points within the limits, and the smallest velocity change the amplifier wins at against the largest the direct gun
     wins at."""
     amp = [p for p in points if p.winner == "amplifier"]
     direct = [p for p in points if p.winner == "direct"]
     counts = {w: sum(p.winner == w for p in points) for w in WINNERS}
-    within = {k: sum(getattr(p, k)["feasible"] for p in points) for k in ("amplifier", "direct", "flying")}
+    within = {k: sum(getattr(p, k)["feasible"] for p in points) for k in ("amplifier", "direct", "bare", "flying")}
     return {"counts": counts, "eligible": sum(p.eligible for p in points), "points": len(points), "within": within,
             "amplifier_wins": counts["amplifier"], "direct_wins": counts["direct"],
             "direct_wins_nothing_to_amplify": sum(not p.eligible for p in direct),
-            "eligible_chambered": sum(p.chain_chambered["gun_ratio"] < 1 for p in points),
-            "eligible_simple_wave": sum(p.chain["gun_ratio"] < 1 for p in points),
+            "eligible_chambered": sum(p.chain_chambered["gun_ratio"] < p.direct_load for p in points),
+            "eligible_simple_wave": sum(p.chain["gun_ratio"] < p.direct_load for p in points),
+            "eligible_bare": sum(min(p.chain["gun_ratio"], p.chain_chambered["gun_ratio"]) < 1 for p in points),
+            "pads_fail": sum(p.eligible and not pads_hold(p.interface) for p in points),
             "striker_ratios": [min(p.striker_ratio for p in points), max(p.striker_ratio for p in points)],
             "smallest_dv_amplifier_wins": min((p.velocity_change for p in amp), default=math.nan),
             "largest_dv_direct_wins": max((p.velocity_change for p in direct), default=math.nan)}
@@ -1350,11 +1405,10 @@ def boundary_velocity_change(points: list[MapPoint], e: float, gas: str, chamber
     change at the point ``at`` (default the first; the striker's ratio, so this speed per velocity change,
     moves a little from point to point: a striker many times the payload closes at about dv / (1 + e))."""
     p = at or points[0]
-    return break_even_speed(e, gas, chambered=chambered) * p.velocity_change / p.striker_speed
+    return break_even_speed(e, gas, chambered=chambered, direct_load=p.direct_load) * p.velocity_change / p.striker_speed
 
 
-MARKS = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "direct, if its sabot is light": ("D", "#a6d854"),
-         "flying target": ("^", "#7570b3"), "none": ("x", "#444444")}
+MARKS = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "flying target": ("^", "#7570b3"), "none": ("x", "#444444")}
 
 
 def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
@@ -1377,7 +1431,8 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
         for p in (q for q in points if q.article == a):
             m, c = MARKS[p.winner]
             ax.scatter(p.duration * 1e3, p.peak / G0, marker=m, color=c, s=70)
-            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio']:.2g} / {p.chain_chambered['gun_ratio']:.2g}"
+            ax.annotate(f"{p.velocity_change:.0f} m/s\nQ {p.chain['gun_ratio'] / p.direct_load:.2g} / "
+                        f"{p.chain_chambered['gun_ratio'] / p.direct_load:.2g}"
                         + ("" if p.eligible else "\n(no chain)"), (p.duration * 1e3, p.peak / G0),
                         fontsize=6, xytext=(4, 4), textcoords="offset points")
         ax.set_xscale("log")
@@ -1401,7 +1456,8 @@ def map_figure(points: list[MapPoint], path: str, lines: dict | None = None):
         handles.append(key.plot([], [], linestyle=style, color=colour, lw=1, label=f"{label}: {dv:.3g} m/s")[0])
     key.legend(handles=handles, fontsize=7, loc="center", ncol=4, frameon=False)
     fig.suptitle("The lightest feasible machine (gun and moving masses) that gives the pulse; Q: the best chain's gun\n"
-                 "(p0 A L) over the direct gun's, closed form, simple-wave / infinitely chambered guns; the amplifier "
-                 "designed only where the lower Q < 1 ('no chain': a direct win with nothing to amplify)", fontsize=9)
+                 "(p0 A L) over the direct gun's in its sabot, closed form, simple-wave / infinitely chambered guns; the "
+                 "amplifier designed only where the lower Q < 1 ('no chain': a direct win with nothing to amplify)",
+                 fontsize=9)
     save(fig, path)
     return path

@@ -328,7 +328,7 @@ def _worst(x) -> tuple[float, str]:
     if not worst:
         return 1.0, "nothing of its own broken"
     w = max(worst, key=lambda lim: lim.ratio)
-    return w.ratio, f"its {w.component}'s {w.quantity} is {w.ratio:.3g} times its limit"
+    return w.ratio, f"{w.component}: {w.quantity}, {w.ratio:.3g} times its limit"
 
 
 def _headline(m, amplifiers: list, b, bv, bk, closed_spec: dict, guns: dict, machine, least: float) -> str:
@@ -372,13 +372,14 @@ def _headline(m, amplifiers: list, b, bv, bk, closed_spec: dict, guns: dict, mac
            f"velocity change asks {least:.4g} m/s, which it " + ("reaches" if air["muzzle_velocity"] >= least
                                                                  else "does not reach either") + ")")
     stops = []
-    for x, how in ((b, "as laid out"), (bv, "with its last striker length ported"),
+    for x, how in ((b, "as laid out"), (bv, "with its last striker length ported (the valve left open on the "
+                                            "tank, as the gun model has it)"),
                    (bk, "ported with its sabot kept on the striker")):
         r, words = _worst(x)
         stops.append(f"{how}, {words if r > 1 else 'nothing of its own is broken'}")
     second = (f"The direct gun it would replace, (b), is {machine(b)}"
               + f": at the band's centre ({V:.4g} m/s, {air['launch_energy'] / 1e6:.4g} MJ) {gun}; "
-              + "; ".join(stops) + " (the valve left open on the tank, as the gun model has it).")
+              + "; ".join(stops) + ".")
     return first + ". " + second
 
 
@@ -419,7 +420,7 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
     least = band["rows"]["the band's least"]["striker_speed"]
     headline = (_headline(m, amplifiers, b, bv, bk, closed_spec, guns, machine, least) if guns else
                 f"Velocity amplification does {'' if any(machine(x) == 'FEASIBLE' for x in amplifiers) else 'not '}"
-                "make a compact non-pyrotechnic tester feasible.") + _nearest(rows, centre_cells)
+                "make a compact non-pyrotechnic tester feasible.") + _nearest(rows, centre_cells, _gun_models(drives))
     common = [f"The rows' first energy is at the designed fixture's striker speed ({f.striker_speed:.4g} m/s"
               + ("" if f.band_passed else ", a pulse that fails the band")
               + f"), the second at the band's centre ({centre['striker_speed']:.4g} m/s, the speed the specification "
@@ -439,10 +440,19 @@ def answer_box(m, abc: tuple, drives: list, band: dict, closed_spec: dict, stars
                     centre_cells)
 
 
-def _nearest(rows: list, centre: dict | None) -> str:
+def _gun_models(drives: list) -> dict:
+    """The gas drives' rows' gun model, by name, where it is not the lumped gun the other rows' guns are
+    designed with: the infinitely chambered law, with the lumped gun's check of it."""
+    return {x.name: "its drive by the infinitely chambered gun" + (
+        f"; the lumped gun's check ends {abs(d.lumped['speed_error']):.2%} "
+        f"{'slower' if d.lumped['speed_error'] < 0 else 'faster'}" if d.lumped else "") for x, d in drives}
+
+
+def _nearest(rows: list, centre: dict | None, models: dict | None = None) -> str:
     """The lightest machine of the answer's ``rows`` whose gun reaches the band's centre (``centre``, where
     given; else the fixture's speed): what it weighs, its length, its launch energy and what keeps it from
-    being a machine, in one sentence (empty where none reaches it)."""
+    being a machine, in one sentence (empty where none reaches it); ``models``: a row's gun model, by name,
+    where it is not the lumped gun (``_gun_models``)."""
     def reaches(x):
         energy, ok = (centre or {"cells": {}})["cells"].get(x.name, (math.nan, None))
         return x.gun_feasible if ok is None else ok
@@ -451,7 +461,9 @@ def _nearest(rows: list, centre: dict | None) -> str:
         return ""
     x, word, why = min(machines, key=lambda r: r[0].machine_mass)
     where = "the band's centre" if centre else "the fixture's speed"
-    return (f" The lightest machine here whose gun reaches {where} is {x.name}: {x.machine_mass / 1e3:.4g} t, "
+    model = (models or {}).get(x.name)
+    return (f" The lightest machine here whose gun reaches {where} is {x.name}"
+            + (f" ({model})" if model else "") + f": {x.machine_mass / 1e3:.4g} t, "
             f"{x.machine_length:.3g} m long, {x.required_energy / 1e6:.4g} MJ of launch energy; "
             + ("FEASIBLE" if word == "FEASIBLE" else f"{word}: " + "; ".join(why)) + ".")
 
@@ -722,22 +734,24 @@ def _map_rows(points) -> list:
         rows.append([p.article / LB, p.duration * 1e3, p.peak / G0, p.velocity_change, p.striker_ratio,
                      p.striker_speed, c["masses"], c["launch_speed"], c["gun_ratio"], ch["gun_ratio"],
                      "yes" if p.eligible else "no", p.amplifier["launch_energy"] / 1e6, p.amplifier["machine_mass"],
-                     p.direct["launch_energy"] / 1e6, p.direct["machine_mass"], p.direct["sabot_estimate"],
-                     p.direct_load, p.gun_ratio_sabot, p.interface.get("closing_speed", float("nan")),
+                     p.bare["launch_energy"] / 1e6, p.bare["machine_mass"], p.direct["launch_energy"] / 1e6,
+                     p.direct["machine_mass"], p.direct["sabot"], "yes" if p.direct["feasible"] else "NO", p.direct_load, p.gun_ratio_sabot, p.interface.get("closing_speed", float("nan")),
                      p.interface.get("pad_over_struck", float("nan")),
                      p.flying["barrel"] / FT, p.flying["machine_mass"], p.winner, p.note or p.amplifier["note"]])
     return rows
 
 
 MAP_HEADER = ["payload [lb]", "duration [ms]", "peak [g]", "velocity change [m/s]", "striker over payload [-]",
-              "striker speed [m/s]", "best chain: masses", "best chain: launch [m/s]", "Q simple-wave [-]",
-              "Q chambered [-]", "amplifier designed", "(a) launch [MJ]", "(a) gun and masses [kg]", "(b0) launch [MJ]",
-              "(b0) gun and striker [kg]", "(b) its sabot [kg]", "direct load (M + sabot) / M [-]",
+              "striker speed [m/s]", "best chain: masses", "best chain: launch [m/s]",
+              "Q simple-wave, the bare striker [-]", "Q chambered, the bare striker [-]", "amplifier designed", "(a) launch [MJ]", "(a) gun and masses [kg]", "(b0) launch [MJ]",
+              "(b0) gun and striker [kg]", "(b) launch [MJ]", "(b) gun, sabot and striker [kg]", "(b) its sabot [kg]",
+              "(b) within the limits", "direct load (M + sabot) / M [-]",
               "Q against (b), the lower law's [-]", "best chain's fastest interface [m/s]",
               "pad that held it over struck body [-]", "(c) barrel [ft]", "(c) gun and target [kg]",
               "lightest", "note"]
 MAP_FORMATS = ["{:.0f}", "{:.2g}", "{:,.0f}", "{:.0f}", "{:.3g}", "{:.0f}", "{}", "{:.0f}", "{:.3g}", "{:.3g}", "{}",
-               "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{:.4g}", "{:.3g}", "{:.0f}", "{:.3g}", "{:.3g}",
+               "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{:.3g}", "{:,.0f}", "{:,.0f}", "{}", "{:.4g}", "{:.3g}", "{:.0f}",
+               "{:.3g}", "{:.3g}",
                "{:,.0f}", "{}", "{}"]
 
 
@@ -745,8 +759,9 @@ def _map_lines(points, e: float, gas: str, at) -> dict:
     """The closed form's boundary lines: the velocity change above which Q < 1, by each gun law."""
     _, e_pad = P.best_pad_restitution()
     lines = {}
-    for label, x in ((f"Q = 1 at the design's e {e:.3f}", e), (f"at the best pad's e {e_pad:.3f}", e_pad),
-                     ("at the white paper's e 0.9", CLAIM["e"]), ("at e = 1", 1.0)):
+    for label, x in ((f"Q = 1 (load {at.direct_load:.3g}) at the design's e {e:.3f}", e),
+                     (f"at the best pad's e {e_pad:.3f}", e_pad), ("at the white paper's e 0.9", CLAIM["e"]),
+                     ("at e = 1", 1.0)):
         lines[label + ", simple-wave"] = P.boundary_velocity_change(points, x, gas, at=at)
         lines[label + ", chambered"] = P.boundary_velocity_change(points, x, gas, chambered=True, at=at)
     return lines
@@ -767,11 +782,13 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     lines = _map_lines(points, e, m.spec.gas, at)
     P.map_figure(points, rep.path("premise_map.png"), lines)
     rep.figure("premise_map.png", "Where each arrangement gives the lightest feasible machine (gun and moving "
-               "masses), each point's velocity change and Q (simple-wave / chambered guns); the lines: the velocity "
-               "change above which the best chain needs less gun than the direct one, at four restitutions by each "
-               "gun law, at the striker speed per velocity change of the point nearest the design's")
+               "masses), each point's velocity change and Q against the direct gun in its sabot (simple-wave / "
+               "chambered guns); the lines: the velocity change above which the best chain needs less gun than that "
+               "direct one, at four restitutions by each gun law, at the striker speed per velocity change and the "
+               "sabot's load of the point nearest the design's")
     bd = P.boundary(points)
     bd["lines"] = lines
+    bd["pads_hold_below"] = P.pads_hold_below(m.spec, e)
     echo("  the map again at the designed striker ratio at every point")
     fixed = P.boundary(P.premise_map(m.spec, m.fixture, e, target, *axes, fixed_ratio=True))
     bd["fixed_ratio"] = fixed
@@ -780,13 +797,15 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
         ends = {k: P.premise_map(m.spec, m.fixture, e, target, *axes, band_end=k) for k in (-1, 1)}
         bd["band_ends"] = _band_end_flips(rep, points, ends)
     rep.value("map_boundary", bd)
-    extra = [["the amplifier designed (the lower Q < 1)", "eligible"],
+    extra = [["the amplifier designed (the lower Q against (b) < 1)", "eligible"],
              ["Q < 1 with simple-wave guns", "eligible_simple_wave"], ["Q < 1 with chambered guns", "eligible_chambered"],
+             ["Q < 1 against the bare striker's gun (b0), the lower law's", "eligible_bare"],
+             ["the amplifier designed, its pads past the closed form's bound", "pads_fail"],
              ["direct wins with nothing to amplify (no chain needs less gun)", "direct_wins_nothing_to_amplify"]]
     rows = ([[k, v, fixed["counts"][k]] for k, v in bd["counts"].items()] + [[w, bd[k], fixed[k]] for w, k in extra]
             + [[f"{name} within the limits", bd["within"][k], fixed["within"][k]] for k, name in
-               (("amplifier", "the amplifier"), ("direct", "the direct gun's lower bound (b0, a massless sabot)"),
-                ("flying", "the flying target"))]
+               (("amplifier", "the amplifier"), ("direct", "the direct gun, the striker in its sabot (b)"),
+                ("bare", "the direct gun's lower bound (b0, a massless sabot)"), ("flying", "the flying target"))]
             + [["all", bd["points"], fixed["points"]]])
     rep.table("map_counts", ["outcome", "points (the striker scaled to each point)",
                              f"points (the designed ratio, {m.fixture.striker_ratio:.3g}, at every point)"], rows,
@@ -831,13 +850,18 @@ def _map_models(m, e: float, target, bd: dict) -> str:
             "mass count (2 to 10) at each point those that need the least gun (`boundary.best_chain`, closed form) by "
             "the simple-wave gun and by the infinitely chambered gun (the bound on any gun), the lower Q kept, its "
             "masses by the closed form, its gun by the lightest-launcher design (one start), designed only where "
-            "that Q is below 1: elsewhere no chain needs less gun, and the direct gun, where it is feasible and the "
-            "lightest, wins the point (its note says 'nothing to amplify'). The figure draws both Qs and both laws' "
-            "lines. The direct gun fires the striker in a massless sabot (its lower bound; the sabot its bore would "
-            "need is the column beside it). The map leaves the models' checked range everywhere but the design's "
-            "point: the dashpot is designed and its validity checked only there (the striker's law carries its wall "
-            "ratio, floor and column over stroke), the amplifier's pads are not sized or run at the other points "
-            "(their restitution is carried over), its stresses and stops are not checked, nor the gun's gas on the "
+            "that Q against the direct gun in its sabot is below 1: elsewhere no chain needs less gun, and the "
+            "direct gun, where it is feasible and the lightest, wins the point (its note says 'nothing to amplify'); "
+            "where designed it is feasible only if its fastest interface's pad of the library's best solid weighs "
+            f"at most {P.PAD_MASS_SHARE:g} of the struck body (`premise.pads_hold`, the pads' first check). The "
+            "figure draws both Qs against that gun and both laws' lines at its load. The direct gun fires the "
+            "striker in its sabot at the bare striker's gun's bore (or the striker's diameter, where wider; one "
+            "start, one bore where the premise's (b) scans its bore, so its sabot may be heavier than the scan's, "
+            "which favours the amplifier's Q); the bare striker's gun (b0, the lower bound) is beside it. The map leaves the models' "
+            "checked range everywhere but the design's point: the dashpot is designed and its validity checked only "
+            "there (the striker's law carries its wall ratio, floor and column over stroke), the amplifier's pads "
+            "are not sized or run at the other points (their restitution is carried over; only the closed form's "
+            "bound above), its stresses and stops are not checked, nor the gun's gas on the "
             "striker and its sabot after the muzzle (section 8); the flying target is the "
             "fixture designer's target scaled by the same law, its dashpot not designed at the map's points"
             + ("" if hasattr(target, "striker_mass") else " (at the design's point the designer finds none for it: "
@@ -893,16 +917,24 @@ def _map_reading(bd: dict, e: float) -> str:
 
     def where(x):
         return f"above {x:.0f} m/s of velocity change" if x == x else "nowhere below the gas's escape speed"
-    return (f"Of the {bd['points']} points the amplifier at e {e:.3f} needs less gun than the direct one, and so was "
-            f"designed, at {bd['eligible']} ({bd['eligible_simple_wave']} by the simple-wave gun, "
-            f"{bd['eligible_chambered']} by the chambered gun; the closed form near the design's point: "
-            f"{where(sw)} simple-wave, {where(ch)} chambered). The lightest feasible machine: the amplifier at "
-            f"{n['amplifier']}, the direct gun's lower bound (b0, a massless sabot: with the sabot its bore needs, "
-            f"the table's column, it weighs more and may fall short) at {n['direct']} "
-            f"({bd['direct_wins_nothing_to_amplify']} of them where "
-            f"no chain needs less gun, so nothing to amplify; {n['direct, if its sabot is light']} more only if its "
-            f"sabot is light), the flying target at {n['flying target']}, and at {n['none']} no arrangement is "
-            f"feasible within the limits. At the designed striker ratio at every point instead: the amplifier at "
+    w = bd["within"]
+    return (f"Of the {bd['points']} points the amplifier at e {e:.3f} needs less gun than the direct one in its sabot, "
+            f"and so was designed, at {bd['eligible']} ({bd['eligible_simple_wave']} by the simple-wave gun, "
+            f"{bd['eligible_chambered']} by the chambered gun; against the bare striker's gun, the lower bound, at "
+            f"{bd['eligible_bare']}; the closed form near the design's point: {where(sw)} simple-wave, {where(ch)} "
+            f"chambered), and at {bd['pads_fail']} of those its fastest interface asks a pad past the closed form's "
+            f"bound. The lightest feasible machine: the amplifier at {n['amplifier']}, the direct gun (the striker in "
+            f"its sabot, within the limits at {w['direct']}; its bare lower bound at {w['bare']}) at {n['direct']} "
+            f"({bd['direct_wins_nothing_to_amplify']} of them where no chain needs less gun, so nothing to "
+            f"amplify), the flying target at {n['flying target']}, and at {n['none']} no arrangement is "
+            f"feasible within the limits. With the library's solids the pads' bound holds only for a striker below "
+            f"{bd['pads_hold_below']:.0f} m/s ((1 + e) v* sqrt({P.PAD_MASS_SHARE:g}), whatever the chain: "
+            f"`premise.pads_hold_below`), while a chain needs less gun than the direct one only {where(sw)} "
+            f"(simple-wave): no point of any map of these pads can have a feasible amplifier, so that count is the "
+            f"closed form's, as section 8's scale-free argument is, not the grid's. The direct gun is checked on "
+            f"its gun alone at the map's points (its sabot's stop, the gas's push on its striker and its stops are "
+            f"not, which at the spec's point break limits: section 8), so its wins are where its gun reaches the "
+            f"speed, an upper bound on where a direct machine is feasible. At the designed striker ratio at every point instead: the amplifier at "
             f"{f['counts']['amplifier']}, the direct gun at {f['counts']['direct']}, the flying target at "
             f"{f['counts']['flying target']}, none at {f['counts']['none']} (the amplifier designed at "
             f"{f['eligible']}).")

@@ -261,13 +261,16 @@ def test_premise_arrangements_and_map(machine):
     points = table["rows"]
     assert len(points) == 4
     assert {p[col["lightest"]] for p in points} <= set(WINNERS)
-    # the amplifier is designed exactly where its best chain needs less gun than the direct one (the lower Q
-    # of the two gun laws below 1); where it was not, the direct gun may win, the amplifier never
+    # the amplifier is designed exactly where its best chain needs less gun than the direct one in its sabot
+    # (the lower Q of the two gun laws, over the sabot's load, below 1); where it was not, the direct gun may
+    # win, the amplifier never
     for p in points:
-        q = min(p[col["Q simple-wave [-]"]], p[col["Q chambered [-]"]])
-        assert (p[col["amplifier designed"]] == "yes") == (q < 1)
+        q = min(p[col["Q simple-wave, the bare striker [-]"]], p[col["Q chambered, the bare striker [-]"]])
+        load = p[col["direct load (M + sabot) / M [-]"]]
+        assert load >= 1 and p[col["Q against (b), the lower law's [-]"]] == pytest.approx(q / load, rel=1e-12)
+        assert (p[col["amplifier designed"]] == "yes") == (q / load < 1)
         if p[col["amplifier designed"]] == "no":
-            assert p[col["lightest"]] not in ("direct, if its sabot is light", "amplifier")
+            assert p[col["lightest"]] != "amplifier"
             assert p[col["lightest"]] != "direct" or "nothing to amplify" in p[col["note"]]
     boundary = results["values"]["map_boundary"]
     assert boundary["points"] == 4 and sum(boundary["counts"].values()) == 4
