@@ -59,7 +59,9 @@ import copy
 import dataclasses
 import functools
 import math
+import multiprocessing
 import types
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import asdict, dataclass, field
 
 import numpy as np
@@ -1337,25 +1339,34 @@ def map_point(spec: MachineSpec, duration: float, peak: float, article: float, s
 
 
 def premise_map(spec: MachineSpec, fixture, amp_e: float, target, durations, peaks, payloads, echo=None,
-                fixed_ratio: bool = False, band_end: int = 0) -> list[MapPoint]:
+                fixed_ratio: bool = False, band_end: int = 0, workers: int = 1) -> list[MapPoint]:
     """The map over ``durations`` [s], ``peaks`` [m/s^2] and ``payloads`` (article masses) [kg]; the striker
     and the flying target scaled to each point (``StrikerLaw``), or, ``fixed_ratio``, at the designed
     fixture's ratios to the payload at every point (the sensitivity of the verdict to the law); each point at
-    the band's centre, or at an end of its range (``map_point``'s ``band_end``)."""
+    the band's centre, or at an end of its range (``map_point``'s ``band_end``).  ``workers`` > 1: the points
+    shared among that many processes (each point's guns are designed from scratch, a point's cost is its
+    guns' optimisers: seconds to a minute; the results are the same, in the same order)."""
     strikers = striker_laws(spec, fixture, target)
-    out = []
-    for a in payloads:
-        for T in durations:
-            for A in peaks:
-                laws = strikers if not fixed_ratio else _fixed(spec, fixture, target, a, T, A)
-                p = map_point(spec, T, A, a, laws, max(fixture.restitution, 0.0), amp_e,
-                              fixture.housing_outer_radius / fixture.bore_radius, band_end)
-                out.append(p)
-                if echo:
-                    echo(f"    {a / LB:.0f} lb, {T * 1e3:.2g} ms, {A / G0:,.0f} g: dv {p.velocity_change:.0f} m/s, "
-                         f"striker {p.striker_ratio:.3g} x payload, Q against (b) {p.chain['gun_ratio'] / p.direct_load:.3g} "
-                         f"(simple-wave) {p.chain_chambered['gun_ratio'] / p.direct_load:.3g} (chambered), winner {p.winner}")
-    return out
+    jobs = [(spec, T, A, a, strikers if not fixed_ratio else _fixed(spec, fixture, target, a, T, A),
+             max(fixture.restitution, 0.0), amp_e, fixture.housing_outer_radius / fixture.bore_radius, band_end)
+            for a in payloads for T in durations for A in peaks]
+    if workers > 1:
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+            points = pool.map(_map_point_of, jobs)
+            return [_echoed(p, echo) for p in points]
+    return [_echoed(map_point(*job), echo) for job in jobs]
+
+
+def _map_point_of(job: tuple) -> MapPoint:
+    return map_point(*job)
+
+
+def _echoed(p: MapPoint, echo) -> MapPoint:
+    if echo:
+        echo(f"    {p.article / LB:.0f} lb, {p.duration * 1e3:.2g} ms, {p.peak / G0:,.0f} g: dv {p.velocity_change:.0f} "
+             f"m/s, striker {p.striker_ratio:.3g} x payload, Q against (b) {p.chain['gun_ratio'] / p.direct_load:.3g} "
+             f"(simple-wave) {p.chain_chambered['gun_ratio'] / p.direct_load:.3g} (chambered), winner {p.winner}")
+    return p
 
 
 @dataclass(frozen=True)

@@ -58,7 +58,7 @@ SIZES = {
     "default": {"payloads": (10, 12, 50, 100), "coupled": 12, "h_article": 0.003, "h_pad": 0.012,
                 "alternatives": ((6, 325), (7, 325), (5, 450), (6, 450), (7, 450), (7, 600)), "starts": 3,
                 "fixture_evaluations": DESIGN_EVALUATIONS,
-                "sabot_bores": 5,
+                "sabot_bores": 5, "map_workers": 2,
                 "map": {"durations": (0.2, 1.0, 5.0), "peaks": (2000, 10000, 20000), "payloads": (10, 30, 100)}},
 }
 # the machines' end: the fixture's record (the pulse and the band's window after it) in the coupled run

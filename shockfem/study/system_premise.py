@@ -775,7 +775,9 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     echo(f"  the map: {len(grid['durations']) * len(grid['peaks']) * len(grid['payloads'])} points")
     e = m.amplifier.restitution
     axes = ([d * 1e-3 for d in grid["durations"]], [p * G0 for p in grid["peaks"]], [w * LB for w in grid["payloads"]])
-    points = P.premise_map(m.spec, m.fixture, e, target, *axes, echo=echo)
+    # the points' guns are designed independently: the default sizes share them among the machine's cores
+    workers = cfg.get("map_workers", 1)
+    points = P.premise_map(m.spec, m.fixture, e, target, *axes, echo=echo, workers=workers)
     rep.table("map", MAP_HEADER, _map_rows(points), MAP_FORMATS)
     at = min(points, key=lambda p: abs(p.article - m.spec.article_mass) + abs(p.duration - m.spec.pulse.duration)
              * 1e3 + abs(p.peak - m.spec.pulse.peak) / G0 * 1e-3)
@@ -790,11 +792,11 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     bd["lines"] = lines
     bd["pads_hold_below"] = P.pads_hold_below(m.spec, e)
     echo("  the map again at the designed striker ratio at every point")
-    fixed = P.boundary(P.premise_map(m.spec, m.fixture, e, target, *axes, fixed_ratio=True))
+    fixed = P.boundary(P.premise_map(m.spec, m.fixture, e, target, *axes, fixed_ratio=True, workers=workers))
     bd["fixed_ratio"] = fixed
     if cfg.get("band_ends", True):
         echo("  the map again at the two ends of the band's range of velocity change")
-        ends = {k: P.premise_map(m.spec, m.fixture, e, target, *axes, band_end=k) for k in (-1, 1)}
+        ends = {k: P.premise_map(m.spec, m.fixture, e, target, *axes, band_end=k, workers=workers) for k in (-1, 1)}
         bd["band_ends"] = _band_end_flips(rep, points, ends)
     rep.value("map_boundary", bd)
     extra = [["the amplifier designed (the lower Q against (b) < 1)", "eligible"],
