@@ -138,16 +138,14 @@ def break_even(striker_speed: float, gas: str = "air", direct_gas: str | None = 
     return float(brentq(excess, lo, 1.0, xtol=1e-7))
 
 
-def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES, chambered: bool = False,
-                     direct_load: float = 1.0) -> float:
+def break_even_speed(e: float, gas: str = "air", max_masses: int = MAX_MASSES, chambered: bool = False) -> float:
     """The striker speed [m/s] above which an amplifier of restitution ``e`` needs less gun than the
-    direct gun (both in ``gas``, both simple-wave or both ``chambered``; ``direct_load``: the direct gun's
-    launched mass over the striker's, ``gun_ratio``); nan when none below 0.99 of the (simple-wave) escape
-    speed does."""
+    direct gun (both in ``gas``, both simple-wave or both ``chambered``); nan when none below 0.99 of the
+    (simple-wave) escape speed does."""
     top = 0.99 * 2 * sound_speed(gas) / (GASES[gas].gamma - 1)
 
     def excess(v):
-        return best_chain(e, v, gas, None, max_masses, chambered, direct_load).gun_ratio - 1
+        return best_chain(e, v, gas, None, max_masses, chambered).gun_ratio - 1
     if excess(top) >= 0:
         return math.nan
     lo = 1.0

@@ -1404,6 +1404,7 @@ def boundary(points: list[MapPoint]) -> dict:
             "eligible_simple_wave": sum(p.chain["gun_ratio"] < p.direct_load for p in points),
             "eligible_bare": sum(min(p.chain["gun_ratio"], p.chain_chambered["gun_ratio"]) < 1 for p in points),
             "pads_fail": sum(p.eligible and not pads_hold(p.interface) for p in points),
+            "smallest_dv_eligible": min((p.velocity_change for p in points if p.eligible), default=math.nan),
             "striker_ratios": [min(p.striker_ratio for p in points), max(p.striker_ratio for p in points)],
             "smallest_dv_amplifier_wins": min((p.velocity_change for p in amp), default=math.nan),
             "largest_dv_direct_wins": max((p.velocity_change for p in direct), default=math.nan)}
@@ -1412,11 +1413,13 @@ def boundary(points: list[MapPoint]) -> dict:
 def boundary_velocity_change(points: list[MapPoint], e: float, gas: str, chambered: bool = False,
                              at: MapPoint | None = None) -> float:
     """The velocity change [m/s] above which an amplifier of restitution ``e`` needs less gun than the direct
-    gun: the closed form's striker speed (``boundary.break_even_speed``) over the striker speed per velocity
-    change at the point ``at`` (default the first; the striker's ratio, so this speed per velocity change,
-    moves a little from point to point: a striker many times the payload closes at about dv / (1 + e))."""
+    gun firing the bare striker: the closed form's striker speed (``boundary.break_even_speed``) over the
+    striker speed per velocity change at the point ``at`` (default the first; the striker's ratio, so this
+    speed per velocity change, moves a little from point to point: a striker many times the payload closes at
+    about dv / (1 + e)).  Against the striker in its sabot there is no one line: the sabot's load changes from
+    point to point with its gun's bore and pressure (each point's Q against it is the map's)."""
     p = at or points[0]
-    return break_even_speed(e, gas, chambered=chambered, direct_load=p.direct_load) * p.velocity_change / p.striker_speed
+    return break_even_speed(e, gas, chambered=chambered) * p.velocity_change / p.striker_speed
 
 
 MARKS = {"amplifier": ("o", "#d95f02"), "direct": ("s", "#1b9e77"), "flying target": ("^", "#7570b3"), "none": ("x", "#444444")}

@@ -198,7 +198,7 @@ def premise(rep: Report, m, cfg, echo, answer_at_top: bool = False) -> tuple:
              "into the atmosphere (`launcher.ported_push`: the valve stays open on the tank, as in the gun model), "
              "and (b, its sabot kept) that ported gun with the sabot kept on the striker through the pulse and "
              "stopped with it by the striker's stop (no sabot stop; its mass on the striker in the fixture's column "
-             "run); "
+             "run, and the muzzle's jet on it, filling the bore, past the muzzle); "
              "(b0) the same with a massless sabot, the direct gun's lower bound; (c) the white paper's flying "
              f"target (its 30 lb for a 12 lb article in proportion: {P.WHITE_PAPER_TARGET * s.article_mass / LB:.3g} "
              "lb here, the fixture designed for it) fired by the white paper's own gun "
@@ -569,8 +569,8 @@ def _sabot_changes(b, bv, bk) -> list[str]:
                   "gun), the sabot needs no stop of its own, "
                   + (f"the striker's stop breaks {len(own)} (the worst its {_worst_of(own).quantity} "
                      f"{_worst_of(own).ratio:.3g} times)" if own else "its stops hold their limits")
-                  + f", and the push with the sabot's mass on the striker adds {pulse.value:.3g} of the peak to the "
-                  f"band's worst excess, " + ("within" if pulse.holds else f"{pulse.ratio:.3g} times")
+                  + f", and the push in the bore and the muzzle's jet on the kept sabot, its mass on the striker, add "
+                  f"{pulse.value:.3g} of the peak to the band's worst excess, " + ("within" if pulse.holds else f"{pulse.ratio:.3g} times")
                   + f" the fixture designer's {pulse.limit:.3g} margin")
     return [words]
 
@@ -759,7 +759,7 @@ def _map_lines(points, e: float, gas: str, at) -> dict:
     """The closed form's boundary lines: the velocity change above which Q < 1, by each gun law."""
     _, e_pad = P.best_pad_restitution()
     lines = {}
-    for label, x in ((f"Q = 1 (load {at.direct_load:.3g}) at the design's e {e:.3f}", e),
+    for label, x in ((f"Q = 1, bare striker, at the design's e {e:.3f}", e),
                      (f"at the best pad's e {e_pad:.3f}", e_pad), ("at the white paper's e 0.9", CLAIM["e"]),
                      ("at e = 1", 1.0)):
         lines[label + ", simple-wave"] = P.boundary_velocity_change(points, x, gas, at=at)
@@ -785,9 +785,10 @@ def premise_map(rep: Report, m, target, cfg, out_dir: str, echo):
     P.map_figure(points, rep.path("premise_map.png"), lines)
     rep.figure("premise_map.png", "Where each arrangement gives the lightest feasible machine (gun and moving "
                "masses), each point's velocity change and Q against the direct gun in its sabot (simple-wave / "
-               "chambered guns); the lines: the velocity change above which the best chain needs less gun than that "
-               "direct one, at four restitutions by each gun law, at the striker speed per velocity change and the "
-               "sabot's load of the point nearest the design's")
+               "chambered guns); the lines: the velocity change above which the best chain needs less gun than the "
+               "direct gun firing the bare striker (the sabot's load changes from point to point), at four "
+               "restitutions by each gun law, at the striker speed per velocity change of the point nearest the "
+               "design's")
     bd = P.boundary(points)
     bd["lines"] = lines
     bd["pads_hold_below"] = P.pads_hold_below(m.spec, e)
@@ -856,7 +857,7 @@ def _map_models(m, e: float, target, bd: dict) -> str:
             "direct gun, where it is feasible and the lightest, wins the point (its note says 'nothing to amplify'); "
             "where designed it is feasible only if its fastest interface's pad of the library's best solid weighs "
             f"at most {P.PAD_MASS_SHARE:g} of the struck body (`premise.pads_hold`, the pads' first check). The "
-            "figure draws both Qs against that gun and both laws' lines at its load. The direct gun fires the "
+            "figure gives both Qs against that gun and both laws' lines against the bare striker's. The direct gun fires the "
             "striker in its sabot at the bare striker's gun's bore (or the striker's diameter, where wider; one "
             "start, one bore where the premise's (b) scans its bore, so its sabot may be heavier than the scan's, "
             "which favours the amplifier's Q); the bare striker's gun (b0, the lower bound) is beside it. The map leaves the models' "
@@ -898,7 +899,7 @@ def _restitution_effect(rep: Report, m, target):
                      "yes" if p.amplifier["feasible"] else "NO", p.direct["machine_mass"], p.winner])
     lb = round(s.article_mass / LB)
     rep.table("map_restitution", ["amplifier's e", "e [-]", "(a)", "(a) launch [MJ]", "(a) gun and masses [kg]",
-                                  "(a) gun within limits", "(b0) gun and striker [kg]", "lightest"], rows,
+                                  "(a) gun within limits", "(b) gun, sabot and striker [kg]", "lightest"], rows,
               ["{}", "{:.4f}", "{}", "{:.4g}", "{:,.0f}", "{}", "{:,.0f}", "{}"])
     rep.value("map_restitution", [{"e": r[1], "launch_energy": r[3] * 1e6, "machine_mass": r[4], "winner": r[7]}
                                   for r in rows])
@@ -923,16 +924,16 @@ def _map_reading(bd: dict, e: float) -> str:
     return (f"Of the {bd['points']} points the amplifier at e {e:.3f} needs less gun than the direct one in its sabot, "
             f"and so was designed, at {bd['eligible']} ({bd['eligible_simple_wave']} by the simple-wave gun, "
             f"{bd['eligible_chambered']} by the chambered gun; against the bare striker's gun, the lower bound, at "
-            f"{bd['eligible_bare']}; the closed form near the design's point: {where(sw)} simple-wave, {where(ch)} "
-            f"chambered), and at {bd['pads_fail']} of those its fastest interface asks a pad past the closed form's "
+            f"{bd['eligible_bare']}; the closed form against the bare striker near the design's point: {where(sw)} "
+            f"simple-wave, {where(ch)} chambered), and at {bd['pads_fail']} of those its fastest interface asks a pad past the closed form's "
             f"bound. The lightest feasible machine: the amplifier at {n['amplifier']}, the direct gun (the striker in "
             f"its sabot, within the limits at {w['direct']}; its bare lower bound at {w['bare']}) at {n['direct']} "
             f"({bd['direct_wins_nothing_to_amplify']} of them where no chain needs less gun, so nothing to "
             f"amplify), the flying target at {n['flying target']}, and at {n['none']} no arrangement is "
             f"feasible within the limits. With the library's solids the pads' bound holds only for a striker below "
             f"{bd['pads_hold_below']:.0f} m/s ((1 + e) v* sqrt({P.PAD_MASS_SHARE:g}), whatever the chain: "
-            f"`premise.pads_hold_below`), while a chain needs less gun than the direct one only {where(sw)} "
-            f"(simple-wave): no point of any map of these pads can have a feasible amplifier, so that count is the "
+            f"`premise.pads_hold_below`), while the map's chains need less gun than the direct one only from "
+            f"{bd['smallest_dv_eligible']:.0f} m/s of velocity change up: no point of any map of these pads can have a feasible amplifier, so that count is the "
             f"closed form's, as section 8's scale-free argument is, not the grid's. The direct gun is checked on "
             f"its gun alone at the map's points (its sabot's stop, the gas's push on its striker and its stops are "
             f"not, which at the spec's point break limits: section 8), so its wins are where its gun reaches the "
