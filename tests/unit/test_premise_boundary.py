@@ -642,3 +642,33 @@ def test_the_map_shared_among_processes_is_the_map():
     one, two = premise_map(*args), premise_map(*args, workers=2)
     assert [json.dumps(p.as_dict(), default=str) for p in one] == [json.dumps(p.as_dict(), default=str) for p in two]
     assert one[0].eligible and one[0].direct_load >= 1.0
+
+
+def test_a_kept_sabot_is_stopped_with_the_striker_against_the_muzzles_jet():
+    """``premise._layout`` for (b) with its sabot kept: the striker's stop takes the striker and its sabot at
+    the pushed run's speed after the pulse (their kinetic energy (M + m) v^2 / 2), placed past the pushed
+    run's travel, against the muzzle's jet held over the stroke (``stops.pushed_stop``'s push); the same
+    layout with the sabot stripped stops the striker alone with no push (its base out of the bore there).
+    The gun: the lightest within the 12 lb spec's limits for a 787.8 kg projectile at 412 m/s (one start)."""
+    from shockfem.machine.launcher import launcher_for
+    from shockfem.machine.premise import _layout
+    spec = read_spec({"article": "12 lb"})
+    launcher = launcher_for(spec, 787.8, 412.0, starts=1, report_binding=False)
+    L = article_length(spec)
+    fixture = types.SimpleNamespace(
+        striker_mass=501.5, striker_speed=412.0, housing_outer_radius=0.1287, housing_length=1.288,
+        bore_radius=0.0379, bore_depth=1.2, floor_thickness=0.04, column=1.0, housing_steel_mass=480.0,
+        housing_steel="maraging_300", liquid_mass=4.3, pin_mass=2.0, piston_mass=0.48, article_mass=5.44,
+        article_diameter=0.0572, article_length=L, payload_mass=5.92, after_speed_striker=408.0,
+        after_speed_payload=415.0, striker_travel=3.6, payload_travel=3.7)
+    pulse = {"after_speed_striker": 431.5, "after_speed_payload": 440.0, "striker_travel": 3.8,
+             "payload_travel": 3.9}
+    kept = _layout(spec, launcher, fixture, pulse, kept=286.3, jet=6.15e6)
+    stop = next(s for s in kept.stops if s.body == "striker")
+    assert stop.mass == pytest.approx(787.8, rel=1e-12) and stop.speed == 431.5 and stop.push == 6.15e6
+    assert stop.energy == pytest.approx(0.5 * 787.8 * 431.5 ** 2, rel=1e-12)
+    placed = next(i for i in kept.items if i.name == "stop_striker")
+    mouth = next(i for i in kept.items if i.kind == "housing")
+    assert placed.x0 >= mouth.x0 + mouth.length + 3.8 and mouth.diameter == launcher.design.gun.bore
+    stripped = next(s for s in _layout(spec, launcher, fixture, pulse).stops if s.body == "striker")
+    assert stripped.mass == 501.5 and stripped.push == 0.0 and fixture.striker_mass == 501.5
