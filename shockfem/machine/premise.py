@@ -13,7 +13,7 @@ Three arrangements, each delivering the designed fixture's striker to the payloa
   ``launcher.ported_push``), its barrel as laid
   out (unvented) or, the same gun, with its last striker length ported (``vented``), or that ported gun with
   the sabot kept on the striker through the pulse and stopped with it (``kept``: no sabot stop, the sabot's
-  mass on the striker in the column run);
+  mass on the striker in the column run, the muzzle's jet on it past the muzzle);
 * (c) **flying target** as the white paper sizes it: a target of the white paper's mass ratio (30 lb for
   a 12 lb article), the fixture designed for it (``fixture.design_fixture``: the housing's wall may ask
   more), fired by the white paper's own gun (12 in bore, 2000 psi, 20 ft^3, ``launcher.gun.white_paper_gun``)
@@ -403,8 +403,9 @@ def direct_arrangement(spec: MachineSpec, fixture, starts: int = 3, with_sabot: 
     last striker length ported (``launcher.ported_push``), else as laid out, unvented: the gas's push on the
     striker during the pulse (``striker_push``) and on the sabot at its stop (``sabot_stop``) follow from it;
     ``kept``: the sabot not stripped at the muzzle but kept on the striker through the pulse and stopped with
-    it by the striker's stop (no stop of its own, so no push on a held sabot; its mass rides on the striker
-    in the fixture's column run)."""
+    it by the striker's stop (no stop of its own; its mass rides on the striker in the fixture's column run,
+    and, filling the bore, it takes the muzzle's jet past the muzzle there and at the striker's stop:
+    ``striker_push``'s ``jet``)."""
     diameter = 2 * fixture.housing_outer_radius if with_sabot else None
     L, sabot, short = _direct_design(spec, fixture.striker_mass, fixture.striker_speed, diameter, starts, bores)
     kept = kept and sabot > 0
