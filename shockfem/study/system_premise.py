@@ -327,7 +327,7 @@ def _worst(x) -> tuple[float, str]:
                                                                              "piston", "article"))]
     if not worst:
         return 1.0, "nothing of its own broken"
-    w = max(worst, key=lambda lim: lim.ratio)
+    w = worst[0]                            # broken(): the worst first
     return w.ratio, f"{w.component}: {w.quantity}, {w.ratio:.3g} times its limit"
 
 
@@ -506,12 +506,13 @@ def _changes(a, b, bv, bk, centre: dict, closed_spec: dict, springs: dict | None
                       + (", and springs that break their limits (section 8's gas-spring table)"
                          if any(i["broken"] for i in best.get("interfaces", [])) else ""))
     change += _sabot_changes(b, bv, bk)
-    pushed = [(x, lim) for x in ([b] if bk is b else [b, bk]) for lim in broken(x.limits)
+    variants = [("as laid out", b)] + ([("with its sabot kept", bk)] if bk is not b else [])
+    pushed = [(how, lim) for how, x in variants for lim in broken(x.limits)
               if lim.component.startswith("launcher's gas on the striker")]
     if pushed:
         change.append("for (b), a fixture designed with the gas's push on the striker ("
-                      + "; ".join(f"{_variant(x)} it adds {lim.value:.3g} of the peak to the pulse's worst excess"
-                                  for x, lim in pushed)
+                      + "; ".join(f"{how} it adds {lim.value:.3g} of the peak to the pulse's worst excess"
+                                  for how, lim in pushed)
                       + f", past the fixture designer's {pushed[0][1].limit:.3g} margin), or the gas off the striker "
                       "before the pulse (the payload a striker length past the muzzle; the muzzle's jet on the "
                       "striker's base, which the model leaves out, would still push it there)")
@@ -528,16 +529,6 @@ def _changes(a, b, bv, bk, centre: dict, closed_spec: dict, springs: dict | None
     return change
 
 
-def _variant(x) -> str:
-    """A (b) row's variant, in words."""
-    return ("with its sabot kept" if x.name.endswith("its sabot kept") else "ported" if "vented" in x.name
-            else "as laid out")
-
-
-def _worst_of(limits: list):
-    return max(limits, key=lambda lim: lim.ratio)
-
-
 def _sabot_changes(b, bv, bk) -> list[str]:
     """For (b), the sabot's stop against the gas's push, as laid out and ported, and the sabot kept on the
     striker instead."""
@@ -548,12 +539,12 @@ def _sabot_changes(b, bv, bk) -> list[str]:
     if not shut or push is None:
         return []
     words = (f"for (b), a sabot stop within its limits against the gas's {push.value / 1e6:.3g} MN push (the one "
-             f"designed breaks {len(shut)}, the worst {_worst_of(shut).quantity}, {_worst_of(shut).ratio:.3g} times)")
+             f"designed breaks {len(shut)}, the worst {shut[0].quantity}, {shut[0].ratio:.3g} times)")
     if bv is not b and push_v is not None:
         words += (f"; porting the barrel's last striker length cuts the push to {push_v.value / 1e6:.3g} MN (the "
                   "open valve keeps refilling the barrel from the tank)"
-                  + (f", and its stop still breaks {len(open_)} (the worst {_worst_of(open_).quantity} "
-                     f"{_worst_of(open_).ratio:.3g} times)" if open_ else ", and its stop holds"))
+                  + (f", and its stop still breaks {len(open_)} (the worst {open_[0].quantity} "
+                     f"{open_[0].ratio:.3g} times)" if open_ else ", and its stop holds"))
     impact = next((lim for lim in (open_ or shut) if lim.quantity == "impact pressure rho c v"), None)
     if impact is not None:
         v_max = impact.limit / (OIL["density"] * OIL_SOUND_SPEED)
@@ -567,8 +558,8 @@ def _sabot_changes(b, bv, bk) -> list[str]:
         pulse = next(lim for lim in bk.limits if lim.component.startswith("launcher's gas on the striker"))
         words += ("; kept on the striker through the pulse and stopped with it by the striker's stop (the ported "
                   "gun), the sabot needs no stop of its own, "
-                  + (f"the striker's stop breaks {len(own)} (the worst its {_worst_of(own).quantity} "
-                     f"{_worst_of(own).ratio:.3g} times)" if own else "its stops hold their limits")
+                  + (f"the striker's stop breaks {len(own)} (the worst its {own[0].quantity} "
+                     f"{own[0].ratio:.3g} times)" if own else "its stops hold their limits")
                   + f", and the push in the bore and the muzzle's jet on the kept sabot, its mass on the striker, add "
                   f"{pulse.value:.3g} of the peak to the band's worst excess, " + ("within" if pulse.holds else f"{pulse.ratio:.3g} times")
                   + f" the fixture designer's {pulse.limit:.3g} margin")
