@@ -49,9 +49,11 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import asdict, dataclass, field
+from typing import NamedTuple
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import LSODA, OdeSolution
+from scipy.optimize import brentq
 
 from ..units import FT, IN, PSI
 from .gas import GASES, Gas, orifice_flow
@@ -63,7 +65,7 @@ GAS_INERTIA = ("none", "lagrange", "simple-wave", "chambered")
 # orifice flow there has a time constant of microseconds, and DOP853 took 9.4 s (LSODA 0.13 s)
 # on such a gun; on the white paper's gun the two agree to 2e-10.  Radau is not used: its stages
 # probe both sides of the friction's stick at rest, and with friction it settled 6e-5 away.
-METHOD = "LSODA"
+METHOD = LSODA
 AIR_AHEAD = ("evacuated", "atmosphere")
 # a projectile that has moved is at rest once its speed is below this fraction of the speed the
 # whole gas energy would give it
@@ -71,6 +73,8 @@ STOP = 1e-9
 # integration pieces: the valve's opening, then restarts of a projectile that stopped and was
 # pushed again by a barrel still filling
 MAX_PIECES = 20
+# an event's root to this many machine epsilons of its time (``scipy.integrate.solve_ivp``'s)
+EPS = np.finfo(float).eps
 
 
 @dataclass(frozen=True)
@@ -151,6 +155,53 @@ def describe(gun: Gun) -> str:
     return "; ".join(parts)
 
 
+class _Piece(NamedTuple):
+    """A piece of the shot's integration: what ``fire`` reads of solve_ivp's result."""
+    t: np.ndarray
+    y: np.ndarray
+    t_events: list
+    sol: OdeSolution
+    success: bool
+
+
+def _integrate(rhs, t0: float, t_bound: float, y0, rtol: float, atol, events, directions):
+    """``scipy.integrate.solve_ivp``'s loop with LSODA, dense output and terminal events, which it is step for
+    step: the same solver, steps and interpolants, each event's root by brentq on its step's interpolant to
+    4 eps (solve_ivp's ``solve_event_equation``), the earliest ending the piece.  What differs is how the
+    events' signs are tested: as numbers, where solve_ivp's numpy tests of three events at every step were a
+    sixth of a shot's time (the premise map's guns, profiled).  ``events``: functions of the state that end
+    the integration where they cross zero in their ``directions`` (+1 rising, -1 falling).  Returns the
+    fields of solve_ivp's result that ``fire`` reads (t, y, t_events, sol, success)."""
+    solver = METHOD(rhs, t0, y0, t_bound, rtol=rtol, atol=atol)
+    ts, ys, interpolants = [t0], [y0], []
+    t_events = [[] for _ in events]
+    g = [event(y0) for event in events]
+    status = None
+    while status is None:
+        solver.step()
+        if solver.status == "failed":
+            status = -1
+            break
+        status = 0 if solver.status == "finished" else None
+        t_old, t, y = solver.t_old, solver.t, solver.y
+        sol = solver.dense_output()
+        interpolants.append(sol)
+        g_new = [event(y) for event in events]
+        crossed = [k for k, d in enumerate(directions)
+                   if (d > 0 and g[k] <= 0 <= g_new[k]) or (d < 0 and g[k] >= 0 >= g_new[k])]
+        if crossed:
+            roots = sorted((brentq(lambda s, e=events[k]: e(sol(s)), t_old, t, xtol=4 * EPS, rtol=4 * EPS), k)
+                           for k in crossed)
+            root, k = roots[0]          # every event is terminal: the first ends the piece
+            t_events[k].append(root)
+            status, t, y = 1, root, sol(root)
+        g = g_new
+        ts.append(t)
+        ys.append(y)
+    return _Piece(np.array(ts), np.vstack(ys).T, [np.asarray(te) for te in t_events],
+                  OdeSolution(ts, interpolants), status is not None and status >= 0)
+
+
 class _joined:
     """The pieces of an integration split at known kinks, seen as one solution."""
 
@@ -170,12 +221,25 @@ class _joined:
 
 def air_ahead_pressure(gun: Gun, v: float) -> float:
     """Pressure on the projectile's face from the air it drives ahead [Pa]."""
+    return _face_pressure(gun)(v)
+
+
+AIR_GAMMA, AIR_R = 1.4, 287.05
+
+
+def _face_pressure(gun: Gun):
+    """The face pressure of ``gun``'s air ahead as a function of the projectile's speed [m/s -> Pa], its
+    constants worked out once (the shot's integrator asks for it at every evaluation)."""
     if gun.air_ahead == "evacuated":
-        return 0.0
-    g = 1.4
-    c = math.sqrt(g * 287.05 * gun.ambient_temperature)
-    M = max(v, 0.0) / c          # at rest the face sees the ambient pressure
-    return gun.ambient_pressure * (1 + g * (g + 1) / 4 * M * M + g * M * math.sqrt(1 + ((g + 1) / 4) ** 2 * M * M))
+        return lambda v: 0.0
+    g, p_a = AIR_GAMMA, gun.ambient_pressure
+    c = math.sqrt(g * AIR_R * gun.ambient_temperature)
+    square, root = g * (g + 1) / 4, ((g + 1) / 4) ** 2
+
+    def pressure(v: float) -> float:
+        M = max(v, 0.0) / c          # at rest the face sees the ambient pressure
+        return p_a * (1 + square * M * M + g * M * math.sqrt(1 + root * M * M))
+    return pressure
 
 
 # an opening time below this share of the longest shot is an instant (double precision resolves times to
@@ -213,75 +277,77 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     law = chambered_pressure_ratio if gun.gas_inertia == "chambered" else base_pressure_ratio
     lagrange = gun.gas_inertia == "lagrange"
 
+    # the gun's numbers read once: the integrator calls ``state`` about a thousand times a shot
+    m_p, L, mu, seal = gun.projectile_mass, gun.length, gun.bore_friction, gun.seal_drag
+    valved = not no_valve and not simple
+    a_valve = gun.discharge_coefficient * gun.valve_area if valved else 0.0
+    gamma, cp = gas.gamma, gas.cp
+    face = _face_pressure(gun)
+
     def state(y, t):
-        m_r, U_r, m_b, U_b, x, v = y[:6]
+        """(p_r, p_b, p_base, p_face, mdot, h, acc, friction, p_mean, p_breech) at ``y``, ``t``: the pressures of
+        the reservoir, the barrel, on the base and on the face [Pa], the valve's mass flow [kg/s] and the enthalpy
+        it carries [J/kg], the projectile's acceleration [m/s^2], the friction on it [N], the gas's mean pressure
+        and its pressure at the breech [Pa]."""
+        m_r, U_r, m_b, U_b, x, v = y[0], y[1], y[2], y[3], y[4], y[5]
         V_b = V_d + A * max(x, 0.0)
         p_r = gas.pressure(m_r, U_r, Vr) if m_r > 0 else 0.0
         p_b = gas.pressure(m_b, U_b, V_b) if m_b > 0 else 0.0
-        T_r, T_b = gas.temperature(m_r, U_r), gas.temperature(m_b, U_b)
         if simple:
-            p_base = pr0 * law(v, c0, gas.gamma)
-            p_mean, m_eff = p_base, gun.projectile_mass
+            p_base = pr0 * law(v, c0, gamma)
+            p_mean, m_eff = p_base, m_p
         elif lagrange:
-            m_eff = gun.projectile_mass + m_b / 3
+            m_eff = m_p + m_b / 3
             p_mean = p_b
             p_base = None
         else:
-            p_mean, p_base, m_eff = p_b, p_b, gun.projectile_mass
-        p_face = air_ahead_pressure(gun, v)
+            p_mean, p_base, m_eff = p_b, p_b, m_p
+        p_face = face(v)
         # the resisting force; friction acts only while moving (or when the drive could overcome it)
         drive = p_mean * A - p_face * A
-        friction = gun.bore_friction + gun.seal_drag * p_mean * A
+        friction = mu + seal * p_mean * A
         if v <= 0 and drive <= friction:
             acc, friction_now = 0.0, 0.0
         else:
             friction_now = friction
             acc = (drive - friction_now) / m_eff
         if lagrange:
-            p_base = (gun.projectile_mass * acc + p_face * A + friction_now) / A
+            p_base = (m_p * acc + p_face * A + friction_now) / A
         mdot, h, p_breech = 0.0, 0.0, p_b
-        if not no_valve and not simple:
+        if valved:
             # the valve discharges into the column's breech end: on Lagrange's profile (uniform density, the
             # speed linear from rest at the breech) the pressure there is the mean's plus C a / (6 A), the part of
             # the gradient that accelerates the column ahead of it
             if lagrange:
                 p_breech = p_b + m_b * acc / (6 * A)
             opening = 1.0 if t_open <= 0 else min(t / t_open, 1.0)
-            a_eff = gun.discharge_coefficient * gun.valve_area * opening
             if p_r >= p_breech:
-                mdot = orifice_flow(gas, a_eff, p_r, T_r, p_breech)
-                h = gas.cp * T_r
+                mdot = orifice_flow(gas, a_valve * opening, p_r, gas.temperature(m_r, U_r), p_breech)
+                h = cp * gas.temperature(m_r, U_r)
             else:
-                mdot = -orifice_flow(gas, a_eff, p_breech, T_b, p_r)
-                h = gas.cp * T_b
-        return dict(p_r=p_r, p_b=p_b, p_base=p_base, p_face=p_face, mdot=mdot, h=h, acc=acc, V_b=V_b,
-                    friction=friction_now, p_mean=p_mean, p_breech=p_breech)
+                mdot = -orifice_flow(gas, a_valve * opening, p_breech, gas.temperature(m_b, U_b), p_r)
+                h = cp * gas.temperature(m_b, U_b)
+        return p_r, p_b, p_base, p_face, mdot, h, acc, friction_now, p_mean, p_breech
 
     def rhs(t, y):
-        s = state(y, t)
+        _, _, _, p_face, mdot, h, acc, friction, p_mean, _ = state(y, t)
         v = y[5]
-        dU_b = s["h"] * s["mdot"] - (0.0 if simple else s["p_mean"] * A * v)
+        dU_b = h * mdot - (0.0 if simple else p_mean * A * v)
         if lagrange:
-            dU_b -= s["mdot"] * v * v / 6        # the gas let in is brought up to the column's motion
-        return [-s["mdot"], -s["h"] * s["mdot"], s["mdot"], dU_b, v, s["acc"],
-                s["friction"] * max(v, 0.0), s["p_face"] * A * max(v, 0.0),
-                (s["p_mean"] * A * v if simple else 0.0)]
+            dU_b -= mdot * v * v / 6        # the gas let in is brought up to the column's motion
+        moving = max(v, 0.0)
+        return [-mdot, -h * mdot, mdot, dU_b, v, acc, friction * moving, p_face * A * moving,
+                (p_mean * A * v if simple else 0.0)]
 
-    def muzzle(t, y):
-        return y[4] - gun.length
-    muzzle.terminal, muzzle.direction = True, 1
-
-    def stalled(t, y):
-        # after it has moved, a projectile whose speed falls to (a hair above) zero has come to
-        # rest; before it moves it may wait at rest for the pressure to build.  The threshold is
-        # above zero because at rest the resisting force stops acting: the speed never goes
-        # below zero for an event there to see
-        return y[5] - STOP * v_scale if y[4] > 1e-6 * gun.length else 1.0
-    stalled.terminal, stalled.direction = True, -1
-
-    def reached(t, y):
-        return y[5] - (stop_speed or math.inf)
-    reached.terminal, reached.direction = True, 1
+    # the events, each a function of the state and whether it ends the shot (all do) when it crosses
+    # zero rising (+1) or falling (-1): the muzzle; a stall (after it has moved, a projectile whose
+    # speed falls to (a hair above) zero has come to rest; before it moves it may wait at rest for
+    # the pressure to build; the threshold is above zero because at rest the resisting force stops
+    # acting: the speed never goes below zero for an event there to see); ``stop_speed`` reached
+    reach = stop_speed or math.inf
+    events = (lambda y: y[4] - L, lambda y: y[5] - STOP * v_scale if y[4] > 1e-6 * L else 1.0,
+              lambda y: y[5] - reach)
+    directions = (1, -1, 1)
 
     y0 = np.array([m_r0, U_r0, m_b0, U_b0, 0.0, 0.0, 0.0, 0.0, 0.0])
     # absolute tolerances on the scale of each state: masses, energies, length, speed, works
@@ -295,15 +361,14 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     stops = ([t_open] if (not no_valve and 0 < t_open < max_time) else []) + [max_time]
     for _ in range(MAX_PIECES):
         t_stop = next(t for t in stops if t > t_start)
-        piece = solve_ivp(rhs, (t_start, t_stop), y_start, method=METHOD, rtol=rtol, atol=atol,
-                          events=(muzzle, stalled, reached), dense_output=True)
+        piece = _integrate(rhs, t_start, t_stop, y_start, rtol, atol, events, directions)
         pieces.append(piece)
         t_start, y_start = piece.t[-1], piece.y[:, -1].copy()
         if not piece.success or len(piece.t_events[0]) or len(piece.t_events[2]) or t_start >= max_time:
             break
         if len(piece.t_events[1]):
-            s = state(y_start, t_start)
-            if not s["p_r"] > s["p_b"] * (1 + 1e-3):
+            p_r, p_b = state(y_start, t_start)[:2]
+            if not p_r > p_b * (1 + 1e-3):
                 break                 # nothing will push it again: it stays where it stopped
             y_start[5] = 0.0
     sol = _joined(pieces)
@@ -316,11 +381,11 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     hist = {"time": ts, "x": ys[4], "v": ys[5], "p_reservoir": [], "p_barrel": [], "p_base": [], "acceleration": [],
             "m_reservoir": ys[0], "U_reservoir": ys[1], "m_barrel": ys[2], "U_barrel": ys[3]}
     for k, t in enumerate(ts):
-        s = state(ys[:, k], t)
-        hist["p_reservoir"].append(s["p_r"])
-        hist["p_barrel"].append(s["p_b"])
-        hist["p_base"].append(s["p_base"])
-        hist["acceleration"].append(s["acc"])
+        p_r, p_b, p_base, _, _, _, acc, _, _, _ = state(ys[:, k], t)
+        hist["p_reservoir"].append(p_r)
+        hist["p_barrel"].append(p_b)
+        hist["p_base"].append(p_base)
+        hist["acceleration"].append(acc)
     for k in ("p_reservoir", "p_barrel", "p_base", "acceleration"):
         hist[k] = np.array(hist[k])
     y_end = sol.y[:, -1]

@@ -84,3 +84,36 @@ def test_a_valve_opening_in_no_time_opens_at_once():
     for t in (1e-300, 1e-12):
         assert fire(Gun(**base, opening_time=t)).muzzle_velocity == pytest.approx(instant.muzzle_velocity,
                                                                                     rel=1e-9)
+
+
+def test_the_shots_integration_is_solve_ivps_step_for_step():
+    """``gun._integrate`` is scipy's ``solve_ivp`` loop with LSODA, dense output and terminal events, the
+    events' signs tested as numbers: on the same system (a mass on a spring pushed off at speed, with
+    a rising event past x = 0.3 and a falling one at v = 0.2) the same steps, states, event time and
+    interpolant to the bit, and the earliest event ends it."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+    from shockfem.launcher.gun import EPS, _integrate
+
+    def rhs(t, y):
+        return [y[1], -4.0 * y[0]]
+    y0, atol = np.array([0.0, 1.0]), np.array([1e-12, 1e-12])
+    events = (lambda y: y[0] - 0.3, lambda y: y[1] - 0.2)
+
+    def far(t, y):
+        return events[0](y)
+
+    def slow(t, y):
+        return events[1](y)
+    far.terminal, far.direction, slow.terminal, slow.direction = True, 1, True, -1
+    ours = _integrate(rhs, 0.0, 10.0, y0, 1e-9, atol, events, (1, -1))
+    theirs = solve_ivp(rhs, (0.0, 10.0), y0, method="LSODA", rtol=1e-9, atol=atol, events=(far, slow),
+                       dense_output=True)
+    assert ours.success and theirs.status == 1 and EPS == np.finfo(float).eps
+    assert np.array_equal(ours.t, theirs.t) and np.array_equal(ours.y, theirs.y)
+    assert [list(t) for t in ours.t_events] == [list(t) for t in theirs.t_events]
+    # x = sin(2 t) / 2 reaches 0.3 at asin(0.6) / 2, before v = cos(2 t) falls to 0.2
+    assert len(ours.t_events[0]) == 1 and len(ours.t_events[1]) == 0
+    assert ours.t[-1] == pytest.approx(math.asin(0.6) / 2, rel=1e-8)
+    ts = np.linspace(0.0, ours.t[-1], 7)
+    assert np.array_equal(ours.sol(ts), theirs.sol(ts))
