@@ -15,7 +15,7 @@ run: install
 	$(BIN)/shockfem study amplifier --out results/amplifier
 
 test: install
-	$(BIN)/python -m pytest -q -n 2 --dist loadgroup --durations=20 tests
+	$(BIN)/python -m pytest -q -n 2 --durations=20 tests
 
 verify: install
 	$(BIN)/shockfem verify --json results/verify.json

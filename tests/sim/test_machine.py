@@ -14,9 +14,6 @@ import pytest
 from shockfem.machine.premise import WINNERS
 from shockfem.units import G0, LB
 
-# one study run (the module's fixture, minutes) shared by every test here: the module starts first and stays on
-# one worker (``make test``'s ``--dist loadgroup``), or each worker would run the study for its share of the tests
-pytestmark = [pytest.mark.long, pytest.mark.xdist_group("machine")]
 
 def shockfem(*args):
     return subprocess.run([sys.executable, "-m", "shockfem", *args], capture_output=True, text=True, timeout=900)
