@@ -285,10 +285,10 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     face = _face_pressure(gun)
 
     def state(y, t):
-        """(p_r, p_b, p_base, p_face, mdot, h, acc, friction, p_mean, p_breech) at ``y``, ``t``: the pressures of
-        the reservoir, the barrel, on the base and on the face [Pa], the valve's mass flow [kg/s] and the enthalpy
-        it carries [J/kg], the projectile's acceleration [m/s^2], the friction on it [N], the gas's mean pressure
-        and its pressure at the breech [Pa]."""
+        """(p_r, p_b, p_base, p_face, mdot, h, acc, friction, p_mean) at ``y``, ``t``: the pressures of the
+        reservoir, the barrel, on the base and on the face [Pa], the valve's mass flow [kg/s] and the enthalpy it
+        carries [J/kg], the projectile's acceleration [m/s^2], the friction on it [N] and the gas's mean
+        pressure [Pa]."""
         m_r, U_r, m_b, U_b, x, v = y[0], y[1], y[2], y[3], y[4], y[5]
         V_b = V_d + A * max(x, 0.0)
         p_r = gas.pressure(m_r, U_r, Vr) if m_r > 0 else 0.0
@@ -322,15 +322,16 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
                 p_breech = p_b + m_b * acc / (6 * A)
             opening = 1.0 if t_open <= 0 else min(t / t_open, 1.0)
             if p_r >= p_breech:
-                mdot = orifice_flow(gas, a_valve * opening, p_r, gas.temperature(m_r, U_r), p_breech)
-                h = cp * gas.temperature(m_r, U_r)
+                T_up = gas.temperature(m_r, U_r)
+                mdot = orifice_flow(gas, a_valve * opening, p_r, T_up, p_breech)
             else:
-                mdot = -orifice_flow(gas, a_valve * opening, p_breech, gas.temperature(m_b, U_b), p_r)
-                h = cp * gas.temperature(m_b, U_b)
-        return p_r, p_b, p_base, p_face, mdot, h, acc, friction_now, p_mean, p_breech
+                T_up = gas.temperature(m_b, U_b)
+                mdot = -orifice_flow(gas, a_valve * opening, p_breech, T_up, p_r)
+            h = cp * T_up
+        return p_r, p_b, p_base, p_face, mdot, h, acc, friction_now, p_mean
 
     def rhs(t, y):
-        _, _, _, p_face, mdot, h, acc, friction, p_mean, _ = state(y, t)
+        _, _, _, p_face, mdot, h, acc, friction, p_mean = state(y, t)
         v = y[5]
         dU_b = h * mdot - (0.0 if simple else p_mean * A * v)
         if lagrange:
@@ -381,7 +382,7 @@ def fire(gun: Gun, rtol: float = 1e-9, samples: int = 400, max_time: float = 10.
     hist = {"time": ts, "x": ys[4], "v": ys[5], "p_reservoir": [], "p_barrel": [], "p_base": [], "acceleration": [],
             "m_reservoir": ys[0], "U_reservoir": ys[1], "m_barrel": ys[2], "U_barrel": ys[3]}
     for k, t in enumerate(ts):
-        p_r, p_b, p_base, _, _, _, acc, _, _, _ = state(ys[:, k], t)
+        p_r, p_b, p_base, _, _, _, acc, _, _ = state(ys[:, k], t)
         hist["p_reservoir"].append(p_r)
         hist["p_barrel"].append(p_b)
         hist["p_base"].append(p_base)
